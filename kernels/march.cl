@@ -1,0 +1,49 @@
+/* march.cl — sphere tracing inside the scene's bounding sphere. The one march loop. */
+
+typedef struct march_result_t {
+  real_t t;     /* distance along the ray to the hit (meaningful where hit) */
+  mask_t hit;   /* the ray reached the surface */
+  real_t steps; /* DE evaluations spent, for step-count AO and statistics */
+} march_result_t;
+
+/* Entry and exit distances of the ray through the sphere |p| = radius; `inside` is false where
+ * the ray misses it or it lies behind the eye. */
+inline mask_t intersect_bounds(ray_t ray, scalar_t radius, real_t* t_enter, real_t* t_exit) {
+  real_t b = v3_dot(ray.origin, ray.dir);
+  real_t c = v3_length2(ray.origin) - (real_t)(radius * radius);
+  real_t disc = b * b - c;
+  real_t root = sqrt(fmax(disc, (real_t)0));
+  *t_enter = fmax(-b - root, (real_t)0);
+  *t_exit = -b + root;
+  return (disc > (real_t)0) & (*t_exit > (real_t)0);
+}
+
+/* Marches each lane until it is within the hit threshold of the surface, leaves the bounding
+ * sphere or runs out of steps. Rays that run out of steps are counted as hits: they are deep in
+ * a crevice, where a miss would show the sky through the surface. The DE is only roughly
+ * 1-Lipschitz, so each step is scaled by fc->step_scale and never exceeds the bounding radius. */
+march_result_t march(ray_t ray, __constant const fr_frame_constants* fc,
+                     __constant const scene_params_t* params) {
+  real_t t, t_exit;
+  mask_t active = intersect_bounds(ray, fc->bounding_radius, &t, &t_exit);
+  t_exit = fmin(t_exit, (real_t)fc->max_distance);
+  active &= t < t_exit;
+  mask_t hit = FR_MASK_FALSE;
+  real_t steps = (real_t)0;
+  const real_t max_step = (real_t)fc->bounding_radius;
+  for (int i = 0; i < fc->max_steps && any_lane(active); ++i) {
+    vec3_t p = v3_mad(ray.origin, ray.dir, t);
+    real_t dist = scene_de(p, params);
+    mask_t reached = active & (dist < hit_threshold(fc, t, p));
+    steps += mask_to_real(active);
+    hit |= reached;
+    active &= !reached;
+    t = lane_select(active, t + fmin(dist * (real_t)fc->step_scale, max_step), t);
+    active &= t < t_exit;
+  }
+  march_result_t r;
+  r.t = t;
+  r.hit = hit | active; /* out of steps */
+  r.steps = steps;
+  return r;
+}

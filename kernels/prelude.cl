@@ -1,0 +1,117 @@
+/* prelude.cl — lane-generic types and helpers that every scene DE and renderer stage uses.
+ *
+ * The host defines, before this file:
+ *   FR_LANES   1, 4, 8 or 16: rays evaluated together by one work-item (a tile of pixels)
+ *   FR_DOUBLE  0 or 1: scalar precision
+ * Code written with these types builds at every width. Rules (sdk/docs/writing-a-scene.md):
+ *   - real_t is one value per lane; scalar_t is one value shared by all lanes.
+ *   - a comparison of real_t gives mask_t; combine masks with & | ! only.
+ *   - a branch on a per-lane value becomes lane_select(mask, if_true, if_false);
+ *     a loop exit tests any_lane(mask) or all_lanes(mask).
+ *   - math built-ins (sqrt, log, pow, atan2, ...) take real_t; pass to_real(x) for constants. */
+
+#if FR_DOUBLE
+#pragma OPENCL EXTENSION cl_khr_fp64 : enable
+typedef double scalar_t;
+#define FR_SCALAR_EPSILON DBL_EPSILON
+#define FR_SCALAR_MAX DBL_MAX
+#else
+typedef float scalar_t;
+#define FR_SCALAR_EPSILON FLT_EPSILON
+#define FR_SCALAR_MAX FLT_MAX
+#endif
+
+#define FR_CAT_(a, b) a##b
+#define FR_CAT(a, b) FR_CAT_(a, b)
+
+#if FR_LANES == 1
+typedef scalar_t real_t;
+typedef int mask_t; /* scalar comparisons give 0 or 1 */
+#define FR_TILE_W 1
+#define FR_TILE_H 1
+#define FR_LANE_X ((real_t)0)
+#define FR_LANE_Y ((real_t)0)
+#define any_lane(m) ((m) != 0)
+#define all_lanes(m) ((m) != 0)
+#define lane_select(m, if_true, if_false) ((m) ? (real_t)(if_true) : (real_t)(if_false))
+#define FR_MASK_TRUE 1
+#else
+#if FR_DOUBLE
+typedef FR_CAT(double, FR_LANES) real_t;
+typedef FR_CAT(long, FR_LANES) mask_t; /* vector comparisons give -1 (true) or 0 */
+#else
+typedef FR_CAT(float, FR_LANES) real_t;
+typedef FR_CAT(int, FR_LANES) mask_t;
+#endif
+#define any_lane(m) any(m)
+#define all_lanes(m) all(m)
+#define lane_select(m, if_true, if_false) select((real_t)(if_false), (real_t)(if_true), (m))
+#define FR_MASK_TRUE ((mask_t)(-1))
+#if FR_LANES == 4
+#define FR_TILE_W 2
+#define FR_TILE_H 2
+#define FR_LANE_X ((real_t)(0, 1, 0, 1))
+#define FR_LANE_Y ((real_t)(0, 0, 1, 1))
+#elif FR_LANES == 8
+#define FR_TILE_W 4
+#define FR_TILE_H 2
+#define FR_LANE_X ((real_t)(0, 1, 2, 3, 0, 1, 2, 3))
+#define FR_LANE_Y ((real_t)(0, 0, 0, 0, 1, 1, 1, 1))
+#elif FR_LANES == 16
+#define FR_TILE_W 4
+#define FR_TILE_H 4
+#define FR_LANE_X ((real_t)(0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3))
+#define FR_LANE_Y ((real_t)(0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 3, 3, 3, 3))
+#else
+#error "FR_LANES must be 1, 4, 8 or 16"
+#endif
+#endif
+
+#define FR_MASK_FALSE ((mask_t)0)
+#define to_real(x) ((real_t)(x))
+#define mask_to_real(m) lane_select((m), 1, 0)
+
+/* Three real_t: one 3-vector per lane. */
+typedef struct vec3_t {
+  real_t x, y, z;
+} vec3_t;
+
+inline vec3_t v3(real_t x, real_t y, real_t z) {
+  vec3_t r;
+  r.x = x;
+  r.y = y;
+  r.z = z;
+  return r;
+}
+/* The same vector in every lane. */
+inline vec3_t v3s(scalar_t x, scalar_t y, scalar_t z) { return v3((real_t)x, (real_t)y, (real_t)z); }
+inline vec3_t v3_from_float4(__constant const float* f) { return v3s(f[0], f[1], f[2]); }
+inline vec3_t v3_add(vec3_t a, vec3_t b) { return v3(a.x + b.x, a.y + b.y, a.z + b.z); }
+inline vec3_t v3_sub(vec3_t a, vec3_t b) { return v3(a.x - b.x, a.y - b.y, a.z - b.z); }
+inline vec3_t v3_mul(vec3_t a, vec3_t b) { return v3(a.x * b.x, a.y * b.y, a.z * b.z); }
+inline vec3_t v3_scale(vec3_t a, real_t s) { return v3(a.x * s, a.y * s, a.z * s); }
+inline vec3_t v3_neg(vec3_t a) { return v3(-a.x, -a.y, -a.z); }
+inline vec3_t v3_abs(vec3_t a) { return v3(fabs(a.x), fabs(a.y), fabs(a.z)); }
+inline vec3_t v3_min(vec3_t a, vec3_t b) { return v3(fmin(a.x, b.x), fmin(a.y, b.y), fmin(a.z, b.z)); }
+inline vec3_t v3_max(vec3_t a, vec3_t b) { return v3(fmax(a.x, b.x), fmax(a.y, b.y), fmax(a.z, b.z)); }
+inline real_t v3_dot(vec3_t a, vec3_t b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+inline real_t v3_length2(vec3_t a) { return v3_dot(a, a); }
+inline real_t v3_length(vec3_t a) { return sqrt(v3_dot(a, a)); }
+inline vec3_t v3_cross(vec3_t a, vec3_t b) {
+  return v3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
+}
+/* Unit vector; a zero vector stays zero instead of becoming NaN. */
+inline vec3_t v3_normalize(vec3_t a) {
+  real_t len = v3_length(a);
+  real_t inv = lane_select(len > (real_t)0, (real_t)1 / len, (real_t)0);
+  return v3_scale(a, inv);
+}
+/* Per lane: if_true where m is set, else if_false. */
+inline vec3_t v3_select(mask_t m, vec3_t if_true, vec3_t if_false) {
+  return v3(lane_select(m, if_true.x, if_false.x), lane_select(m, if_true.y, if_false.y),
+            lane_select(m, if_true.z, if_false.z));
+}
+/* a + b * s: a ray point, a blend step. */
+inline vec3_t v3_mad(vec3_t a, vec3_t b, real_t s) {
+  return v3(a.x + b.x * s, a.y + b.y * s, a.z + b.z * s);
+}
