@@ -20,6 +20,7 @@ typedef struct fr_frame_constants {
   float albedo[4];
   float sky_zenith[4];
   float sky_horizon[4];
+  float sky_up[4]; /* unit "up" of the sky gradient: the camera's up vector */
 
   int width;
   int height;

@@ -115,3 +115,18 @@ inline vec3_t v3_select(mask_t m, vec3_t if_true, vec3_t if_false) {
 inline vec3_t v3_mad(vec3_t a, vec3_t b, real_t s) {
   return v3(a.x + b.x * s, a.y + b.y * s, a.z + b.z * s);
 }
+
+/* Sine and cosine for DE inner loops. In float: the device's native_sin/native_cos after reducing
+ * the angle to [-pi, pi], the range where native accuracy is meant (on PoCL this is about 1.4x
+ * faster per Mandelbulb frame than the correctly rounded built-ins). In double: the full-precision
+ * built-ins, since the double build is the reference the float build is measured against. */
+#if FR_DOUBLE
+#define fast_sin(x) sin(x)
+#define fast_cos(x) cos(x)
+#else
+inline real_t wrap_angle(real_t a) {
+  return a - (real_t)(2.0f * M_PI_F) * rint(a * (real_t)(0.5f * M_1_PI_F));
+}
+inline real_t fast_sin(real_t a) { return native_sin(wrap_angle(a)); }
+inline real_t fast_cos(real_t a) { return native_cos(wrap_angle(a)); }
+#endif

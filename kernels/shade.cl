@@ -2,7 +2,7 @@
  * specular, ambient term scaled by occlusion. Linear RGB, unbounded (tonemapped in post.cl). */
 
 vec3_t sky_color(vec3_t dir, __constant const fr_frame_constants* fc) {
-  real_t up = clamp(dir.y, (real_t)0, (real_t)1);
+  real_t up = clamp(v3_dot(dir, v3_from_float4(fc->sky_up)), (real_t)0, (real_t)1);
   vec3_t horizon = v3_from_float4(fc->sky_horizon);
   vec3_t zenith = v3_from_float4(fc->sky_zenith);
   return v3_mad(v3_scale(horizon, (real_t)1 - up), zenith, up);

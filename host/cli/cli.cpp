@@ -1,0 +1,61 @@
+#include "cli/cli.hpp"
+
+#include "cli/commands.hpp"
+#include "cli/options.hpp"
+#include "render/cl.hpp"
+#include "render/cl_runtime.hpp"
+
+#include <fractalis/abi.h>
+
+#include <ostream>
+
+namespace fr {
+namespace {
+
+const char* kUsage =
+    "fractalis — real-time explorer and renderer of distance-estimated 3D fractals\n"
+    "\n"
+    "usage: fractalis <command> [options]\n"
+    "\n"
+    "commands:\n"
+    "  render    render a scene to a PNG file\n"
+    "  bench     time frames of a scene (median, min, max)\n"
+    "  list      list scene plugins, their parameters, or why they failed to load\n"
+    "  devices   list OpenCL platforms and devices\n"
+    "\n"
+    "  fractalis <command> --help   options of a command\n"
+    "  fractalis --version          versions of fractalis and its scene ABI\n";
+
+}  // namespace
+
+int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+    (args.empty() ? err : out) << kUsage;
+    return args.empty() ? 2 : 0;
+  }
+  if (args[0] == "--version") {
+    out << "fractalis " << FRACTALIS_VERSION << " (scene ABI " << FR_ABI_VERSION_MAJOR << "."
+        << FR_ABI_VERSION_MINOR << ")\n";
+    return 0;
+  }
+  const std::string command = args[0];
+  const std::vector<std::string> rest(args.begin() + 1, args.end());
+  try {
+    if (command == "render") return command_render(rest, out, err);
+    if (command == "bench") return command_bench(rest, out, err);
+    if (command == "list") return command_list(rest, out, err);
+    if (command == "devices") return command_devices(rest, out, err);
+    throw UsageError("unknown command '" + command + "' (expected render, bench, list or devices)");
+  } catch (const UsageError& e) {
+    err << "fractalis: error: " << e.what() << "\n";
+    return 2;
+  } catch (const KernelBuildError& e) {
+    err << "fractalis: error: " << e.what() << "\n";
+    return 1;
+  } catch (const std::exception& e) {
+    err << "fractalis: error: " << e.what() << "\n";
+    return 1;
+  }
+}
+
+}  // namespace fr

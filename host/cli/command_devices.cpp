@@ -1,0 +1,41 @@
+#include "cli/commands.hpp"
+#include "cli/options.hpp"
+#include "render/device.hpp"
+
+#include <ostream>
+
+namespace fr {
+
+int command_devices(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  const std::vector<OptionSpec> specs = {{"help", nullptr, false, "show this help"}};
+  auto options = parse_options("devices", args, specs);
+  if (options.has("help")) {
+    out << "usage: fractalis devices\n\nLists OpenCL platforms and devices with the selector "
+           "--device takes.\n\n"
+        << format_options(specs);
+    return 0;
+  }
+  const auto devices = list_devices();
+  if (devices.empty()) {
+    err << "fractalis: error: no OpenCL device found (is pocl-opencl-icd installed?)\n";
+    return 1;
+  }
+  std::string error;
+  const auto chosen = select_device(devices, "", &error);
+  int last_platform = -1;
+  for (const auto& d : devices) {
+    if (d.platform_index != last_platform) {
+      out << "platform " << d.platform_index << ": " << d.platform_name << "\n";
+      last_platform = d.platform_index;
+    }
+    const bool is_default = chosen && chosen->selector() == d.selector();
+    out << "  " << d.selector() << "  " << d.type_name() << "  " << d.name
+        << (is_default ? "  [default]" : "") << "\n"
+        << "       " << d.version << ", driver " << d.driver_version << ", " << d.compute_units
+        << " compute units, " << (d.global_mem_bytes >> 20) << " MiB, double "
+        << (d.has_fp64 ? "yes" : "no") << ", lanes " << preferred_lanes(d) << "\n";
+  }
+  return 0;
+}
+
+}  // namespace fr

@@ -1,0 +1,205 @@
+#include "cli/scene_setup.hpp"
+
+#include "render/camera.hpp"
+
+#include <ostream>
+
+namespace fr {
+
+std::vector<OptionSpec> plugin_option_specs() {
+  return {
+      {"plugins", "DIR", false, "scene plugin folder (instead of the configured ones)"},
+      {"config", "FILE", false, "settings file (default: $XDG_CONFIG_HOME/fractalis/config.toml)"},
+  };
+}
+
+std::vector<OptionSpec> scene_option_specs() {
+  auto specs = plugin_option_specs();
+  const std::vector<OptionSpec> more = {
+      {"scene", "ID", false, "scene to render (default: mandelbulb; see `fractalis list`)"},
+      {"size", "WxH", false, "image size in pixels (default 1280x720)"},
+      {"eye", "X,Y,Z", false, "camera position (default: the scene's)"},
+      {"target", "X,Y,Z", false, "point the camera looks at"},
+      {"fov", "DEG", false, "horizontal field of view in degrees, (0, 180)"},
+      {"param", "KEY=VALUE", true, "set a scene parameter (repeatable); vec3 as x,y,z"},
+      {"time", "SECONDS", false, "scene time for the update callback (default 0)"},
+      {"lanes", "1|4|8|16", false, "rays per work-item (default: 16 on CPUs, 1 on GPUs)"},
+      {"precision", "float|double", false, "arithmetic precision of the kernel (default float)"},
+      {"device", "SEL", false, "OpenCL device: gpu, cpu, P:D or part of its name"},
+  };
+  specs.insert(specs.end(), more.begin(), more.end());
+  return specs;
+}
+
+Settings load_settings(const ParsedOptions& options) {
+  Settings settings;
+  std::optional<std::filesystem::path> file;
+  if (auto given = options.get("config")) {
+    file = *given;
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(*file, ec))
+      throw UsageError("--config: no such file '" + file->string() + "'");
+  } else {
+    file = user_settings_file();
+  }
+  if (file) {
+    auto problems = load_settings_file(*file, settings);
+    if (!problems.empty()) {
+      std::string message = problems.front().to_string();
+      if (problems.size() > 1) message += " (and " + std::to_string(problems.size() - 1) + " more)";
+      throw UsageError(message);
+    }
+  }
+  return settings;
+}
+
+std::vector<std::filesystem::path> plugin_folders(const Settings& settings, const ParsedOptions& options) {
+  if (auto dir = options.get("plugins")) {
+    std::error_code ec;
+    if (!std::filesystem::is_directory(*dir, ec))
+      throw UsageError("--plugins: '" + *dir + "' is not a folder");
+    return {*dir};
+  }
+  if (!settings.plugin_folders.empty()) return settings.plugin_folders;
+  std::vector<std::filesystem::path> folders;
+  for (const char* dir : {FRACTALIS_PLUGIN_BUILD_DIR, FRACTALIS_PLUGIN_INSTALL_DIR}) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(dir, ec)) folders.emplace_back(dir);
+  }
+  return folders;
+}
+
+std::vector<LoadOutcome> load_plugins(const std::vector<std::filesystem::path>& folders, std::ostream& err) {
+  auto outcomes = load_scene_folder(folders);
+  for (const auto& o : outcomes)
+    if (o.result != LoadResult::Loaded)
+      err << "fractalis: warning: skipped plugin " << o.file.string() << ": " << o.message << "\n";
+  return outcomes;
+}
+
+std::shared_ptr<const LoadedScene> find_scene(const std::vector<LoadOutcome>& outcomes, const std::string& id) {
+  std::string available;
+  for (const auto& o : outcomes) {
+    if (!o.scene) continue;
+    if (o.scene->info.id == id) return o.scene;
+    available += (available.empty() ? "" : ", ") + o.scene->info.id;
+  }
+  throw UsageError("unknown scene '" + id + "' (available: " + (available.empty() ? "none" : available) + ")");
+}
+
+namespace {
+
+fr_value parse_param_value(const ParamInfo& p, const std::string& assignment, const std::string& text) {
+  const std::string what = "--param " + assignment;
+  fr_value v{};
+  switch (p.type) {
+    case FR_PARAM_BOOL:
+      if (text == "true" || text == "1" || text == "on") v.v[0] = 1;
+      else if (text == "false" || text == "0" || text == "off") v.v[0] = 0;
+      else throw UsageError(what + ": expected true or false for bool parameter '" + p.key + "'");
+      return v;
+    case FR_PARAM_INT:
+      v.v[0] = static_cast<double>(parse_integer(what, text, static_cast<long long>(p.min_value.v[0]),
+                                                 static_cast<long long>(p.max_value.v[0])));
+      return v;
+    case FR_PARAM_FLOAT: v.v[0] = parse_finite(what, text); break;
+    default: {
+      auto xyz = parse_vec3(what, text);
+      for (int i = 0; i < 3; ++i) v.v[i] = xyz[i];
+    }
+  }
+  for (int i = 0; i < p.component_count(); ++i)
+    if (v.v[i] < p.min_value.v[i] || v.v[i] > p.max_value.v[i])
+      throw UsageError(what + ": " + text + " is outside the range of '" + p.key + "' [" +
+                       std::to_string(p.min_value.v[i]) + ", " + std::to_string(p.max_value.v[i]) + "]");
+  return v;
+}
+
+}  // namespace
+
+void apply_scene_overrides(const SceneInfo& info, const ParsedOptions& options, SceneState& state) {
+  if (auto it = options.values.find("param"); it != options.values.end()) {
+    for (const std::string& assignment : it->second) {
+      auto eq = assignment.find('=');
+      if (eq == std::string::npos)
+        throw UsageError("--param " + assignment + ": expected KEY=VALUE");
+      const std::string key = assignment.substr(0, eq);
+      int index = info.find_param(key);
+      if (index < 0) {
+        std::string keys;
+        for (const auto& p : info.params) keys += (keys.empty() ? "" : ", ") + p.key;
+        throw UsageError("--param " + assignment + ": scene '" + info.id + "' has no parameter '" + key +
+                         "' (it has: " + (keys.empty() ? "none" : keys) + ")");
+      }
+      state.params[index] = parse_param_value(info.params[index], assignment, assignment.substr(eq + 1));
+    }
+  }
+  if (auto eye = options.get("eye")) {
+    auto v = parse_vec3("--eye", *eye);
+    std::copy(v.begin(), v.end(), state.camera.eye);
+  }
+  if (auto target = options.get("target")) {
+    auto v = parse_vec3("--target", *target);
+    std::copy(v.begin(), v.end(), state.camera.target);
+  }
+  if (auto fov = options.get("fov")) state.camera.fov_deg = parse_finite("--fov", *fov);
+  if (auto problem = check_camera(state.camera)) throw UsageError("camera: " + *problem);
+}
+
+RenderSettings render_settings_from(const Settings& settings, const ParsedOptions& options) {
+  RenderSettings r = settings.render;
+  if (auto size = options.get("size")) {
+    auto wh = parse_size("--size", *size);
+    r.width_px = wh[0];
+    r.height_px = wh[1];
+  }
+  if (auto lanes = options.get("lanes")) {
+    long long n = parse_integer("--lanes", *lanes, 1, 16);
+    if (n != 1 && n != 4 && n != 8 && n != 16) throw UsageError("--lanes: expected 1, 4, 8 or 16, got " + *lanes);
+    r.lanes = static_cast<int>(n);
+  }
+  if (auto precision = options.get("precision")) {
+    if (*precision == "float") r.precision = Precision::Float;
+    else if (*precision == "double") r.precision = Precision::Double;
+    else throw UsageError("--precision: expected float or double, got '" + *precision + "'");
+  }
+  return r;
+}
+
+DeviceInfo choose_device(const Settings& settings, const ParsedOptions& options) {
+  const std::string selector = options.get("device").value_or(settings.device);
+  const auto devices = list_devices();
+  if (devices.empty())
+    throw std::runtime_error("no OpenCL device found (is an ICD such as pocl-opencl-icd installed?)");
+  std::string error;
+  auto device = select_device(devices, selector, &error);
+  if (!device) throw UsageError(error);
+  return *device;
+}
+
+}  // namespace fr
+
+namespace fr {
+
+PreparedScene prepare_scene(const ParsedOptions& options, std::ostream& err) {
+  PreparedScene p;
+  p.settings = load_settings(options);
+  p.render = render_settings_from(p.settings, options);
+  const auto folders = plugin_folders(p.settings, options);
+  if (folders.empty())
+    throw std::runtime_error("no plugin folder found (build the plugins, or pass --plugins DIR)");
+  const auto outcomes = load_plugins(folders, err);
+  p.scene = find_scene(outcomes, options.get("scene").value_or("mandelbulb"));
+  p.state = make_default_state(p.scene->info);
+  apply_scene_overrides(p.scene->info, options, p.state);
+  if (auto t = options.get("time")) p.state.time_s = parse_finite("--time", *t);
+  p.device = choose_device(p.settings, options);
+  if (p.render.precision == Precision::Double && !p.device.has_fp64)
+    throw UsageError("--precision double: device " + p.device.name + " has no double precision");
+  std::string error;
+  p.instance = SceneInstance::create(p.scene, &error);
+  if (!p.instance) throw std::runtime_error(error);
+  return p;
+}
+
+}  // namespace fr

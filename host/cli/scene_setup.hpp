@@ -1,0 +1,63 @@
+// scene_setup.hpp — what `render`, `bench` and `list` share: settings, plugin folders, choosing
+// the scene and device, and applying command-line overrides. Bad input becomes a UsageError.
+#pragma once
+
+#include "cli/options.hpp"
+#include "plugin/plugin_loader.hpp"
+#include "plugin/scene_instance.hpp"
+#include "render/device.hpp"
+#include "settings/settings.hpp"
+
+#include <iosfwd>
+#include <memory>
+#include <vector>
+
+namespace fr {
+
+// Options shared by commands that render: scene, view, parameters, kernel shape, device.
+std::vector<OptionSpec> scene_option_specs();
+// Options shared by every command that loads plugins: --plugins, --config.
+std::vector<OptionSpec> plugin_option_specs();
+
+// Defaults, then the settings file (--config FILE, else the user's file), then the options.
+Settings load_settings(const ParsedOptions& options);
+
+// --plugins DIR, else plugins.folders from settings, else the build tree's and installed folders.
+std::vector<std::filesystem::path> plugin_folders(const Settings& settings, const ParsedOptions& options);
+
+// Loads the folders, reports each plugin that failed on `err` (one line each), and returns the
+// outcomes.
+std::vector<LoadOutcome> load_plugins(const std::vector<std::filesystem::path>& folders, std::ostream& err);
+
+// The loaded scene with this id, or a UsageError listing the ids there are.
+std::shared_ptr<const LoadedScene> find_scene(const std::vector<LoadOutcome>& outcomes, const std::string& id);
+
+// Applies --param key=value (repeatable) and --eye/--target/--fov to `state`.
+void apply_scene_overrides(const SceneInfo& info, const ParsedOptions& options, SceneState& state);
+
+// --size, --lanes, --precision over the settings' render defaults.
+RenderSettings render_settings_from(const Settings& settings, const ParsedOptions& options);
+
+// The device: --device, else settings' device.select, else the default rule.
+DeviceInfo choose_device(const Settings& settings, const ParsedOptions& options);
+
+}  // namespace fr
+
+namespace fr {
+
+// Everything a rendering command needs, set up from its options.
+struct PreparedScene {
+  Settings settings;
+  std::shared_ptr<const LoadedScene> scene;
+  std::unique_ptr<SceneInstance> instance;
+  SceneState state;
+  RenderSettings render;
+  DeviceInfo device;
+};
+
+// Settings, plugins (failures reported on `err`), scene (--scene, default mandelbulb), overrides,
+// device, and the scene's instance. Throws UsageError for bad input, runtime_error when the
+// scene's create callback fails.
+PreparedScene prepare_scene(const ParsedOptions& options, std::ostream& err);
+
+}  // namespace fr

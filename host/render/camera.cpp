@@ -1,0 +1,50 @@
+#include "render/camera.hpp"
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+
+namespace fr {
+namespace {
+glm::dvec3 to_vec(const double v[3]) { return {v[0], v[1], v[2]}; }
+}  // namespace
+
+std::optional<std::string> check_camera(const fr_camera& c) {
+  for (int i = 0; i < 3; ++i)
+    if (!std::isfinite(c.eye[i]) || !std::isfinite(c.target[i]) || !std::isfinite(c.up[i]))
+      return "camera has a non-finite coordinate";
+  if (!(c.fov_deg > 0 && c.fov_deg < 180))
+    return "field of view " + std::to_string(c.fov_deg) + " is outside (0, 180) degrees";
+  const glm::dvec3 t = to_vec(c.target) - to_vec(c.eye);
+  if (glm::length(t) == 0) return "target equals eye";
+  const glm::dvec3 b = glm::cross(to_vec(c.up), t);
+  if (!(glm::length(b) > 1e-12 * glm::length(t) * glm::length(to_vec(c.up))))
+    return "up direction is zero or parallel to the view direction";
+  return std::nullopt;
+}
+
+CameraRays make_camera_rays(const fr_camera& c, int k, int m) {
+  const glm::dvec3 t = to_vec(c.target) - to_vec(c.eye);
+  const glm::dvec3 b = glm::cross(to_vec(c.up), t);
+  const glm::dvec3 v = glm::cross(t, b);
+  const glm::dvec3 t_n = glm::normalize(t), b_n = glm::normalize(b), v_n = glm::normalize(v);
+  const double g_x = std::tan(c.fov_deg * M_PI / 360.0);
+  const double g_y = g_x * m / k;
+  CameraRays r;
+  r.eye = to_vec(c.eye);
+  r.width_px = k;
+  r.height_px = m;
+  // A one-pixel-wide image has a single column at the centre (the seed divides by k - 1).
+  r.pixel_step_x = k > 1 ? (2.0 * g_x / (k - 1)) * b_n : glm::dvec3(0.0);
+  r.pixel_step_y = m > 1 ? (2.0 * g_y / (m - 1)) * v_n : glm::dvec3(0.0);
+  r.first_pixel_dir = t_n - (k > 1 ? g_x : 0.0) * b_n - (m > 1 ? g_y : 0.0) * v_n;
+  r.pixel_angle_rad = k > 1 ? std::atan(2.0 * g_x / (k - 1)) : 2.0 * std::atan(g_x);
+  return r;
+}
+
+glm::dvec3 camera_ray_dir(const CameraRays& r, double x, double y) {
+  const double i = (r.width_px - 1) - x, j = (r.height_px - 1) - y;
+  return glm::normalize(r.first_pixel_dir + r.pixel_step_x * i + r.pixel_step_y * j);
+}
+
+}  // namespace fr

@@ -1,0 +1,44 @@
+// camera.hpp — the seed camera model: primary rays for a k x m image.
+//
+// With eye E, target T, up w and horizontal field of view theta:
+//   t = T - E,  b = w x t,  v = t x b           (then normalised: t_n, b_n, v_n)
+//   g_x = tan(theta / 2),  g_y = g_x * m / k     (half-extents of the image plane at distance 1)
+//   q_x = 2 g_x / (k - 1) * b_n,  q_y = 2 g_y / (m - 1) * v_n   (steps between pixel centres)
+//   p_1m = t_n - g_x b_n - g_y v_n               (the seed's first pixel)
+//   ray(i, j) = normalise(p_1m + q_x (i - 1) + q_y (j - 1)),  i in 1..k, j in 1..m
+// In a right-handed world b = w x t points to the viewer's left, so p_1m is the bottom-right
+// pixel; image column x (0 = left) is i - 1 = k - 1 - x and row y (0 = top) is j - 1 = m - 1 - y.
+#pragma once
+
+#include <fractalis/scene.h>
+
+#include <glm/vec3.hpp>
+
+#include <optional>
+#include <string>
+
+namespace fr {
+
+struct CameraRays {
+  glm::dvec3 eye{0.0};
+  glm::dvec3 first_pixel_dir{0.0};  // p_1m
+  glm::dvec3 pixel_step_x{0.0};     // q_x
+  glm::dvec3 pixel_step_y{0.0};     // q_y
+  int width_px = 0;
+  int height_px = 0;
+  double pixel_angle_rad = 0;  // angle between neighbouring pixel centres at the image centre
+};
+
+// Why the camera cannot make rays (target at the eye, up parallel to the view, fov outside
+// (0, 180) degrees, a non-finite value), or nullopt when it can.
+std::optional<std::string> check_camera(const fr_camera& camera);
+
+// The seed model's vectors for a width_px x height_px image (each >= 1). The camera must pass
+// check_camera.
+CameraRays make_camera_rays(const fr_camera& camera, int width_px, int height_px);
+
+// Unit direction of the ray through image pixel (x, y), row 0 at the top; the same arithmetic
+// as kernels/rays.cl, in double.
+glm::dvec3 camera_ray_dir(const CameraRays& rays, double x, double y);
+
+}  // namespace fr

@@ -1,0 +1,65 @@
+#include "render/cl_runtime.hpp"
+
+#include <vector>
+
+namespace fr {
+
+uint64_t hash_bytes(std::string_view data, uint64_t h) {
+  for (unsigned char c : data) {
+    h ^= c;
+    h *= 1099511628211ull;
+  }
+  return h;
+}
+
+ClRuntime::ClRuntime(const DeviceInfo& device) : device_(device) {
+  cl_int err = CL_SUCCESS;
+  const cl_context_properties props[] = {
+      CL_CONTEXT_PLATFORM, reinterpret_cast<cl_context_properties>(device.platform), 0};
+  context_ = ClContextHandle(clCreateContext(props, 1, &device.device, nullptr, nullptr, &err));
+  cl_check(err, "clCreateContext", "opening device " + device.name);
+  queue_ = ClQueueHandle(clCreateCommandQueue(context_.get(), device.device, 0, &err));
+  cl_check(err, "clCreateCommandQueue", "opening device " + device.name);
+}
+
+cl_program ClRuntime::program(const std::string& source, const std::string& options,
+                              const std::string& description) {
+  uint64_t key = hash_bytes(source);
+  key = hash_bytes(options, key);
+  key = hash_bytes(device_.name + '\n' + device_.driver_version + '\n' + device_.platform_name, key);
+  if (auto it = programs_.find(key); it != programs_.end()) return it->second.get();
+
+  cl_int err = CL_SUCCESS;
+  const char* text = source.c_str();
+  const size_t length = source.size();
+  ClProgramHandle program(clCreateProgramWithSource(context_.get(), 1, &text, &length, &err));
+  cl_check(err, "clCreateProgramWithSource", "building " + description);
+  err = clBuildProgram(program.get(), 1, &device_.device, options.c_str(), nullptr, nullptr);
+  if (err != CL_SUCCESS) {
+    size_t log_size = 0;
+    clGetProgramBuildInfo(program.get(), device_.device, CL_PROGRAM_BUILD_LOG, 0, nullptr, &log_size);
+    std::string log(log_size, '\0');
+    clGetProgramBuildInfo(program.get(), device_.device, CL_PROGRAM_BUILD_LOG, log_size, log.data(),
+                          nullptr);
+    while (!log.empty() && (log.back() == '\0' || log.back() == '\n')) log.pop_back();
+    throw KernelBuildError(description + " failed to compile on " + device_.name + " (" +
+                           cl_error_name(err) + "):\n" + log);
+  }
+  ++programs_built_;
+  cl_program raw = program.get();
+  programs_.emplace(key, std::move(program));
+  return raw;
+}
+
+cl_kernel ClRuntime::kernel(cl_program program, const char* name) {
+  auto key = std::make_pair(program, std::string(name));
+  if (auto it = kernels_.find(key); it != kernels_.end()) return it->second.get();
+  cl_int err = CL_SUCCESS;
+  ClKernelHandle k(clCreateKernel(program, name, &err));
+  cl_check(err, "clCreateKernel", std::string("creating kernel ") + name);
+  cl_kernel raw = k.get();
+  kernels_.emplace(key, std::move(k));
+  return raw;
+}
+
+}  // namespace fr

@@ -1,0 +1,52 @@
+// cl_runtime.hpp — one OpenCL device in use: its context, its queue, and the programs built
+// for it, cached by a hash of source, build options and device.
+#pragma once
+
+#include "render/cl.hpp"
+#include "render/device.hpp"
+
+#include <map>
+#include <stdexcept>
+#include <string>
+
+namespace fr {
+
+// A program failed to compile. what() names the scene, lanes, precision and stages, then gives
+// the compiler's log, whose file:line references point into the scene's own source.
+class KernelBuildError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class ClRuntime {
+ public:
+  explicit ClRuntime(const DeviceInfo& device);
+  ClRuntime(const ClRuntime&) = delete;
+  ClRuntime& operator=(const ClRuntime&) = delete;
+
+  const DeviceInfo& device() const { return device_; }
+  cl_context context() const { return context_.get(); }
+  cl_command_queue queue() const { return queue_.get(); }
+
+  // The built program for this source and options: from the cache, or compiled now (throws
+  // KernelBuildError with `description` and the build log).
+  cl_program program(const std::string& source, const std::string& options,
+                     const std::string& description);
+  // A kernel object of a cached program, made once.
+  cl_kernel kernel(cl_program program, const char* name);
+
+  size_t programs_built() const { return programs_built_; }
+
+ private:
+  DeviceInfo device_;
+  ClContextHandle context_;
+  ClQueueHandle queue_;
+  std::map<uint64_t, ClProgramHandle> programs_;
+  std::map<std::pair<cl_program, std::string>, ClKernelHandle> kernels_;
+  size_t programs_built_ = 0;
+};
+
+// 64-bit FNV-1a, the program cache's key.
+uint64_t hash_bytes(std::string_view data, uint64_t seed = 1469598103934665603ull);
+
+}  // namespace fr

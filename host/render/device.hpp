@@ -1,0 +1,47 @@
+// device.hpp — finding OpenCL devices and choosing one.
+//
+// Default: the first GPU if there is one, else the first CPU device (PoCL on machines without a
+// GPU). A CPU device gets 16 lanes (float16 packets of rays), a GPU 1 (one pixel per work-item).
+#pragma once
+
+#include "render/cl.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace fr {
+
+struct DeviceInfo {
+  cl_platform_id platform = nullptr;
+  cl_device_id device = nullptr;
+  int platform_index = 0;
+  int device_index = 0;  // within its platform
+  std::string platform_name;
+  std::string name;
+  std::string vendor;
+  std::string version;         // CL_DEVICE_VERSION
+  std::string driver_version;  // CL_DRIVER_VERSION
+  cl_device_type type = 0;
+  unsigned compute_units = 0;
+  unsigned long long global_mem_bytes = 0;
+  bool has_fp64 = false;
+
+  bool is_gpu() const { return (type & CL_DEVICE_TYPE_GPU) != 0; }
+  std::string type_name() const;
+  // "0:1" — the selector that picks exactly this device.
+  std::string selector() const;
+};
+
+// All devices of all platforms. No platform at all gives an empty list (not an error).
+std::vector<DeviceInfo> list_devices();
+
+// Picks a device. `selector`: "" (default), "gpu", "cpu", "P:D" (platform:device indices), or a
+// case-insensitive part of the device name. On no match returns nullopt and sets *error.
+std::optional<DeviceInfo> select_device(const std::vector<DeviceInfo>& devices,
+                                        const std::string& selector, std::string* error);
+
+// Lane width that suits the device: 16 on CPUs, 1 on GPUs and accelerators.
+int preferred_lanes(const DeviceInfo& device);
+
+}  // namespace fr

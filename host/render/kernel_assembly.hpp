@@ -1,0 +1,52 @@
+// kernel_assembly.hpp — pasting one scene's render kernel together.
+//
+// For each (scene, enabled stages, precision, lane width) the host builds: generated defines, the
+// shared frame-constants struct, the lane-generic prelude, a parameter struct generated from the
+// scene's table (specialised parameters baked in as constants), the scene's DE, and the renderer
+// stages — only those the scene needs and the user left on. Each piece starts with a #line
+// directive naming its file, so compiler messages point into the scene's own source.
+#pragma once
+
+#include "plugin/scene_info.hpp"
+#include "render/render_settings.hpp"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace fr {
+
+struct KernelConfig {
+  int lanes = 16;
+  Precision precision = Precision::Float;
+  fr_features stages = 0;  // scene's needs minus what the user switched off
+};
+
+struct AssembledKernel {
+  std::string source;
+  std::string build_options;
+  std::string description;  // "scene 'mandelbulb' (lanes 16, float, stages: ao)" for messages
+};
+
+// Pixels one work-item renders at a lane width: 1x1, 2x2, 4x2 or 4x4 (as FR_TILE_W/H in
+// kernels/prelude.cl).
+struct TileShape {
+  int width_px;
+  int height_px;
+};
+TileShape tile_shape(int lanes);
+
+// Stages that a frame of `info` compiles: what it needs and the user did not switch off.
+fr_features enabled_stages(const SceneInfo& info, fr_features disabled_by_user);
+
+// Names of the stages in `stages`, comma-separated ("ao, shadows"), or "none".
+std::string stage_names(fr_features stages);
+
+AssembledKernel assemble_render_kernel(const SceneInfo& info, const std::vector<fr_value>& values,
+                                       const KernelConfig& config);
+
+// The kernel-side parameter block: runtime (non-specialised) parameters in table order, each
+// float/int/bool as 4 bytes and each vec3/color as float[3]; at least 4 bytes.
+std::vector<uint8_t> pack_scene_params(const SceneInfo& info, const std::vector<fr_value>& values);
+
+}  // namespace fr

@@ -1,0 +1,40 @@
+# fractalis_add_scene(<target> SOURCES <c files...> DE_SOURCE <file.cl> [OUTPUT_DIRECTORY <dir>])
+#
+# Builds a Fractalis scene plugin: a MODULE library named <target>.so whose only exported symbol
+# is fractalis_scene_entry, linked with -z defs so a missing symbol fails at build time, not at
+# load time. The OpenCL file given as DE_SOURCE is embedded as
+#   extern const char fr_de_source[];
+# for the scene descriptor's de_source field.
+set(FRACTALIS_SDK_CMAKE_DIR "${CMAKE_CURRENT_LIST_DIR}")
+if(NOT FRACTALIS_SDK_INCLUDE_DIR)
+  # In the source tree; an installed SDK's FractalisSDKConfig.cmake sets this first.
+  get_filename_component(FRACTALIS_SDK_INCLUDE_DIR "${CMAKE_CURRENT_LIST_DIR}/../include" ABSOLUTE)
+endif()
+
+function(fractalis_add_scene target)
+  cmake_parse_arguments(ARG "" "DE_SOURCE;OUTPUT_DIRECTORY" "SOURCES" ${ARGN})
+  if(NOT ARG_SOURCES OR NOT ARG_DE_SOURCE)
+    message(FATAL_ERROR "fractalis_add_scene(${target}): SOURCES and DE_SOURCE are required")
+  endif()
+  get_filename_component(de_path "${ARG_DE_SOURCE}" ABSOLUTE)
+  set(embedded "${CMAKE_CURRENT_BINARY_DIR}/${target}_de_source.c")
+  add_custom_command(
+    OUTPUT "${embedded}"
+    COMMAND ${CMAKE_COMMAND} -DOUTPUT=${embedded} -DINPUTS=${de_path} -DSYMBOLS=fr_de_source
+            -P "${FRACTALIS_SDK_CMAKE_DIR}/fractalis_embed.cmake"
+    DEPENDS "${de_path}" "${FRACTALIS_SDK_CMAKE_DIR}/fractalis_embed.cmake"
+    COMMENT "Embedding ${ARG_DE_SOURCE} into ${target}"
+    VERBATIM)
+  add_library(${target} MODULE ${ARG_SOURCES} "${embedded}")
+  target_include_directories(${target} PRIVATE "${FRACTALIS_SDK_INCLUDE_DIR}")
+  set_target_properties(${target} PROPERTIES
+    PREFIX ""
+    C_VISIBILITY_PRESET hidden
+    CXX_VISIBILITY_PRESET hidden
+    VISIBILITY_INLINES_HIDDEN ON)
+  if(ARG_OUTPUT_DIRECTORY)
+    set_target_properties(${target} PROPERTIES LIBRARY_OUTPUT_DIRECTORY "${ARG_OUTPUT_DIRECTORY}")
+  endif()
+  target_link_options(${target} PRIVATE
+    "LINKER:--version-script=${FRACTALIS_SDK_CMAKE_DIR}/scene.map" "LINKER:-z,defs")
+endfunction()
