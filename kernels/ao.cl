@@ -3,5 +3,8 @@
 
 inline real_t step_count_ao(real_t steps, __constant const fr_frame_constants* fc) {
   real_t openness = clamp((real_t)1 - steps / (real_t)fc->max_steps, (real_t)0, (real_t)1);
-  return pow(openness, (real_t)fc->ao_strength);
+  return pow_nonneg(openness, (real_t)fc->ao_strength);
 }
+
+/* The renderer's hook (render.cl). */
+#define FR_APPLY_AO(ao, m) ao = step_count_ao((m).steps, fc)

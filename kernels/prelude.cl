@@ -15,10 +15,12 @@
 typedef double scalar_t;
 #define FR_SCALAR_EPSILON DBL_EPSILON
 #define FR_SCALAR_MAX DBL_MAX
+#define FR_SCALAR_MIN DBL_MIN
 #else
 typedef float scalar_t;
 #define FR_SCALAR_EPSILON FLT_EPSILON
 #define FR_SCALAR_MAX FLT_MAX
+#define FR_SCALAR_MIN FLT_MIN
 #endif
 
 #define FR_CAT_(a, b) a##b
@@ -70,6 +72,23 @@ typedef FR_CAT(int, FR_LANES) mask_t;
 #define FR_MASK_FALSE ((mask_t)0)
 #define to_real(x) ((real_t)(x))
 #define mask_to_real(m) lane_select((m), 1, 0)
+
+/* Moving lanes to and from private float arrays of FR_LANES elements (one per lane), for
+ * gathering inputs and scattering results to pixels. */
+#if FR_LANES == 1
+inline void store_lanes(real_t v, float* out) { out[0] = (float)v; }
+inline real_t load_lanes(const float* in) { return (real_t)in[0]; }
+#elif FR_DOUBLE
+inline void store_lanes(real_t v, float* out) {
+  FR_CAT(vstore, FR_LANES)(FR_CAT(convert_float, FR_LANES)(v), 0, out);
+}
+inline real_t load_lanes(const float* in) {
+  return FR_CAT(convert_double, FR_LANES)(FR_CAT(vload, FR_LANES)(0, in));
+}
+#else
+inline void store_lanes(real_t v, float* out) { FR_CAT(vstore, FR_LANES)(v, 0, out); }
+inline real_t load_lanes(const float* in) { return FR_CAT(vload, FR_LANES)(0, in); }
+#endif
 
 /* Three real_t: one 3-vector per lane. */
 typedef struct vec3_t {
@@ -130,3 +149,10 @@ inline real_t wrap_angle(real_t a) {
 inline real_t fast_sin(real_t a) { return native_sin(wrap_angle(a)); }
 inline real_t fast_cos(real_t a) { return native_cos(wrap_angle(a)); }
 #endif
+
+/* x^y for x >= 0, as exp2(y log2 x) with x kept above the smallest normal (so 0^y is tiny, not
+ * NaN, and x^0 is 1). Use it instead of pow: on PoCL pow's extra-precise path cost half of a
+ * Mandelbulb frame, and PoCL 3.1's double16 pow returned +inf for some bases in (0, 1). */
+inline real_t pow_nonneg(real_t x, real_t y) {
+  return exp2(y * log2(fmax(x, (real_t)FR_SCALAR_MIN)));
+}

@@ -1,17 +1,15 @@
 /* render.cl — the frame kernel: one work-item per tile of FR_TILE_W x FR_TILE_H pixels (one
  * pixel at FR_LANES 1). Rays -> march -> normals -> shadow/AO -> shade; writes linear HDR RGBA,
- * hit depth (+inf for a miss) and DE steps per pixel. Stages are compiled in by the host's
- * FR_STAGE_* defines only when the scene needs them and they are switched on. */
+ * hit depth (+inf for a miss) and DE steps per pixel. The host pastes the optional stages
+ * (shadow.cl, ao.cl) in only when the scene needs them and they are switched on. */
 
-#if FR_LANES == 1
-#define FR_STORE(v, out) (*(out) = (float)(v))
-#else
-#if FR_DOUBLE
-#define FR_TO_FLOAT(v) FR_CAT(convert_float, FR_LANES)(v)
-#else
-#define FR_TO_FLOAT(v) (v)
+/* Stage hooks: a stage file that is compiled in defines its hook; otherwise the hook does nothing
+ * and none of the stage's code is in the kernel. */
+#ifndef FR_APPLY_SHADOWS
+#define FR_APPLY_SHADOWS(shadow, p, n, h, m)
 #endif
-#define FR_STORE(v, out) FR_CAT(vstore, FR_LANES)(FR_TO_FLOAT(v), 0, (out))
+#ifndef FR_APPLY_AO
+#define FR_APPLY_AO(ao, m)
 #endif
 
 __kernel void fr_render(__constant const fr_frame_constants* fc,
@@ -35,23 +33,18 @@ __kernel void fr_render(__constant const fr_frame_constants* fc,
     n = v3_select(v3_length2(n) > (real_t)0, n, v3_neg(ray.dir));
     real_t shadow = (real_t)1;
     real_t ao = (real_t)1;
-#if FR_STAGE_SHADOWS
-    shadow = soft_shadow(v3_mad(p, n, 2 * h), v3_from_float4(fc->to_light), 4 * h, fc, params,
-                         m.hit);
-#endif
-#if FR_STAGE_AO
-    ao = step_count_ao(m.steps, fc);
-#endif
+    FR_APPLY_SHADOWS(shadow, p, n, h, m);
+    FR_APPLY_AO(ao, m);
     color = v3_select(m.hit, shade_surface(n, ray.dir, shadow, ao, fc), color);
   }
 
   /* Scatter the lanes to their pixels; tiles at the right and bottom edges are partial. */
   float r[FR_LANES], g[FR_LANES], b[FR_LANES], d[FR_LANES], s[FR_LANES];
-  FR_STORE(color.x, r);
-  FR_STORE(color.y, g);
-  FR_STORE(color.z, b);
-  FR_STORE(t_hit, d);
-  FR_STORE(m.steps, s);
+  store_lanes(color.x, r);
+  store_lanes(color.y, g);
+  store_lanes(color.z, b);
+  store_lanes(t_hit, d);
+  store_lanes(m.steps, s);
   for (int lane = 0; lane < FR_LANES; ++lane) {
     int x = tile_x + lane % FR_TILE_W;
     int y = tile_y + lane / FR_TILE_W;

@@ -16,7 +16,7 @@ vec3_t shade_surface(vec3_t normal, vec3_t view_dir, real_t shadow, real_t ao,
   real_t spec_base = fmax(v3_dot(normal, half_vec), (real_t)0);
   real_t specular = lane_select(lambert > (real_t)0,
                                 (real_t)fc->specular_strength *
-                                    pow(spec_base, (real_t)fc->specular_power),
+                                    pow_nonneg(spec_base, (real_t)fc->specular_power),
                                 0);
   vec3_t albedo = v3_from_float4(fc->albedo);
   vec3_t light = v3_from_float4(fc->light_color);

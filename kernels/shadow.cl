@@ -23,3 +23,8 @@ real_t soft_shadow(vec3_t origin, vec3_t to_light, real_t t_start,
   }
   return clamp(lit, (real_t)0, (real_t)1);
 }
+
+/* The renderer's hook (render.cl): start just off the surface, along the normal. */
+#define FR_APPLY_SHADOWS(shadow, p, n, h, m)                                                   \
+  shadow = soft_shadow(v3_mad(p, n, 2 * (h)), v3_from_float4(fc->to_light), 4 * (h), fc, params, \
+                       (m).hit)

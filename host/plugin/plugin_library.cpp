@@ -1,6 +1,7 @@
 #include "plugin/plugin_library.hpp"
 
 #include <dlfcn.h>
+#include <elf.h>
 #include <unistd.h>
 
 #include <array>
@@ -36,6 +37,35 @@ bool starts_like_elf(const std::filesystem::path& file, std::string* first_bytes
   return false;
 }
 
+// dlopen maps a truncated library and then dies of SIGBUS touching the missing pages, so check
+// first that the headers and every loadable segment lie inside the file. "" when it does.
+std::string check_elf_complete(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  in.seekg(0, std::ios::end);
+  const auto size = static_cast<uint64_t>(in.tellg());
+  in.seekg(0);
+  Elf64_Ehdr eh{};
+  if (!in.read(reinterpret_cast<char*>(&eh), sizeof eh))
+    return "truncated: " + std::to_string(size) + " bytes, shorter than an ELF header";
+  if (eh.e_ident[EI_CLASS] != ELFCLASS64 || eh.e_machine != EM_X86_64)
+    return "not a 64-bit x86-64 ELF library";
+  if (eh.e_type != ET_DYN) return "not a shared library (ELF type " + std::to_string(eh.e_type) + ")";
+  const uint64_t ph_end = eh.e_phoff + uint64_t{eh.e_phnum} * eh.e_phentsize;
+  const uint64_t sh_end = eh.e_shoff + uint64_t{eh.e_shnum} * eh.e_shentsize;
+  if (eh.e_phentsize != sizeof(Elf64_Phdr) || ph_end > size || sh_end > size)
+    return "truncated: " + std::to_string(size) + " bytes, but its headers end at byte " +
+           std::to_string(std::max(ph_end, sh_end));
+  for (unsigned i = 0; i < eh.e_phnum; ++i) {
+    Elf64_Phdr ph{};
+    in.seekg(static_cast<std::streamoff>(eh.e_phoff + uint64_t{i} * sizeof ph));
+    in.read(reinterpret_cast<char*>(&ph), sizeof ph);
+    if (ph.p_type == PT_LOAD && ph.p_offset + ph.p_filesz > size)
+      return "truncated: " + std::to_string(size) + " bytes, but a loadable segment ends at byte " +
+             std::to_string(ph.p_offset + ph.p_filesz);
+  }
+  return "";
+}
+
 }  // namespace
 
 std::shared_ptr<PluginLibrary> PluginLibrary::open(const std::filesystem::path& file,
@@ -43,6 +73,10 @@ std::shared_ptr<PluginLibrary> PluginLibrary::open(const std::filesystem::path& 
   std::string first_bytes;
   if (!starts_like_elf(file, &first_bytes)) {
     *error = "not an ELF shared library (expected bytes 7f 45 4c 46, found " + first_bytes + ")";
+    return nullptr;
+  }
+  if (std::string problem = check_elf_complete(file); !problem.empty()) {
+    *error = problem;
     return nullptr;
   }
   static std::atomic<unsigned> copy_counter{0};

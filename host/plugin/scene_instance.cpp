@@ -75,6 +75,7 @@ bool SceneInstance::update(SceneState& state, double time_s, std::string* error)
   const SceneInfo& info = scene_->info;
   state.dt_s = state.frame_index == 0 ? 0.0 : time_s - state.time_s;
   state.time_s = time_s;
+  clamp_params(info, state.params);  // the plugin only ever sees values within their limits
   if (scene_->update) {
     fr_frame_state fs{};
     fs.struct_size = sizeof(fr_frame_state);

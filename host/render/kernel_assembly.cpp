@@ -103,25 +103,26 @@ std::string stage_names(fr_features stages) {
   return out.empty() ? "none" : out;
 }
 
-AssembledKernel assemble_render_kernel(const SceneInfo& info, const std::vector<fr_value>& values,
-                                       const KernelConfig& config) {
-  const bool dbl = config.precision == Precision::Double;
-  std::ostringstream out;
-  out << "/* Fractalis render kernel for scene '" << info.id << "'. Generated; see kernels/. */\n";
+namespace {
+
+// What every kernel of a scene starts with: defines, shared structs, prelude, parameter block and
+// the scene's DE.
+void append_scene_prefix(std::ostringstream& out, const SceneInfo& info,
+                         const std::vector<fr_value>& values, const KernelConfig& config,
+                         const char* kind) {
+  out << "/* Fractalis " << kind << " kernel for scene '" << info.id << "'. Generated; see kernels/. */\n";
   out << "#define FR_LANES " << config.lanes << "\n";
-  out << "#define FR_DOUBLE " << (dbl ? 1 : 0) << "\n";
+  out << "#define FR_DOUBLE " << (config.precision == Precision::Double ? 1 : 0) << "\n";
   for (const auto& s : kOptionalStages)
     out << "#define " << s.define << " " << ((config.stages & s.feature) ? 1 : 0) << "\n";
   append_file(out, "frame_constants.h", kernel_source("frame_constants.h"));
   append_file(out, "prelude.cl", kernel_source("prelude.cl"));
   append_params(out, info, values, config.precision);
   append_file(out, info.de_source_name, info.de_source);
-  for (const char* file : {"rays.cl", "march.cl", "normals.cl"})
-    append_file(out, file, kernel_source(file));
-  for (const auto& s : kOptionalStages)
-    if (config.stages & s.feature) append_file(out, s.file, kernel_source(s.file));
-  for (const char* file : {"shade.cl", "render.cl"}) append_file(out, file, kernel_source(file));
+}
 
+AssembledKernel finish(std::ostringstream& out, const SceneInfo& info, const KernelConfig& config,
+                       const char* kind) {
   AssembledKernel k;
   k.source = out.str();
   // No -cl-fast-relaxed-math: it permits atan2 as atan(y/x) and finite-math-only, which break
@@ -129,9 +130,34 @@ AssembledKernel assemble_render_kernel(const SceneInfo& info, const std::vector<
   // 205 ms with it, 200 ms without, before the exp2/native trig changes). mad contraction costs
   // little accuracy and is checked against the double build by the tests.
   k.build_options = "-cl-std=CL1.2 -cl-mad-enable";
-  k.description = "scene '" + info.id + "' (lanes " + std::to_string(config.lanes) + ", " +
-                  (dbl ? "double" : "float") + ", stages: " + stage_names(config.stages) + ")";
+  k.description = "scene '" + info.id + "' " + kind + " kernel (lanes " + std::to_string(config.lanes) +
+                  ", " + (config.precision == Precision::Double ? "double" : "float") +
+                  ", stages: " + stage_names(config.stages) + ")";
   return k;
+}
+
+}  // namespace
+
+AssembledKernel assemble_render_kernel(const SceneInfo& info, const std::vector<fr_value>& values,
+                                       const KernelConfig& config) {
+  std::ostringstream out;
+  append_scene_prefix(out, info, values, config, "render");
+  for (const char* file : {"rays.cl", "march.cl", "normals.cl"})
+    append_file(out, file, kernel_source(file));
+  for (const auto& s : kOptionalStages)
+    if (config.stages & s.feature) append_file(out, s.file, kernel_source(s.file));
+  for (const char* file : {"shade.cl", "render.cl"}) append_file(out, file, kernel_source(file));
+  return finish(out, info, config, "render");
+}
+
+AssembledKernel assemble_probe_kernel(const SceneInfo& info, const std::vector<fr_value>& values,
+                                      const KernelConfig& config) {
+  std::ostringstream out;
+  KernelConfig no_stages = config;
+  no_stages.stages = 0;
+  append_scene_prefix(out, info, values, no_stages, "DE probe");
+  append_file(out, "probe.cl", kernel_source("probe.cl"));
+  return finish(out, info, no_stages, "DE probe");
 }
 
 std::vector<uint8_t> pack_scene_params(const SceneInfo& info, const std::vector<fr_value>& values) {

@@ -45,6 +45,10 @@ std::string stage_names(fr_features stages);
 AssembledKernel assemble_render_kernel(const SceneInfo& info, const std::vector<fr_value>& values,
                                        const KernelConfig& config);
 
+// The scene's DE alone, as kernel fr_probe_de (kernels/probe.cl); config.stages is ignored.
+AssembledKernel assemble_probe_kernel(const SceneInfo& info, const std::vector<fr_value>& values,
+                                      const KernelConfig& config);
+
 // The kernel-side parameter block: runtime (non-specialised) parameters in table order, each
 // float/int/bool as 4 bytes and each vec3/color as float[3]; at least 4 bytes.
 std::vector<uint8_t> pack_scene_params(const SceneInfo& info, const std::vector<fr_value>& values);

@@ -15,6 +15,7 @@ extern const char fr_kernel_ao_cl[];
 extern const char fr_kernel_shade_cl[];
 extern const char fr_kernel_render_cl[];
 extern const char fr_kernel_post_cl[];
+extern const char fr_kernel_probe_cl[];
 }
 
 namespace fr {
@@ -35,6 +36,7 @@ std::string_view kernel_source(std::string_view name) {
       {"shade.cl", fr_kernel_shade_cl},
       {"render.cl", fr_kernel_render_cl},
       {"post.cl", fr_kernel_post_cl},
+      {"probe.cl", fr_kernel_probe_cl},
   };
   for (const auto& e : entries)
     if (e.name == name) return e.text;

@@ -148,6 +148,8 @@ std::vector<SettingsProblem> load_settings_file(const std::filesystem::path& fil
   };
   effect("render.effects.shadows", FR_FEATURE_SHADOWS);
   effect("render.effects.ao", FR_FEATURE_AO);
+  std::stable_sort(r.problems.begin(), r.problems.end(),
+                   [](const SettingsProblem& a, const SettingsProblem& b) { return a.line < b.line; });
   return r.problems;
 }
 

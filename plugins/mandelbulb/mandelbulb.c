@@ -21,12 +21,14 @@ static const fr_param_desc iterations = {
     "iterations", "Iterations", "Fractal",
     "Maximum escape-time iterations; more gives finer detail and costs time.",
     {{8, 0, 0}}, {{1, 0, 0}}, {{64, 0, 0}}};
-/* With r < bailout before a step, r^n < bailout^16 = 2^96 stays far below FLT_MAX = 2^128. */
+/* With r < B before a step, the next |z| is at most B^n + B, and the DE squares it to take its
+ * length: (B^n + B)^2 must stay below FLT_MAX = 2^128 for n up to 16, so B^16 < 2^63 or so.
+ * B = 12 gives 12^16 = 1.8e17 and (1.8e17)^2 = 3.4e34, with room to spare; 16 would overflow. */
 static const fr_param_desc bailout = {
     sizeof(fr_param_desc), FR_PARAM_FLOAT, FR_PARAM_LOG_SCALE, 0,
     "bailout", "Bailout radius", "Fractal",
-    "Escape radius; at most 64 so that bailout^power stays finite in float.",
-    {{2, 0, 0}}, {{1.5, 0, 0}}, {{64, 0, 0}}};
+    "Escape radius; at most 12 so that bailout^power, squared, stays finite in float.",
+    {{2, 0, 0}}, {{1.5, 0, 0}}, {{12, 0, 0}}};
 static const fr_param_desc animate = {
     sizeof(fr_param_desc), FR_PARAM_BOOL, 0, 0,
     "animate_power", "Animate power", "Animation",

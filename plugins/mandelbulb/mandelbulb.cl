@@ -18,8 +18,7 @@ real_t scene_de(vec3_t p, __constant const scene_params_t* params) {
     real_t safe_r = fmax(r, to_real(FR_SCALAR_EPSILON * FR_SCALAR_EPSILON));
     real_t theta = acos(clamp(z.z / safe_r, to_real(-1), to_real(1))) * power;
     real_t phi = atan2(z.y, z.x) * power;
-    /* r^(n-1) as exp2(log2): pow's extra-precise path cost half the frame on PoCL. */
-    real_t r_pow = exp2((power - to_real(1)) * log2(safe_r));
+    real_t r_pow = pow_nonneg(safe_r, power - to_real(1));
     dr = lane_select(live, power * r_pow * dr + to_real(1), dr);
     real_t zr = r_pow * r;
     real_t sin_theta = fast_sin(theta);

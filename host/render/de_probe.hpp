@@ -1,0 +1,20 @@
+// de_probe.hpp — the scene's distance estimate at arbitrary points, computed on the device by
+// the scene's own OpenCL DE (kernels/probe.cl). There is no C++ copy of any DE.
+#pragma once
+
+#include "plugin/scene_info.hpp"
+#include "render/cl_runtime.hpp"
+#include "render/render_settings.hpp"
+
+#include <array>
+#include <vector>
+
+namespace fr {
+
+// DE values at `points` (world space) with parameter values `params`. lanes 0 picks the
+// device's width. Throws KernelBuildError or ClError like the renderer.
+std::vector<float> probe_de(ClRuntime& runtime, const SceneInfo& info, const std::vector<fr_value>& params,
+                            const std::vector<std::array<float, 3>>& points, int lanes = 0,
+                            Precision precision = Precision::Float);
+
+}  // namespace fr

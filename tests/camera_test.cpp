@@ -1,0 +1,99 @@
+// The seed camera model against rays computed by hand from its formulas.
+#include "render/camera.hpp"
+
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+
+namespace fr {
+namespace {
+
+fr_camera make_camera(glm::dvec3 eye, glm::dvec3 target, glm::dvec3 up, double fov_deg) {
+  fr_camera c{};
+  c.struct_size = sizeof c;
+  for (int i = 0; i < 3; ++i) {
+    c.eye[i] = eye[i];
+    c.target[i] = target[i];
+    c.up[i] = up[i];
+  }
+  c.fov_deg = fov_deg;
+  return c;
+}
+
+void expect_dir(glm::dvec3 got, glm::dvec3 unnormalised_expected) {
+  const glm::dvec3 e = glm::normalize(unnormalised_expected);
+  EXPECT_NEAR(got.x, e.x, 1e-12);
+  EXPECT_NEAR(got.y, e.y, 1e-12);
+  EXPECT_NEAR(got.z, e.z, 1e-12);
+}
+
+// Eye (0,0,5) looking at the origin, up +y, fov 90, 3x3: t = (0,0,-5), b = w x t = (-5,0,0),
+// v = t x b = (0,25,0); g_x = tan 45 = 1, g_y = 1 * 3/3 = 1; q_x = (-1,0,0), q_y = (0,1,0);
+// p_1m = (0,0,-1) - 1*(-1,0,0) - 1*(0,1,0) = (1,-1,-1).
+TEST(Camera, SeedVectorsByHand) {
+  const CameraRays r = make_camera_rays(make_camera({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 90), 3, 3);
+  EXPECT_NEAR(glm::length(r.first_pixel_dir - glm::dvec3(1, -1, -1)), 0, 1e-12);
+  EXPECT_NEAR(glm::length(r.pixel_step_x - glm::dvec3(-1, 0, 0)), 0, 1e-12);
+  EXPECT_NEAR(glm::length(r.pixel_step_y - glm::dvec3(0, 1, 0)), 0, 1e-12);
+  EXPECT_NEAR(r.pixel_angle_rad, std::atan(1.0), 1e-12);
+}
+
+TEST(Camera, CornerAndCentreRays) {
+  const CameraRays r = make_camera_rays(make_camera({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 90), 3, 3);
+  expect_dir(camera_ray_dir(r, 1, 1), {0, 0, -1});    // centre
+  expect_dir(camera_ray_dir(r, 0, 0), {-1, 1, -1});   // top-left: left is -x, up is +y
+  expect_dir(camera_ray_dir(r, 2, 0), {1, 1, -1});    // top-right
+  expect_dir(camera_ray_dir(r, 0, 2), {-1, -1, -1});  // bottom-left
+  expect_dir(camera_ray_dir(r, 2, 2), {1, -1, -1});   // bottom-right = p_1m
+}
+
+// 4x2 image, fov 60: g_x = tan 30 = 0.5773503, g_y = g_x * 2/4 = 0.2886751;
+// q_x = 2 g_x / 3 * (-1,0,0), q_y = 2 g_y / 1 * (0,1,0); p_1m = (g_x, -g_y, -1).
+// Pixel (0,0) uses i-1 = 3, j-1 = 1: (g_x - 2 g_x, -g_y + 2 g_y, -1) = (-g_x, g_y, -1).
+TEST(Camera, NonSquareImage) {
+  const double gx = std::tan(M_PI / 6), gy = gx * 2 / 4;
+  const CameraRays r = make_camera_rays(make_camera({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 60), 4, 2);
+  expect_dir(camera_ray_dir(r, 0, 0), {-gx, gy, -1});
+  expect_dir(camera_ray_dir(r, 3, 1), {gx, -gy, -1});
+  expect_dir(camera_ray_dir(r, 1, 0), {-gx + 2 * gx / 3, gy, -1});
+}
+
+// Looking along +x from (1,2,3) with up +z: forward (1,0,0), left = z x x = (0,1,0), up (0,0,1).
+TEST(Camera, RotatedFrame) {
+  const CameraRays r = make_camera_rays(make_camera({1, 2, 3}, {4, 2, 3}, {0, 0, 2}, 90), 3, 3);
+  EXPECT_EQ(r.eye, glm::dvec3(1, 2, 3));
+  expect_dir(camera_ray_dir(r, 1, 1), {1, 0, 0});
+  expect_dir(camera_ray_dir(r, 0, 0), {1, 1, 1});    // top-left: left (+y) and up (+z)
+  expect_dir(camera_ray_dir(r, 2, 2), {1, -1, -1});  // bottom-right
+}
+
+// The up vector need not be perpendicular to the view: only its component across the view
+// matters.
+TEST(Camera, UpIsOrthogonalised) {
+  const CameraRays a = make_camera_rays(make_camera({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 50), 8, 6);
+  const CameraRays b = make_camera_rays(make_camera({0, 0, 5}, {0, 0, 0}, {0, 3, -2}, 50), 8, 6);
+  for (double x : {0.0, 3.5, 7.0})
+    for (double y : {0.0, 5.0}) {
+      EXPECT_NEAR(glm::length(camera_ray_dir(a, x, y) - camera_ray_dir(b, x, y)), 0, 1e-12);
+    }
+}
+
+TEST(Camera, RejectsDegenerateCameras) {
+  EXPECT_TRUE(check_camera(make_camera({1, 1, 1}, {1, 1, 1}, {0, 1, 0}, 45)).has_value());
+  EXPECT_TRUE(check_camera(make_camera({0, 0, 5}, {0, 0, 0}, {0, 0, 1}, 45)).has_value());
+  EXPECT_TRUE(check_camera(make_camera({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 0)).has_value());
+  EXPECT_TRUE(check_camera(make_camera({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 180)).has_value());
+  EXPECT_TRUE(check_camera(make_camera({0, 0, NAN}, {0, 0, 0}, {0, 1, 0}, 45)).has_value());
+  EXPECT_FALSE(check_camera(make_camera({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 45)).has_value());
+  EXPECT_EQ(*check_camera(make_camera({1, 1, 1}, {1, 1, 1}, {0, 1, 0}, 45)), "target equals eye");
+}
+
+TEST(Camera, SinglePixelLooksAtTarget) {
+  const CameraRays r = make_camera_rays(make_camera({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 45), 1, 1);
+  expect_dir(camera_ray_dir(r, 0, 0), {0, 0, -1});
+}
+
+}  // namespace
+}  // namespace fr

@@ -1,0 +1,99 @@
+// The CLI's error paths: every wrong option or value gets one line naming it and exit code 2.
+#include "cli/cli.hpp"
+#include "test_support.hpp"
+
+#include <sstream>
+
+namespace fr {
+namespace {
+
+struct CliRun {
+  int code;
+  std::string out, err;
+};
+
+CliRun run(std::vector<std::string> args) {
+  std::ostringstream out, err;
+  int code = run_cli(args, out, err);
+  return {code, out.str(), err.str()};
+}
+
+void expect_usage_error(std::vector<std::string> args, const std::string& message_part) {
+  const CliRun r = run(args);
+  std::string joined;
+  for (const auto& a : args) joined += a + " ";
+  EXPECT_EQ(r.code, 2) << joined << "\n" << r.err;
+  EXPECT_NE(r.err.find(message_part), std::string::npos) << joined << " said: " << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line: " << r.err;
+  EXPECT_EQ(r.err.rfind("fractalis: error: ", 0), 0u) << r.err;
+}
+
+TEST(Cli, UsageErrors) {
+  expect_usage_error({"frobnicate"}, "unknown command 'frobnicate'");
+  expect_usage_error({"render", "--bogus"}, "unknown option '--bogus'");
+  expect_usage_error({"render", "--out"}, "option '--out' needs a value");
+  expect_usage_error({"render", "--scene", "nope"}, "unknown scene 'nope' (available: mandelbulb");
+  expect_usage_error({"render", "--param", "nokey=1"}, "has no parameter 'nokey'");
+  expect_usage_error({"render", "--param", "power"}, "expected KEY=VALUE");
+  expect_usage_error({"render", "--param", "power=nan"}, "'nan' is not a finite number");
+  expect_usage_error({"render", "--param", "power=inf"}, "is not a finite number");
+  expect_usage_error({"render", "--param", "power=abc"}, "'abc' is not a number");
+  expect_usage_error({"render", "--param", "power=40"}, "outside the range of 'power'");
+  expect_usage_error({"render", "--param", "iterations=2.5"}, "not a whole number");
+  expect_usage_error({"render", "--param", "animate_power=maybe"}, "expected true or false");
+  expect_usage_error({"render", "--size", "0x10"}, "--size width: 0 is outside [1, 16384]");
+  expect_usage_error({"render", "--size", "100000x100000"}, "outside [1, 16384]");
+  expect_usage_error({"render", "--size", "big"}, "is not WIDTHxHEIGHT");
+  expect_usage_error({"render", "--eye", "1,2,3", "--target", "1,2,3"}, "camera: target equals eye");
+  expect_usage_error({"render", "--eye", "1,2"}, "not three comma-separated numbers");
+  expect_usage_error({"render", "--fov", "200"}, "outside (0, 180) degrees");
+  expect_usage_error({"render", "--lanes", "3"}, "--lanes: expected 1, 4, 8 or 16");
+  expect_usage_error({"render", "--precision", "half"}, "expected float or double");
+  expect_usage_error({"render", "--device", "no-such-device"}, "--device no-such-device: matches no device");
+  expect_usage_error({"render", "--plugins", "/no/such/folder"}, "--plugins: '/no/such/folder' is not a folder");
+  expect_usage_error({"render", "--config", "/no/such/file.toml"}, "--config: no such file");
+  expect_usage_error({"bench", "--frames", "0"}, "--frames: 0 is outside");
+  expect_usage_error({"list", "--size", "1x1"}, "unknown option '--size' for 'list'");
+}
+
+TEST(Cli, HelpAndVersion) {
+  for (const char* command : {"render", "bench", "list", "devices"}) {
+    const CliRun r = run({command, "--help"});
+    EXPECT_EQ(r.code, 0) << command;
+    EXPECT_NE(r.out.find(std::string("usage: fractalis ") + command), std::string::npos) << r.out;
+  }
+  const CliRun v = run({"--version"});
+  EXPECT_EQ(v.code, 0);
+  EXPECT_NE(v.out.find("scene ABI 1.0"), std::string::npos);
+  EXPECT_EQ(run({}).code, 2);
+}
+
+TEST(Cli, RenderWritesPng) {
+  const auto dir = test::fresh_dir("cli_render");
+  const auto file = (dir / "small.png").string();
+  const CliRun r = run({"render", "--size", "32x24", "--out", file, "--param", "power=6"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("wrote " + file), std::string::npos);
+  EXPECT_TRUE(std::filesystem::exists(file));
+}
+
+TEST(Cli, ListShowsParametersAndFailures) {
+  const CliRun ok = run({"list"});
+  EXPECT_EQ(ok.code, 0);
+  EXPECT_NE(ok.out.find("mandelbulb 1.0.0"), std::string::npos) << ok.out;
+  EXPECT_NE(ok.out.find("--param power=8  float in [2, 16]"), std::string::npos) << ok.out;
+  const CliRun fixtures = run({"list", "--plugins", FIXTURE_PLUGIN_DIR});
+  EXPECT_EQ(fixtures.code, 0);
+  EXPECT_NE(fixtures.out.find("fixture_wrong_major.so: FAILED (wrong ABI major): wrong ABI major: plugin 2, host 1"),
+            std::string::npos)
+      << fixtures.out;
+}
+
+TEST(Cli, Devices) {
+  const CliRun r = run({"devices"});
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("[default]"), std::string::npos) << r.out;
+}
+
+}  // namespace
+}  // namespace fr

@@ -1,0 +1,128 @@
+// The Mandelbulb's DE evaluated on the device (the scene's own OpenCL source) against values
+// derived by hand, at the numerically awkward points, over its whole parameter range.
+#include "plugin/scene_instance.hpp"
+#include "render/de_probe.hpp"
+#include "test_support.hpp"
+
+#include <cmath>
+#include <random>
+
+namespace fr {
+namespace {
+
+class MandelbulbDe : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    scene = test::mandelbulb();
+    ASSERT_TRUE(scene);
+    values = make_default_state(scene->info).params;
+  }
+  void set(const char* key, double v) { values[scene->info.find_param(key)].v[0] = v; }
+  std::vector<float> probe(const std::vector<std::array<float, 3>>& points, int lanes = 16,
+                           Precision precision = Precision::Float) {
+    return probe_de(test::runtime(), scene->info, values, points, lanes, precision);
+  }
+  std::shared_ptr<const LoadedScene> scene;
+  std::vector<fr_value> values;
+};
+
+std::vector<std::array<float, 3>> awkward_points() {
+  std::vector<std::array<float, 3>> pts = {{0, 0, 0}, {1e-30f, 0, 0}, {0, 0, 1e-30f}};
+  for (float z = -3; z <= 3; z += 0.25f) pts.push_back({0, 0, z});          // the polar axis
+  for (float z = -2; z <= 2; z += 0.5f) pts.push_back({1e-7f, -1e-7f, z});  // next to it
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> u(-3, 3);
+  for (int i = 0; i < 300; ++i) pts.push_back({u(rng), u(rng), u(rng)});
+  return pts;
+}
+
+// Finite everywhere — origin, polar axis, far away — at the extremes of every parameter.
+TEST_F(MandelbulbDe, FiniteOverParameterRange) {
+  const auto pts = awkward_points();
+  struct Case {
+    double power, bailout, iterations;
+  };
+  for (Case c : {Case{2, 12, 64}, Case{16, 12, 64}, Case{16, 1.5, 1}, Case{8, 2, 8}}) {
+    set("power", c.power);
+    set("bailout", c.bailout);
+    set("iterations", c.iterations);
+    const auto de = probe(pts);
+    for (size_t i = 0; i < pts.size(); ++i)
+      ASSERT_TRUE(std::isfinite(de[i])) << "power " << c.power << " bailout " << c.bailout << " iterations "
+                                        << c.iterations << " at (" << pts[i][0] << "," << pts[i][1] << ","
+                                        << pts[i][2] << "): " << de[i];
+  }
+}
+
+// One iteration from p = (x, 0, 0), power 8: r = x, theta = pi/2, phi = 0, so
+// z1 = x^8 (sin 4pi, 0, cos 4pi) + p = (x, 0, x^8), dr1 = 8 x^7 + 1, DE = 0.5 r1 ln r1 / dr1.
+TEST_F(MandelbulbDe, OneIterationByHand) {
+  set("iterations", 1);
+  std::vector<std::array<float, 3>> pts;
+  std::vector<double> expected;
+  for (double x : {0.6, 1.1, 1.5, 1.9}) {
+    pts.push_back({static_cast<float>(x), 0, 0});
+    const double r1 = std::sqrt(x * x + std::pow(x, 16));
+    expected.push_back(0.5 * r1 * std::log(r1) / (8 * std::pow(x, 7) + 1));
+  }
+  for (int lanes : {1, 16})
+    for (Precision p : {Precision::Float, Precision::Double}) {
+      const auto de = probe(pts, lanes, p);
+      for (size_t i = 0; i < pts.size(); ++i)
+        EXPECT_NEAR(de[i], expected[i], 2e-5 * std::abs(expected[i]) + 1e-6)
+            << "x = " << pts[i][0] << " lanes " << lanes << (p == Precision::Double ? " double" : " float");
+    }
+}
+
+TEST_F(MandelbulbDe, LaneWidthsAgree) {
+  const auto pts = awkward_points();
+  const auto one = probe(pts, 1), sixteen = probe(pts, 16), eight = probe(pts, 8);
+  for (size_t i = 0; i < pts.size(); ++i) {
+    EXPECT_NEAR(sixteen[i], one[i], 1e-5f * std::abs(one[i]) + 1e-6f) << i;
+    EXPECT_NEAR(eight[i], one[i], 1e-5f * std::abs(one[i]) + 1e-6f) << i;
+  }
+}
+
+// Outside the set the DE is positive: on the sphere |p| = bounding radius (for several powers)
+// every point escapes, as the bound's proof says.
+TEST_F(MandelbulbDe, BoundingSphereIsOutsideTheSet) {
+  std::mt19937 rng(11);
+  std::normal_distribution<float> g;
+  for (double power : {2.0, 3.0, 8.0, 16.0}) {
+    set("power", power);
+    std::string error;
+    auto instance = SceneInstance::create(scene, &error);
+    SceneState state = make_default_state(scene->info);
+    state.params = values;
+    ASSERT_TRUE(instance->update(state, 0, &error)) << error;
+    EXPECT_NEAR(state.bounding_radius, 1.02 * std::pow(2.0, 1.0 / (power - 1)) + 0.02, 1e-12);
+    std::vector<std::array<float, 3>> pts;
+    for (int i = 0; i < 200; ++i) {
+      float x = g(rng), y = g(rng), z = g(rng);
+      const float s = static_cast<float>(state.bounding_radius) / std::sqrt(x * x + y * y + z * z);
+      pts.push_back({x * s, y * s, z * s});
+    }
+    const auto de = probe(pts);
+    for (size_t i = 0; i < pts.size(); ++i) EXPECT_GT(de[i], 0.0f) << "power " << power << " point " << i;
+  }
+}
+
+// Animation is a function of time only: centre + depth * sin(2 pi speed t).
+TEST_F(MandelbulbDe, AnimatedPowerFollowsTime) {
+  std::string error;
+  auto instance = SceneInstance::create(scene, &error);
+  SceneState state = make_default_state(scene->info);
+  const int power = scene->info.find_param("power");
+  ASSERT_TRUE(instance->update(state, 1.25, &error));
+  EXPECT_EQ(state.params[power].v[0], 8.0) << "animation is off by default";
+  state.params[scene->info.find_param("animate_power")].v[0] = 1;
+  ASSERT_TRUE(instance->update(state, 1.25, &error));
+  // speed 0.1, t = 1.25: sin(2 pi * 0.125) = sin(pi/4).
+  EXPECT_NEAR(state.params[power].v[0], 8 + 2 * std::sqrt(0.5), 1e-12);
+  ASSERT_TRUE(instance->update(state, 7.0, &error));
+  ASSERT_TRUE(instance->update(state, 1.25, &error));
+  EXPECT_NEAR(state.params[power].v[0], 8 + 2 * std::sqrt(0.5), 1e-12) << "same time, same state";
+}
+
+}  // namespace
+}  // namespace fr

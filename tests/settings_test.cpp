@@ -1,0 +1,69 @@
+// The settings loader's errors: file, line, key and what was expected; unknown keys named with
+// the nearest known key; good values still apply when another is wrong.
+#include "settings/settings.hpp"
+#include "test_support.hpp"
+
+#include <fstream>
+
+namespace fr {
+namespace {
+
+std::filesystem::path write_file(const std::string& name, const std::string& text) {
+  auto path = std::filesystem::path(TEST_OUTPUT_DIR) / name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+TEST(Settings, GoodFileApplies) {
+  Settings s;
+  auto file = write_file("good.toml",
+                         "[plugins]\nfolders = [\"/tmp/a\", \"/tmp/b\"]\n[device]\nselect = \"cpu\"\n"
+                         "[render]\nlanes = 8\nprecision = \"double\"\n[render.effects]\nao = false\n");
+  auto problems = load_settings_file(file, s);
+  EXPECT_TRUE(problems.empty()) << problems.front().to_string();
+  ASSERT_EQ(s.plugin_folders.size(), 2u);
+  EXPECT_EQ(s.plugin_folders[1], "/tmp/b");
+  EXPECT_EQ(s.device, "cpu");
+  EXPECT_EQ(s.render.lanes, 8);
+  EXPECT_EQ(s.render.precision, Precision::Double);
+  EXPECT_EQ(s.render.disabled_stages, FR_FEATURE_AO);
+}
+
+TEST(Settings, BadTomlNamesFileAndLine) {
+  Settings s;
+  auto file = write_file("bad_syntax.toml", "[render]\nlanes = 16\nprecision = \"float\n");
+  auto problems = load_settings_file(file, s);
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_EQ(problems[0].line, 3);
+  EXPECT_NE(problems[0].to_string().find("bad_syntax.toml:3:"), std::string::npos) << problems[0].to_string();
+}
+
+TEST(Settings, WrongTypeAndRangeKeepDefaults) {
+  Settings s;
+  auto file = write_file("wrong_type.toml", "[render]\nlanes = \"sixteen\"\nmax_steps = -4\nexposure = 2.0\n");
+  auto problems = load_settings_file(file, s);
+  ASSERT_EQ(problems.size(), 2u);
+  EXPECT_EQ(problems[0].key, "render.lanes");
+  EXPECT_EQ(problems[0].line, 2);
+  EXPECT_NE(problems[0].message.find("1, 4, 8, 16"), std::string::npos);
+  EXPECT_EQ(problems[1].key, "render.max_steps");
+  EXPECT_EQ(problems[1].line, 3);
+  EXPECT_EQ(s.render.lanes, RenderSettings{}.lanes);
+  EXPECT_EQ(s.render.max_steps, RenderSettings{}.max_steps);
+  EXPECT_EQ(s.render.exposure, 2.0f) << "the good value still applies";
+}
+
+TEST(Settings, UnknownKeyNamesNearest) {
+  Settings s;
+  auto file = write_file("typo.toml", "[render]\nlanse = 16\n[plugin]\nfolders = []\n");
+  auto problems = load_settings_file(file, s);
+  ASSERT_EQ(problems.size(), 2u);
+  EXPECT_EQ(problems[0].key, "render.lanse");
+  EXPECT_NE(problems[0].message.find("did you mean 'render.lanes'"), std::string::npos) << problems[0].message;
+  EXPECT_EQ(problems[0].line, 2);
+  EXPECT_EQ(problems[1].key, "plugin");
+  EXPECT_NE(problems[1].message.find("plugins.folders"), std::string::npos) << problems[1].message;
+}
+
+}  // namespace
+}  // namespace fr
