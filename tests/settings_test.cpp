@@ -67,3 +67,26 @@ TEST(Settings, UnknownKeyNamesNearest) {
 
 }  // namespace
 }  // namespace fr
+
+namespace fr {
+namespace {
+
+// config/default.toml documents the built-in defaults: it must load cleanly and say the same.
+TEST(Settings, DefaultFileMatchesBuiltInDefaults) {
+  Settings from_file;
+  const auto problems = load_settings_file(std::filesystem::path(SOURCE_DIR) / "config" / "default.toml", from_file);
+  EXPECT_TRUE(problems.empty()) << problems.front().to_string();
+  const Settings builtin;
+  EXPECT_EQ(from_file.plugin_folders, builtin.plugin_folders);
+  EXPECT_EQ(from_file.device, builtin.device);
+  EXPECT_EQ(from_file.render.lanes, builtin.render.lanes);
+  EXPECT_EQ(from_file.render.precision, builtin.render.precision);
+  EXPECT_EQ(from_file.render.max_steps, builtin.render.max_steps);
+  EXPECT_EQ(from_file.render.hit_threshold_k, builtin.render.hit_threshold_k);
+  EXPECT_EQ(from_file.render.exposure, builtin.render.exposure);
+  EXPECT_EQ(from_file.render.ao_strength, builtin.render.ao_strength);
+  EXPECT_EQ(from_file.render.disabled_stages, builtin.render.disabled_stages);
+}
+
+}  // namespace
+}  // namespace fr
