@@ -44,13 +44,16 @@ TEST(Cli, UsageErrors) {
   expect_usage_error({"render", "--size", "0x10"}, "--size width: 0 is outside [1, 16384]");
   expect_usage_error({"render", "--size", "100000x100000"}, "outside [1, 16384]");
   expect_usage_error({"render", "--size", "big"}, "is not WIDTHxHEIGHT");
-  expect_usage_error({"render", "--eye", "1,2,3", "--target", "1,2,3"}, "camera: target equals eye");
+  expect_usage_error({"render", "--eye", "1,2,3", "--target", "1,2,3"},
+                     "camera: target equals eye");
   expect_usage_error({"render", "--eye", "1,2"}, "not three comma-separated numbers");
   expect_usage_error({"render", "--fov", "200"}, "outside (0, 180) degrees");
   expect_usage_error({"render", "--lanes", "3"}, "--lanes: expected 1, 4, 8 or 16");
   expect_usage_error({"render", "--precision", "half"}, "expected float or double");
-  expect_usage_error({"render", "--device", "no-such-device"}, "--device no-such-device: matches no device");
-  expect_usage_error({"render", "--plugins", "/no/such/folder"}, "--plugins: '/no/such/folder' is not a folder");
+  expect_usage_error({"render", "--device", "no-such-device"},
+                     "--device no-such-device: matches no device");
+  expect_usage_error({"render", "--plugins", "/no/such/folder"},
+                     "--plugins: '/no/such/folder' is not a folder");
   expect_usage_error({"render", "--config", "/no/such/file.toml"}, "--config: no such file");
   expect_usage_error({"bench", "--frames", "0"}, "--frames: 0 is outside");
   expect_usage_error({"list", "--size", "1x1"}, "unknown option '--size' for 'list'");
@@ -84,8 +87,10 @@ TEST(Cli, ListShowsParametersAndFailures) {
   EXPECT_NE(ok.out.find("--param power=8  float in [2, 16]"), std::string::npos) << ok.out;
   const CliRun fixtures = run({"list", "--plugins", FIXTURE_PLUGIN_DIR});
   EXPECT_EQ(fixtures.code, 0);
-  EXPECT_NE(fixtures.out.find("fixture_wrong_major.so: FAILED (wrong ABI major): wrong ABI major: plugin 2, host 1"),
-            std::string::npos)
+  EXPECT_NE(
+      fixtures.out.find(
+          "fixture_wrong_major.so: FAILED (wrong ABI major): wrong ABI major: plugin 2, host 1"),
+      std::string::npos)
       << fixtures.out;
 }
 

@@ -1,8 +1,8 @@
 // Kernel assembly: only the stages a scene needs (and the user left on) are in the source, the
 // parameter block matches the table, specialised parameters are baked in — and what is
 // assembled actually compiles.
-#include "plugin/scene_instance.hpp"
 #include "render/kernel_assembly.hpp"
+#include "plugin/scene_instance.hpp"
 #include "render/renderer.hpp"
 #include "test_support.hpp"
 
@@ -47,7 +47,8 @@ TEST(KernelAssembly, MandelbulbHasNoShadowStage) {
   const SceneInfo& info = scene->info;
   ASSERT_EQ(info.features & FR_FEATURE_SHADOWS, 0u) << "the Mandelbulb does not declare shadows";
   const auto state = make_default_state(info);
-  const auto k = assemble_render_kernel(info, state.params, {16, Precision::Float, enabled_stages(info, 0)});
+  const auto k =
+      assemble_render_kernel(info, state.params, {16, Precision::Float, enabled_stages(info, 0)});
   EXPECT_FALSE(contains(k.source, "soft_shadow"));
   EXPECT_FALSE(contains(k.source, "#line 1 \"shadow.cl\""));
   EXPECT_TRUE(contains(k.source, "#define FR_STAGE_SHADOWS 0"));
@@ -58,10 +59,12 @@ TEST(KernelAssembly, MandelbulbHasNoShadowStage) {
 TEST(KernelAssembly, StageSwitchedOffByUserIsAbsent) {
   const SceneInfo info = sphere_scene(FR_FEATURE_AO | FR_FEATURE_SHADOWS);
   const auto values = make_default_state(info).params;
-  const auto all = assemble_render_kernel(info, values, {1, Precision::Float, enabled_stages(info, 0)});
+  const auto all =
+      assemble_render_kernel(info, values, {1, Precision::Float, enabled_stages(info, 0)});
   EXPECT_TRUE(contains(all.source, "soft_shadow"));
   EXPECT_TRUE(contains(all.source, "step_count_ao"));
-  const auto no_ao = assemble_render_kernel(info, values, {1, Precision::Float, enabled_stages(info, FR_FEATURE_AO)});
+  const auto no_ao = assemble_render_kernel(
+      info, values, {1, Precision::Float, enabled_stages(info, FR_FEATURE_AO)});
   EXPECT_TRUE(contains(no_ao.source, "soft_shadow"));
   EXPECT_FALSE(contains(no_ao.source, "step_count_ao"));
   EXPECT_TRUE(contains(no_ao.description, "stages: shadows"));
@@ -74,7 +77,9 @@ TEST(KernelAssembly, ParameterBlockAndSpecialisation) {
   EXPECT_TRUE(contains(k.source, "  float radius;\n"));
   EXPECT_FALSE(contains(k.source, "tint[3];")) << "a specialised parameter is not in the block";
   EXPECT_TRUE(contains(k.source, "#define FR_PARAM_radius ((scalar_t)params->radius)"));
-  EXPECT_TRUE(contains(k.source, "#define FR_PARAM_tint v3s(((scalar_t)0.25f), ((scalar_t)0.5f), ((scalar_t)0.75f))"));
+  EXPECT_TRUE(contains(
+      k.source,
+      "#define FR_PARAM_tint v3s(((scalar_t)0.25f), ((scalar_t)0.5f), ((scalar_t)0.75f))"));
   // A new specialised value is a new source (and so a new cached program).
   values[1].v[0] = 0.125;
   const auto k2 = assemble_render_kernel(info, values, {16, Precision::Float, 0});
@@ -110,11 +115,13 @@ TEST(KernelAssembly, EveryStageCombinationCompiles) {
   settings.width_px = 8;
   settings.height_px = 8;
   for (int lanes : {1, 16})
-    for (fr_features off : {fr_features{0}, fr_features{FR_FEATURE_AO}, fr_features{FR_FEATURE_SHADOWS},
-                            fr_features{FR_FEATURE_AO | FR_FEATURE_SHADOWS}}) {
+    for (fr_features off :
+         {fr_features{0}, fr_features{FR_FEATURE_AO}, fr_features{FR_FEATURE_SHADOWS},
+          fr_features{FR_FEATURE_AO | FR_FEATURE_SHADOWS}}) {
       settings.lanes = lanes;
       settings.disabled_stages = off;
-      EXPECT_NO_THROW(renderer.render(info, state, settings)) << "lanes " << lanes << " off " << off;
+      EXPECT_NO_THROW(renderer.render(info, state, settings))
+          << "lanes " << lanes << " off " << off;
     }
   const size_t built = test::runtime().programs_built();
   settings.lanes = 16;

@@ -48,9 +48,9 @@ TEST_F(MandelbulbDe, FiniteOverParameterRange) {
     set("iterations", c.iterations);
     const auto de = probe(pts);
     for (size_t i = 0; i < pts.size(); ++i)
-      ASSERT_TRUE(std::isfinite(de[i])) << "power " << c.power << " bailout " << c.bailout << " iterations "
-                                        << c.iterations << " at (" << pts[i][0] << "," << pts[i][1] << ","
-                                        << pts[i][2] << "): " << de[i];
+      ASSERT_TRUE(std::isfinite(de[i]))
+          << "power " << c.power << " bailout " << c.bailout << " iterations " << c.iterations
+          << " at (" << pts[i][0] << "," << pts[i][1] << "," << pts[i][2] << "): " << de[i];
   }
 }
 
@@ -70,7 +70,8 @@ TEST_F(MandelbulbDe, OneIterationByHand) {
       const auto de = probe(pts, lanes, p);
       for (size_t i = 0; i < pts.size(); ++i)
         EXPECT_NEAR(de[i], expected[i], 2e-5 * std::abs(expected[i]) + 1e-6)
-            << "x = " << pts[i][0] << " lanes " << lanes << (p == Precision::Double ? " double" : " float");
+            << "x = " << pts[i][0] << " lanes " << lanes
+            << (p == Precision::Double ? " double" : " float");
     }
 }
 
@@ -103,7 +104,8 @@ TEST_F(MandelbulbDe, BoundingSphereIsOutsideTheSet) {
       pts.push_back({x * s, y * s, z * s});
     }
     const auto de = probe(pts);
-    for (size_t i = 0; i < pts.size(); ++i) EXPECT_GT(de[i], 0.0f) << "power " << power << " point " << i;
+    for (size_t i = 0; i < pts.size(); ++i)
+      EXPECT_GT(de[i], 0.0f) << "power " << power << " point " << i;
   }
 }
 

@@ -13,7 +13,8 @@ namespace {
 
 using test::fixture_plugin;
 
-void expect_failure(const std::string& fixture, LoadResult result, const std::string& message_part) {
+void expect_failure(const std::string& fixture, LoadResult result,
+                    const std::string& message_part) {
   const LoadOutcome o = load_scene_plugin(fixture_plugin(fixture));
   EXPECT_EQ(o.result, result) << fixture << ": " << load_result_name(o.result) << ": " << o.message;
   EXPECT_NE(o.message.find(message_part), std::string::npos) << fixture << " said: " << o.message;
@@ -32,16 +33,26 @@ TEST(PluginLoader, ValidFixtureLoadsAndCopiesStrings) {
   EXPECT_NE(static_cast<const void*>(scene->info.id.data()), lib_lo);
 }
 
-TEST(PluginLoader, NotElf) { expect_failure("not_elf", LoadResult::NotLoadable, "not an ELF shared library"); }
+TEST(PluginLoader, NotElf) {
+  expect_failure("not_elf", LoadResult::NotLoadable, "not an ELF shared library");
+}
 TEST(PluginLoader, NoEntrySymbol) {
-  expect_failure("no_entry", LoadResult::NoEntrySymbol, "no exported symbol 'fractalis_scene_entry'");
+  expect_failure("no_entry", LoadResult::NoEntrySymbol,
+                 "no exported symbol 'fractalis_scene_entry'");
 }
-TEST(PluginLoader, WrongAbiMajor) { expect_failure("wrong_major", LoadResult::WrongAbiMajor, "wrong ABI major: plugin 2, host 1"); }
-TEST(PluginLoader, AbiMinorTooNew) { expect_failure("too_new_minor", LoadResult::AbiTooNew, "plugin needs ABI 1.99, host has 1.0"); }
+TEST(PluginLoader, WrongAbiMajor) {
+  expect_failure("wrong_major", LoadResult::WrongAbiMajor, "wrong ABI major: plugin 2, host 1");
+}
+TEST(PluginLoader, AbiMinorTooNew) {
+  expect_failure("too_new_minor", LoadResult::AbiTooNew, "plugin needs ABI 1.99, host has 1.0");
+}
 TEST(PluginLoader, StructTooSmall) {
-  expect_failure("small_struct", LoadResult::StructTooSmall, "fr_scene_entry struct_size 8 is smaller than ABI 1.0's 24");
+  expect_failure("small_struct", LoadResult::StructTooSmall,
+                 "fr_scene_entry struct_size 8 is smaller than ABI 1.0's 24");
 }
-TEST(PluginLoader, NullId) { expect_failure("null_id", LoadResult::InvalidScene, "scene id is null"); }
+TEST(PluginLoader, NullId) {
+  expect_failure("null_id", LoadResult::InvalidScene, "scene id is null");
+}
 TEST(PluginLoader, NullDeSource) {
   expect_failure("null_de", LoadResult::InvalidScene, "scene 'fixture_null_de': de_source is null");
 }
@@ -65,7 +76,8 @@ TEST(PluginLoader, DuplicateIdNamesTheFirstFile) {
   ASSERT_EQ(outcomes.size(), 2u);
   EXPECT_EQ(outcomes[0].result, LoadResult::Loaded);
   EXPECT_EQ(outcomes[1].result, LoadResult::DuplicateId);
-  EXPECT_NE(outcomes[1].message.find("duplicate scene id 'fixture_valid' (already provided by " + (dir / "a.so").string()),
+  EXPECT_NE(outcomes[1].message.find("duplicate scene id 'fixture_valid' (already provided by " +
+                                     (dir / "a.so").string()),
             std::string::npos)
       << outcomes[1].message;
 }
@@ -76,7 +88,8 @@ TEST(PluginLoader, FolderSkipsBadPluginsAndKeepsGoodOnes) {
   std::map<std::string, LoadResult> by_file;
   for (const auto& o : outcomes) by_file[o.file.filename().string()] = o.result;
   EXPECT_EQ(by_file["fixture_valid_scene.so"], LoadResult::Loaded);
-  EXPECT_EQ(by_file["fixture_bad_de.so"], LoadResult::Loaded) << "a DE is only compiled when rendered";
+  EXPECT_EQ(by_file["fixture_bad_de.so"], LoadResult::Loaded)
+      << "a DE is only compiled when rendered";
   EXPECT_EQ(by_file["fixture_update_error.so"], LoadResult::Loaded);
   EXPECT_EQ(by_file["fixture_not_elf.so"], LoadResult::NotLoadable);
   EXPECT_EQ(by_file["fixture_wrong_major.so"], LoadResult::WrongAbiMajor);
@@ -97,7 +110,9 @@ TEST(PluginLoader, DeThatDoesNotCompileNamesSceneAndLine) {
   } catch (const KernelBuildError& e) {
     const std::string what = e.what();
     EXPECT_NE(what.find("scene 'fixture_bad_de'"), std::string::npos) << what;
-    EXPECT_NE(what.find("fixture.cl:3:"), std::string::npos) << "line 3 of the scene's own source:\n" << what;
+    EXPECT_NE(what.find("fixture.cl:3:"), std::string::npos)
+        << "line 3 of the scene's own source:\n"
+        << what;
     EXPECT_NE(what.find("undeclared_radius"), std::string::npos) << what;
   }
 }

@@ -83,7 +83,8 @@ TEST_F(MandelbulbRender, FloatMatchesDoubleReference) {
   EXPECT_EQ(non_finite(d), 0u);
   const double differing = fraction_differing(f, d, 2);
   size_t mask_diff = 0;
-  for (size_t i = 0; i < f.depth.size(); ++i) mask_diff += std::isfinite(f.depth[i]) != std::isfinite(d.depth[i]);
+  for (size_t i = 0; i < f.depth.size(); ++i)
+    mask_diff += std::isfinite(f.depth[i]) != std::isfinite(d.depth[i]);
   const double mask_fraction = double(mask_diff) / double(f.depth.size());
   std::vector<double> relative;
   for (size_t i = 0; i < f.depth.size(); ++i)

@@ -22,9 +22,9 @@ namespace {
 
 struct Analytic {
   bool hit;
-  double t;            // exact depth where hit
+  double t;  // exact depth where hit
   double cos_incidence;
-  double closest;      // distance from the centre to the ray's closest point
+  double closest;  // distance from the centre to the ray's closest point
 };
 
 Analytic intersect_unit_sphere(glm::dvec3 o, glm::dvec3 d) {
@@ -69,7 +69,8 @@ TEST_P(UnitBall, DepthAndMaskMatchTheSphere) {
       const double t_ref = a.hit ? a.t : glm::length(rays.eye);
       const double eps = settings.hit_threshold_k * rays.pixel_angle_rad * t_ref;
       const bool rendered_hit = std::isfinite(img.depth[i]);
-      ASSERT_TRUE(std::isfinite(img.linear_rgba[4 * i]) && std::isfinite(img.linear_rgba[4 * i + 1]) &&
+      ASSERT_TRUE(std::isfinite(img.linear_rgba[4 * i]) &&
+                  std::isfinite(img.linear_rgba[4 * i + 1]) &&
                   std::isfinite(img.linear_rgba[4 * i + 2]))
           << "pixel " << x << "," << y;
       // The rim: rays passing within the threshold's shell of the surface may go either way.
@@ -105,10 +106,13 @@ TEST(UnitBallDe, IsHalfRLogR) {
   for (float r : {0.3f, 0.7f, 0.99f, 1.0f, 1.01f, 1.3f, 1.9f})
     for (auto dir : {std::array<float, 3>{1, 0, 0}, {0, 0.6f, 0.8f}, {-0.48f, 0.6f, -0.64f}})
       pts.push_back({r * dir[0], r * dir[1], r * dir[2]});
-  const auto de = probe_de(test::runtime(), scene->info, make_default_state(scene->info).params, pts);
+  const auto de =
+      probe_de(test::runtime(), scene->info, make_default_state(scene->info).params, pts);
   for (size_t i = 0; i < pts.size(); ++i) {
-    const double r = std::sqrt(double(pts[i][0]) * pts[i][0] + double(pts[i][1]) * pts[i][1] + double(pts[i][2]) * pts[i][2]);
-    EXPECT_NEAR(de[i], 0.5 * r * std::log(r), 2e-6 + 1e-5 * std::abs(0.5 * r * std::log(r))) << "r = " << r;
+    const double r = std::sqrt(double(pts[i][0]) * pts[i][0] + double(pts[i][1]) * pts[i][1] +
+                               double(pts[i][2]) * pts[i][2]);
+    EXPECT_NEAR(de[i], 0.5 * r * std::log(r), 2e-6 + 1e-5 * std::abs(0.5 * r * std::log(r)))
+        << "r = " << r;
   }
 }
 

@@ -16,9 +16,10 @@ std::filesystem::path write_file(const std::string& name, const std::string& tex
 
 TEST(Settings, GoodFileApplies) {
   Settings s;
-  auto file = write_file("good.toml",
-                         "[plugins]\nfolders = [\"/tmp/a\", \"/tmp/b\"]\n[device]\nselect = \"cpu\"\n"
-                         "[render]\nlanes = 8\nprecision = \"double\"\n[render.effects]\nao = false\n");
+  auto file =
+      write_file("good.toml",
+                 "[plugins]\nfolders = [\"/tmp/a\", \"/tmp/b\"]\n[device]\nselect = \"cpu\"\n"
+                 "[render]\nlanes = 8\nprecision = \"double\"\n[render.effects]\nao = false\n");
   auto problems = load_settings_file(file, s);
   EXPECT_TRUE(problems.empty()) << problems.front().to_string();
   ASSERT_EQ(s.plugin_folders.size(), 2u);
@@ -35,12 +36,14 @@ TEST(Settings, BadTomlNamesFileAndLine) {
   auto problems = load_settings_file(file, s);
   ASSERT_EQ(problems.size(), 1u);
   EXPECT_EQ(problems[0].line, 3);
-  EXPECT_NE(problems[0].to_string().find("bad_syntax.toml:3:"), std::string::npos) << problems[0].to_string();
+  EXPECT_NE(problems[0].to_string().find("bad_syntax.toml:3:"), std::string::npos)
+      << problems[0].to_string();
 }
 
 TEST(Settings, WrongTypeAndRangeKeepDefaults) {
   Settings s;
-  auto file = write_file("wrong_type.toml", "[render]\nlanes = \"sixteen\"\nmax_steps = -4\nexposure = 2.0\n");
+  auto file = write_file("wrong_type.toml",
+                         "[render]\nlanes = \"sixteen\"\nmax_steps = -4\nexposure = 2.0\n");
   auto problems = load_settings_file(file, s);
   ASSERT_EQ(problems.size(), 2u);
   EXPECT_EQ(problems[0].key, "render.lanes");
@@ -59,7 +62,8 @@ TEST(Settings, UnknownKeyNamesNearest) {
   auto problems = load_settings_file(file, s);
   ASSERT_EQ(problems.size(), 2u);
   EXPECT_EQ(problems[0].key, "render.lanse");
-  EXPECT_NE(problems[0].message.find("did you mean 'render.lanes'"), std::string::npos) << problems[0].message;
+  EXPECT_NE(problems[0].message.find("did you mean 'render.lanes'"), std::string::npos)
+      << problems[0].message;
   EXPECT_EQ(problems[0].line, 2);
   EXPECT_EQ(problems[1].key, "plugin");
   EXPECT_NE(problems[1].message.find("plugins.folders"), std::string::npos) << problems[1].message;
@@ -74,7 +78,8 @@ namespace {
 // config/default.toml documents the built-in defaults: it must load cleanly and say the same.
 TEST(Settings, DefaultFileMatchesBuiltInDefaults) {
   Settings from_file;
-  const auto problems = load_settings_file(std::filesystem::path(SOURCE_DIR) / "config" / "default.toml", from_file);
+  const auto problems =
+      load_settings_file(std::filesystem::path(SOURCE_DIR) / "config" / "default.toml", from_file);
   EXPECT_TRUE(problems.empty()) << problems.front().to_string();
   const Settings builtin;
   EXPECT_EQ(from_file.plugin_folders, builtin.plugin_folders);

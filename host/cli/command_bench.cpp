@@ -19,10 +19,12 @@ int command_bench(const std::vector<std::string>& args, std::ostream& out, std::
     out << "usage: fractalis bench [--scene ID] [--size WxH] [--frames N] [options]\n\n"
            "Renders N frames (update, render, tonemap, read back) after one untimed warm-up\n"
            "frame that builds the kernel, and prints the median, min and max frame time.\n\n"
-        << format_options(specs) << "\nexample:\n  fractalis bench --scene mandelbulb --size 640x360 --lanes 16\n";
+        << format_options(specs)
+        << "\nexample:\n  fractalis bench --scene mandelbulb --size 640x360 --lanes 16\n";
     return 0;
   }
-  const int frames = static_cast<int>(parse_integer("--frames", options.get("frames").value_or("20"), 1, 100000));
+  const int frames =
+      static_cast<int>(parse_integer("--frames", options.get("frames").value_or("20"), 1, 100000));
   PreparedScene p = prepare_scene(options, err);
   ClRuntime runtime(p.device);
   Renderer renderer(runtime);
@@ -47,21 +49,24 @@ int command_bench(const std::vector<std::string>& args, std::ostream& out, std::
       mean_steps /= static_cast<double>(image.steps.size());
       hit_fraction /= static_cast<double>(image.steps.size());
     }
-    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    const double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     if (i >= 0) frame_ms.push_back(ms);
   }
   std::sort(frame_ms.begin(), frame_ms.end());
   const size_t n = frame_ms.size();
   const double median = n % 2 ? frame_ms[n / 2] : 0.5 * (frame_ms[n / 2 - 1] + frame_ms[n / 2]);
   char line[256];
-  std::snprintf(line, sizeof line, "median %.2f ms, min %.2f ms, max %.2f ms over %zu frames\n", median,
-                frame_ms.front(), frame_ms.back(), n);
-  out << "scene " << p.scene->info.id << ", " << p.render.width_px << "x" << p.render.height_px << ", "
-      << (p.render.precision == Precision::Double ? "double" : "float") << ", lanes "
+  std::snprintf(line, sizeof line, "median %.2f ms, min %.2f ms, max %.2f ms over %zu frames\n",
+                median, frame_ms.front(), frame_ms.back(), n);
+  out << "scene " << p.scene->info.id << ", " << p.render.width_px << "x" << p.render.height_px
+      << ", " << (p.render.precision == Precision::Double ? "double" : "float") << ", lanes "
       << renderer.lanes_for(p.render) << "\n"
-      << "device " << p.device.name << " (" << p.device.platform_name << ", " << p.device.version << ")\n"
+      << "device " << p.device.name << " (" << p.device.platform_name << ", " << p.device.version
+      << ")\n"
       << line;
-  std::snprintf(line, sizeof line, "primary ray: %.1f DE steps per pixel on average, %.1f%% of pixels hit\n",
+  std::snprintf(line, sizeof line,
+                "primary ray: %.1f DE steps per pixel on average, %.1f%% of pixels hit\n",
                 mean_steps, 100 * hit_fraction);
   out << line;
   return 0;

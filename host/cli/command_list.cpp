@@ -39,14 +39,18 @@ int command_list(const std::vector<std::string>& args, std::ostream& out, std::o
   for (const auto& f : folders) out << "plugin folder: " << f.string() << "\n";
   for (const auto& o : load_scene_folder(folders)) {
     if (!o.scene) {
-      out << "\n" << o.file.filename().string() << ": FAILED (" << load_result_name(o.result)
+      out << "\n"
+          << o.file.filename().string() << ": FAILED (" << load_result_name(o.result)
           << "): " << o.message << "\n";
       continue;
     }
     const SceneInfo& s = o.scene->info;
-    out << "\n" << s.id << " " << s.version << " — " << s.name << "  (" << o.file.filename().string() << ")\n";
+    out << "\n"
+        << s.id << " " << s.version << " — " << s.name << "  (" << o.file.filename().string()
+        << ")\n";
     if (!s.description.empty()) out << "  " << s.description << "\n";
-    if (!s.author.empty() || !s.license.empty()) out << "  by " << s.author << ", " << s.license << "\n";
+    if (!s.author.empty() || !s.license.empty())
+      out << "  by " << s.author << ", " << s.license << "\n";
     for (const auto& p : s.params) {
       out << "  --param " << p.key << "=" << format_value(p, p.default_value) << "  "
           << param_type_name(p.type) << " in [" << format_value(p, p.min_value) << ", "

@@ -34,15 +34,16 @@ int command_render(const std::vector<std::string>& args, std::ostream& out, std:
   Renderer renderer(runtime);
   const auto start = std::chrono::steady_clock::now();
   FrameImage image = renderer.render(p.scene->info, p.state, p.render);
-  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const double ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   if (!write_png_atomic(out_file, image.width_px, image.height_px, image.rgba8, &error)) {
     err << "fractalis: error: " << error << "\n";
     return 1;
   }
   out << "rendered " << p.scene->info.id << " " << image.width_px << "x" << image.height_px
       << " on " << p.device.name << " (lanes " << image.lanes << ", "
-      << (p.render.precision == Precision::Double ? "double" : "float") << ") in " << static_cast<int>(ms)
-      << " ms including kernel build; wrote " << out_file << "\n";
+      << (p.render.precision == Precision::Double ? "double" : "float") << ") in "
+      << static_cast<int>(ms) << " ms including kernel build; wrote " << out_file << "\n";
   return 0;
 }
 

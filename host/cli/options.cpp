@@ -54,7 +54,8 @@ ParsedOptions parse_options(const std::string& command, const std::vector<std::s
 std::string format_options(const std::vector<OptionSpec>& specs) {
   std::ostringstream out;
   for (const auto& s : specs) {
-    std::string left = std::string("  --") + s.name + (s.value_name ? std::string(" ") + s.value_name : "");
+    std::string left =
+        std::string("  --") + s.name + (s.value_name ? std::string(" ") + s.value_name : "");
     out << left;
     for (size_t n = left.size(); n < 30; ++n) out << ' ';
     out << " " << s.help << "\n";
@@ -74,7 +75,8 @@ double parse_finite(const std::string& what, const std::string& text) {
   return v;
 }
 
-long long parse_integer(const std::string& what, const std::string& text, long long lo, long long hi) {
+long long parse_integer(const std::string& what, const std::string& text, long long lo,
+                        long long hi) {
   const char* begin = text.c_str();
   char* end = nullptr;
   errno = 0;
@@ -94,7 +96,8 @@ std::array<int, 2> parse_size(const std::string& what, const std::string& text) 
   std::array<int, 2> size{};
   for (int i = 0; i < 2; ++i) {
     const std::string part = i == 0 ? text.substr(0, x) : text.substr(x + 1);
-    size[i] = static_cast<int>(parse_integer(what + (i == 0 ? " width" : " height"), part, 1, kMaxImageSide));
+    size[i] = static_cast<int>(
+        parse_integer(what + (i == 0 ? " width" : " height"), part, 1, kMaxImageSide));
   }
   return size;
 }

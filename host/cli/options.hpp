@@ -18,7 +18,7 @@ class UsageError : public std::runtime_error {
 };
 
 struct OptionSpec {
-  const char* name;  // without the leading "--"
+  const char* name;        // without the leading "--"
   const char* value_name;  // null: a flag without a value
   bool repeatable;
   const char* help;
@@ -39,10 +39,11 @@ ParsedOptions parse_options(const std::string& command, const std::vector<std::s
 std::string format_options(const std::vector<OptionSpec>& specs);
 
 // Value parsers; `what` names the option in messages ("--size").
-std::array<int, 2> parse_size(const std::string& what, const std::string& text);  // "WxH"
+std::array<int, 2> parse_size(const std::string& what, const std::string& text);     // "WxH"
 std::array<double, 3> parse_vec3(const std::string& what, const std::string& text);  // "x,y,z"
 double parse_finite(const std::string& what, const std::string& text);
-long long parse_integer(const std::string& what, const std::string& text, long long lo, long long hi);
+long long parse_integer(const std::string& what, const std::string& text, long long lo,
+                        long long hi);
 
 // Largest accepted image side, in pixels (a 16384 x 16384 float image is already 4 GiB).
 constexpr int kMaxImageSide = 16384;

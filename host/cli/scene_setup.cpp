@@ -53,7 +53,8 @@ Settings load_settings(const ParsedOptions& options) {
   return settings;
 }
 
-std::vector<std::filesystem::path> plugin_folders(const Settings& settings, const ParsedOptions& options) {
+std::vector<std::filesystem::path> plugin_folders(const Settings& settings,
+                                                  const ParsedOptions& options) {
   if (auto dir = options.get("plugins")) {
     std::error_code ec;
     if (!std::filesystem::is_directory(*dir, ec))
@@ -69,7 +70,8 @@ std::vector<std::filesystem::path> plugin_folders(const Settings& settings, cons
   return folders;
 }
 
-std::vector<LoadOutcome> load_plugins(const std::vector<std::filesystem::path>& folders, std::ostream& err) {
+std::vector<LoadOutcome> load_plugins(const std::vector<std::filesystem::path>& folders,
+                                      std::ostream& err) {
   auto outcomes = load_scene_folder(folders);
   for (const auto& o : outcomes)
     if (o.result != LoadResult::Loaded)
@@ -77,32 +79,41 @@ std::vector<LoadOutcome> load_plugins(const std::vector<std::filesystem::path>& 
   return outcomes;
 }
 
-std::shared_ptr<const LoadedScene> find_scene(const std::vector<LoadOutcome>& outcomes, const std::string& id) {
+std::shared_ptr<const LoadedScene> find_scene(const std::vector<LoadOutcome>& outcomes,
+                                              const std::string& id) {
   std::string available;
   for (const auto& o : outcomes) {
     if (!o.scene) continue;
     if (o.scene->info.id == id) return o.scene;
     available += (available.empty() ? "" : ", ") + o.scene->info.id;
   }
-  throw UsageError("unknown scene '" + id + "' (available: " + (available.empty() ? "none" : available) + ")");
+  throw UsageError("unknown scene '" + id +
+                   "' (available: " + (available.empty() ? "none" : available) + ")");
 }
 
 namespace {
 
-fr_value parse_param_value(const ParamInfo& p, const std::string& assignment, const std::string& text) {
+fr_value parse_param_value(const ParamInfo& p, const std::string& assignment,
+                           const std::string& text) {
   const std::string what = "--param " + assignment;
   fr_value v{};
   switch (p.type) {
     case FR_PARAM_BOOL:
-      if (text == "true" || text == "1" || text == "on") v.v[0] = 1;
-      else if (text == "false" || text == "0" || text == "off") v.v[0] = 0;
-      else throw UsageError(what + ": expected true or false for bool parameter '" + p.key + "'");
+      if (text == "true" || text == "1" || text == "on")
+        v.v[0] = 1;
+      else if (text == "false" || text == "0" || text == "off")
+        v.v[0] = 0;
+      else
+        throw UsageError(what + ": expected true or false for bool parameter '" + p.key + "'");
       return v;
     case FR_PARAM_INT:
-      v.v[0] = static_cast<double>(parse_integer(what, text, static_cast<long long>(p.min_value.v[0]),
-                                                 static_cast<long long>(p.max_value.v[0])));
+      v.v[0] =
+          static_cast<double>(parse_integer(what, text, static_cast<long long>(p.min_value.v[0]),
+                                            static_cast<long long>(p.max_value.v[0])));
       return v;
-    case FR_PARAM_FLOAT: v.v[0] = parse_finite(what, text); break;
+    case FR_PARAM_FLOAT:
+      v.v[0] = parse_finite(what, text);
+      break;
     default: {
       auto xyz = parse_vec3(what, text);
       for (int i = 0; i < 3; ++i) v.v[i] = xyz[i];
@@ -111,7 +122,8 @@ fr_value parse_param_value(const ParamInfo& p, const std::string& assignment, co
   for (int i = 0; i < p.component_count(); ++i)
     if (v.v[i] < p.min_value.v[i] || v.v[i] > p.max_value.v[i])
       throw UsageError(what + ": " + text + " is outside the range of '" + p.key + "' [" +
-                       std::to_string(p.min_value.v[i]) + ", " + std::to_string(p.max_value.v[i]) + "]");
+                       std::to_string(p.min_value.v[i]) + ", " + std::to_string(p.max_value.v[i]) +
+                       "]");
   return v;
 }
 
@@ -128,10 +140,11 @@ void apply_scene_overrides(const SceneInfo& info, const ParsedOptions& options, 
       if (index < 0) {
         std::string keys;
         for (const auto& p : info.params) keys += (keys.empty() ? "" : ", ") + p.key;
-        throw UsageError("--param " + assignment + ": scene '" + info.id + "' has no parameter '" + key +
-                         "' (it has: " + (keys.empty() ? "none" : keys) + ")");
+        throw UsageError("--param " + assignment + ": scene '" + info.id + "' has no parameter '" +
+                         key + "' (it has: " + (keys.empty() ? "none" : keys) + ")");
       }
-      state.params[index] = parse_param_value(info.params[index], assignment, assignment.substr(eq + 1));
+      state.params[index] =
+          parse_param_value(info.params[index], assignment, assignment.substr(eq + 1));
     }
   }
   if (auto eye = options.get("eye")) {
@@ -155,13 +168,17 @@ RenderSettings render_settings_from(const Settings& settings, const ParsedOption
   }
   if (auto lanes = options.get("lanes")) {
     long long n = parse_integer("--lanes", *lanes, 1, 16);
-    if (n != 1 && n != 4 && n != 8 && n != 16) throw UsageError("--lanes: expected 1, 4, 8 or 16, got " + *lanes);
+    if (n != 1 && n != 4 && n != 8 && n != 16)
+      throw UsageError("--lanes: expected 1, 4, 8 or 16, got " + *lanes);
     r.lanes = static_cast<int>(n);
   }
   if (auto precision = options.get("precision")) {
-    if (*precision == "float") r.precision = Precision::Float;
-    else if (*precision == "double") r.precision = Precision::Double;
-    else throw UsageError("--precision: expected float or double, got '" + *precision + "'");
+    if (*precision == "float")
+      r.precision = Precision::Float;
+    else if (*precision == "double")
+      r.precision = Precision::Double;
+    else
+      throw UsageError("--precision: expected float or double, got '" + *precision + "'");
   }
   return r;
 }
@@ -170,7 +187,8 @@ DeviceInfo choose_device(const Settings& settings, const ParsedOptions& options)
   const std::string selector = options.get("device").value_or(settings.device);
   const auto devices = list_devices();
   if (devices.empty())
-    throw std::runtime_error("no OpenCL device found (is an ICD such as pocl-opencl-icd installed?)");
+    throw std::runtime_error(
+        "no OpenCL device found (is an ICD such as pocl-opencl-icd installed?)");
   std::string error;
   auto device = select_device(devices, selector, &error);
   if (!device) throw UsageError(error);

@@ -23,14 +23,17 @@ std::vector<OptionSpec> plugin_option_specs();
 Settings load_settings(const ParsedOptions& options);
 
 // --plugins DIR, else plugins.folders from settings, else the build tree's and installed folders.
-std::vector<std::filesystem::path> plugin_folders(const Settings& settings, const ParsedOptions& options);
+std::vector<std::filesystem::path> plugin_folders(const Settings& settings,
+                                                  const ParsedOptions& options);
 
 // Loads the folders, reports each plugin that failed on `err` (one line each), and returns the
 // outcomes.
-std::vector<LoadOutcome> load_plugins(const std::vector<std::filesystem::path>& folders, std::ostream& err);
+std::vector<LoadOutcome> load_plugins(const std::vector<std::filesystem::path>& folders,
+                                      std::ostream& err);
 
 // The loaded scene with this id, or a UsageError listing the ids there are.
-std::shared_ptr<const LoadedScene> find_scene(const std::vector<LoadOutcome>& outcomes, const std::string& id);
+std::shared_ptr<const LoadedScene> find_scene(const std::vector<LoadOutcome>& outcomes,
+                                              const std::string& id);
 
 // Applies --param key=value (repeatable) and --eye/--target/--fov to `state`.
 void apply_scene_overrides(const SceneInfo& info, const ParsedOptions& options, SceneState& state);

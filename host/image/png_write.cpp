@@ -1,8 +1,8 @@
 #include "image/png_write.hpp"
 
 #include <fcntl.h>
-#include <sys/stat.h>
 #include <stb_image_write.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>

@@ -49,7 +49,8 @@ std::string check_elf_complete(const std::filesystem::path& file) {
     return "truncated: " + std::to_string(size) + " bytes, shorter than an ELF header";
   if (eh.e_ident[EI_CLASS] != ELFCLASS64 || eh.e_machine != EM_X86_64)
     return "not a 64-bit x86-64 ELF library";
-  if (eh.e_type != ET_DYN) return "not a shared library (ELF type " + std::to_string(eh.e_type) + ")";
+  if (eh.e_type != ET_DYN)
+    return "not a shared library (ELF type " + std::to_string(eh.e_type) + ")";
   const uint64_t ph_end = eh.e_phoff + uint64_t{eh.e_phnum} * eh.e_phentsize;
   const uint64_t sh_end = eh.e_shoff + uint64_t{eh.e_shnum} * eh.e_shentsize;
   if (eh.e_phentsize != sizeof(Elf64_Phdr) || ph_end > size || sh_end > size)
@@ -99,7 +100,9 @@ std::shared_ptr<PluginLibrary> PluginLibrary::open(const std::filesystem::path& 
   return std::shared_ptr<PluginLibrary>(new PluginLibrary(handle));
 }
 
-PluginLibrary::~PluginLibrary() { dlclose(handle_); }
+PluginLibrary::~PluginLibrary() {
+  dlclose(handle_);
+}
 
 const void* PluginLibrary::symbol(const char* name) const {
   dlerror();

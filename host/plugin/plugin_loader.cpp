@@ -38,7 +38,8 @@ bool is_identifier(const char* s, bool allow_dash) {
   size_t n = 0;
   for (; s[n]; ++n) {
     char c = s[n];
-    bool ok = (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || (allow_dash && c == '-');
+    bool ok =
+        (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || (allow_dash && c == '-');
     if (!ok || n >= 63) return false;
   }
   return true;
@@ -52,21 +53,25 @@ std::string describe_value(const fr_value& v, int n) {
 
 // Checks one parameter; returns an error sentence or "".
 std::string check_param(const fr_param_desc& p, size_t index) {
-  const std::string where = "parameter " + std::to_string(index) + (p.key ? " '" + std::string(p.key) + "'" : "");
+  const std::string where =
+      "parameter " + std::to_string(index) + (p.key ? " '" + std::string(p.key) + "'" : "");
   if (!is_identifier(p.key, false))
     return where + ": key must match [a-z][a-z0-9_]* (at most 63 bytes), got " +
            (p.key ? "'" + std::string(p.key) + "'" : std::string("null"));
   if (!p.name) return where + ": name is null";
   if (p.type < FR_PARAM_FLOAT || p.type > FR_PARAM_COLOR)
-    return where + ": type " + std::to_string(p.type) + " is not one of float, int, bool, vec3, color";
+    return where + ": type " + std::to_string(p.type) +
+           " is not one of float, int, bool, vec3, color";
   if ((p.flags & FR_PARAM_SPECIALIZE) && (p.flags & FR_PARAM_ANIMATABLE))
     return where + ": cannot be both SPECIALIZE and ANIMATABLE";
   const int n = (p.type == FR_PARAM_VEC3 || p.type == FR_PARAM_COLOR) ? 3 : 1;
   for (int i = 0; i < n; ++i) {
     double lo = p.min_value.v[i], def = p.default_value.v[i], hi = p.max_value.v[i];
-    if (!std::isfinite(lo) || !std::isfinite(def) || !std::isfinite(hi) || !(lo <= def && def <= hi))
-      return where + ": needs finite min <= default <= max, got min " + describe_value(p.min_value, n) +
-             ", default " + describe_value(p.default_value, n) + ", max " + describe_value(p.max_value, n);
+    if (!std::isfinite(lo) || !std::isfinite(def) || !std::isfinite(hi) ||
+        !(lo <= def && def <= hi))
+      return where + ": needs finite min <= default <= max, got min " +
+             describe_value(p.min_value, n) + ", default " + describe_value(p.default_value, n) +
+             ", max " + describe_value(p.max_value, n);
     if ((p.type == FR_PARAM_INT || p.type == FR_PARAM_BOOL) &&
         (lo != std::floor(lo) || def != std::floor(def) || hi != std::floor(hi)))
       return where + ": int and bool limits must be whole numbers";
@@ -99,15 +104,19 @@ std::variant<SceneInfo, Invalid> copy_scene(const fr_scene_desc* desc_ptr) {
   const fr_scene_desc d = copy_struct(desc_ptr);
   if (!d.id) return invalid("scene id is null (expected [a-z][a-z0-9_-]*)");
   if (!is_identifier(d.id, true))
-    return invalid("scene id '" + std::string(d.id) + "' must match [a-z][a-z0-9_-]* (at most 63 bytes)");
+    return invalid("scene id '" + std::string(d.id) +
+                   "' must match [a-z][a-z0-9_-]* (at most 63 bytes)");
   const std::string id = d.id;
   if (!d.name) return invalid("scene '" + id + "': name is null");
   if (!d.version) return invalid("scene '" + id + "': version is null");
-  if (!d.de_source) return invalid("scene '" + id + "': de_source is null (expected OpenCL C defining scene_de)");
+  if (!d.de_source)
+    return invalid("scene '" + id + "': de_source is null (expected OpenCL C defining scene_de)");
   if (!(d.bounding_radius > 0 && std::isfinite(d.bounding_radius)))
     return invalid("scene '" + id + "': bounding_radius must be finite and > 0");
-  if (d.param_count > 0 && !d.params) return invalid("scene '" + id + "': params is null but param_count > 0");
-  if (d.light_count > 0 && !d.lights) return invalid("scene '" + id + "': lights is null but light_count > 0");
+  if (d.param_count > 0 && !d.params)
+    return invalid("scene '" + id + "': params is null but param_count > 0");
+  if (d.light_count > 0 && !d.lights)
+    return invalid("scene '" + id + "': lights is null but light_count > 0");
 
   SceneInfo info;
   info.id = id;
@@ -130,7 +139,8 @@ std::variant<SceneInfo, Invalid> copy_scene(const fr_scene_desc* desc_ptr) {
                          std::to_string(p_ptr->struct_size) + " is smaller than ABI 1.0's " +
                          std::to_string(kParamSizeV1_0)};
     const fr_param_desc p = copy_struct(p_ptr);
-    if (std::string err = check_param(p, i); !err.empty()) return invalid("scene '" + id + "': " + err);
+    if (std::string err = check_param(p, i); !err.empty())
+      return invalid("scene '" + id + "': " + err);
     if (info.find_param(p.key) >= 0)
       return invalid("scene '" + id + "': parameter key '" + p.key + "' appears twice");
     ParamInfo param;
@@ -153,7 +163,8 @@ std::variant<SceneInfo, Invalid> copy_scene(const fr_scene_desc* desc_ptr) {
                                                      " is smaller than ABI 1.0's " +
                                                      std::to_string(kCameraSizeV1_0)};
     info.camera = copy_struct(d.camera);
-    if (std::string err = check_camera(info.camera); !err.empty()) return invalid("scene '" + id + "': " + err);
+    if (std::string err = check_camera(info.camera); !err.empty())
+      return invalid("scene '" + id + "': " + err);
   } else {
     info.camera = fr_camera{sizeof(fr_camera), 0, {0, 0, 4}, {0, 0, 0}, {0, 1, 0}, 45};
   }
@@ -161,10 +172,10 @@ std::variant<SceneInfo, Invalid> copy_scene(const fr_scene_desc* desc_ptr) {
     const fr_light* l = d.lights[i];
     if (!l) return invalid("scene '" + id + "': light " + std::to_string(i) + " is null");
     if (l->struct_size < kLightSizeV1_0)
-      return Invalid{LoadResult::StructTooSmall, "scene '" + id + "': fr_light " + std::to_string(i) +
-                                                     " struct_size " + std::to_string(l->struct_size) +
-                                                     " is smaller than ABI 1.0's " +
-                                                     std::to_string(kLightSizeV1_0)};
+      return Invalid{LoadResult::StructTooSmall,
+                     "scene '" + id + "': fr_light " + std::to_string(i) + " struct_size " +
+                         std::to_string(l->struct_size) + " is smaller than ABI 1.0's " +
+                         std::to_string(kLightSizeV1_0)};
     fr_light light = copy_struct(l);
     if (light.kind != FR_LIGHT_DIRECTIONAL && light.kind != FR_LIGHT_POINT)
       return invalid("scene '" + id + "': light " + std::to_string(i) + " kind " +
@@ -178,14 +189,22 @@ std::variant<SceneInfo, Invalid> copy_scene(const fr_scene_desc* desc_ptr) {
 
 const char* load_result_name(LoadResult result) {
   switch (result) {
-    case LoadResult::Loaded: return "loaded";
-    case LoadResult::NotLoadable: return "not loadable";
-    case LoadResult::NoEntrySymbol: return "no entry symbol";
-    case LoadResult::WrongAbiMajor: return "wrong ABI major";
-    case LoadResult::AbiTooNew: return "ABI too new";
-    case LoadResult::StructTooSmall: return "struct too small";
-    case LoadResult::InvalidScene: return "invalid scene";
-    case LoadResult::DuplicateId: return "duplicate id";
+    case LoadResult::Loaded:
+      return "loaded";
+    case LoadResult::NotLoadable:
+      return "not loadable";
+    case LoadResult::NoEntrySymbol:
+      return "no entry symbol";
+    case LoadResult::WrongAbiMajor:
+      return "wrong ABI major";
+    case LoadResult::AbiTooNew:
+      return "ABI too new";
+    case LoadResult::StructTooSmall:
+      return "struct too small";
+    case LoadResult::InvalidScene:
+      return "invalid scene";
+    case LoadResult::DuplicateId:
+      return "duplicate id";
   }
   return "unknown";
 }
@@ -204,19 +223,22 @@ LoadOutcome load_scene_plugin(const std::filesystem::path& file) {
 
   const auto* entry = static_cast<const fr_scene_entry*>(library->symbol(FR_SCENE_ENTRY_SYMBOL));
   if (!entry)
-    return fail(LoadResult::NoEntrySymbol, std::string("no exported symbol '") + FR_SCENE_ENTRY_SYMBOL +
+    return fail(LoadResult::NoEntrySymbol, std::string("no exported symbol '") +
+                                               FR_SCENE_ENTRY_SYMBOL +
                                                "' (expected a scene built with FR_SCENE_ENTRY)");
   if (entry->abi_major != FR_ABI_VERSION_MAJOR)
-    return fail(LoadResult::WrongAbiMajor, "wrong ABI major: plugin " + std::to_string(entry->abi_major) +
-                                               ", host " + std::to_string(FR_ABI_VERSION_MAJOR));
+    return fail(LoadResult::WrongAbiMajor, "wrong ABI major: plugin " +
+                                               std::to_string(entry->abi_major) + ", host " +
+                                               std::to_string(FR_ABI_VERSION_MAJOR));
   if (entry->abi_minor > FR_ABI_VERSION_MINOR)
-    return fail(LoadResult::AbiTooNew,
-                "plugin needs ABI " + std::to_string(entry->abi_major) + "." +
-                    std::to_string(entry->abi_minor) + ", host has " +
-                    std::to_string(FR_ABI_VERSION_MAJOR) + "." + std::to_string(FR_ABI_VERSION_MINOR));
+    return fail(LoadResult::AbiTooNew, "plugin needs ABI " + std::to_string(entry->abi_major) +
+                                           "." + std::to_string(entry->abi_minor) + ", host has " +
+                                           std::to_string(FR_ABI_VERSION_MAJOR) + "." +
+                                           std::to_string(FR_ABI_VERSION_MINOR));
   if (entry->struct_size < kEntrySizeV1_0)
-    return fail(LoadResult::StructTooSmall, "fr_scene_entry struct_size " + std::to_string(entry->struct_size) +
-                                                " is smaller than ABI 1.0's " + std::to_string(kEntrySizeV1_0));
+    return fail(LoadResult::StructTooSmall,
+                "fr_scene_entry struct_size " + std::to_string(entry->struct_size) +
+                    " is smaller than ABI 1.0's " + std::to_string(kEntrySizeV1_0));
   auto copied = copy_scene(entry->scene);
   if (auto* bad = std::get_if<Invalid>(&copied)) return fail(bad->result, bad->message);
 

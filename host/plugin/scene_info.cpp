@@ -4,11 +4,16 @@ namespace fr {
 
 const char* param_type_name(fr_param_type type) {
   switch (type) {
-    case FR_PARAM_FLOAT: return "float";
-    case FR_PARAM_INT: return "int";
-    case FR_PARAM_BOOL: return "bool";
-    case FR_PARAM_VEC3: return "vec3";
-    case FR_PARAM_COLOR: return "color";
+    case FR_PARAM_FLOAT:
+      return "float";
+    case FR_PARAM_INT:
+      return "int";
+    case FR_PARAM_BOOL:
+      return "bool";
+    case FR_PARAM_VEC3:
+      return "vec3";
+    case FR_PARAM_COLOR:
+      return "color";
   }
   return "unknown";
 }

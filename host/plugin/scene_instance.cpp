@@ -34,9 +34,15 @@ void SceneInstance::log_from_plugin(void* host_data, fr_log_level level, const c
   const std::string text = message ? message : "(null message)";
   const std::string& id = self->scene_->info.id;
   switch (level) {
-    case FR_LOG_DEBUG: spdlog::debug("[{}] {}", id, text); break;
-    case FR_LOG_INFO: spdlog::info("[{}] {}", id, text); break;
-    case FR_LOG_WARNING: spdlog::warn("[{}] {}", id, text); break;
+    case FR_LOG_DEBUG:
+      spdlog::debug("[{}] {}", id, text);
+      break;
+    case FR_LOG_INFO:
+      spdlog::info("[{}] {}", id, text);
+      break;
+    case FR_LOG_WARNING:
+      spdlog::warn("[{}] {}", id, text);
+      break;
     default:
       self->last_error_ = text;
       spdlog::debug("[{}] error: {}", id, text);
@@ -91,8 +97,8 @@ bool SceneInstance::update(SceneState& state, double time_s, std::string* error)
     fr_host host = host_api();
     last_error_.clear();
     if (scene_->update(instance_, &host, &fs) != FR_OK) {
-      *error = "scene '" + info.id + "': update failed: " +
-               (last_error_.empty() ? "no reason logged" : last_error_);
+      *error = "scene '" + info.id +
+               "': update failed: " + (last_error_.empty() ? "no reason logged" : last_error_);
       return false;
     }
     state.camera.struct_size = sizeof(fr_camera);

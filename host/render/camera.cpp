@@ -6,7 +6,9 @@
 
 namespace fr {
 namespace {
-glm::dvec3 to_vec(const double v[3]) { return {v[0], v[1], v[2]}; }
+glm::dvec3 to_vec(const double v[3]) {
+  return {v[0], v[1], v[2]};
+}
 }  // namespace
 
 std::optional<std::string> check_camera(const fr_camera& c) {

@@ -10,7 +10,8 @@ ClError::ClError(const std::string& call, cl_int code, const std::string& contex
 const char* cl_error_name(cl_int code) {
   switch (code) {
 #define FR_CL_CASE(c) \
-  case c: return #c;
+  case c:             \
+    return #c;
     FR_CL_CASE(CL_SUCCESS)
     FR_CL_CASE(CL_DEVICE_NOT_FOUND)
     FR_CL_CASE(CL_DEVICE_NOT_AVAILABLE)
@@ -39,7 +40,8 @@ const char* cl_error_name(cl_int code) {
     FR_CL_CASE(CL_INVALID_GLOBAL_WORK_SIZE)
     FR_CL_CASE(CL_INVALID_BUFFER_SIZE)
 #undef FR_CL_CASE
-    default: return "unknown OpenCL error";
+    default:
+      return "unknown OpenCL error";
   }
 }
 

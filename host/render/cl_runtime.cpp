@@ -26,7 +26,8 @@ cl_program ClRuntime::program(const std::string& source, const std::string& opti
                               const std::string& description) {
   uint64_t key = hash_bytes(source);
   key = hash_bytes(options, key);
-  key = hash_bytes(device_.name + '\n' + device_.driver_version + '\n' + device_.platform_name, key);
+  key =
+      hash_bytes(device_.name + '\n' + device_.driver_version + '\n' + device_.platform_name, key);
   if (auto it = programs_.find(key); it != programs_.end()) return it->second.get();
 
   cl_int err = CL_SUCCESS;
@@ -37,7 +38,8 @@ cl_program ClRuntime::program(const std::string& source, const std::string& opti
   err = clBuildProgram(program.get(), 1, &device_.device, options.c_str(), nullptr, nullptr);
   if (err != CL_SUCCESS) {
     size_t log_size = 0;
-    clGetProgramBuildInfo(program.get(), device_.device, CL_PROGRAM_BUILD_LOG, 0, nullptr, &log_size);
+    clGetProgramBuildInfo(program.get(), device_.device, CL_PROGRAM_BUILD_LOG, 0, nullptr,
+                          &log_size);
     std::string log(log_size, '\0');
     clGetProgramBuildInfo(program.get(), device_.device, CL_PROGRAM_BUILD_LOG, log_size, log.data(),
                           nullptr);

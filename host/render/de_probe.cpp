@@ -2,27 +2,34 @@
 
 #include "render/kernel_assembly.hpp"
 
-static_assert(sizeof(std::array<float, 3>) == 3 * sizeof(float), "points are uploaded as packed xyz");
+static_assert(sizeof(std::array<float, 3>) == 3 * sizeof(float),
+              "points are uploaded as packed xyz");
 
 namespace fr {
 
-std::vector<float> probe_de(ClRuntime& runtime, const SceneInfo& info, const std::vector<fr_value>& params,
-                            const std::vector<std::array<float, 3>>& points, int lanes, Precision precision) {
+std::vector<float> probe_de(ClRuntime& runtime, const SceneInfo& info,
+                            const std::vector<fr_value>& params,
+                            const std::vector<std::array<float, 3>>& points, int lanes,
+                            Precision precision) {
   if (points.empty()) return {};
   if (lanes <= 0) lanes = preferred_lanes(runtime.device());
   const AssembledKernel k = assemble_probe_kernel(info, params, KernelConfig{lanes, precision, 0});
-  cl_kernel kernel = runtime.kernel(runtime.program(k.source, k.build_options, k.description), "fr_probe_de");
+  cl_kernel kernel =
+      runtime.kernel(runtime.program(k.source, k.build_options, k.description), "fr_probe_de");
 
   const std::vector<uint8_t> packed = pack_scene_params(info, params);
   cl_int err = CL_SUCCESS;
   const size_t n = points.size();
-  ClBufferHandle param_buf(clCreateBuffer(runtime.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
-                                          packed.size(), const_cast<uint8_t*>(packed.data()), &err));
+  ClBufferHandle param_buf(clCreateBuffer(runtime.context(),
+                                          CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, packed.size(),
+                                          const_cast<uint8_t*>(packed.data()), &err));
   cl_check(err, "clCreateBuffer", "probe parameters");
-  ClBufferHandle point_buf(clCreateBuffer(runtime.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
-                                          n * 3 * sizeof(float), const_cast<std::array<float, 3>*>(points.data()), &err));
+  ClBufferHandle point_buf(clCreateBuffer(
+      runtime.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, n * 3 * sizeof(float),
+      const_cast<std::array<float, 3>*>(points.data()), &err));
   cl_check(err, "clCreateBuffer", "probe points");
-  ClBufferHandle out_buf(clCreateBuffer(runtime.context(), CL_MEM_WRITE_ONLY, n * sizeof(float), nullptr, &err));
+  ClBufferHandle out_buf(
+      clCreateBuffer(runtime.context(), CL_MEM_WRITE_ONLY, n * sizeof(float), nullptr, &err));
   cl_check(err, "clCreateBuffer", "probe results");
 
   cl_mem pb = param_buf.get(), xb = point_buf.get(), ob = out_buf.get();
@@ -32,10 +39,12 @@ std::vector<float> probe_de(ClRuntime& runtime, const SceneInfo& info, const std
   cl_check(clSetKernelArg(kernel, 2, sizeof ob, &ob), "clSetKernelArg");
   cl_check(clSetKernelArg(kernel, 3, sizeof count, &count), "clSetKernelArg");
   const size_t global = (n + lanes - 1) / lanes;
-  cl_check(clEnqueueNDRangeKernel(runtime.queue(), kernel, 1, nullptr, &global, nullptr, 0, nullptr, nullptr),
+  cl_check(clEnqueueNDRangeKernel(runtime.queue(), kernel, 1, nullptr, &global, nullptr, 0, nullptr,
+                                  nullptr),
            "clEnqueueNDRangeKernel", "probing " + k.description);
   std::vector<float> out(n);
-  cl_check(clEnqueueReadBuffer(runtime.queue(), ob, CL_TRUE, 0, n * sizeof(float), out.data(), 0, nullptr, nullptr),
+  cl_check(clEnqueueReadBuffer(runtime.queue(), ob, CL_TRUE, 0, n * sizeof(float), out.data(), 0,
+                               nullptr, nullptr),
            "clEnqueueReadBuffer", "reading probe results");
   return out;
 }

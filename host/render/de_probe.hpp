@@ -13,7 +13,8 @@ namespace fr {
 
 // DE values at `points` (world space) with parameter values `params`. lanes 0 picks the
 // device's width. Throws KernelBuildError or ClError like the renderer.
-std::vector<float> probe_de(ClRuntime& runtime, const SceneInfo& info, const std::vector<fr_value>& params,
+std::vector<float> probe_de(ClRuntime& runtime, const SceneInfo& info,
+                            const std::vector<fr_value>& params,
                             const std::vector<std::array<float, 3>>& points, int lanes = 0,
                             Precision precision = Precision::Float);
 

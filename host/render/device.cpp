@@ -45,7 +45,8 @@ std::string DeviceInfo::selector() const {
 std::vector<DeviceInfo> list_devices() {
   std::vector<DeviceInfo> out;
   cl_uint platform_count = 0;
-  if (clGetPlatformIDs(0, nullptr, &platform_count) != CL_SUCCESS || platform_count == 0) return out;
+  if (clGetPlatformIDs(0, nullptr, &platform_count) != CL_SUCCESS || platform_count == 0)
+    return out;
   std::vector<cl_platform_id> platforms(platform_count);
   cl_check(clGetPlatformIDs(platform_count, platforms.data(), nullptr), "clGetPlatformIDs");
   for (cl_uint pi = 0; pi < platform_count; ++pi) {
@@ -53,8 +54,9 @@ std::vector<DeviceInfo> list_devices() {
     if (clGetDeviceIDs(platforms[pi], CL_DEVICE_TYPE_ALL, 0, nullptr, &device_count) != CL_SUCCESS)
       continue;
     std::vector<cl_device_id> devices(device_count);
-    cl_check(clGetDeviceIDs(platforms[pi], CL_DEVICE_TYPE_ALL, device_count, devices.data(), nullptr),
-             "clGetDeviceIDs");
+    cl_check(
+        clGetDeviceIDs(platforms[pi], CL_DEVICE_TYPE_ALL, device_count, devices.data(), nullptr),
+        "clGetDeviceIDs");
     for (cl_uint di = 0; di < device_count; ++di) {
       DeviceInfo info;
       info.platform = platforms[pi];
@@ -73,8 +75,8 @@ std::vector<DeviceInfo> list_devices() {
       cl_ulong mem = 0;
       clGetDeviceInfo(devices[di], CL_DEVICE_GLOBAL_MEM_SIZE, sizeof mem, &mem, nullptr);
       info.global_mem_bytes = mem;
-      info.has_fp64 = device_string(devices[di], CL_DEVICE_EXTENSIONS).find("cl_khr_fp64") !=
-                      std::string::npos;
+      info.has_fp64 =
+          device_string(devices[di], CL_DEVICE_EXTENSIONS).find("cl_khr_fp64") != std::string::npos;
       out.push_back(std::move(info));
     }
   }
@@ -107,8 +109,9 @@ std::optional<DeviceInfo> select_device(const std::vector<DeviceInfo>& devices,
     if (d.selector() == sel) return d;
   for (const auto& d : devices)
     if (lower(d.name).find(sel) != std::string::npos) return d;
-  *error = "--device " + selector +
-           ": matches no device (expected gpu, cpu, P:D or part of a name; see `fractalis devices`)";
+  *error =
+      "--device " + selector +
+      ": matches no device (expected gpu, cpu, P:D or part of a name; see `fractalis devices`)";
   return std::nullopt;
 }
 

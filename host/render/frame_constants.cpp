@@ -55,7 +55,8 @@ fr_frame_constants make_frame_constants(const CameraRays& rays, const SceneState
   put(fc.albedo, s.albedo);
   put(fc.sky_zenith, s.sky_zenith);
   put(fc.sky_horizon, s.sky_horizon);
-  put(fc.sky_up, glm::normalize(glm::dvec3(state.camera.up[0], state.camera.up[1], state.camera.up[2])));
+  put(fc.sky_up,
+      glm::normalize(glm::dvec3(state.camera.up[0], state.camera.up[1], state.camera.up[2])));
 
   fc.width = rays.width_px;
   fc.height = rays.height_px;

@@ -45,10 +45,16 @@ void append_params(std::ostringstream& out, const SceneInfo& info,
     if (p.specialized()) continue;
     ++runtime_count;
     switch (p.type) {
-      case FR_PARAM_FLOAT: out << "  float " << p.key << ";\n"; break;
+      case FR_PARAM_FLOAT:
+        out << "  float " << p.key << ";\n";
+        break;
       case FR_PARAM_INT:
-      case FR_PARAM_BOOL: out << "  int " << p.key << ";\n"; break;
-      default: out << "  float " << p.key << "[3];\n"; break;
+      case FR_PARAM_BOOL:
+        out << "  int " << p.key << ";\n";
+        break;
+      default:
+        out << "  float " << p.key << "[3];\n";
+        break;
     }
   }
   if (runtime_count == 0) out << "  int unused; /* OpenCL C has no empty structs */\n";
@@ -60,18 +66,26 @@ void append_params(std::ostringstream& out, const SceneInfo& info,
     out << "#define FR_PARAM_" << p.key << " ";
     if (p.specialized()) {
       switch (p.type) {
-        case FR_PARAM_FLOAT: out << literal(v.v[0], precision); break;
+        case FR_PARAM_FLOAT:
+          out << literal(v.v[0], precision);
+          break;
         case FR_PARAM_INT:
-        case FR_PARAM_BOOL: out << "(" << static_cast<long long>(v.v[0]) << ")"; break;
+        case FR_PARAM_BOOL:
+          out << "(" << static_cast<long long>(v.v[0]) << ")";
+          break;
         default:
           out << "v3s(" << literal(v.v[0], precision) << ", " << literal(v.v[1], precision) << ", "
               << literal(v.v[2], precision) << ")";
       }
     } else {
       switch (p.type) {
-        case FR_PARAM_FLOAT: out << "((scalar_t)params->" << p.key << ")"; break;
+        case FR_PARAM_FLOAT:
+          out << "((scalar_t)params->" << p.key << ")";
+          break;
         case FR_PARAM_INT:
-        case FR_PARAM_BOOL: out << "(params->" << p.key << ")"; break;
+        case FR_PARAM_BOOL:
+          out << "(params->" << p.key << ")";
+          break;
         default:
           out << "v3s(params->" << p.key << "[0], params->" << p.key << "[1], params->" << p.key
               << "[2])";
@@ -85,10 +99,14 @@ void append_params(std::ostringstream& out, const SceneInfo& info,
 
 TileShape tile_shape(int lanes) {
   switch (lanes) {
-    case 16: return {4, 4};
-    case 8: return {4, 2};
-    case 4: return {2, 2};
-    default: return {1, 1};
+    case 16:
+      return {4, 4};
+    case 8:
+      return {4, 2};
+    case 4:
+      return {2, 2};
+    default:
+      return {1, 1};
   }
 }
 
@@ -110,7 +128,8 @@ namespace {
 void append_scene_prefix(std::ostringstream& out, const SceneInfo& info,
                          const std::vector<fr_value>& values, const KernelConfig& config,
                          const char* kind) {
-  out << "/* Fractalis " << kind << " kernel for scene '" << info.id << "'. Generated; see kernels/. */\n";
+  out << "/* Fractalis " << kind << " kernel for scene '" << info.id
+      << "'. Generated; see kernels/. */\n";
   out << "#define FR_LANES " << config.lanes << "\n";
   out << "#define FR_DOUBLE " << (config.precision == Precision::Double ? 1 : 0) << "\n";
   for (const auto& s : kOptionalStages)
@@ -130,8 +149,9 @@ AssembledKernel finish(std::ostringstream& out, const SceneInfo& info, const Ker
   // 205 ms with it, 200 ms without, before the exp2/native trig changes). mad contraction costs
   // little accuracy and is checked against the double build by the tests.
   k.build_options = "-cl-std=CL1.2 -cl-mad-enable";
-  k.description = "scene '" + info.id + "' " + kind + " kernel (lanes " + std::to_string(config.lanes) +
-                  ", " + (config.precision == Precision::Double ? "double" : "float") +
+  k.description = "scene '" + info.id + "' " + kind + " kernel (lanes " +
+                  std::to_string(config.lanes) + ", " +
+                  (config.precision == Precision::Double ? "double" : "float") +
                   ", stages: " + stage_names(config.stages) + ")";
   return k;
 }

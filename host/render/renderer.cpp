@@ -22,7 +22,9 @@ void set_arg(cl_kernel k, cl_uint index, const T& value) {
   cl_check(clSetKernelArg(k, index, sizeof(T), &value), "clSetKernelArg");
 }
 
-size_t round_up_div(size_t n, size_t d) { return (n + d - 1) / d; }
+size_t round_up_div(size_t n, size_t d) {
+  return (n + d - 1) / d;
+}
 
 }  // namespace
 
@@ -53,14 +55,14 @@ FrameImage Renderer::render(const SceneInfo& info, const SceneState& state,
   const int lanes = lanes_for(settings);
   KernelConfig config{lanes, settings.precision, enabled_stages(info, settings.disabled_stages)};
   const AssembledKernel assembled = assemble_render_kernel(info, state.params, config);
-  cl_program program = runtime_.program(assembled.source, assembled.build_options,
-                                        assembled.description);
+  cl_program program =
+      runtime_.program(assembled.source, assembled.build_options, assembled.description);
   cl_kernel render_kernel = runtime_.kernel(program, "fr_render");
 
   // The post stage does not depend on the scene: one program for all.
   static const std::string post_source = std::string(kernel_source("post.cl"));
-  cl_kernel post_kernel = runtime_.kernel(
-      runtime_.program(post_source, "-cl-std=CL1.2", "post-processing"), "fr_post");
+  cl_kernel post_kernel =
+      runtime_.kernel(runtime_.program(post_source, "-cl-std=CL1.2", "post-processing"), "fr_post");
 
   const int w = settings.width_px, h = settings.height_px;
   const size_t n = static_cast<size_t>(w) * h;
@@ -69,8 +71,9 @@ FrameImage Renderer::render(const SceneInfo& info, const SceneState& state,
 
   const CameraRays rays = make_camera_rays(state.camera, w, h);
   const fr_frame_constants fc = make_frame_constants(rays, state, settings);
-  cl_check(clEnqueueWriteBuffer(q, constants_.get(), CL_FALSE, 0, sizeof fc, &fc, 0, nullptr, nullptr),
-           "clEnqueueWriteBuffer", "uploading frame constants");
+  cl_check(
+      clEnqueueWriteBuffer(q, constants_.get(), CL_FALSE, 0, sizeof fc, &fc, 0, nullptr, nullptr),
+      "clEnqueueWriteBuffer", "uploading frame constants");
   const std::vector<uint8_t> params = pack_scene_params(info, state.params);
   if (params.size() != params_bytes_) {
     params_ = make_buffer(runtime_.context(), CL_MEM_READ_ONLY, params.size(), "scene parameters");
@@ -89,8 +92,9 @@ FrameImage Renderer::render(const SceneInfo& info, const SceneState& state,
   set_arg(render_kernel, 4, s);
   const TileShape tile = tile_shape(lanes);
   const size_t global[2] = {round_up_div(w, tile.width_px), round_up_div(h, tile.height_px)};
-  cl_check(clEnqueueNDRangeKernel(q, render_kernel, 2, nullptr, global, nullptr, 0, nullptr, nullptr),
-           "clEnqueueNDRangeKernel", "rendering " + assembled.description);
+  cl_check(
+      clEnqueueNDRangeKernel(q, render_kernel, 2, nullptr, global, nullptr, 0, nullptr, nullptr),
+      "clEnqueueNDRangeKernel", "rendering " + assembled.description);
 
   const cl_int quad_count = static_cast<cl_int>(round_up_div(n, 4));
   const cl_float exposure = settings.exposure;
@@ -99,7 +103,8 @@ FrameImage Renderer::render(const SceneInfo& info, const SceneState& state,
   set_arg(post_kernel, 2, exposure);
   set_arg(post_kernel, 3, quad_count);
   const size_t post_global = round_up_div(n, 4);  // four pixels per work-item
-  cl_check(clEnqueueNDRangeKernel(q, post_kernel, 1, nullptr, &post_global, nullptr, 0, nullptr, nullptr),
+  cl_check(clEnqueueNDRangeKernel(q, post_kernel, 1, nullptr, &post_global, nullptr, 0, nullptr,
+                                  nullptr),
            "clEnqueueNDRangeKernel", "post-processing");
 
   FrameImage img;
@@ -113,7 +118,8 @@ FrameImage Renderer::render(const SceneInfo& info, const SceneState& state,
     img.linear_rgba.resize(n * 4);
     img.depth.resize(n);
     img.steps.resize(n);
-    cl_check(clEnqueueReadBuffer(q, hdr, CL_FALSE, 0, n * 16, img.linear_rgba.data(), 0, nullptr, nullptr),
+    cl_check(clEnqueueReadBuffer(q, hdr, CL_FALSE, 0, n * 16, img.linear_rgba.data(), 0, nullptr,
+                                 nullptr),
              "clEnqueueReadBuffer");
     cl_check(clEnqueueReadBuffer(q, d, CL_FALSE, 0, n * 4, img.depth.data(), 0, nullptr, nullptr),
              "clEnqueueReadBuffer");

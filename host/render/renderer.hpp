@@ -15,8 +15,8 @@ namespace fr {
 struct FrameImage {
   int width_px = 0;
   int height_px = 0;
-  int lanes = 0;                // lane width the frame was rendered with
-  std::vector<uint8_t> rgba8;   // tonemapped, sRGB, 4 bytes per pixel, rows top to bottom
+  int lanes = 0;               // lane width the frame was rendered with
+  std::vector<uint8_t> rgba8;  // tonemapped, sRGB, 4 bytes per pixel, rows top to bottom
   // Filled only when asked for (render's read_linear):
   std::vector<float> linear_rgba;  // linear HDR, 4 floats per pixel
   std::vector<float> depth;        // distance along the ray to the hit; +inf for a miss

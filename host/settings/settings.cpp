@@ -10,8 +10,8 @@ namespace fr {
 namespace {
 
 const char* const kKnownKeys[] = {
-    "plugins.folders",       "device.select",        "render.lanes",       "render.precision",
-    "render.max_steps",      "render.hit_threshold_k", "render.exposure",  "render.ao_strength",
+    "plugins.folders",        "device.select",          "render.lanes",    "render.precision",
+    "render.max_steps",       "render.hit_threshold_k", "render.exposure", "render.ao_strength",
     "render.effects.shadows", "render.effects.ao",
 };
 
@@ -38,11 +38,12 @@ struct Reader {
   // Walks every leaf, reporting keys that are not known.
   void check_keys(const toml::table& table, const std::string& prefix) {
     for (const auto& [k, node] : table) {
-      const std::string key = prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str());
+      const std::string key =
+          prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str());
       if (const auto* sub = node.as_table()) {
-        const bool is_prefix = std::any_of(std::begin(kKnownKeys), std::end(kKnownKeys), [&](const char* known) {
-          return std::string(known).rfind(key + ".", 0) == 0;
-        });
+        const bool is_prefix = std::any_of(
+            std::begin(kKnownKeys), std::end(kKnownKeys),
+            [&](const char* known) { return std::string(known).rfind(key + ".", 0) == 0; });
         if (is_prefix) {
           check_keys(*sub, key);
           continue;
@@ -57,7 +58,8 @@ struct Reader {
 }  // namespace
 
 std::string SettingsProblem::to_string() const {
-  return file + ":" + std::to_string(line) + ": " + (key.empty() ? "" : "key '" + key + "': ") + message;
+  return file + ":" + std::to_string(line) + ": " + (key.empty() ? "" : "key '" + key + "': ") +
+         message;
 }
 
 std::string nearest_known_key(const std::string& key) {
@@ -72,9 +74,12 @@ std::string nearest_known_key(const std::string& key) {
 
 std::optional<std::filesystem::path> user_settings_file() {
   std::filesystem::path base;
-  if (const char* xdg = std::getenv("XDG_CONFIG_HOME"); xdg && *xdg) base = xdg;
-  else if (const char* home = std::getenv("HOME"); home && *home) base = std::filesystem::path(home) / ".config";
-  else return std::nullopt;
+  if (const char* xdg = std::getenv("XDG_CONFIG_HOME"); xdg && *xdg)
+    base = xdg;
+  else if (const char* home = std::getenv("HOME"); home && *home)
+    base = std::filesystem::path(home) / ".config";
+  else
+    return std::nullopt;
   auto file = base / "fractalis" / "config.toml";
   std::error_code ec;
   if (std::filesystem::is_regular_file(file, ec)) return file;
@@ -102,13 +107,16 @@ std::vector<SettingsProblem> load_settings_file(const std::filesystem::path& fil
     if (!arr) return r.problem(n, "plugins.folders", "expected an array of folder paths");
     std::vector<std::filesystem::path> folders;
     for (const auto& item : *arr) {
-      if (!item.is_string()) return r.problem(item, "plugins.folders", "expected a string (a folder path)");
+      if (!item.is_string())
+        return r.problem(item, "plugins.folders", "expected a string (a folder path)");
       folders.emplace_back(item.as_string()->get());
     }
     s.plugin_folders = folders;
   });
   with("device.select", [&](const toml::node& n) {
-    if (!n.is_string()) return r.problem(n, "device.select", "expected a string: \"\", \"gpu\", \"cpu\", \"P:D\" or part of a name");
+    if (!n.is_string())
+      return r.problem(n, "device.select",
+                       "expected a string: \"\", \"gpu\", \"cpu\", \"P:D\" or part of a name");
     s.device = n.as_string()->get();
   });
   with("render.lanes", [&](const toml::node& n) {
@@ -125,7 +133,8 @@ std::vector<SettingsProblem> load_settings_file(const std::filesystem::path& fil
   });
   with("render.max_steps", [&](const toml::node& n) {
     auto v = n.value<int64_t>();
-    if (!n.is_integer() || *v < 1 || *v > 10000) return r.problem(n, "render.max_steps", "expected an integer in [1, 10000]");
+    if (!n.is_integer() || *v < 1 || *v > 10000)
+      return r.problem(n, "render.max_steps", "expected an integer in [1, 10000]");
     s.render.max_steps = static_cast<int>(*v);
   });
   auto positive_float = [&](const char* key, float& out, double hi) {
@@ -142,14 +151,17 @@ std::vector<SettingsProblem> load_settings_file(const std::filesystem::path& fil
   auto effect = [&](const char* key, fr_features feature) {
     with(key, [&](const toml::node& n) {
       if (!n.is_boolean()) return r.problem(n, key, "expected true or false");
-      if (*n.value<bool>()) s.render.disabled_stages &= ~feature;
-      else s.render.disabled_stages |= feature;
+      if (*n.value<bool>())
+        s.render.disabled_stages &= ~feature;
+      else
+        s.render.disabled_stages |= feature;
     });
   };
   effect("render.effects.shadows", FR_FEATURE_SHADOWS);
   effect("render.effects.ao", FR_FEATURE_AO);
-  std::stable_sort(r.problems.begin(), r.problems.end(),
-                   [](const SettingsProblem& a, const SettingsProblem& b) { return a.line < b.line; });
+  std::stable_sort(
+      r.problems.begin(), r.problems.end(),
+      [](const SettingsProblem& a, const SettingsProblem& b) { return a.line < b.line; });
   return r.problems;
 }
 

@@ -33,7 +33,8 @@ std::optional<std::filesystem::path> user_settings_file();
 
 // Reads `file` over `settings`. Values that are wrong are reported and leave that setting as it
 // was; the rest still apply. Returns the problems (empty when the file is fine).
-std::vector<SettingsProblem> load_settings_file(const std::filesystem::path& file, Settings& settings);
+std::vector<SettingsProblem> load_settings_file(const std::filesystem::path& file,
+                                                Settings& settings);
 
 // The known key closest to `key` by edit distance (for "did you mean").
 std::string nearest_known_key(const std::string& key);
