@@ -1,9 +1,11 @@
 /* frame_constants.h — the per-frame constants, declared once for the host (C++) and the device
  * (OpenCL C). Only 4-byte float and int fields, and float[4] for vectors, so the layout is the
  * same on both sides with no padding rules to get wrong; host/render/frame_constants.cpp freezes
- * it with static_asserts. Vectors are world space; angles are radians. */
+ * it with static_asserts. Vectors are world space; angles are radians; lengths are world units. */
 #ifndef FR_FRAME_CONSTANTS_H
 #define FR_FRAME_CONSTANTS_H
+
+#define FR_MAX_LIGHTS 8
 
 typedef struct fr_frame_constants {
   /* Camera, in the seed model's terms (host/render/camera.hpp): the ray through pixel column x,
@@ -13,30 +15,52 @@ typedef struct fr_frame_constants {
   float first_pixel_dir[4]; /* p_1m */
   float pixel_step_x[4];    /* q_x */
   float pixel_step_y[4];    /* q_y */
+  float camera_right[4];    /* unit vectors of the image plane and view, for the lens */
+  float camera_up[4];
+  float camera_forward[4];
 
-  float to_light[4];     /* unit vector from the surface towards the (directional) light */
-  float light_color[4];  /* linear RGB times intensity */
+  float light_vector[FR_MAX_LIGHTS][4];  /* xyz: direction of travel (directional) or position
+                                            (point); w: kind, 1 directional or 2 point */
+  float light_color[FR_MAX_LIGHTS][4];   /* rgb: colour x intensity; w: attenuation a */
+  float light_falloff[FR_MAX_LIGHTS][4]; /* x: falloff exponent e; yzw: zero */
+
   float ambient_color[4];
-  float albedo[4];
+  float albedo[4]; /* the material without a scene surface source; w: reflectivity */
   float sky_zenith[4];
   float sky_horizon[4];
-  float sky_up[4]; /* unit "up" of the sky gradient: the camera's up vector */
+  float sky_up[4];     /* unit "up" of the sky gradient: the camera's up vector */
+  float glow_color[4]; /* rgb; w: strength */
+  float fog_color[4];  /* rgb; w: fogScale of the power-law fog */
 
   int width;
   int height;
   int max_steps;        /* march iterations per ray */
   int shadow_max_steps; /* march iterations per shadow ray */
+  int light_count;
+  int max_bounces;      /* mirror bounces after the primary hit */
+  int ao_samples;       /* samples of the sampled ambient occlusion */
+  int sample_index;     /* 0 for the first sample of an accumulation */
 
   float pixel_angle_rad;   /* angle between neighbouring pixel centres at the image centre */
   float hit_threshold_k;   /* epsilon = k * t * pixel_angle_rad (the clarity function) */
   float max_distance;      /* rays end here */
   float bounding_radius;   /* the scene's surface lies inside this sphere around the origin */
   float step_scale;        /* multiplies each DE step (< 1 for DEs that over-estimate) */
-  float ao_strength;       /* exponent of the step-count occlusion term */
+  float ao_strength;       /* step-count: exponent; sampled: occlusion gain */
+  float ao_distance;       /* sampled AO: farthest sample along the normal */
   float shadow_softness;   /* penumbra factor k of the soft-shadow term; larger is harder */
   float specular_strength; /* Blinn-Phong weight */
   float specular_power;    /* Blinn-Phong exponent */
-  float reserved[3];       /* zero; keeps the struct a multiple of 16 bytes */
+  float roughness;         /* Oren-Nayar sigma, radians */
+  float fresnel_f0;        /* Schlick reflectance at normal incidence */
+  float fog_density;       /* exponential fog: 1 - exp(-density * t) */
+  float glow_falloff;      /* glow = strength * exp(-closest approach / falloff) */
+  float aperture_radius;   /* thin lens; 0 is a pinhole */
+  float focus_distance;    /* along the view direction */
+  float jitter_x;          /* sub-pixel offset of this sample, pixels */
+  float jitter_y;
+  float accumulate_weight; /* weight of this sample in the running mean: 1 / (sample_index + 1) */
+  float reserved;          /* zero; keeps the struct a multiple of 16 bytes */
 } fr_frame_constants;
 
 #endif /* FR_FRAME_CONSTANTS_H */

@@ -1,13 +1,15 @@
-/* march.cl — sphere tracing inside the scene's bounding sphere. The one march loop. */
+/* march.cl — sphere tracing inside the scene's bounding sphere. The one march loop: primary
+ * rays and mirror bounces both use it. */
 
 typedef struct march_result_t {
-  real_t t;     /* distance along the ray to the hit (meaningful where hit) */
-  mask_t hit;   /* the ray reached the surface */
-  real_t steps; /* DE evaluations spent, for step-count AO and statistics */
+  real_t t;        /* distance along the ray to the hit (meaningful where hit) */
+  mask_t hit;      /* the ray reached the surface */
+  real_t steps;    /* DE evaluations spent, for step-count AO and statistics */
+  real_t min_dist; /* closest approach to the surface (tracked only when glow is on) */
 } march_result_t;
 
-/* Entry and exit distances of the ray through the sphere |p| = radius; `inside` is false where
- * the ray misses it or it lies behind the eye. */
+/* Entry and exit distances of the ray through the sphere |p| = radius; false where the ray
+ * misses it or it lies behind the origin. */
 inline mask_t intersect_bounds(ray_t ray, scalar_t radius, real_t* t_enter, real_t* t_exit) {
   real_t b = v3_dot(ray.origin, ray.dir);
   real_t c = v3_length2(ray.origin) - (real_t)(radius * radius);
@@ -18,11 +20,18 @@ inline mask_t intersect_bounds(ray_t ray, scalar_t radius, real_t* t_enter, real
   return (disc > (real_t)0) & (*t_exit > (real_t)0);
 }
 
+/* Stage hook: glow.cl tracks the closest approach; otherwise nothing is tracked. */
+#ifndef FR_MARCH_TRACK
+#define FR_MARCH_TRACK(min_dist, dist, active)
+#endif
+
 /* Marches each lane until it is within the hit threshold of the surface, leaves the bounding
- * sphere or runs out of steps. Rays that run out of steps are counted as hits: they are deep in
- * a crevice, where a miss would show the sky through the surface. The DE is only roughly
- * 1-Lipschitz, so each step is scaled by fc->step_scale and never exceeds the bounding radius. */
-march_result_t march(ray_t ray, __constant const fr_frame_constants* fc,
+ * sphere or runs out of steps. `path_t` is the length already travelled (before a bounce), so
+ * the threshold keeps following the pixel's footprint. Rays that run out of steps count as hits:
+ * they are deep in a crevice, where a miss would show the sky through the surface. The DE is only
+ * roughly 1-Lipschitz, so each step is scaled by fc->step_scale and never exceeds the bounding
+ * radius. */
+march_result_t march(ray_t ray, real_t path_t, __constant const fr_frame_constants* fc,
                      __constant const scene_params_t* params) {
   real_t t, t_exit;
   mask_t active = intersect_bounds(ray, fc->bounding_radius, &t, &t_exit);
@@ -30,11 +39,13 @@ march_result_t march(ray_t ray, __constant const fr_frame_constants* fc,
   active &= t < t_exit;
   mask_t hit = FR_MASK_FALSE;
   real_t steps = (real_t)0;
+  real_t min_dist = (real_t)FR_SCALAR_MAX;
   const real_t max_step = (real_t)fc->bounding_radius;
   for (int i = 0; i < fc->max_steps && any_lane(active); ++i) {
     vec3_t p = v3_mad(ray.origin, ray.dir, t);
     real_t dist = scene_de(p, params);
-    mask_t reached = active & (dist < hit_threshold(fc, t, p));
+    FR_MARCH_TRACK(min_dist, dist, active);
+    mask_t reached = active & (dist < hit_threshold(fc, path_t + t, p));
     steps += mask_to_real(active);
     hit |= reached;
     active &= !reached;
@@ -45,5 +56,6 @@ march_result_t march(ray_t ray, __constant const fr_frame_constants* fc,
   r.t = t;
   r.hit = hit | active; /* out of steps */
   r.steps = steps;
+  r.min_dist = min_dist;
   return r;
 }

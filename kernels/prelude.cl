@@ -70,6 +70,21 @@ typedef FR_CAT(int, FR_LANES) mask_t;
 #endif
 
 #define FR_MASK_FALSE ((mask_t)0)
+
+/* Per-lane unsigned integers, for hashing pixels into random numbers. */
+#if FR_LANES == 1
+typedef uint lane_uint_t;
+#define FR_LANE_SUFFIX
+#else
+typedef FR_CAT(uint, FR_LANES) lane_uint_t;
+#define FR_LANE_SUFFIX FR_LANES
+#endif
+#define real_to_uint(x) FR_CAT(convert_uint, FR_LANE_SUFFIX)(x)
+#if FR_DOUBLE
+#define uint_to_real(x) FR_CAT(convert_double, FR_LANE_SUFFIX)(x)
+#else
+#define uint_to_real(x) FR_CAT(convert_float, FR_LANE_SUFFIX)(x)
+#endif
 #define to_real(x) ((real_t)(x))
 #define mask_to_real(m) lane_select((m), 1, 0)
 
@@ -156,3 +171,29 @@ inline real_t fast_cos(real_t a) { return native_cos(wrap_angle(a)); }
 inline real_t pow_nonneg(real_t x, real_t y) {
   return exp2(y * log2(fmax(x, (real_t)FR_SCALAR_MIN)));
 }
+
+/* What a scene's surface source returns for a surface point: linear albedo and the fraction of
+ * light mirrored (used when reflections are on). */
+typedef struct surface_t {
+  vec3_t albedo;
+  real_t reflectivity;
+} surface_t;
+
+/* A well-mixed 32-bit hash (Wellons' lowbias32). */
+inline lane_uint_t hash_uint(lane_uint_t h) {
+  h ^= h >> 16;
+  h *= 0x7feb352dU;
+  h ^= h >> 15;
+  h *= 0x846ca68bU;
+  h ^= h >> 16;
+  return h;
+}
+
+/* Uniform in [0, 1), different for every pixel, sample and stream. */
+inline real_t random_unit(lane_uint_t x, lane_uint_t y, uint sample, uint stream) {
+  lane_uint_t h = hash_uint(x * 1973U + hash_uint(y * 9277U + hash_uint(sample * 26699U + stream)));
+  return uint_to_real(h >> 8) * (real_t)(1.0 / 16777216.0);
+}
+
+/* a + (b - a) t, per lane. */
+inline vec3_t v3_mix(vec3_t a, vec3_t b, real_t t) { return v3_mad(a, v3_sub(b, a), t); }

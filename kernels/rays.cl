@@ -20,8 +20,8 @@ ray_t camera_ray(__constant const fr_frame_constants* fc, real_t px, real_t py) 
   return ray;
 }
 
-/* Hit threshold at distance t from the eye: the clarity function k * t * pixel angle, never below
- * a few ulp of |p| so that far from the origin the test stays meaningful in float. */
+/* Hit threshold at path length t from the eye: the clarity function k * t * pixel angle, never
+ * below a few ulp of |p| so that far from the origin the test stays meaningful in float. */
 inline real_t hit_threshold(__constant const fr_frame_constants* fc, real_t t, vec3_t p) {
   real_t clarity = (real_t)(fc->hit_threshold_k * fc->pixel_angle_rad) * t;
   real_t ulp_floor = (real_t)(4 * FR_SCALAR_EPSILON) * v3_length(p);

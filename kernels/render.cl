@@ -1,60 +1,136 @@
 /* render.cl — the frame kernel: one work-item per tile of FR_TILE_W x FR_TILE_H pixels (one
- * pixel at FR_LANES 1). Rays -> march -> normals -> shadow/AO -> shade; writes linear HDR RGBA,
- * hit depth (+inf for a miss) and DE steps per pixel. The host pastes the optional stages
- * (shadow.cl, ao.cl) in only when the scene needs them and they are switched on. */
+ * pixel at FR_LANES 1). Lens -> march -> normal -> surface -> AO -> lights and shadows -> fog,
+ * then mirror bounces; the sample is mixed into the running mean in hdr_rgba (progressive
+ * anti-aliasing and depth of field). Also writes, for the primary ray, the hit depth (+inf for a
+ * miss), the DE steps, and the occlusion and first-light shadow factors.
+ *
+ * Optional stages (lens.cl, glow.cl, ao.cl, shadow.cl, fog.cl) are pasted in by the host only
+ * when the scene needs them and they are switched on; each defines its hook, and a hook with no
+ * stage does nothing, so none of that stage's code is in the kernel. */
 
-/* Stage hooks: a stage file that is compiled in defines its hook; otherwise the hook does nothing
- * and none of the stage's code is in the kernel. */
-#ifndef FR_APPLY_SHADOWS
-#define FR_APPLY_SHADOWS(shadow, p, n, h, m)
+#ifndef FR_APPLY_LENS
+#define FR_APPLY_LENS(ray, px, py)
+#endif
+#ifndef FR_APPLY_GLOW
+#define FR_APPLY_GLOW(color, m, miss)
 #endif
 #ifndef FR_APPLY_AO
-#define FR_APPLY_AO(ao, m)
+#define FR_APPLY_AO(ao, p, n, m)
 #endif
+#ifndef FR_APPLY_FOG
+#define FR_APPLY_FOG(color, t)
+#endif
+
+#if FR_HAS_SURFACE
+#define surface_at(p) scene_surface(p, params)
+#else
+inline surface_t default_surface(__constant const fr_frame_constants* fc) {
+  surface_t s;
+  s.albedo = v3_from_float4(fc->albedo);
+  s.reflectivity = (real_t)fc->albedo[3];
+  return s;
+}
+#define surface_at(p) default_surface(fc)
+#endif
+
+inline vec3_t reflect_dir(vec3_t d, vec3_t n) { return v3_mad(d, n, -2 * v3_dot(d, n)); }
 
 __kernel void fr_render(__constant const fr_frame_constants* fc,
                         __constant const scene_params_t* params, __global float* hdr_rgba,
-                        __global float* depth, __global float* steps_out) {
+                        __global float* depth, __global float* steps_out,
+                        __global float* factors_out) {
   const int tile_x = get_global_id(0) * FR_TILE_W;
   const int tile_y = get_global_id(1) * FR_TILE_H;
-  real_t px = (real_t)tile_x + FR_LANE_X;
-  real_t py = (real_t)tile_y + FR_LANE_Y;
+  const real_t px = (real_t)tile_x + FR_LANE_X;
+  const real_t py = (real_t)tile_y + FR_LANE_Y;
 
-  ray_t ray = camera_ray(fc, px, py);
-  march_result_t m = march(ray, fc, params);
-  vec3_t color = sky_color(ray.dir, fc);
-  real_t t_hit = lane_select(m.hit, m.t, INFINITY);
+  ray_t ray = camera_ray(fc, px + (real_t)fc->jitter_x, py + (real_t)fc->jitter_y);
+  FR_APPLY_LENS(ray, px, py);
 
-  if (any_lane(m.hit)) {
+  vec3_t color = v3s(0, 0, 0);
+  vec3_t throughput = v3s(1, 1, 1);
+  mask_t active = FR_MASK_TRUE;
+  real_t path_t = (real_t)0;
+  real_t first_depth = (real_t)INFINITY, first_steps = (real_t)0;
+  real_t first_ao = (real_t)1, first_shadow = (real_t)1;
+#if FR_STAGE_REFLECTIONS
+  const int bounces = fc->max_bounces;
+#else
+  const int bounces = 0;
+#endif
+  for (int bounce = 0; bounce <= bounces; ++bounce) {
+    march_result_t m = march(ray, path_t, fc, params);
+    const mask_t hit = active & m.hit;
+    const mask_t miss = active & !m.hit;
+    vec3_t segment = sky_color(ray.dir, fc);
+    FR_APPLY_GLOW(segment, m, miss);
+    real_t reflectivity = (real_t)0;
     vec3_t p = v3_mad(ray.origin, ray.dir, m.t);
-    real_t h = hit_threshold(fc, m.t, p);
-    vec3_t n = calc_normal(p, h, params);
-    /* A degenerate normal (all four samples equal) faces the viewer. */
-    n = v3_select(v3_length2(n) > (real_t)0, n, v3_neg(ray.dir));
-    real_t shadow = (real_t)1;
-    real_t ao = (real_t)1;
-    FR_APPLY_SHADOWS(shadow, p, n, h, m);
-    FR_APPLY_AO(ao, m);
-    color = v3_select(m.hit, shade_surface(n, ray.dir, shadow, ao, fc), color);
+    vec3_t n = v3_neg(ray.dir);
+    real_t h = (real_t)0;
+    if (any_lane(hit)) {
+      h = hit_threshold(fc, path_t + m.t, p);
+      vec3_t gradient = calc_normal(p, h, params);
+      /* A degenerate normal (all samples equal) faces the viewer. */
+      n = v3_select(v3_length2(gradient) > (real_t)0, gradient, n);
+      surface_t surface = surface_at(p);
+      real_t ao = (real_t)1;
+      FR_APPLY_AO(ao, p, n, m);
+      real_t shadow = (real_t)1;
+      vec3_t lit = shade_surface(p, n, ray.dir, surface, ao, h, hit, fc, params, &shadow);
+      FR_APPLY_FOG(lit, path_t + m.t);
+      segment = v3_select(hit, lit, segment);
+      reflectivity = lane_select(hit, clamp(surface.reflectivity, (real_t)0, (real_t)1), 0);
+      if (bounce == 0) {
+        first_ao = lane_select(hit, ao, 1);
+        first_shadow = lane_select(hit, shadow, 1);
+      }
+    }
+    if (bounce == 0) {
+      first_depth = lane_select(m.hit, m.t, INFINITY);
+      first_steps = m.steps;
+    }
+    /* What is not mirrored is this segment's own colour; at the last bounce, all of it. */
+    const real_t own = bounce == bounces ? (real_t)1 : (real_t)1 - reflectivity;
+    const real_t weight = lane_select(active, own, 0);
+    color = v3_add(color, v3_scale(v3_mul(throughput, segment), weight));
+    active = hit & (reflectivity > (real_t)0);
+    if (bounce == bounces || !any_lane(active)) break;
+    throughput = v3_scale(throughput, reflectivity);
+    path_t += m.t;
+    ray.dir = reflect_dir(ray.dir, n);
+    ray.origin = v3_mad(p, n, 2 * h);
   }
 
   /* Scatter the lanes to their pixels; tiles at the right and bottom edges are partial. */
-  float r[FR_LANES], g[FR_LANES], b[FR_LANES], d[FR_LANES], s[FR_LANES];
+  float r[FR_LANES], g[FR_LANES], b[FR_LANES], d[FR_LANES], s[FR_LANES], o[FR_LANES],
+      sh[FR_LANES];
   store_lanes(color.x, r);
   store_lanes(color.y, g);
   store_lanes(color.z, b);
-  store_lanes(t_hit, d);
-  store_lanes(m.steps, s);
+  store_lanes(first_depth, d);
+  store_lanes(first_steps, s);
+  store_lanes(first_ao, o);
+  store_lanes(first_shadow, sh);
+  const float w = fc->accumulate_weight;
   for (int lane = 0; lane < FR_LANES; ++lane) {
     int x = tile_x + lane % FR_TILE_W;
     int y = tile_y + lane / FR_TILE_W;
     if (x >= fc->width || y >= fc->height) continue;
     int i = y * fc->width + x;
-    hdr_rgba[4 * i + 0] = r[lane];
-    hdr_rgba[4 * i + 1] = g[lane];
-    hdr_rgba[4 * i + 2] = b[lane];
+    if (w < 1.0f) { /* running mean; the first sample overwrites whatever was there */
+      hdr_rgba[4 * i + 0] += (r[lane] - hdr_rgba[4 * i + 0]) * w;
+      hdr_rgba[4 * i + 1] += (g[lane] - hdr_rgba[4 * i + 1]) * w;
+      hdr_rgba[4 * i + 2] += (b[lane] - hdr_rgba[4 * i + 2]) * w;
+    } else {
+      hdr_rgba[4 * i + 0] = r[lane];
+      hdr_rgba[4 * i + 1] = g[lane];
+      hdr_rgba[4 * i + 2] = b[lane];
+    }
     hdr_rgba[4 * i + 3] = 1.0f;
     depth[i] = d[lane];
     steps_out[i] = s[lane];
+    factors_out[2 * i + 0] = o[lane];
+    factors_out[2 * i + 1] = sh[lane];
   }
 }

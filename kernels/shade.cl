@@ -1,5 +1,16 @@
-/* shade.cl — surface and sky colour: one directional light, Lambert diffuse plus Blinn-Phong
- * specular, ambient term scaled by occlusion. Linear RGB, unbounded (tonemapped in post.cl). */
+/* shade.cl — sky and surface colour. The surface sums every light through the shading model
+ * FR_SHADING picks, plus ambient light scaled by occlusion:
+ *   0  Lambert: albedo * cos(theta_i)
+ *   1  Blinn-Phong: Lambert + specular_strength * (n.h)^specular_power
+ *   2  Oren-Nayar: rough diffuse, albedo * cos(theta_i) * (A + B max(0, cos(phi_i - phi_r))
+ *      sin(alpha) tan(beta)) with A = 1 - 0.5 s^2/(s^2 + 0.33), B = 0.45 s^2/(s^2 + 0.09),
+ *      alpha = max(theta_i, theta_r), beta = min(...), s = roughness; plus Blinn-Phong specular
+ *      weighted by Schlick's Fresnel term F = f0 + (1 - f0)(1 - h.v)^5, the diffuse by 1 - F.
+ * Linear RGB, unbounded (tonemapped in post.cl). */
+
+#ifndef FR_APPLY_SHADOWS
+#define FR_APPLY_SHADOWS(shadow, p, n, h, light, lanes)
+#endif
 
 vec3_t sky_color(vec3_t dir, __constant const fr_frame_constants* fc) {
   real_t up = clamp(v3_dot(dir, v3_from_float4(fc->sky_up)), (real_t)0, (real_t)1);
@@ -8,20 +19,67 @@ vec3_t sky_color(vec3_t dir, __constant const fr_frame_constants* fc) {
   return v3_mad(v3_scale(horizon, (real_t)1 - up), zenith, up);
 }
 
-vec3_t shade_surface(vec3_t normal, vec3_t view_dir, real_t shadow, real_t ao,
-                     __constant const fr_frame_constants* fc) {
-  vec3_t to_light = v3_from_float4(fc->to_light);
-  real_t lambert = fmax(v3_dot(normal, to_light), (real_t)0);
-  vec3_t half_vec = v3_normalize(v3_sub(to_light, view_dir));
-  real_t spec_base = fmax(v3_dot(normal, half_vec), (real_t)0);
-  real_t specular = lane_select(lambert > (real_t)0,
-                                (real_t)fc->specular_strength *
-                                    pow_nonneg(spec_base, (real_t)fc->specular_power),
-                                0);
-  vec3_t albedo = v3_from_float4(fc->albedo);
-  vec3_t light = v3_from_float4(fc->light_color);
-  vec3_t ambient = v3_from_float4(fc->ambient_color);
-  vec3_t diffuse = v3_mad(v3_scale(ambient, ao), light, lambert * shadow);
-  vec3_t color = v3_mul(albedo, diffuse);
-  return v3_mad(color, light, specular * shadow);
+/* Reflected radiance per unit incoming radiance, times cos(theta_i), for one light. */
+vec3_t brdf_cos(vec3_t n, vec3_t to_light, vec3_t to_eye, vec3_t albedo, real_t n_dot_l,
+                __constant const fr_frame_constants* fc) {
+  real_t lambert = fmax(n_dot_l, (real_t)0);
+#if FR_SHADING == 0
+  return v3_scale(albedo, lambert);
+#else
+  vec3_t half_vec = v3_normalize(v3_add(to_light, to_eye));
+  real_t spec = (real_t)fc->specular_strength *
+                pow_nonneg(fmax(v3_dot(n, half_vec), (real_t)0), (real_t)fc->specular_power);
+  spec = lane_select(lambert > 0, spec * lambert, 0);
+#if FR_SHADING == 1
+  return v3_add(v3_scale(albedo, lambert), v3(spec, spec, spec));
+#else
+  const real_t s2 = (real_t)(fc->roughness * fc->roughness);
+  const real_t a = (real_t)1 - (real_t)0.5 * s2 / (s2 + (real_t)0.33);
+  const real_t b = (real_t)0.45 * s2 / (s2 + (real_t)0.09);
+  real_t n_dot_v = clamp(v3_dot(n, to_eye), (real_t)0, (real_t)1);
+  real_t cos_i = clamp(n_dot_l, (real_t)0, (real_t)1);
+  /* cos(phi_i - phi_r): the angle between the light and eye directions projected on the
+   * tangent plane. */
+  vec3_t li = v3_normalize(v3_mad(to_light, n, -cos_i));
+  vec3_t lr = v3_normalize(v3_mad(to_eye, n, -n_dot_v));
+  real_t cos_phi = fmax(v3_dot(li, lr), (real_t)0);
+  real_t cos_alpha = fmin(cos_i, n_dot_v), cos_beta = fmax(cos_i, n_dot_v);
+  real_t sin_alpha = sqrt(fmax((real_t)1 - cos_alpha * cos_alpha, (real_t)0));
+  real_t tan_beta = sqrt(fmax((real_t)1 - cos_beta * cos_beta, (real_t)0)) /
+                    fmax(cos_beta, (real_t)1e-4);
+  real_t oren_nayar = lambert * (a + b * cos_phi * sin_alpha * tan_beta);
+  real_t h_dot_v = clamp(v3_dot(half_vec, to_eye), (real_t)0, (real_t)1);
+  real_t one_minus = (real_t)1 - h_dot_v;
+  real_t m5 = one_minus * one_minus * one_minus * one_minus * one_minus;
+  real_t fresnel = (real_t)fc->fresnel_f0 + (real_t)(1 - fc->fresnel_f0) * m5;
+  real_t diffuse = oren_nayar * ((real_t)1 - fresnel);
+  real_t specular = spec * fresnel;
+  return v3_add(v3_scale(albedo, diffuse), v3(specular, specular, specular));
+#endif
+#endif
+}
+
+/* The colour of the surface at p seen along view_dir, and the first light's shadow factor. */
+vec3_t shade_surface(vec3_t p, vec3_t n, vec3_t view_dir, surface_t surface, real_t ao, real_t h,
+                     mask_t lanes, __constant const fr_frame_constants* fc,
+                     __constant const scene_params_t* params, real_t* first_shadow) {
+  vec3_t to_eye = v3_neg(view_dir);
+  vec3_t color = v3_mul(surface.albedo, v3_scale(v3_from_float4(fc->ambient_color), ao));
+  *first_shadow = (real_t)1;
+  for (int i = 0; i < fc->light_count; ++i) {
+    light_sample_t light = sample_light(i, p, fc);
+    real_t n_dot_l = v3_dot(n, light.to_light);
+    mask_t facing = lanes & (n_dot_l > (real_t)0);
+    if (!any_lane(facing)) {
+      if (i == 0) *first_shadow = (real_t)0;
+      continue;
+    }
+    real_t shadow = (real_t)1;
+    FR_APPLY_SHADOWS(shadow, p, n, h, light, facing);
+    shadow = lane_select(facing, shadow, 0);
+    if (i == 0) *first_shadow = shadow;
+    vec3_t reflected = brdf_cos(n, light.to_light, to_eye, surface.albedo, n_dot_l, fc);
+    color = v3_add(color, v3_scale(v3_mul(reflected, light.radiance), shadow));
+  }
+  return color;
 }

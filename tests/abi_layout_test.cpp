@@ -25,7 +25,8 @@ static_assert(offsetof(fr_param_desc, max_value) == 96);
 static_assert(sizeof(fr_camera) == 88);
 static_assert(offsetof(fr_camera, eye) == 8);
 static_assert(offsetof(fr_camera, fov_deg) == 80);
-static_assert(sizeof(fr_light) == 64);
+static_assert(sizeof(fr_light) == 80);
+static_assert(offsetof(fr_light, falloff) == 72);
 
 static_assert(sizeof(fr_host) == 24);
 static_assert(offsetof(fr_host, log) == 16);
@@ -34,15 +35,16 @@ static_assert(sizeof(fr_frame_state) == 72);
 static_assert(offsetof(fr_frame_state, params) == 32);
 static_assert(offsetof(fr_frame_state, bounding_radius) == 64);
 
-static_assert(sizeof(fr_scene_desc) == 144);
+static_assert(sizeof(fr_scene_desc) == 160);
 static_assert(offsetof(fr_scene_desc, id) == 8);
 static_assert(offsetof(fr_scene_desc, de_source) == 56);
-static_assert(offsetof(fr_scene_desc, params) == 72);
-static_assert(offsetof(fr_scene_desc, param_count) == 80);
-static_assert(offsetof(fr_scene_desc, features) == 88);
-static_assert(offsetof(fr_scene_desc, bounding_radius) == 112);
-static_assert(offsetof(fr_scene_desc, create) == 120);
-static_assert(offsetof(fr_scene_desc, update) == 136);
+static_assert(offsetof(fr_scene_desc, surface_source) == 72);
+static_assert(offsetof(fr_scene_desc, params) == 88);
+static_assert(offsetof(fr_scene_desc, param_count) == 96);
+static_assert(offsetof(fr_scene_desc, features) == 104);
+static_assert(offsetof(fr_scene_desc, bounding_radius) == 128);
+static_assert(offsetof(fr_scene_desc, create) == 136);
+static_assert(offsetof(fr_scene_desc, update) == 152);
 
 TEST(AbiLayout, CAndCppAgree) {
   const size_t cpp[] = {sizeof(fr_scene_entry),

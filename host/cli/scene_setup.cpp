@@ -25,6 +25,9 @@ std::vector<OptionSpec> scene_option_specs() {
       {"time", "SECONDS", false, "scene time for the update callback (default 0)"},
       {"lanes", "1|4|8|16", false, "rays per work-item (default: 16 on CPUs, 1 on GPUs)"},
       {"precision", "float|double", false, "arithmetic precision of the kernel (default float)"},
+      {"samples", "N", false, "jittered samples per pixel, accumulated (anti-aliasing; default 1)"},
+      {"set", "KEY=VALUE", true, "any setting, as in config/default.toml (repeatable), e.g.\n"
+                                 "                                 render.effects.fog=false"},
       {"device", "SEL", false, "OpenCL device: gpu, cpu, P:D or part of its name"},
   };
   specs.insert(specs.end(), more.begin(), more.end());
@@ -42,14 +45,15 @@ Settings load_settings(const ParsedOptions& options) {
   } else {
     file = user_settings_file();
   }
-  if (file) {
-    auto problems = load_settings_file(*file, settings);
-    if (!problems.empty()) {
-      std::string message = problems.front().to_string();
-      if (problems.size() > 1) message += " (and " + std::to_string(problems.size() - 1) + " more)";
-      throw UsageError(message);
-    }
-  }
+  auto report = [](const std::vector<SettingsProblem>& problems) {
+    if (problems.empty()) return;
+    std::string message = problems.front().to_string();
+    if (problems.size() > 1) message += " (and " + std::to_string(problems.size() - 1) + " more)";
+    throw UsageError(message);
+  };
+  if (file) report(load_settings_file(*file, settings));
+  if (auto it = options.values.find("set"); it != options.values.end())
+    for (const std::string& assignment : it->second) report(apply_setting_override(assignment, settings));
   return settings;
 }
 
@@ -172,6 +176,8 @@ RenderSettings render_settings_from(const Settings& settings, const ParsedOption
       throw UsageError("--lanes: expected 1, 4, 8 or 16, got " + *lanes);
     r.lanes = static_cast<int>(n);
   }
+  if (auto samples = options.get("samples"))
+    r.samples = static_cast<int>(parse_integer("--samples", *samples, 1, 4096));
   if (auto precision = options.get("precision")) {
     if (*precision == "float")
       r.precision = Precision::Float;

@@ -127,6 +127,8 @@ std::variant<SceneInfo, Invalid> copy_scene(const fr_scene_desc* desc_ptr) {
   info.description = d.description ? d.description : "";
   info.de_source = d.de_source;
   info.de_source_name = d.de_source_name ? d.de_source_name : id + ".cl";
+  info.surface_source = d.surface_source ? d.surface_source : "";
+  info.surface_source_name = d.surface_source_name ? d.surface_source_name : id + "_surface.cl";
   info.features = d.features;
   info.bounding_radius = d.bounding_radius;
 
@@ -180,6 +182,10 @@ std::variant<SceneInfo, Invalid> copy_scene(const fr_scene_desc* desc_ptr) {
     if (light.kind != FR_LIGHT_DIRECTIONAL && light.kind != FR_LIGHT_POINT)
       return invalid("scene '" + id + "': light " + std::to_string(i) + " kind " +
                      std::to_string(light.kind) + " is neither directional (1) nor point (2)");
+    if (!(light.attenuation >= 0) || !std::isfinite(light.attenuation) ||
+        (light.attenuation > 0 && !(light.falloff > 0 && std::isfinite(light.falloff))))
+      return invalid("scene '" + id + "': light " + std::to_string(i) +
+                     " needs attenuation >= 0 and, when attenuation > 0, falloff > 0");
     info.lights.push_back(light);
   }
   return info;

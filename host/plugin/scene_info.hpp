@@ -42,6 +42,8 @@ struct SceneInfo {
   std::string description;
   std::string de_source;
   std::string de_source_name;  // for compiler messages; "<id>.cl" when the plugin gave none
+  std::string surface_source;  // empty: the host's material settings
+  std::string surface_source_name;
   std::vector<ParamInfo> params;
   fr_features features = 0;
   fr_camera camera{};

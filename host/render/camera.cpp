@@ -34,6 +34,9 @@ CameraRays make_camera_rays(const fr_camera& c, int k, int m) {
   const double g_y = g_x * m / k;
   CameraRays r;
   r.eye = to_vec(c.eye);
+  r.right = -b_n;
+  r.up = v_n;
+  r.forward = t_n;
   r.width_px = k;
   r.height_px = m;
   // A one-pixel-wide image has a single column at the centre (the seed divides by k - 1).

@@ -13,7 +13,7 @@ std::vector<float> probe_de(ClRuntime& runtime, const SceneInfo& info,
                             Precision precision) {
   if (points.empty()) return {};
   if (lanes <= 0) lanes = preferred_lanes(runtime.device());
-  const AssembledKernel k = assemble_probe_kernel(info, params, KernelConfig{lanes, precision, 0});
+  const AssembledKernel k = assemble_probe_kernel(info, params, KernelConfig{lanes, precision});
   cl_kernel kernel =
       runtime.kernel(runtime.program(k.source, k.build_options, k.description), "fr_probe_de");
 

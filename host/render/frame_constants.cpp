@@ -2,75 +2,109 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 
 namespace fr {
 
 // The kernels read this struct with OpenCL C's layout rules; with only 4-byte fields both sides
 // agree, and these checks keep it so.
-static_assert(sizeof(fr_frame_constants) == 240, "fr_frame_constants layout changed");
+static_assert(sizeof(fr_frame_constants) == 720, "fr_frame_constants layout changed");
 static_assert(sizeof(fr_frame_constants) % 16 == 0);
 static_assert(offsetof(fr_frame_constants, eye) == 0);
-static_assert(offsetof(fr_frame_constants, to_light) == 64);
-static_assert(offsetof(fr_frame_constants, width) == 176);
-static_assert(offsetof(fr_frame_constants, pixel_angle_rad) == 192);
-static_assert(offsetof(fr_frame_constants, reserved) == 228);
+static_assert(offsetof(fr_frame_constants, light_vector) == 112);
+static_assert(offsetof(fr_frame_constants, ambient_color) == 496);
+static_assert(offsetof(fr_frame_constants, width) == 608);
+static_assert(offsetof(fr_frame_constants, pixel_angle_rad) == 640);
+static_assert(offsetof(fr_frame_constants, reserved) == 716);
 
 namespace {
-void put(float out[4], glm::dvec3 v) {
+void put(float out[4], glm::dvec3 v, double w = 0) {
   out[0] = static_cast<float>(v.x);
   out[1] = static_cast<float>(v.y);
   out[2] = static_cast<float>(v.z);
-  out[3] = 0;
+  out[3] = static_cast<float>(w);
 }
-void put(float out[4], const std::array<float, 3>& v) {
-  out[0] = v[0];
-  out[1] = v[1];
-  out[2] = v[2];
-  out[3] = 0;
+void put(float out[4], const std::array<float, 3>& v, double w = 0) {
+  put(out, glm::dvec3(v[0], v[1], v[2]), w);
 }
+glm::dvec3 vec(const double v[3]) { return {v[0], v[1], v[2]}; }
 }  // namespace
 
+std::array<double, 2> sample_jitter(int i) {
+  if (i <= 0) return {0, 0};
+  const double g = 1.32471795724474602596;  // plastic number
+  double x = 0.5 + i / g, y = 0.5 + i / (g * g);
+  return {x - std::floor(x) - 0.5, y - std::floor(y) - 0.5};
+}
+
 fr_frame_constants make_frame_constants(const CameraRays& rays, const SceneState& state,
-                                        const RenderSettings& s) {
+                                        const RenderSettings& s, int sample_index) {
   fr_frame_constants fc{};
   put(fc.eye, rays.eye);
   put(fc.first_pixel_dir, rays.first_pixel_dir);
   put(fc.pixel_step_x, rays.pixel_step_x);
   put(fc.pixel_step_y, rays.pixel_step_y);
+  put(fc.camera_right, rays.right);
+  put(fc.camera_up, rays.up);
+  put(fc.camera_forward, rays.forward);
 
-  // The first directional light is the key light; without one, light from above-behind.
-  glm::dvec3 to_light = glm::normalize(glm::dvec3(0.5, 1.0, 0.6));
-  glm::dvec3 light_color(1.0);
+  // Lights: the scene's, up to FR_MAX_LIGHTS; without any, one from above-behind the camera.
+  int count = 0;
   for (const fr_light& l : state.lights) {
-    if (l.kind != FR_LIGHT_DIRECTIONAL) continue;
-    glm::dvec3 dir(l.vector[0], l.vector[1], l.vector[2]);
-    if (glm::length(dir) > 0) to_light = -glm::normalize(dir);
-    light_color = glm::dvec3(l.color[0], l.color[1], l.color[2]) * l.intensity;
-    break;
+    if (count == FR_MAX_LIGHTS) break;
+    const glm::dvec3 color = vec(l.color) * l.intensity;
+    put(fc.light_vector[count], vec(l.vector), l.kind == FR_LIGHT_DIRECTIONAL ? 1 : 2);
+    put(fc.light_color[count], color, l.kind == FR_LIGHT_POINT ? l.attenuation : 0);
+    fc.light_falloff[count][0] = static_cast<float>(l.kind == FR_LIGHT_POINT ? l.falloff : 0);
+    ++count;
   }
-  put(fc.to_light, to_light);
-  put(fc.light_color, light_color);
+  if (count == 0) {
+    put(fc.light_vector[0], -rays.forward - rays.up + 0.5 * rays.right, 1);
+    put(fc.light_color[0], glm::dvec3(1.2));
+    count = 1;
+  }
+  fc.light_count = count;
+
+  const double radius = state.bounding_radius;
   put(fc.ambient_color, s.ambient);
-  put(fc.albedo, s.albedo);
+  put(fc.albedo, s.albedo, s.reflectivity);
   put(fc.sky_zenith, s.sky_zenith);
   put(fc.sky_horizon, s.sky_horizon);
-  put(fc.sky_up,
-      glm::normalize(glm::dvec3(state.camera.up[0], state.camera.up[1], state.camera.up[2])));
+  put(fc.sky_up, rays.up);
+  put(fc.glow_color, s.glow_color, s.glow_strength);
+  // The power-law fog is fog_scale * (t / R)^0.75 = (fog_scale / R^0.75) * t^0.75.
+  put(fc.fog_color, s.fog_color, s.fog_scale / std::pow(radius, 0.75));
 
   fc.width = rays.width_px;
   fc.height = rays.height_px;
   fc.max_steps = s.max_steps;
   fc.shadow_max_steps = s.shadow_max_steps;
+  fc.max_bounces = s.max_bounces;
+  fc.ao_samples = std::max(1, s.ao_samples);
+  fc.sample_index = sample_index;
   fc.pixel_angle_rad = static_cast<float>(rays.pixel_angle_rad);
   fc.hit_threshold_k = s.hit_threshold_k;
   fc.max_distance = s.max_distance;
-  fc.bounding_radius = static_cast<float>(state.bounding_radius);
+  fc.bounding_radius = static_cast<float>(radius);
   fc.step_scale = s.step_scale;
   fc.ao_strength = s.ao_strength;
+  fc.ao_distance = static_cast<float>(s.ao_distance * radius);
   fc.shadow_softness = s.shadow_softness;
   fc.specular_strength = s.specular_strength;
   fc.specular_power = s.specular_power;
+  fc.roughness = s.roughness;
+  fc.fresnel_f0 = s.fresnel_f0;
+  fc.fog_density = static_cast<float>(s.fog_density / radius);
+  fc.glow_falloff = static_cast<float>(s.glow_falloff * radius);
+  fc.aperture_radius = s.aperture_radius;
+  fc.focus_distance = static_cast<float>(
+      s.focus_distance > 0 ? s.focus_distance : glm::length(vec(state.camera.target) - vec(state.camera.eye)));
+  const auto jitter = sample_jitter(sample_index);
+  fc.jitter_x = static_cast<float>(jitter[0]);
+  fc.jitter_y = static_cast<float>(jitter[1]);
+  fc.accumulate_weight = 1.0f / static_cast<float>(sample_index + 1);
   return fc;
 }
 

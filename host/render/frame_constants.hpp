@@ -11,7 +11,13 @@ extern "C" {
 
 namespace fr {
 
+// The constants of sample `sample_index` (0, 1, ...) of a frame: sample 0 goes through pixel
+// centres, later ones through jittered sub-pixel positions, mixed in with weight 1/(index + 1).
 fr_frame_constants make_frame_constants(const CameraRays& rays, const SceneState& state,
-                                        const RenderSettings& settings);
+                                        const RenderSettings& settings, int sample_index);
+
+// Sub-pixel offset of a sample, in (-0.5, 0.5)^2: (0, 0) for sample 0, then the R2 sequence
+// (Roberts' additive recurrence), which covers the pixel evenly for any sample count.
+std::array<double, 2> sample_jitter(int sample_index);
 
 }  // namespace fr

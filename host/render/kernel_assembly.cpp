@@ -1,8 +1,10 @@
 #include "render/kernel_assembly.hpp"
 
+#include "render/cl_runtime.hpp"
 #include "render/kernel_sources.hpp"
 
-#include <cstring>
+#include <algorithm>
+#include <set>
 #include <sstream>
 
 namespace fr {
@@ -14,16 +16,52 @@ struct StageFile {
   const char* file;
   const char* define;
 };
-// Renderer stages that are compiled only on demand.
+// Optional renderer stages, in the order their files are pasted (see kernels/render.cl).
 const StageFile kOptionalStages[] = {
-    {FR_FEATURE_SHADOWS, "shadows", "shadow.cl", "FR_STAGE_SHADOWS"},
+    {kStageDepthOfField, "dof", "lens.cl", "FR_STAGE_DOF"},
+    {FR_FEATURE_GLOW, "glow", "glow.cl", "FR_STAGE_GLOW"},
     {FR_FEATURE_AO, "ao", "ao.cl", "FR_STAGE_AO"},
+    {FR_FEATURE_SHADOWS, "shadows", "shadow.cl", "FR_STAGE_SHADOWS"},
+    {FR_FEATURE_FOG, "fog", "fog.cl", "FR_STAGE_FOG"},
+    {FR_FEATURE_REFLECTIONS, "reflections", nullptr, "FR_STAGE_REFLECTIONS"},
 };
-const fr_features kImplementedStages = FR_FEATURE_SHADOWS | FR_FEATURE_AO;
+const fr_features kSceneStages =
+    FR_FEATURE_SHADOWS | FR_FEATURE_AO | FR_FEATURE_GLOW | FR_FEATURE_FOG | FR_FEATURE_REFLECTIONS;
 
 void append_file(std::ostringstream& out, std::string_view name, std::string_view text) {
   out << "#line 1 \"" << name << "\"\n" << text;
   if (!text.empty() && text.back() != '\n') out << '\n';
+}
+
+// Pastes `text` with its #include "fr/NAME.cl" lines replaced by the library files (each once,
+// recursively), keeping line numbers right with #line directives.
+void append_with_includes(std::ostringstream& out, const std::string& scene_id, std::string_view name,
+                          std::string_view text, std::set<std::string>& included) {
+  out << "#line 1 \"" << name << "\"\n";
+  std::istringstream lines{std::string(text)};
+  std::string line;
+  int number = 0;
+  while (std::getline(lines, line)) {
+    ++number;
+    const auto first = line.find_first_not_of(" \t");
+    if (first != std::string::npos && line.compare(first, 8, "#include") == 0) {
+      const auto open = line.find('"'), close = line.rfind('"');
+      const std::string target = open != std::string::npos && close > open ? line.substr(open + 1, close - open - 1) : "";
+      const auto library = kernel_library_files();
+      if (target.rfind("fr/", 0) != 0 || std::find(library.begin(), library.end(), target) == library.end()) {
+        std::string names;
+        for (const auto& l : library) names += (names.empty() ? "" : ", ") + l;
+        throw KernelBuildError("scene '" + scene_id + "': " + std::string(name) + ":" + std::to_string(number) +
+                               ": unknown library file '" + (target.empty() ? line : target) +
+                               "' (the DE library has: " + names + ")");
+      }
+      if (included.insert(target).second)
+        append_with_includes(out, scene_id, target, kernel_source("de/" + target.substr(3)), included);
+      out << "#line " << number + 1 << " \"" << name << "\"\n";
+      continue;
+    }
+    out << line << '\n';
+  }
 }
 
 // Writes a number so that OpenCL C reads it back exactly, in the kernel's precision.
@@ -36,8 +74,8 @@ std::string literal(double v, Precision p) {
   return "((scalar_t)" + text + (p == Precision::Float ? "f" : "") + ")";
 }
 
-void append_params(std::ostringstream& out, const SceneInfo& info,
-                   const std::vector<fr_value>& values, Precision precision) {
+void append_params(std::ostringstream& out, const SceneInfo& info, const std::vector<fr_value>& values,
+                   Precision precision) {
   out << "/* Generated from the scene's parameter table. */\n";
   out << "typedef struct scene_params_t {\n";
   int runtime_count = 0;
@@ -45,16 +83,10 @@ void append_params(std::ostringstream& out, const SceneInfo& info,
     if (p.specialized()) continue;
     ++runtime_count;
     switch (p.type) {
-      case FR_PARAM_FLOAT:
-        out << "  float " << p.key << ";\n";
-        break;
+      case FR_PARAM_FLOAT: out << "  float " << p.key << ";\n"; break;
       case FR_PARAM_INT:
-      case FR_PARAM_BOOL:
-        out << "  int " << p.key << ";\n";
-        break;
-      default:
-        out << "  float " << p.key << "[3];\n";
-        break;
+      case FR_PARAM_BOOL: out << "  int " << p.key << ";\n"; break;
+      default: out << "  float " << p.key << "[3];\n"; break;
     }
   }
   if (runtime_count == 0) out << "  int unused; /* OpenCL C has no empty structs */\n";
@@ -66,78 +98,48 @@ void append_params(std::ostringstream& out, const SceneInfo& info,
     out << "#define FR_PARAM_" << p.key << " ";
     if (p.specialized()) {
       switch (p.type) {
-        case FR_PARAM_FLOAT:
-          out << literal(v.v[0], precision);
-          break;
+        case FR_PARAM_FLOAT: out << literal(v.v[0], precision); break;
         case FR_PARAM_INT:
-        case FR_PARAM_BOOL:
-          out << "(" << static_cast<long long>(v.v[0]) << ")";
-          break;
+        case FR_PARAM_BOOL: out << "(" << static_cast<long long>(v.v[0]) << ")"; break;
         default:
           out << "v3s(" << literal(v.v[0], precision) << ", " << literal(v.v[1], precision) << ", "
               << literal(v.v[2], precision) << ")";
       }
     } else {
       switch (p.type) {
-        case FR_PARAM_FLOAT:
-          out << "((scalar_t)params->" << p.key << ")";
-          break;
+        case FR_PARAM_FLOAT: out << "((scalar_t)params->" << p.key << ")"; break;
         case FR_PARAM_INT:
-        case FR_PARAM_BOOL:
-          out << "(params->" << p.key << ")";
-          break;
+        case FR_PARAM_BOOL: out << "(params->" << p.key << ")"; break;
         default:
-          out << "v3s(params->" << p.key << "[0], params->" << p.key << "[1], params->" << p.key
-              << "[2])";
+          out << "v3s(params->" << p.key << "[0], params->" << p.key << "[1], params->" << p.key << "[2])";
       }
     }
     out << "\n";
   }
 }
 
-}  // namespace
-
-TileShape tile_shape(int lanes) {
-  switch (lanes) {
-    case 16:
-      return {4, 4};
-    case 8:
-      return {4, 2};
-    case 4:
-      return {2, 2};
-    default:
-      return {1, 1};
-  }
-}
-
-fr_features enabled_stages(const SceneInfo& info, fr_features disabled_by_user) {
-  return info.features & ~disabled_by_user & kImplementedStages;
-}
-
-std::string stage_names(fr_features stages) {
-  std::string out;
-  for (const auto& s : kOptionalStages)
-    if (stages & s.feature) out += (out.empty() ? "" : ", ") + std::string(s.name);
-  return out.empty() ? "none" : out;
-}
-
-namespace {
-
-// What every kernel of a scene starts with: defines, shared structs, prelude, parameter block and
-// the scene's DE.
-void append_scene_prefix(std::ostringstream& out, const SceneInfo& info,
-                         const std::vector<fr_value>& values, const KernelConfig& config,
-                         const char* kind) {
-  out << "/* Fractalis " << kind << " kernel for scene '" << info.id
-      << "'. Generated; see kernels/. */\n";
+// What every kernel of a scene starts with: defines, shared structs, prelude, parameter block,
+// the scene's DE and (for rendering) its surface source.
+void append_scene_prefix(std::ostringstream& out, const SceneInfo& info, const std::vector<fr_value>& values,
+                         const KernelConfig& config, const char* kind, bool with_surface) {
+  const bool has_surface = with_surface && !info.surface_source.empty();
+  out << "/* Fractalis " << kind << " kernel for scene '" << info.id << "'. Generated; see kernels/. */\n";
   out << "#define FR_LANES " << config.lanes << "\n";
   out << "#define FR_DOUBLE " << (config.precision == Precision::Double ? 1 : 0) << "\n";
   for (const auto& s : kOptionalStages)
     out << "#define " << s.define << " " << ((config.stages & s.feature) ? 1 : 0) << "\n";
+  out << "#define FR_SHADING " << static_cast<int>(config.shading) << "\n";
+  out << "#define FR_NORMALS " << static_cast<int>(config.normals) << "\n";
+  out << "#define FR_AO_MODE " << static_cast<int>(config.ao_method) << "\n";
+  out << "#define FR_SHADOW_MODE " << static_cast<int>(config.shadow_method) << "\n";
+  out << "#define FR_FOG_MODE " << static_cast<int>(config.fog_method) << "\n";
+  out << "#define FR_HAS_SURFACE " << (has_surface ? 1 : 0) << "\n";
   append_file(out, "frame_constants.h", kernel_source("frame_constants.h"));
   append_file(out, "prelude.cl", kernel_source("prelude.cl"));
   append_params(out, info, values, config.precision);
-  append_file(out, info.de_source_name, info.de_source);
+  std::set<std::string> included;
+  append_with_includes(out, info.id, info.de_source_name, info.de_source, included);
+  if (has_surface) append_with_includes(out, info.id, info.surface_source_name, info.surface_source, included);
 }
 
 AssembledKernel finish(std::ostringstream& out, const SceneInfo& info, const KernelConfig& config,
@@ -149,8 +151,7 @@ AssembledKernel finish(std::ostringstream& out, const SceneInfo& info, const Ker
   // 205 ms with it, 200 ms without, before the exp2/native trig changes). mad contraction costs
   // little accuracy and is checked against the double build by the tests.
   k.build_options = "-cl-std=CL1.2 -cl-mad-enable";
-  k.description = "scene '" + info.id + "' " + kind + " kernel (lanes " +
-                  std::to_string(config.lanes) + ", " +
+  k.description = "scene '" + info.id + "' " + kind + " kernel (lanes " + std::to_string(config.lanes) + ", " +
                   (config.precision == Precision::Double ? "double" : "float") +
                   ", stages: " + stage_names(config.stages) + ")";
   return k;
@@ -158,26 +159,70 @@ AssembledKernel finish(std::ostringstream& out, const SceneInfo& info, const Ker
 
 }  // namespace
 
+TileShape tile_shape(int lanes) {
+  switch (lanes) {
+    case 16: return {4, 4};
+    case 8: return {4, 2};
+    case 4: return {2, 2};
+    default: return {1, 1};
+  }
+}
+
+fr_features enabled_stages(const SceneInfo& info, fr_features disabled_by_user) {
+  return info.features & kSceneStages & ~disabled_by_user;
+}
+
+KernelConfig make_kernel_config(const SceneInfo& info, const RenderSettings& s, int lanes) {
+  KernelConfig c;
+  c.lanes = lanes;
+  c.precision = s.precision;
+  c.stages = enabled_stages(info, s.disabled_stages);
+  if (s.aperture_radius > 0 && !(s.disabled_stages & kStageDepthOfField)) c.stages |= kStageDepthOfField;
+  c.shading = s.shading;
+  c.normals = s.normals;
+  c.ao_method = s.ao_method;
+  c.shadow_method = s.shadow_method;
+  c.fog_method = s.fog_method;
+  return c;
+}
+
+std::string stage_names(fr_features stages) {
+  std::string out;
+  for (const auto& s : kOptionalStages)
+    if (stages & s.feature) out += (out.empty() ? "" : ", ") + std::string(s.name);
+  return out.empty() ? "none" : out;
+}
+
 AssembledKernel assemble_render_kernel(const SceneInfo& info, const std::vector<fr_value>& values,
                                        const KernelConfig& config) {
   std::ostringstream out;
-  append_scene_prefix(out, info, values, config, "render");
-  for (const char* file : {"rays.cl", "march.cl", "normals.cl"})
-    append_file(out, file, kernel_source(file));
-  for (const auto& s : kOptionalStages)
-    if (config.stages & s.feature) append_file(out, s.file, kernel_source(s.file));
-  for (const char* file : {"shade.cl", "render.cl"}) append_file(out, file, kernel_source(file));
+  append_scene_prefix(out, info, values, config, "render", true);
+  auto stage = [&](fr_features feature, const char* file) {
+    if (config.stages & feature) append_file(out, file, kernel_source(file));
+  };
+  append_file(out, "rays.cl", kernel_source("rays.cl"));
+  stage(kStageDepthOfField, "lens.cl");
+  stage(FR_FEATURE_GLOW, "glow.cl");
+  append_file(out, "march.cl", kernel_source("march.cl"));
+  append_file(out, "normals.cl", kernel_source("normals.cl"));
+  stage(FR_FEATURE_AO, "ao.cl");
+  append_file(out, "lights.cl", kernel_source("lights.cl"));
+  stage(FR_FEATURE_SHADOWS, "shadow.cl");
+  append_file(out, "shade.cl", kernel_source("shade.cl"));
+  stage(FR_FEATURE_FOG, "fog.cl");
+  append_file(out, "render.cl", kernel_source("render.cl"));
   return finish(out, info, config, "render");
 }
 
 AssembledKernel assemble_probe_kernel(const SceneInfo& info, const std::vector<fr_value>& values,
                                       const KernelConfig& config) {
   std::ostringstream out;
-  KernelConfig no_stages = config;
-  no_stages.stages = 0;
-  append_scene_prefix(out, info, values, no_stages, "DE probe");
+  KernelConfig bare;
+  bare.lanes = config.lanes;
+  bare.precision = config.precision;
+  append_scene_prefix(out, info, values, bare, "DE probe", false);
   append_file(out, "probe.cl", kernel_source("probe.cl"));
-  return finish(out, info, no_stages, "DE probe");
+  return finish(out, info, bare, "DE probe");
 }
 
 std::vector<uint8_t> pack_scene_params(const SceneInfo& info, const std::vector<fr_value>& values) {

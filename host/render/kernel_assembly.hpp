@@ -1,10 +1,11 @@
-// kernel_assembly.hpp — pasting one scene's render kernel together.
+// kernel_assembly.hpp — pasting one scene's kernels together.
 //
-// For each (scene, enabled stages, precision, lane width) the host builds: generated defines, the
+// For each (scene, stages, modes, precision, lane width) the host builds: generated defines, the
 // shared frame-constants struct, the lane-generic prelude, a parameter struct generated from the
-// scene's table (specialised parameters baked in as constants), the scene's DE, and the renderer
-// stages — only those the scene needs and the user left on. Each piece starts with a #line
-// directive naming its file, so compiler messages point into the scene's own source.
+// scene's table (specialised parameters baked in as constants), the scene's DE (with the helper
+// library files it #includes) and surface source, and the renderer stages — only those the
+// scene needs and the user left on. Each piece starts with a #line directive naming its file, so
+// compiler messages point into the scene's own source.
 #pragma once
 
 #include "plugin/scene_info.hpp"
@@ -16,16 +17,28 @@
 
 namespace fr {
 
+// Host-only stage bit beside the ABI's FR_FEATURE_* bits: depth of field is the user's choice,
+// not a scene's need.
+constexpr fr_features kStageDepthOfField = 1ull << 32;
+
 struct KernelConfig {
   int lanes = 16;
   Precision precision = Precision::Float;
-  fr_features stages = 0;  // scene's needs minus what the user switched off
+  fr_features stages = 0;  // FR_FEATURE_* and kStageDepthOfField that are compiled in
+  ShadingModel shading = ShadingModel::BlinnPhong;
+  NormalMethod normals = NormalMethod::Tetrahedron;
+  AoMethod ao_method = AoMethod::StepCount;
+  ShadowMethod shadow_method = ShadowMethod::Soft;
+  FogMethod fog_method = FogMethod::Exponential;
 };
+
+// The kernel configuration a frame with these settings compiles for this scene.
+KernelConfig make_kernel_config(const SceneInfo& info, const RenderSettings& settings, int lanes);
 
 struct AssembledKernel {
   std::string source;
   std::string build_options;
-  std::string description;  // "scene 'mandelbulb' (lanes 16, float, stages: ao)" for messages
+  std::string description;  // "scene 'mandelbulb' render kernel (lanes 16, float, stages: ao)"
 };
 
 // Pixels one work-item renders at a lane width: 1x1, 2x2, 4x2 or 4x4 (as FR_TILE_W/H in
@@ -42,10 +55,10 @@ fr_features enabled_stages(const SceneInfo& info, fr_features disabled_by_user);
 // Names of the stages in `stages`, comma-separated ("ao, shadows"), or "none".
 std::string stage_names(fr_features stages);
 
+// Both throw KernelBuildError when a scene source #includes a library file that does not exist.
 AssembledKernel assemble_render_kernel(const SceneInfo& info, const std::vector<fr_value>& values,
                                        const KernelConfig& config);
-
-// The scene's DE alone, as kernel fr_probe_de (kernels/probe.cl); config.stages is ignored.
+// The scene's DE alone, as kernel fr_probe_de (kernels/probe.cl); stages and modes are ignored.
 AssembledKernel assemble_probe_kernel(const SceneInfo& info, const std::vector<fr_value>& values,
                                       const KernelConfig& config);
 

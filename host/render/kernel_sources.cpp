@@ -3,44 +3,31 @@
 #include <stdexcept>
 #include <string>
 
-// Defined in the generated embedded_kernels.c (see host/CMakeLists.txt).
+// The generated embedded_kernels.c (host/CMakeLists.txt lists the files).
 extern "C" {
-extern const char fr_kernel_frame_constants_h[];
-extern const char fr_kernel_prelude_cl[];
-extern const char fr_kernel_rays_cl[];
-extern const char fr_kernel_march_cl[];
-extern const char fr_kernel_normals_cl[];
-extern const char fr_kernel_shadow_cl[];
-extern const char fr_kernel_ao_cl[];
-extern const char fr_kernel_shade_cl[];
-extern const char fr_kernel_render_cl[];
-extern const char fr_kernel_post_cl[];
-extern const char fr_kernel_probe_cl[];
+struct fr_embedded_file {
+  const char* name;
+  const char* text;
+};
+extern const fr_embedded_file fr_embedded_kernels[];
+extern const int fr_embedded_kernels_count;
 }
 
 namespace fr {
 
 std::string_view kernel_source(std::string_view name) {
-  struct Entry {
-    std::string_view name;
-    const char* text;
-  };
-  static const Entry entries[] = {
-      {"frame_constants.h", fr_kernel_frame_constants_h},
-      {"prelude.cl", fr_kernel_prelude_cl},
-      {"rays.cl", fr_kernel_rays_cl},
-      {"march.cl", fr_kernel_march_cl},
-      {"normals.cl", fr_kernel_normals_cl},
-      {"shadow.cl", fr_kernel_shadow_cl},
-      {"ao.cl", fr_kernel_ao_cl},
-      {"shade.cl", fr_kernel_shade_cl},
-      {"render.cl", fr_kernel_render_cl},
-      {"post.cl", fr_kernel_post_cl},
-      {"probe.cl", fr_kernel_probe_cl},
-  };
-  for (const auto& e : entries)
-    if (e.name == name) return e.text;
+  for (int i = 0; i < fr_embedded_kernels_count; ++i)
+    if (fr_embedded_kernels[i].name == name) return fr_embedded_kernels[i].text;
   throw std::out_of_range("no embedded kernel file named " + std::string(name));
+}
+
+std::vector<std::string> kernel_library_files() {
+  std::vector<std::string> names;
+  for (int i = 0; i < fr_embedded_kernels_count; ++i) {
+    std::string_view name = fr_embedded_kernels[i].name;
+    if (name.rfind("de/", 0) == 0) names.push_back("fr/" + std::string(name.substr(3)));
+  }
+  return names;
 }
 
 }  // namespace fr

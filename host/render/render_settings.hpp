@@ -1,5 +1,6 @@
-// render_settings.hpp — how a frame is rendered: size, kernel shape and shading constants.
-// Plain data with defaults; the CLI and settings files fill it in.
+// render_settings.hpp — how a frame is rendered: size, kernel shape, which effects and how, and
+// the shading constants. Plain data with defaults; settings files and the CLI fill it in.
+// Lengths marked "x bounding radius" scale with the scene, so one default suits every scene.
 #pragma once
 
 #include <fractalis/scene.h>
@@ -9,28 +10,54 @@
 namespace fr {
 
 enum class Precision { Float, Double };
+enum class ShadingModel { Lambert, BlinnPhong, OrenNayar };
+enum class NormalMethod { Tetrahedron, CentralDifferences };
+enum class AoMethod { StepCount, Sampled };
+enum class ShadowMethod { Hard, Soft };
+enum class FogMethod { PowerLaw, Exponential };
 
 struct RenderSettings {
   int width_px = 1280;
   int height_px = 720;
   int lanes = 0;  // 1, 4, 8 or 16; 0 picks the device's preferred width
   Precision precision = Precision::Float;
-  fr_features disabled_stages = 0;  // stages the user switched off
+  int samples = 1;                  // jittered samples accumulated per image (anti-aliasing)
+  fr_features disabled_stages = 0;  // effects the user switched off
+
+  ShadingModel shading = ShadingModel::BlinnPhong;
+  NormalMethod normals = NormalMethod::Tetrahedron;
+  AoMethod ao_method = AoMethod::StepCount;
+  ShadowMethod shadow_method = ShadowMethod::Soft;
+  FogMethod fog_method = FogMethod::Exponential;
 
   int max_steps = 160;
   int shadow_max_steps = 64;
+  int max_bounces = 2;  // mirror bounces, when reflections are on
+  int ao_samples = 5;
   float hit_threshold_k = 0.5f;  // epsilon = k * t * pixel angle
   float max_distance = 100.0f;
   float step_scale = 1.0f;
   float ao_strength = 2.5f;
+  float ao_distance = 0.1f;  // x bounding radius
   float shadow_softness = 12.0f;
   float specular_strength = 0.35f;
   float specular_power = 48.0f;
+  float roughness = 0.5f;  // Oren-Nayar sigma, radians
+  float fresnel_f0 = 0.04f;
   float exposure = 1.0f;
+  float reflectivity = 0.0f;  // of the default material (scenes with a surface source set theirs)
+  float fog_density = 0.08f;  // exponential fog, per bounding radius
+  float fog_scale = 0.12f;    // power-law fog: amount = fog_scale * (t / bounding radius)^0.75
+  float glow_strength = 0.6f;
+  float glow_falloff = 0.02f;      // x bounding radius
+  float aperture_radius = 0.0f;    // thin lens, world units; 0: no depth of field
+  float focus_distance = 0.0f;     // world units; 0: the distance from eye to target
   std::array<float, 3> albedo{0.72f, 0.52f, 0.36f};
   std::array<float, 3> ambient{0.16f, 0.19f, 0.25f};
   std::array<float, 3> sky_zenith{0.22f, 0.36f, 0.62f};
   std::array<float, 3> sky_horizon{0.72f, 0.78f, 0.86f};
+  std::array<float, 3> glow_color{0.55f, 0.75f, 1.0f};
+  std::array<float, 3> fog_color{0.72f, 0.78f, 0.86f};
 };
 
 }  // namespace fr

@@ -1,6 +1,6 @@
-// renderer.hpp — one frame of a scene on an OpenCL device: assemble and build (cached) the
-// scene's kernel, upload the frame constants and parameters, run the render and post kernels,
-// read back the image.
+// renderer.hpp — frames of a scene on an OpenCL device: assemble and build (cached) the scene's
+// kernel, upload the frame constants and parameters, run the render kernel once per sample into
+// a running mean, then the post kernel, and read back the image.
 #pragma once
 
 #include "plugin/scene_instance.hpp"
@@ -17,20 +17,28 @@ struct FrameImage {
   int height_px = 0;
   int lanes = 0;               // lane width the frame was rendered with
   std::vector<uint8_t> rgba8;  // tonemapped, sRGB, 4 bytes per pixel, rows top to bottom
-  // Filled only when asked for (render's read_linear):
-  std::vector<float> linear_rgba;  // linear HDR, 4 floats per pixel
+  // Filled only when asked for (read_linear), for the primary rays of the last sample:
+  std::vector<float> linear_rgba;  // linear HDR (the accumulated mean), 4 floats per pixel
   std::vector<float> depth;        // distance along the ray to the hit; +inf for a miss
   std::vector<float> steps;        // DE evaluations of the primary ray
+  std::vector<float> occlusion;    // ambient-occlusion factor at the hit, in [0, 1]; 1 on a miss
+  std::vector<float> shadow;       // first light's shadow factor at the hit, in [0, 1]
 };
 
 class Renderer {
  public:
   explicit Renderer(ClRuntime& runtime);
 
-  // Renders `state` of `info`. Throws KernelBuildError if the scene's kernel does not compile,
-  // ClError if the device fails. `read_linear` also reads back the float buffers.
+  // Renders settings.samples samples of `state` and tonemaps their mean. Throws
+  // KernelBuildError if the scene's kernel does not compile, ClError if the device fails.
   FrameImage render(const SceneInfo& info, const SceneState& state, const RenderSettings& settings,
                     bool read_linear = false);
+
+  // Progressive rendering: adds sample `sample_index` (0 restarts the mean) to the accumulation,
+  // then `finish` tonemaps what has accumulated so far.
+  void render_sample(const SceneInfo& info, const SceneState& state, const RenderSettings& settings,
+                     int sample_index);
+  FrameImage finish(const RenderSettings& settings, bool read_linear);
 
   // The lane width a frame with these settings uses on this device.
   int lanes_for(const RenderSettings& settings) const;
@@ -40,7 +48,8 @@ class Renderer {
 
   ClRuntime& runtime_;
   size_t buffer_pixels_ = 0;
-  ClBufferHandle constants_, params_, hdr_, depth_, steps_, rgba8_;
+  int last_lanes_ = 0;
+  ClBufferHandle constants_, params_, hdr_, depth_, steps_, factors_, rgba8_;
   size_t params_bytes_ = 0;
 };
 

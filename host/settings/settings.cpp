@@ -1,19 +1,144 @@
 #include "settings/settings.hpp"
 
+#include "render/kernel_assembly.hpp"
+
 #include <toml++/toml.h>
 
 #include <algorithm>
+#include <fstream>
 #include <cstdlib>
 #include <functional>
+#include <sstream>
 
 namespace fr {
 namespace {
 
-const char* const kKnownKeys[] = {
-    "plugins.folders",        "device.select",          "render.lanes",    "render.precision",
-    "render.max_steps",       "render.hit_threshold_k", "render.exposure", "render.ao_strength",
-    "render.effects.shadows", "render.effects.ao",
+// One settings key: how to apply its value, or why the value is wrong ("" when it applied).
+struct Key {
+  const char* name;
+  std::function<std::string(const toml::node&, Settings&)> apply;
 };
+
+std::string set_int(const toml::node& n, int& out, long long lo, long long hi) {
+  auto v = n.value<int64_t>();
+  if (!n.is_integer() || !v || *v < lo || *v > hi)
+    return "expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+  out = static_cast<int>(*v);
+  return "";
+}
+
+std::string set_float(const toml::node& n, float& out, double lo, double hi, bool lo_open = false) {
+  auto v = n.value<double>();
+  std::ostringstream range;
+  range << (lo_open ? "(" : "[") << lo << ", " << hi << "]";
+  if (!n.is_number() || !v || !(lo_open ? *v > lo : *v >= lo) || !(*v <= hi))
+    return "expected a number in " + range.str();
+  out = static_cast<float>(*v);
+  return "";
+}
+
+template <typename Enum>
+std::string set_choice(const toml::node& n, Enum& out, std::initializer_list<std::pair<const char*, Enum>> choices) {
+  auto v = n.value<std::string>();
+  std::string names;
+  for (const auto& [name, value] : choices) {
+    names += (names.empty() ? "\"" : ", \"") + std::string(name) + "\"";
+    if (v && *v == name) {
+      out = value;
+      return "";
+    }
+  }
+  return "expected one of " + names;
+}
+
+std::string set_effect(const toml::node& n, Settings& s, fr_features feature) {
+  if (!n.is_boolean()) return "expected true or false";
+  if (*n.value<bool>()) s.render.disabled_stages &= ~feature;
+  else s.render.disabled_stages |= feature;
+  return "";
+}
+
+const std::vector<Key>& known_keys() {
+  static const std::vector<Key> keys = {
+      {"plugins.folders",
+       [](const toml::node& n, Settings& s) -> std::string {
+         const auto* arr = n.as_array();
+         if (!arr) return "expected an array of folder paths";
+         std::vector<std::filesystem::path> folders;
+         for (const auto& item : *arr) {
+           if (!item.is_string()) return "expected strings (folder paths)";
+           folders.emplace_back(item.as_string()->get());
+         }
+         s.plugin_folders = folders;
+         return "";
+       }},
+      {"device.select",
+       [](const toml::node& n, Settings& s) -> std::string {
+         if (!n.is_string()) return "expected a string: \"\", \"gpu\", \"cpu\", \"P:D\" or part of a name";
+         s.device = n.as_string()->get();
+         return "";
+       }},
+      {"render.lanes",
+       [](const toml::node& n, Settings& s) -> std::string {
+         auto v = n.value<int64_t>();
+         if (!n.is_integer() || !v || (*v != 0 && *v != 1 && *v != 4 && *v != 8 && *v != 16))
+           return "expected one of 0 (device's choice), 1, 4, 8, 16";
+         s.render.lanes = static_cast<int>(*v);
+         return "";
+       }},
+      {"render.precision",
+       [](const toml::node& n, Settings& s) {
+         return set_choice(n, s.render.precision, {{"float", Precision::Float}, {"double", Precision::Double}});
+       }},
+      {"render.samples", [](const toml::node& n, Settings& s) { return set_int(n, s.render.samples, 1, 4096); }},
+      {"render.max_steps", [](const toml::node& n, Settings& s) { return set_int(n, s.render.max_steps, 1, 10000); }},
+      {"render.max_bounces", [](const toml::node& n, Settings& s) { return set_int(n, s.render.max_bounces, 0, 8); }},
+      {"render.hit_threshold_k",
+       [](const toml::node& n, Settings& s) { return set_float(n, s.render.hit_threshold_k, 0, 100, true); }},
+      {"render.exposure", [](const toml::node& n, Settings& s) { return set_float(n, s.render.exposure, 0, 100, true); }},
+      {"render.ao_strength",
+       [](const toml::node& n, Settings& s) { return set_float(n, s.render.ao_strength, 0, 100, true); }},
+      {"render.roughness", [](const toml::node& n, Settings& s) { return set_float(n, s.render.roughness, 0, 1.5); }},
+      {"render.reflectivity",
+       [](const toml::node& n, Settings& s) { return set_float(n, s.render.reflectivity, 0, 1); }},
+      {"render.aperture", [](const toml::node& n, Settings& s) { return set_float(n, s.render.aperture_radius, 0, 10); }},
+      {"render.focus_distance",
+       [](const toml::node& n, Settings& s) { return set_float(n, s.render.focus_distance, 0, 1000); }},
+      {"render.shading_model",
+       [](const toml::node& n, Settings& s) {
+         return set_choice(n, s.render.shading,
+                           {{"lambert", ShadingModel::Lambert},
+                            {"blinn-phong", ShadingModel::BlinnPhong},
+                            {"oren-nayar", ShadingModel::OrenNayar}});
+       }},
+      {"render.normal_method",
+       [](const toml::node& n, Settings& s) {
+         return set_choice(n, s.render.normals,
+                           {{"tetrahedron", NormalMethod::Tetrahedron}, {"central", NormalMethod::CentralDifferences}});
+       }},
+      {"render.ao_method",
+       [](const toml::node& n, Settings& s) {
+         return set_choice(n, s.render.ao_method, {{"step-count", AoMethod::StepCount}, {"sampled", AoMethod::Sampled}});
+       }},
+      {"render.shadow_method",
+       [](const toml::node& n, Settings& s) {
+         return set_choice(n, s.render.shadow_method, {{"hard", ShadowMethod::Hard}, {"soft", ShadowMethod::Soft}});
+       }},
+      {"render.fog_method",
+       [](const toml::node& n, Settings& s) {
+         return set_choice(n, s.render.fog_method,
+                           {{"power", FogMethod::PowerLaw}, {"exponential", FogMethod::Exponential}});
+       }},
+      {"render.effects.shadows", [](const toml::node& n, Settings& s) { return set_effect(n, s, FR_FEATURE_SHADOWS); }},
+      {"render.effects.ao", [](const toml::node& n, Settings& s) { return set_effect(n, s, FR_FEATURE_AO); }},
+      {"render.effects.glow", [](const toml::node& n, Settings& s) { return set_effect(n, s, FR_FEATURE_GLOW); }},
+      {"render.effects.fog", [](const toml::node& n, Settings& s) { return set_effect(n, s, FR_FEATURE_FOG); }},
+      {"render.effects.reflections",
+       [](const toml::node& n, Settings& s) { return set_effect(n, s, FR_FEATURE_REFLECTIONS); }},
+      {"render.effects.dof", [](const toml::node& n, Settings& s) { return set_effect(n, s, kStageDepthOfField); }},
+  };
+  return keys;
+}
 
 size_t edit_distance(const std::string& a, const std::string& b) {
   std::vector<size_t> prev(b.size() + 1), cur(b.size() + 1);
@@ -27,59 +152,73 @@ size_t edit_distance(const std::string& a, const std::string& b) {
   return prev[b.size()];
 }
 
-struct Reader {
-  std::string file;
-  std::vector<SettingsProblem> problems;
+bool is_key_prefix(const std::string& prefix) {
+  return std::any_of(known_keys().begin(), known_keys().end(),
+                     [&](const Key& k) { return std::string(k.name).rfind(prefix + ".", 0) == 0; });
+}
 
-  void problem(const toml::node& node, const std::string& key, const std::string& message) {
-    problems.push_back({file, static_cast<int>(node.source().begin.line), key, message});
-  }
-
-  // Walks every leaf, reporting keys that are not known.
-  void check_keys(const toml::table& table, const std::string& prefix) {
-    for (const auto& [k, node] : table) {
-      const std::string key =
-          prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str());
-      if (const auto* sub = node.as_table()) {
-        const bool is_prefix = std::any_of(
-            std::begin(kKnownKeys), std::end(kKnownKeys),
-            [&](const char* known) { return std::string(known).rfind(key + ".", 0) == 0; });
-        if (is_prefix) {
-          check_keys(*sub, key);
-          continue;
-        }
-      }
-      if (std::find(std::begin(kKnownKeys), std::end(kKnownKeys), key) == std::end(kKnownKeys))
-        problem(node, key, "unknown key (did you mean '" + nearest_known_key(key) + "'?)");
+// Applies every leaf of `table`, reporting unknown keys and bad values.
+void apply_table(const toml::table& table, const std::string& prefix, const std::string& file, Settings& s,
+                 std::vector<SettingsProblem>& problems) {
+  for (const auto& [k, node] : table) {
+    const std::string key = prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str());
+    const int line = static_cast<int>(node.source().begin.line);
+    if (const auto* sub = node.as_table(); sub && is_key_prefix(key)) {
+      apply_table(*sub, key, file, s, problems);
+      continue;
     }
+    const auto it = std::find_if(known_keys().begin(), known_keys().end(), [&](const Key& known) { return key == known.name; });
+    if (it == known_keys().end()) {
+      problems.push_back({file, line, key, "unknown key (did you mean '" + nearest_known_key(key) + "'?)"});
+      continue;
+    }
+    if (std::string error = it->apply(node, s); !error.empty()) problems.push_back({file, line, key, error});
   }
-};
+}
+
+std::vector<SettingsProblem> apply_toml(const std::string& text, const std::string& file, Settings& s) {
+  std::vector<SettingsProblem> problems;
+  toml::table root;
+  try {
+    root = toml::parse(text, file);
+  } catch (const toml::parse_error& e) {
+    problems.push_back({file, static_cast<int>(e.source().begin.line), "", "not valid TOML: " + std::string(e.description())});
+    return problems;
+  }
+  apply_table(root, "", file, s, problems);
+  std::stable_sort(problems.begin(), problems.end(),
+                   [](const SettingsProblem& a, const SettingsProblem& b) { return a.line < b.line; });
+  return problems;
+}
 
 }  // namespace
 
 std::string SettingsProblem::to_string() const {
-  return file + ":" + std::to_string(line) + ": " + (key.empty() ? "" : "key '" + key + "': ") +
+  return file + (line > 0 ? ":" + std::to_string(line) : "") + ": " + (key.empty() ? "" : "key '" + key + "': ") +
          message;
 }
 
 std::string nearest_known_key(const std::string& key) {
   std::string best;
   size_t best_d = ~size_t{0};
-  for (const char* known : kKnownKeys) {
-    size_t d = edit_distance(key, known);
-    if (d < best_d) best_d = d, best = known;
+  for (const Key& known : known_keys()) {
+    size_t d = edit_distance(key, known.name);
+    if (d < best_d) best_d = d, best = known.name;
   }
   return best;
 }
 
+std::vector<std::string> known_setting_keys() {
+  std::vector<std::string> names;
+  for (const Key& k : known_keys()) names.emplace_back(k.name);
+  return names;
+}
+
 std::optional<std::filesystem::path> user_settings_file() {
   std::filesystem::path base;
-  if (const char* xdg = std::getenv("XDG_CONFIG_HOME"); xdg && *xdg)
-    base = xdg;
-  else if (const char* home = std::getenv("HOME"); home && *home)
-    base = std::filesystem::path(home) / ".config";
-  else
-    return std::nullopt;
+  if (const char* xdg = std::getenv("XDG_CONFIG_HOME"); xdg && *xdg) base = xdg;
+  else if (const char* home = std::getenv("HOME"); home && *home) base = std::filesystem::path(home) / ".config";
+  else return std::nullopt;
   auto file = base / "fractalis" / "config.toml";
   std::error_code ec;
   if (std::filesystem::is_regular_file(file, ec)) return file;
@@ -87,82 +226,26 @@ std::optional<std::filesystem::path> user_settings_file() {
 }
 
 std::vector<SettingsProblem> load_settings_file(const std::filesystem::path& file, Settings& s) {
-  Reader r{file.string(), {}};
-  toml::table root;
-  try {
-    root = toml::parse_file(file.string());
-  } catch (const toml::parse_error& e) {
-    r.problems.push_back({file.string(), static_cast<int>(e.source().begin.line), "",
-                          "not valid TOML: " + std::string(e.description())});
-    return r.problems;
-  }
-  r.check_keys(root, "");
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return {{file.string(), 0, "", "cannot read the file"}};
+  std::stringstream text;
+  text << in.rdbuf();
+  return apply_toml(text.str(), file.string(), s);
+}
 
-  auto with = [&](const char* key, auto&& apply) {
-    const toml::node* node = root.at_path(key).node();
-    if (node) apply(*node);
-  };
-  with("plugins.folders", [&](const toml::node& n) {
-    const auto* arr = n.as_array();
-    if (!arr) return r.problem(n, "plugins.folders", "expected an array of folder paths");
-    std::vector<std::filesystem::path> folders;
-    for (const auto& item : *arr) {
-      if (!item.is_string())
-        return r.problem(item, "plugins.folders", "expected a string (a folder path)");
-      folders.emplace_back(item.as_string()->get());
-    }
-    s.plugin_folders = folders;
-  });
-  with("device.select", [&](const toml::node& n) {
-    if (!n.is_string())
-      return r.problem(n, "device.select",
-                       "expected a string: \"\", \"gpu\", \"cpu\", \"P:D\" or part of a name");
-    s.device = n.as_string()->get();
-  });
-  with("render.lanes", [&](const toml::node& n) {
-    auto v = n.value<int64_t>();
-    if (!n.is_integer() || !v || (*v != 0 && *v != 1 && *v != 4 && *v != 8 && *v != 16))
-      return r.problem(n, "render.lanes", "expected one of 0 (device's choice), 1, 4, 8, 16");
-    s.render.lanes = static_cast<int>(*v);
-  });
-  with("render.precision", [&](const toml::node& n) {
-    auto v = n.value<std::string>();
-    if (!n.is_string() || (*v != "float" && *v != "double"))
-      return r.problem(n, "render.precision", "expected \"float\" or \"double\"");
-    s.render.precision = *v == "double" ? Precision::Double : Precision::Float;
-  });
-  with("render.max_steps", [&](const toml::node& n) {
-    auto v = n.value<int64_t>();
-    if (!n.is_integer() || *v < 1 || *v > 10000)
-      return r.problem(n, "render.max_steps", "expected an integer in [1, 10000]");
-    s.render.max_steps = static_cast<int>(*v);
-  });
-  auto positive_float = [&](const char* key, float& out, double hi) {
-    with(key, [&](const toml::node& n) {
-      auto v = n.value<double>();
-      if (!(n.is_number()) || !v || !(*v > 0 && *v <= hi))
-        return r.problem(n, key, "expected a number in (0, " + std::to_string(hi) + "]");
-      out = static_cast<float>(*v);
-    });
-  };
-  positive_float("render.hit_threshold_k", s.render.hit_threshold_k, 100);
-  positive_float("render.exposure", s.render.exposure, 100);
-  positive_float("render.ao_strength", s.render.ao_strength, 100);
-  auto effect = [&](const char* key, fr_features feature) {
-    with(key, [&](const toml::node& n) {
-      if (!n.is_boolean()) return r.problem(n, key, "expected true or false");
-      if (*n.value<bool>())
-        s.render.disabled_stages &= ~feature;
-      else
-        s.render.disabled_stages |= feature;
-    });
-  };
-  effect("render.effects.shadows", FR_FEATURE_SHADOWS);
-  effect("render.effects.ao", FR_FEATURE_AO);
-  std::stable_sort(
-      r.problems.begin(), r.problems.end(),
-      [](const SettingsProblem& a, const SettingsProblem& b) { return a.line < b.line; });
-  return r.problems;
+std::vector<SettingsProblem> apply_setting_override(const std::string& assignment, Settings& s) {
+  const auto eq = assignment.find('=');
+  if (eq == std::string::npos) return {{"--set", 0, "", "expected KEY=VALUE, got '" + assignment + "'"}};
+  std::string key = assignment.substr(0, eq), value = assignment.substr(eq + 1);
+  // Bare words are strings ("--set render.shading_model=lambert"); numbers, booleans, quoted
+  // strings and arrays pass as TOML.
+  const bool bare_word = !value.empty() && value.find_first_of("\"[{") == std::string::npos &&
+                         value != "true" && value != "false" &&
+                         value.find_first_not_of("+-.0123456789eE_") != std::string::npos;
+  if (bare_word) value = "\"" + value + "\"";
+  auto problems = apply_toml(key + " = " + value + "\n", "--set " + assignment, s);
+  for (auto& p : problems) p.line = 0;
+  return problems;
 }
 
 }  // namespace fr

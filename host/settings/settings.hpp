@@ -1,7 +1,7 @@
 // settings.hpp — settings from built-in defaults, then a TOML file, then the command line.
 //
-// Every key the file may hold is listed in kKnownKeys; any other key is an error that names the
-// nearest known one, so a typo never silently falls back to a default.
+// Every key a file may hold is listed in settings.cpp (known_setting_keys); any other key is an
+// error that names the nearest known one, so a typo never silently falls back to a default.
 #pragma once
 
 #include "render/render_settings.hpp"
@@ -25,7 +25,7 @@ struct SettingsProblem {
   int line = 0;
   std::string key;
   std::string message;
-  std::string to_string() const;
+  std::string to_string() const;  // line 0 (command line) is left out
 };
 
 // The user's file: $XDG_CONFIG_HOME/fractalis/config.toml (or ~/.config/...), if it exists.
@@ -36,7 +36,11 @@ std::optional<std::filesystem::path> user_settings_file();
 std::vector<SettingsProblem> load_settings_file(const std::filesystem::path& file,
                                                 Settings& settings);
 
+// Applies one "key=value" from the command line (--set), checked exactly like a file's.
+std::vector<SettingsProblem> apply_setting_override(const std::string& assignment, Settings& settings);
+
 // The known key closest to `key` by edit distance (for "did you mean").
 std::string nearest_known_key(const std::string& key);
+std::vector<std::string> known_setting_keys();
 
 }  // namespace fr

@@ -1,115 +1,67 @@
-/* mandelbulb.c — the Mandelbulb scene: parameters, default view, and an update callback that can
- * animate the power. The distance estimator is mandelbulb.cl, embedded by the SDK's CMake helper.
- */
+/* mandelbulb.c — the Mandelbulb scene: parameters, default view, orbit-trap colours, and an
+ * update callback that can animate the power. The OpenCL sources (mandelbulb.cl and
+ * mandelbulb_surface.cl) are embedded by the SDK's CMake helper. */
 #include <math.h>
 
 #include "fractalis/fractalis.h"
 
 extern const char fr_de_source[];
+extern const char fr_surface_source[];
 
 enum {
-  P_POWER,
-  P_ITERATIONS,
-  P_BAILOUT,
-  P_ANIMATE,
-  P_ANIMATE_CENTER,
-  P_ANIMATE_SPEED,
-  P_ANIMATE_DEPTH,
-  P_COUNT
+  P_POWER, P_ITERATIONS, P_BAILOUT, P_COLOR_NEAR, P_COLOR_FAR, P_COLOR_CONTRAST,
+  P_ANIMATE, P_ANIMATE_CENTER, P_ANIMATE_SPEED, P_ANIMATE_DEPTH, P_COUNT
 };
 
-static const fr_param_desc power = {sizeof(fr_param_desc),
-                                    FR_PARAM_FLOAT,
-                                    FR_PARAM_ANIMATABLE,
-                                    0,
-                                    "power",
-                                    "Power",
-                                    "Fractal",
-                                    "Exponent n of z <- z^n + p; 8 gives the classic bulb.",
-                                    {{8, 0, 0}},
-                                    {{2, 0, 0}},
-                                    {{16, 0, 0}}};
-static const fr_param_desc iterations = {
-    sizeof(fr_param_desc),
-    FR_PARAM_INT,
-    FR_PARAM_SPECIALIZE,
-    0,
-    "iterations",
-    "Iterations",
-    "Fractal",
-    "Maximum escape-time iterations; more gives finer detail and costs time.",
-    {{8, 0, 0}},
-    {{1, 0, 0}},
-    {{64, 0, 0}}};
+static const fr_param_desc power = FR_FLOAT_PARAM(
+    "power", "Power", "Fractal", "Exponent n of z <- z^n + p; 8 gives the classic bulb.", 8, 2,
+    16, FR_PARAM_ANIMATABLE);
+static const fr_param_desc iterations = FR_INT_PARAM(
+    "iterations", "Iterations", "Fractal",
+    "Maximum escape-time iterations; more gives finer detail and costs time.", 8, 1, 64,
+    FR_PARAM_SPECIALIZE);
 /* With r < B before a step, the next |z| is at most B^n + B, and the DE squares it to take its
  * length: (B^n + B)^2 must stay below FLT_MAX = 2^128 for n up to 16, so B^16 < 2^63 or so.
  * B = 12 gives 12^16 = 1.8e17 and (1.8e17)^2 = 3.4e34, with room to spare; 16 would overflow. */
-static const fr_param_desc bailout = {
-    sizeof(fr_param_desc),
-    FR_PARAM_FLOAT,
-    FR_PARAM_LOG_SCALE,
-    0,
-    "bailout",
-    "Bailout radius",
-    "Fractal",
-    "Escape radius; at most 12 so that bailout^power, squared, stays finite in float.",
-    {{2, 0, 0}},
-    {{1.5, 0, 0}},
-    {{12, 0, 0}}};
-static const fr_param_desc animate = {sizeof(fr_param_desc),
-                                      FR_PARAM_BOOL,
-                                      0,
-                                      0,
-                                      "animate_power",
-                                      "Animate power",
-                                      "Animation",
-                                      "Swing the power around its value over time.",
-                                      {{0, 0, 0}},
-                                      {{0, 0, 0}},
-                                      {{1, 0, 0}}};
-static const fr_param_desc animate_center = {sizeof(fr_param_desc),
-                                             FR_PARAM_FLOAT,
-                                             0,
-                                             0,
-                                             "animate_center",
-                                             "Animation centre",
-                                             "Animation",
-                                             "The power the animation swings around.",
-                                             {{8, 0, 0}},
-                                             {{2, 0, 0}},
-                                             {{16, 0, 0}}};
-static const fr_param_desc animate_speed = {
-    sizeof(fr_param_desc), FR_PARAM_FLOAT,    0,           0,
-    "animate_speed",       "Animation speed", "Animation", "Swings per second.",
-    {{0.1, 0, 0}},         {{0.01, 0, 0}},    {{2, 0, 0}}};
-static const fr_param_desc animate_depth = {sizeof(fr_param_desc),
-                                            FR_PARAM_FLOAT,
-                                            0,
-                                            0,
-                                            "animate_depth",
-                                            "Animation depth",
-                                            "Animation",
-                                            "How far the power swings either side of its value.",
-                                            {{2, 0, 0}},
-                                            {{0, 0, 0}},
-                                            {{6, 0, 0}}};
+static const fr_param_desc bailout = FR_FLOAT_PARAM(
+    "bailout", "Bailout radius", "Fractal",
+    "Escape radius; at most 12 so that bailout^power, squared, stays finite in float.", 2, 1.5,
+    12, FR_PARAM_LOG_SCALE);
+static const fr_param_desc color_near = FR_COLOR_PARAM(
+    "color_near", "Colour (deep orbits)", "Colour",
+    "Albedo where the orbit came close to the origin.", 0.9, 0.42, 0.12);
+static const fr_param_desc color_far = FR_COLOR_PARAM(
+    "color_far", "Colour (outer orbits)", "Colour",
+    "Albedo where the orbit stayed far from the origin.", 0.30, 0.42, 0.62);
+static const fr_param_desc color_contrast = FR_FLOAT_PARAM(
+    "color_contrast", "Colour contrast", "Colour",
+    "Exponent of the orbit-trap blend; larger pushes towards the deep colour.", 4, 0.25, 8, 0);
+static const fr_param_desc animate = FR_BOOL_PARAM(
+    "animate_power", "Animate power", "Animation", "Swing the power around its centre over time.",
+    0, 0);
+static const fr_param_desc animate_center = FR_FLOAT_PARAM(
+    "animate_center", "Animation centre", "Animation", "The power the animation swings around.",
+    8, 2, 16, 0);
+static const fr_param_desc animate_speed = FR_FLOAT_PARAM(
+    "animate_speed", "Animation speed", "Animation", "Swings per second.", 0.1, 0.01, 2, 0);
+static const fr_param_desc animate_depth = FR_FLOAT_PARAM(
+    "animate_depth", "Animation depth", "Animation",
+    "How far the power swings either side of its centre.", 2, 0, 6, 0);
 
 static const fr_param_desc* const params[P_COUNT] = {
-    &power, &iterations, &bailout, &animate, &animate_center, &animate_speed, &animate_depth};
+    &power,   &iterations,     &bailout,       &color_near,    &color_far,
+    &color_contrast, &animate, &animate_center, &animate_speed, &animate_depth};
 
 /* The bulb's polar axis is z: look at it with z up, slightly from above. */
-static const fr_camera camera = {sizeof(fr_camera), 0,   {3.4, -4.4, 1.5}, {0.0, 0.0, -0.12},
-                                 {0.0, 0.0, 1.0},   45.0};
+static const fr_camera camera = FR_CAMERA(3.4, -4.4, 1.5, 0.0, 0.0, -0.12, 0.0, 0.0, 1.0, 45.0);
 
-static const fr_light sun = {
-    sizeof(fr_light), FR_LIGHT_DIRECTIONAL, {0.45, 0.92, -1.18}, {1.0, 0.94, 0.84}, 1.5};
-static const fr_light* const lights[] = {&sun};
+static const fr_light sun = FR_DIRECTIONAL_LIGHT(0.45, 0.92, -1.18, 1.0, 0.94, 0.84, 1.25);
+static const fr_light sky_fill = FR_DIRECTIONAL_LIGHT(-0.6, -0.3, 0.5, 0.35, 0.45, 0.7, 0.2);
+static const fr_light* const lights[] = {&sun, &sky_fill};
 
 /* The set lies inside |p| <= 2^(1/(n-1)): beyond it |z^n + p| >= |z|^n - |p| grows without bound,
  * since the triplex power keeps |z^n| = |z|^n. The margin covers the hit threshold's shell. */
-static double bounding_radius_for_power(double n) {
-  return 1.02 * pow(2.0, 1.0 / (n - 1.0)) + 0.02;
-}
+static double bounding_radius_for_power(double n) { return 1.02 * pow(2.0, 1.0 / (n - 1.0)) + 0.02; }
 
 static fr_result update(void* instance, const fr_host* host, fr_frame_state* state) {
   (void)instance;
@@ -131,25 +83,26 @@ static fr_result update(void* instance, const fr_host* host, fr_frame_state* sta
 }
 
 static const fr_scene_desc scene = {
-    sizeof(fr_scene_desc),
-    0,
-    "mandelbulb",
-    "Mandelbulb",
-    "1.0.0",
-    "The Fractalis developers",
-    "MIT",
-    "The power-n Mandelbulb: a 3D analogue of the Mandelbrot set built on spherical powers.",
-    fr_de_source,
-    "mandelbulb.cl",
-    params,
-    P_COUNT,
-    1,
-    FR_FEATURE_AO,
-    &camera,
-    lights,
-    2.06, /* the bound for the smallest power, 2 */
-    NULL,
-    NULL,
-    update};
+    .struct_size = sizeof(fr_scene_desc),
+    .id = "mandelbulb",
+    .name = "Mandelbulb",
+    .version = "1.1.0",
+    .author = "The Fractalis developers",
+    .license = "MIT",
+    .description =
+        "The power-n Mandelbulb: a 3D analogue of the Mandelbrot set built on spherical powers.",
+    .de_source = fr_de_source,
+    .de_source_name = "mandelbulb.cl",
+    .surface_source = fr_surface_source,
+    .surface_source_name = "mandelbulb_surface.cl",
+    .params = params,
+    .param_count = P_COUNT,
+    .light_count = 2,
+    .features = FR_FEATURE_AO, /* basic shading: the issue-2 benchmark view */
+    .camera = &camera,
+    .lights = lights,
+    .bounding_radius = 2.06, /* the bound for the smallest power, 2 */
+    .update = update,
+};
 
 FR_SCENE_ENTRY(&scene);

@@ -1,10 +1,12 @@
-# fractalis_add_scene(<target> SOURCES <c files...> DE_SOURCE <file.cl> [OUTPUT_DIRECTORY <dir>])
+# fractalis_add_scene(<target> SOURCES <c files...> DE_SOURCE <file.cl>
+#                     [SURFACE_SOURCE <file.cl>] [OUTPUT_DIRECTORY <dir>])
 #
 # Builds a Fractalis scene plugin: a MODULE library named <target>.so whose only exported symbol
 # is fractalis_scene_entry, linked with -z defs so a missing symbol fails at build time, not at
-# load time. The OpenCL file given as DE_SOURCE is embedded as
-#   extern const char fr_de_source[];
-# for the scene descriptor's de_source field.
+# load time. The OpenCL files are embedded as
+#   extern const char fr_de_source[];       (DE_SOURCE)
+#   extern const char fr_surface_source[];  (SURFACE_SOURCE, if given)
+# for the scene descriptor's de_source and surface_source fields.
 set(FRACTALIS_SDK_CMAKE_DIR "${CMAKE_CURRENT_LIST_DIR}")
 if(NOT FRACTALIS_SDK_INCLUDE_DIR)
   # In the source tree; an installed SDK's FractalisSDKConfig.cmake sets this first.
@@ -12,18 +14,25 @@ if(NOT FRACTALIS_SDK_INCLUDE_DIR)
 endif()
 
 function(fractalis_add_scene target)
-  cmake_parse_arguments(ARG "" "DE_SOURCE;OUTPUT_DIRECTORY" "SOURCES" ${ARGN})
+  cmake_parse_arguments(ARG "" "DE_SOURCE;SURFACE_SOURCE;OUTPUT_DIRECTORY" "SOURCES" ${ARGN})
   if(NOT ARG_SOURCES OR NOT ARG_DE_SOURCE)
     message(FATAL_ERROR "fractalis_add_scene(${target}): SOURCES and DE_SOURCE are required")
   endif()
   get_filename_component(de_path "${ARG_DE_SOURCE}" ABSOLUTE)
-  set(embedded "${CMAKE_CURRENT_BINARY_DIR}/${target}_de_source.c")
+  set(inputs "${de_path}")
+  set(symbols "fr_de_source")
+  if(ARG_SURFACE_SOURCE)
+    get_filename_component(surface_path "${ARG_SURFACE_SOURCE}" ABSOLUTE)
+    string(APPEND inputs "|${surface_path}")
+    string(APPEND symbols "|fr_surface_source")
+  endif()
+  set(embedded "${CMAKE_CURRENT_BINARY_DIR}/${target}_sources.c")
   add_custom_command(
     OUTPUT "${embedded}"
-    COMMAND ${CMAKE_COMMAND} -DOUTPUT=${embedded} -DINPUTS=${de_path} -DSYMBOLS=fr_de_source
+    COMMAND ${CMAKE_COMMAND} -DOUTPUT=${embedded} -DINPUTS=${inputs} -DSYMBOLS=${symbols}
             -P "${FRACTALIS_SDK_CMAKE_DIR}/fractalis_embed.cmake"
-    DEPENDS "${de_path}" "${FRACTALIS_SDK_CMAKE_DIR}/fractalis_embed.cmake"
-    COMMENT "Embedding ${ARG_DE_SOURCE} into ${target}"
+    DEPENDS "${de_path}" ${surface_path} "${FRACTALIS_SDK_CMAKE_DIR}/fractalis_embed.cmake"
+    COMMENT "Embedding the OpenCL sources of ${target}"
     VERBATIM)
   add_library(${target} MODULE ${ARG_SOURCES} "${embedded}")
   target_include_directories(${target} PRIVATE "${FRACTALIS_SDK_INCLUDE_DIR}")

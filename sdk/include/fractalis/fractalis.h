@@ -6,5 +6,6 @@
 #include "fractalis/param.h"
 #include "fractalis/scene.h"
 #include "fractalis/entry.h"
+#include "fractalis/helpers.h"
 
 #endif /* FRACTALIS_FRACTALIS_H */

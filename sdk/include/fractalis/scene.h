@@ -38,12 +38,17 @@ typedef uint32_t fr_light_kind;
 #define FR_LIGHT_DIRECTIONAL 1u /* `vector` is the direction the light travels (towards scene) */
 #define FR_LIGHT_POINT 2u       /* `vector` is the light's world-space position */
 
+/* A light. A point light at distance d delivers color * intensity / (1 + attenuation * d^falloff)
+ * (the seed lighting page's k / (1 + a d^e), with k = intensity); directional lights do not fall
+ * off. */
 typedef struct fr_light {
   uint32_t struct_size; /* sizeof(fr_light) */
   fr_light_kind kind;
   double vector[3];    /* direction or position, see fr_light_kind */
   double color[3];     /* linear RGB */
-  double intensity;    /* multiplies color */
+  double intensity;    /* k: multiplies color */
+  double attenuation;  /* a >= 0; 0: no falloff */
+  double falloff;      /* e > 0; 2 is physical */
 } fr_light;
 
 /* What the update callback receives each frame. [host-owned]: the callback may change the
@@ -96,10 +101,18 @@ typedef struct fr_scene_desc {
   const char* description; /* one or two sentences; may be null */
 
   /* OpenCL C source, lane-generic (sdk/docs/writing-a-scene.md), defining
-   *   real_t scene_de(vec3_t p, __constant scene_params_t* params);
+   *   real_t scene_de(vec3_t p, __constant const scene_params_t* params);
+   * It may pull in the DE helper library with lines such as #include "fr/primitives.cl".
    * Never null. `de_source_name` names it in compiler messages ("mandelbulb.cl"); may be null. */
   const char* de_source;
   const char* de_source_name;
+
+  /* Optional OpenCL C, compiled after de_source (so it may call what that defines), defining
+   *   surface_t scene_surface(vec3_t p, __constant const scene_params_t* params);
+   * the albedo and reflectivity at a surface point — for example colouring by orbit trap. Null:
+   * the host's material settings apply. `surface_source_name` as for de_source_name. */
+  const char* surface_source;
+  const char* surface_source_name;
 
   const fr_param_desc* const* params; /* param_count pointers; may be null when param_count is 0 */
   uint32_t param_count;

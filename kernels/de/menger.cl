@@ -1,0 +1,28 @@
+/* fr/menger.cl — the Menger sponge by folding (after Knighty).
+ *
+ * Each iteration folds into the fundamental domain x >= y >= z >= 0, optionally rotates, and
+ * scales about the corner `offset`; the middle layer (z beyond half the offset step) is shifted
+ * back. With scale 3, offset (1,1,1) and no rotation, the zero set after n iterations is exactly
+ * the level-n sponge (20^n cubes) inside [-1, 1]^3, and since folds are 1-Lipschitz the result is
+ * a lower bound of the distance to it. *trap receives min |z|^2 over the orbit. */
+#include "fr/primitives.cl"
+#include "fr/operators.cl"
+#include "fr/folds.cl"
+
+real_t de_menger(vec3_t p, int iterations, scalar_t scale, vec3_t offset, scalar_t rotation,
+                 real_t* trap) {
+  vec3_t z = p;
+  real_t orbit_min = v3_length2(z);
+  const real_t step = to_real(scale - 1);
+  for (int i = 0; i < iterations; ++i) {
+    z = p_fold_menger(z);
+    if (rotation != 0) z = p_rotate_x(z, rotation);
+    z.x = to_real(scale) * z.x - offset.x * step;
+    z.y = to_real(scale) * z.y - offset.y * step;
+    z.z = to_real(scale) * z.z;
+    z.z = lane_select(z.z > to_real(0.5) * offset.z * step, z.z - offset.z * step, z.z);
+    orbit_min = fmin(orbit_min, v3_length2(z));
+  }
+  *trap = orbit_min;
+  return sd_box(z, v3s(1, 1, 1)) * to_real(pown(1 / scale, iterations));
+}
