@@ -4,7 +4,7 @@
  * anti-aliasing and depth of field). Also writes, for the primary ray, the hit depth (+inf for a
  * miss), the DE steps, and the occlusion and first-light shadow factors.
  *
- * Optional stages (lens.cl, glow.cl, ao.cl, shadow.cl, fog.cl) are pasted in by the host only
+ * Optional stages (lens.cl, glow.cl, ao.cl, shadow.cl, fog.cl, reflect.cl) are pasted in only
  * when the scene needs them and they are switched on; each defines its hook, and a hook with no
  * stage does nothing, so none of that stage's code is in the kernel. */
 
@@ -20,6 +20,10 @@
 #ifndef FR_APPLY_FOG
 #define FR_APPLY_FOG(color, t)
 #endif
+#ifndef FR_MAX_BOUNCES
+#define FR_MAX_BOUNCES(fc) 0
+#define FR_BOUNCE(ray, p, n, h)
+#endif
 
 #if FR_HAS_SURFACE
 #define surface_at(p) scene_surface(p, params)
@@ -32,8 +36,6 @@ inline surface_t default_surface(__constant const fr_frame_constants* fc) {
 }
 #define surface_at(p) default_surface(fc)
 #endif
-
-inline vec3_t reflect_dir(vec3_t d, vec3_t n) { return v3_mad(d, n, -2 * v3_dot(d, n)); }
 
 __kernel void fr_render(__constant const fr_frame_constants* fc,
                         __constant const scene_params_t* params, __global float* hdr_rgba,
@@ -53,11 +55,7 @@ __kernel void fr_render(__constant const fr_frame_constants* fc,
   real_t path_t = (real_t)0;
   real_t first_depth = (real_t)INFINITY, first_steps = (real_t)0;
   real_t first_ao = (real_t)1, first_shadow = (real_t)1;
-#if FR_STAGE_REFLECTIONS
-  const int bounces = fc->max_bounces;
-#else
-  const int bounces = 0;
-#endif
+  const int bounces = FR_MAX_BOUNCES(fc);
   for (int bounce = 0; bounce <= bounces; ++bounce) {
     march_result_t m = march(ray, path_t, fc, params);
     const mask_t hit = active & m.hit;
@@ -98,8 +96,7 @@ __kernel void fr_render(__constant const fr_frame_constants* fc,
     if (bounce == bounces || !any_lane(active)) break;
     throughput = v3_scale(throughput, reflectivity);
     path_t += m.t;
-    ray.dir = reflect_dir(ray.dir, n);
-    ray.origin = v3_mad(p, n, 2 * h);
+    FR_BOUNCE(ray, p, n, h);
   }
 
   /* Scatter the lanes to their pixels; tiles at the right and bottom edges are partial. */

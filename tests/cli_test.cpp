@@ -32,7 +32,7 @@ TEST(Cli, UsageErrors) {
   expect_usage_error({"frobnicate"}, "unknown command 'frobnicate'");
   expect_usage_error({"render", "--bogus"}, "unknown option '--bogus'");
   expect_usage_error({"render", "--out"}, "option '--out' needs a value");
-  expect_usage_error({"render", "--scene", "nope"}, "unknown scene 'nope' (available: mandelbulb");
+  expect_usage_error({"render", "--scene", "nope"}, "unknown scene 'nope' (available: benchmark, julia, mandelbulb, menger, sierpinski)");
   expect_usage_error({"render", "--param", "nokey=1"}, "has no parameter 'nokey'");
   expect_usage_error({"render", "--param", "power"}, "expected KEY=VALUE");
   expect_usage_error({"render", "--param", "power=nan"}, "'nan' is not a finite number");
@@ -57,10 +57,16 @@ TEST(Cli, UsageErrors) {
   expect_usage_error({"render", "--config", "/no/such/file.toml"}, "--config: no such file");
   expect_usage_error({"bench", "--frames", "0"}, "--frames: 0 is outside");
   expect_usage_error({"list", "--size", "1x1"}, "unknown option '--size' for 'list'");
+  expect_usage_error({"render", "--set", "render.lanse=16"}, "key 'render.lanse': unknown key (did you mean 'render.lanes'?)");
+  expect_usage_error({"render", "--set", "render.shading_model=phong"},
+                     "expected one of \"lambert\", \"blinn-phong\", \"oren-nayar\"");
+  expect_usage_error({"render", "--set", "render.effects.fog=maybe"}, "render.effects.fog");
+  expect_usage_error({"render", "--samples", "0"}, "--samples: 0 is outside [1, 4096]");
+  expect_usage_error({"bench", "--runs", "0"}, "--runs: 0 is outside");
 }
 
 TEST(Cli, HelpAndVersion) {
-  for (const char* command : {"render", "bench", "list", "devices"}) {
+  for (const char* command : {"render", "bench", "list", "devices"}) {  // every command has --help
     const CliRun r = run({command, "--help"});
     EXPECT_EQ(r.code, 0) << command;
     EXPECT_NE(r.out.find(std::string("usage: fractalis ") + command), std::string::npos) << r.out;
@@ -83,7 +89,7 @@ TEST(Cli, RenderWritesPng) {
 TEST(Cli, ListShowsParametersAndFailures) {
   const CliRun ok = run({"list"});
   EXPECT_EQ(ok.code, 0);
-  EXPECT_NE(ok.out.find("mandelbulb 1.0.0"), std::string::npos) << ok.out;
+  EXPECT_NE(ok.out.find("mandelbulb 1.1.0"), std::string::npos) << ok.out;
   EXPECT_NE(ok.out.find("--param power=8  float in [2, 16]"), std::string::npos) << ok.out;
   const CliRun fixtures = run({"list", "--plugins", FIXTURE_PLUGIN_DIR});
   EXPECT_EQ(fixtures.code, 0);

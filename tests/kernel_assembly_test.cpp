@@ -41,31 +41,100 @@ SceneInfo sphere_scene(fr_features features) {
   return info;
 }
 
+// A function only each stage's file defines: its presence is the stage's code being there.
+struct StageMarker {
+  fr_features stage;
+  const char* name;
+  const char* code;
+};
+const StageMarker kStageMarkers[] = {
+    {FR_FEATURE_SHADOWS, "shadows", "shadow_factor("},
+    {FR_FEATURE_AO, "ao", "_ao(real_t"},
+    {FR_FEATURE_GLOW, "glow", "add_glow("},
+    {FR_FEATURE_FOG, "fog", "fog_amount("},
+    {FR_FEATURE_REFLECTIONS, "reflections", "mirror_ray("},
+    {kStageDepthOfField, "dof", "thin_lens("},
+};
+
+std::shared_ptr<const LoadedScene> scene_by_id(const std::string& id) {
+  return test::load_or_fail(std::filesystem::path(SCENE_PLUGIN_DIR) / (id + ".so"));
+}
+
+// For every in-tree scene and every effect: the stage's code is in the kernel exactly when the
+// scene needs it and the user has not switched it off.
+TEST(KernelAssembly, OnlyNeededStagesArePresentPerSceneAndSetting) {
+  for (const char* id : {"mandelbulb", "menger", "sierpinski", "julia", "benchmark"}) {
+    auto scene = scene_by_id(id);
+    ASSERT_TRUE(scene) << id;
+    const SceneInfo& info = scene->info;
+    const auto values = make_default_state(info).params;
+    for (const StageMarker& off : kStageMarkers) {
+      for (bool user_off : {false, true}) {
+        RenderSettings settings;
+        settings.aperture_radius = 0.05f;  // depth of field on, unless switched off below
+        if (user_off) settings.disabled_stages = off.stage;
+        const KernelConfig config = make_kernel_config(info, settings, 16);
+        const auto k = assemble_render_kernel(info, values, config);
+        for (const StageMarker& m : kStageMarkers) {
+          const bool needed = m.stage == kStageDepthOfField || (info.features & m.stage);
+          const bool expected = needed && !(user_off && m.stage == off.stage);
+          EXPECT_EQ(contains(k.source, m.code), expected)
+              << id << ": stage " << m.name << (user_off ? " with " + std::string(off.name) + " off" : "");
+        }
+      }
+    }
+  }
+}
+
 TEST(KernelAssembly, MandelbulbHasNoShadowStage) {
   auto scene = test::mandelbulb();
   ASSERT_TRUE(scene);
   const SceneInfo& info = scene->info;
   ASSERT_EQ(info.features & FR_FEATURE_SHADOWS, 0u) << "the Mandelbulb does not declare shadows";
   const auto state = make_default_state(info);
-  const auto k =
-      assemble_render_kernel(info, state.params, {16, Precision::Float, enabled_stages(info, 0)});
-  EXPECT_FALSE(contains(k.source, "soft_shadow"));
+  const auto k = assemble_render_kernel(info, state.params, make_kernel_config(info, RenderSettings{}, 16));
+  EXPECT_FALSE(contains(k.source, "shadow_factor"));
   EXPECT_FALSE(contains(k.source, "#line 1 \"shadow.cl\""));
   EXPECT_TRUE(contains(k.source, "#define FR_STAGE_SHADOWS 0"));
   EXPECT_TRUE(contains(k.source, "step_count_ao"));
   EXPECT_TRUE(contains(k.source, "#line 1 \"mandelbulb.cl\""));
+  EXPECT_TRUE(contains(k.source, "#line 1 \"fr/mandelbulb.cl\"")) << "the library file it includes";
+  EXPECT_FALSE(contains(k.source, "fr/menger.cl")) << "nor any library file it does not";
+}
+
+TEST(KernelAssembly, LibraryIncludesExpandOnceAndUnknownOnesAreNamed) {
+  SceneInfo info;
+  info.id = "includer";
+  info.de_source_name = "includer.cl";
+  info.de_source =
+      "#include \"fr/menger.cl\"\n#include \"fr/primitives.cl\"\n"
+      "real_t scene_de(vec3_t p, __constant const scene_params_t* params) { return sd_sphere(p, 1); }\n";
+  const auto k = assemble_render_kernel(info, {}, KernelConfig{});
+  size_t count = 0;
+  for (size_t at = k.source.find("#line 1 \"fr/primitives.cl\""); at != std::string::npos;
+       at = k.source.find("#line 1 \"fr/primitives.cl\"", at + 1))
+    ++count;
+  EXPECT_EQ(count, 1u) << "fr/primitives.cl is included by fr/menger.cl and again directly";
+  EXPECT_TRUE(contains(k.source, "#line 3 \"includer.cl\"")) << "line numbers resume after an include";
+  info.de_source = "\n#include \"fr/nope.cl\"\n";
+  try {
+    assemble_render_kernel(info, {}, KernelConfig{});
+    FAIL() << "an unknown library file was accepted";
+  } catch (const KernelBuildError& e) {
+    EXPECT_TRUE(contains(e.what(), "scene 'includer': includer.cl:2: unknown library file 'fr/nope.cl'")) << e.what();
+  }
 }
 
 TEST(KernelAssembly, StageSwitchedOffByUserIsAbsent) {
   const SceneInfo info = sphere_scene(FR_FEATURE_AO | FR_FEATURE_SHADOWS);
   const auto values = make_default_state(info).params;
-  const auto all =
-      assemble_render_kernel(info, values, {1, Precision::Float, enabled_stages(info, 0)});
-  EXPECT_TRUE(contains(all.source, "soft_shadow"));
+  RenderSettings settings;
+  const auto all = assemble_render_kernel(info, values, make_kernel_config(info, settings, 1));
+  EXPECT_TRUE(contains(all.source, "shadow_factor"));
   EXPECT_TRUE(contains(all.source, "step_count_ao"));
-  const auto no_ao = assemble_render_kernel(
-      info, values, {1, Precision::Float, enabled_stages(info, FR_FEATURE_AO)});
-  EXPECT_TRUE(contains(no_ao.source, "soft_shadow"));
+  settings.disabled_stages = FR_FEATURE_AO;
+  const auto no_ao = assemble_render_kernel(info, values, make_kernel_config(info, settings, 1));
+  EXPECT_TRUE(contains(no_ao.source, "shadow_factor"));
   EXPECT_FALSE(contains(no_ao.source, "step_count_ao"));
   EXPECT_TRUE(contains(no_ao.description, "stages: shadows"));
 }
@@ -73,7 +142,7 @@ TEST(KernelAssembly, StageSwitchedOffByUserIsAbsent) {
 TEST(KernelAssembly, ParameterBlockAndSpecialisation) {
   const SceneInfo info = sphere_scene(0);
   auto values = make_default_state(info).params;
-  const auto k = assemble_render_kernel(info, values, {16, Precision::Float, 0});
+  const auto k = assemble_render_kernel(info, values, KernelConfig{16, Precision::Float});
   EXPECT_TRUE(contains(k.source, "  float radius;\n"));
   EXPECT_FALSE(contains(k.source, "tint[3];")) << "a specialised parameter is not in the block";
   EXPECT_TRUE(contains(k.source, "#define FR_PARAM_radius ((scalar_t)params->radius)"));
@@ -82,7 +151,7 @@ TEST(KernelAssembly, ParameterBlockAndSpecialisation) {
       "#define FR_PARAM_tint v3s(((scalar_t)0.25f), ((scalar_t)0.5f), ((scalar_t)0.75f))"));
   // A new specialised value is a new source (and so a new cached program).
   values[1].v[0] = 0.125;
-  const auto k2 = assemble_render_kernel(info, values, {16, Precision::Float, 0});
+  const auto k2 = assemble_render_kernel(info, values, KernelConfig{16, Precision::Float});
   EXPECT_NE(k.source, k2.source);
   EXPECT_TRUE(contains(k2.source, "((scalar_t)0.125f)"));
 
@@ -96,7 +165,7 @@ TEST(KernelAssembly, ParameterBlockAndSpecialisation) {
 TEST(KernelAssembly, LaneWidthAndPrecisionDefines) {
   const SceneInfo info = sphere_scene(0);
   const auto values = make_default_state(info).params;
-  const auto k = assemble_render_kernel(info, values, {8, Precision::Double, 0});
+  const auto k = assemble_render_kernel(info, values, KernelConfig{8, Precision::Double});
   EXPECT_TRUE(contains(k.source, "#define FR_LANES 8\n"));
   EXPECT_TRUE(contains(k.source, "#define FR_DOUBLE 1\n"));
   EXPECT_FALSE(contains(k.source, "0.25f")) << "double literals carry no f suffix";
@@ -105,27 +174,37 @@ TEST(KernelAssembly, LaneWidthAndPrecisionDefines) {
   EXPECT_EQ(tile_shape(1).width_px, 1);
 }
 
-// Every stage combination compiles at both widths, and the program cache builds each source once.
+// Every stage and mode combination compiles at both widths, and the program cache builds each
+// source once.
 TEST(KernelAssembly, EveryStageCombinationCompiles) {
-  const SceneInfo info = sphere_scene(FR_FEATURE_AO | FR_FEATURE_SHADOWS);
+  SceneInfo info = sphere_scene(FR_FEATURE_AO | FR_FEATURE_SHADOWS | FR_FEATURE_GLOW | FR_FEATURE_FOG |
+                                FR_FEATURE_REFLECTIONS);
   SceneState state = make_default_state(info);
-  state.camera = info.camera;
   Renderer renderer(test::runtime());
   RenderSettings settings;
   settings.width_px = 8;
   settings.height_px = 8;
+  settings.aperture_radius = 0.01f;
+  const fr_features all_off = FR_FEATURE_AO | FR_FEATURE_SHADOWS | FR_FEATURE_GLOW | FR_FEATURE_FOG |
+                              FR_FEATURE_REFLECTIONS | kStageDepthOfField;
   for (int lanes : {1, 16})
-    for (fr_features off :
-         {fr_features{0}, fr_features{FR_FEATURE_AO}, fr_features{FR_FEATURE_SHADOWS},
-          fr_features{FR_FEATURE_AO | FR_FEATURE_SHADOWS}}) {
+    for (fr_features off : {fr_features{0}, fr_features{FR_FEATURE_AO}, fr_features{FR_FEATURE_SHADOWS}, all_off}) {
       settings.lanes = lanes;
       settings.disabled_stages = off;
-      EXPECT_NO_THROW(renderer.render(info, state, settings))
-          << "lanes " << lanes << " off " << off;
+      EXPECT_NO_THROW(renderer.render(info, state, settings)) << "lanes " << lanes << " off " << off;
     }
-  const size_t built = test::runtime().programs_built();
   settings.lanes = 16;
   settings.disabled_stages = 0;
+  for (auto shading : {ShadingModel::Lambert, ShadingModel::BlinnPhong, ShadingModel::OrenNayar})
+    for (bool alternative : {false, true}) {
+      settings.shading = shading;
+      settings.normals = alternative ? NormalMethod::CentralDifferences : NormalMethod::Tetrahedron;
+      settings.ao_method = alternative ? AoMethod::Sampled : AoMethod::StepCount;
+      settings.shadow_method = alternative ? ShadowMethod::Hard : ShadowMethod::Soft;
+      settings.fog_method = alternative ? FogMethod::PowerLaw : FogMethod::Exponential;
+      EXPECT_NO_THROW(renderer.render(info, state, settings));
+    }
+  const size_t built = test::runtime().programs_built();
   renderer.render(info, state, settings);
   EXPECT_EQ(test::runtime().programs_built(), built) << "a repeated frame must come from the cache";
 }

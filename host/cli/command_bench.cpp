@@ -1,74 +1,91 @@
+#include "bench/bench_report.hpp"
 #include "cli/commands.hpp"
 #include "cli/scene_setup.hpp"
+#include "io/atomic_file.hpp"
+#include "render/kernel_assembly.hpp"
 #include "render/renderer.hpp"
 
-#include <algorithm>
 #include <chrono>
-#include <cmath>
-#include <cstdio>
 #include <ostream>
 
 namespace fr {
 
 int command_bench(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   auto specs = scene_option_specs();
-  specs.push_back({"frames", "N", false, "timed frames after one warm-up frame (default 20)"});
+  specs.push_back({"frames", "N", false, "timed frames per run (default 30)"});
+  specs.push_back({"runs", "N", false, "runs of the whole path (default 3)"});
+  specs.push_back({"duration", "SECONDS", false, "scene time one run covers (default 10)"});
+  specs.push_back({"json", "FILE", false, "also write the report as JSON (atomically)"});
   specs.push_back({"help", nullptr, false, "show this help"});
   auto options = parse_options("bench", args, specs);
   if (options.has("help")) {
-    out << "usage: fractalis bench [--scene ID] [--size WxH] [--frames N] [options]\n\n"
-           "Renders N frames (update, render, tonemap, read back) after one untimed warm-up\n"
-           "frame that builds the kernel, and prints the median, min and max frame time.\n\n"
-        << format_options(specs)
-        << "\nexample:\n  fractalis bench --scene mandelbulb --size 640x360 --lanes 16\n";
+    out << "usage: fractalis bench [--scene ID] [--size WxH] [--frames N] [--runs N] [--duration S]\n"
+           "                       [--json FILE] [options]\n\n"
+           "Renders a scene along its animation for a fixed number of frames, several times,\n"
+           "after one untimed warm-up frame that builds the kernel, and reports frame times\n"
+           "(min, max, average, p50, p95), fps, and the system it ran on. Without --scene it runs\n"
+           "the benchmark scene, whose camera follows a fixed path. Each frame is the whole loop:\n"
+           "scene update, render, tonemap, read-back. Any resolution works, for example the seed\n"
+           "report's 1366x768, 1920x1080, 2560x1440 and 3840x2160.\n\n"
+        << format_options(specs) << "\nexamples:\n"
+        << "  fractalis bench --size 1366x768 --json bench.json\n"
+        << "  fractalis bench --scene mandelbulb --size 640x360 --lanes 16\n";
     return 0;
   }
-  const int frames =
-      static_cast<int>(parse_integer("--frames", options.get("frames").value_or("20"), 1, 100000));
+  const int frames = static_cast<int>(parse_integer("--frames", options.get("frames").value_or("30"), 1, 100000));
+  const int runs = static_cast<int>(parse_integer("--runs", options.get("runs").value_or("3"), 1, 1000));
+  const double duration = parse_finite("--duration", options.get("duration").value_or("10"));
+  if (!(duration >= 0)) throw UsageError("--duration: expected seconds >= 0, got " + *options.get("duration"));
+  if (!options.has("scene")) options.values["scene"] = {"benchmark"};
+  const auto json_file = options.get("json");
+  if (json_file && json_file->empty()) throw UsageError("--json: empty file name");
+
   PreparedScene p = prepare_scene(options, err);
   ClRuntime runtime(p.device);
   Renderer renderer(runtime);
   std::string error;
+  auto frame = [&](double time_s) {
+    if (!p.instance->update(p.state, time_s, &error)) throw std::runtime_error(error);
+    renderer.render(p.scene->info, p.state, p.render);
+  };
+  using clock = std::chrono::steady_clock;
+  const auto origin = clock::now();
+  auto now_ms = [&] { return std::chrono::duration<double, std::milli>(clock::now() - origin).count(); };
 
-  std::vector<double> frame_ms;
-  double mean_steps = 0, hit_fraction = 0;
-  for (int i = -1; i < frames; ++i) {
-    const auto start = std::chrono::steady_clock::now();
-    // Fixed 60 Hz scene time, so every run renders the same frames.
-    if (!p.instance->update(p.state, std::max(i, 0) / 60.0, &error)) {
+  BenchReport report;
+  const double warm_start = now_ms();
+  frame(0);  // builds the kernel
+  report.kernel_build_ms = now_ms() - warm_start;
+
+  std::vector<double> all;
+  const double wall_start = now_ms();
+  for (int run = 0; run < runs; ++run) {
+    auto times = time_frames(frames, [&](int i) { frame(duration * i / frames); }, now_ms);
+    report.run_mean_ms.push_back(summarize_frames(times).mean_ms);
+    all.insert(all.end(), times.begin(), times.end());
+  }
+  report.wall_s = (now_ms() - wall_start) / 1000.0;
+  report.stats = summarize_frames(all);
+  report.scene_id = p.scene->info.id;
+  report.scene_version = p.scene->info.version;
+  report.width_px = p.render.width_px;
+  report.height_px = p.render.height_px;
+  report.lanes = renderer.lanes_for(p.render);
+  report.precision = p.render.precision == Precision::Double ? "double" : "float";
+  report.stages = stage_names(make_kernel_config(p.scene->info, p.render, report.lanes).stages);
+  report.runs = runs;
+  report.frames_per_run = frames;
+  report.path_duration_s = duration;
+  report.system = read_system_info(p.device);
+
+  out << format_bench_text(report);
+  if (json_file) {
+    if (!write_file_atomic(*json_file, format_bench_json(report), &error)) {
       err << "fractalis: error: " << error << "\n";
       return 1;
     }
-    // The warm-up frame also reads back the step and depth buffers for the statistics.
-    FrameImage image = renderer.render(p.scene->info, p.state, p.render, i < 0);
-    if (i < 0) {
-      for (size_t k = 0; k < image.steps.size(); ++k) {
-        mean_steps += image.steps[k];
-        hit_fraction += std::isfinite(image.depth[k]) ? 1 : 0;
-      }
-      mean_steps /= static_cast<double>(image.steps.size());
-      hit_fraction /= static_cast<double>(image.steps.size());
-    }
-    const double ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    if (i >= 0) frame_ms.push_back(ms);
+    out << "wrote " << *json_file << "\n";
   }
-  std::sort(frame_ms.begin(), frame_ms.end());
-  const size_t n = frame_ms.size();
-  const double median = n % 2 ? frame_ms[n / 2] : 0.5 * (frame_ms[n / 2 - 1] + frame_ms[n / 2]);
-  char line[256];
-  std::snprintf(line, sizeof line, "median %.2f ms, min %.2f ms, max %.2f ms over %zu frames\n",
-                median, frame_ms.front(), frame_ms.back(), n);
-  out << "scene " << p.scene->info.id << ", " << p.render.width_px << "x" << p.render.height_px
-      << ", " << (p.render.precision == Precision::Double ? "double" : "float") << ", lanes "
-      << renderer.lanes_for(p.render) << "\n"
-      << "device " << p.device.name << " (" << p.device.platform_name << ", " << p.device.version
-      << ")\n"
-      << line;
-  std::snprintf(line, sizeof line,
-                "primary ray: %.1f DE steps per pixel on average, %.1f%% of pixels hit\n",
-                mean_steps, 100 * hit_fraction);
-  out << line;
   return 0;
 }
 

@@ -23,7 +23,7 @@ const StageFile kOptionalStages[] = {
     {FR_FEATURE_AO, "ao", "ao.cl", "FR_STAGE_AO"},
     {FR_FEATURE_SHADOWS, "shadows", "shadow.cl", "FR_STAGE_SHADOWS"},
     {FR_FEATURE_FOG, "fog", "fog.cl", "FR_STAGE_FOG"},
-    {FR_FEATURE_REFLECTIONS, "reflections", nullptr, "FR_STAGE_REFLECTIONS"},
+    {FR_FEATURE_REFLECTIONS, "reflections", "reflect.cl", "FR_STAGE_REFLECTIONS"},
 };
 const fr_features kSceneStages =
     FR_FEATURE_SHADOWS | FR_FEATURE_AO | FR_FEATURE_GLOW | FR_FEATURE_FOG | FR_FEATURE_REFLECTIONS;
@@ -210,6 +210,7 @@ AssembledKernel assemble_render_kernel(const SceneInfo& info, const std::vector<
   stage(FR_FEATURE_SHADOWS, "shadow.cl");
   append_file(out, "shade.cl", kernel_source("shade.cl"));
   stage(FR_FEATURE_FOG, "fog.cl");
+  stage(FR_FEATURE_REFLECTIONS, "reflect.cl");
   append_file(out, "render.cl", kernel_source("render.cl"));
   return finish(out, info, config, "render");
 }

@@ -1,0 +1,31 @@
+// bench_report.hpp — the benchmark's result as text for people and JSON for tools.
+#pragma once
+
+#include "bench/frame_stats.hpp"
+#include "bench/system_info.hpp"
+
+#include <string>
+
+namespace fr {
+
+struct BenchReport {
+  std::string scene_id;
+  std::string scene_version;
+  int width_px = 0, height_px = 0;
+  int lanes = 0;
+  std::string precision;
+  std::string stages;  // effects compiled in
+  int runs = 0;
+  int frames_per_run = 0;
+  double path_duration_s = 0;  // scene time each run covers
+  double wall_s = 0;           // real time of all timed frames
+  double kernel_build_ms = 0;  // untimed warm-up frame, including the kernel build
+  FrameStats stats;
+  std::vector<double> run_mean_ms;  // one per run
+  SystemInfo system;
+};
+
+std::string format_bench_text(const BenchReport& report);
+std::string format_bench_json(const BenchReport& report);
+
+}  // namespace fr

@@ -1,0 +1,38 @@
+/* benchmark.cl — the benchmark scene (seed report FR-3.1, 5.2): a Mandelbulb and a Menger sponge
+ * on a floor, with three spheres. World y is up. Every shape comes from the DE library. */
+#include "fr/mandelbulb.cl"
+#include "fr/menger.cl"
+
+#define BULB_CENTRE v3s(-1.55, 0.12, 0.0)
+#define SPONGE_CENTRE v3s(1.55, -0.1, 0.0)
+#define SPONGE_SIZE 0.9
+#define FLOOR_HEIGHT -1.0
+
+/* The bulb's polar axis (its z) stands along world y: swapping y and z is an isometry. */
+inline real_t bench_bulb(vec3_t p, __constant const scene_params_t* params, real_t* trap) {
+  vec3_t q = p_translate(p, BULB_CENTRE);
+  return de_mandelbulb(v3(q.x, q.z, q.y), to_real(PARAM(bulb_power)), to_real(2), PARAM(bulb_iterations),
+                       trap);
+}
+
+inline real_t bench_sponge(vec3_t p, __constant const scene_params_t* params, real_t* trap) {
+  vec3_t q = p_rotate_y(p_translate(p, SPONGE_CENTRE), 0.5);
+  return op_rescale(de_menger(p_scale(q, SPONGE_SIZE), PARAM(sponge_level), 3, v3s(1, 1, 1), 0, trap),
+                    SPONGE_SIZE);
+}
+
+inline real_t bench_spheres(vec3_t p) {
+  real_t a = sd_sphere(p_translate(p, v3s(0.1, -0.62, 1.7)), to_real(0.38));
+  real_t b = sd_sphere(p_translate(p, v3s(-0.4, -0.72, -1.8)), to_real(0.28));
+  real_t c = sd_sphere(p_translate(p, v3s(3.3, -0.7, 1.4)), to_real(0.3));
+  return op_union(a, op_union(b, c));
+}
+
+inline real_t bench_floor(vec3_t p) { return sd_plane(p, v3s(0, 1, 0), to_real(FLOOR_HEIGHT)); }
+
+real_t scene_de(vec3_t p, __constant const scene_params_t* params) {
+  real_t trap;
+  real_t d = op_union(bench_floor(p), bench_spheres(p));
+  d = op_union(d, bench_sponge(p, params, &trap));
+  return op_union(d, bench_bulb(p, params, &trap));
+}
