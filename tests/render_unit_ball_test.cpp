@@ -40,13 +40,30 @@ Analytic intersect_unit_sphere(glm::dvec3 o, glm::dvec3 d) {
   return a;
 }
 
-class UnitBall : public ::testing::TestWithParam<int> {};
+struct BallCase {
+  const char* scene;  // the test-only fixture, or the julia plugin with c = 0
+  int lanes;
+};
+
+class UnitBall : public ::testing::TestWithParam<BallCase> {};
 
 TEST_P(UnitBall, DepthAndMaskMatchTheSphere) {
-  const int lanes = GetParam();
-  auto scene = test::unit_ball();
+  const int lanes = GetParam().lanes;
+  const bool julia = std::string(GetParam().scene) == "julia";
+  auto scene = julia ? test::load_or_fail(std::filesystem::path(SCENE_PLUGIN_DIR) / "julia.so") : test::unit_ball();
   ASSERT_TRUE(scene);
   SceneState state = make_default_state(scene->info);
+  if (julia) {
+    // c = 0 and the slice w = 0: the unit ball. The update callback sets the bounding radius
+    // (1 + sqrt(1 + 4|c|)) / 2 = 1, plus its small margin.
+    state.params[scene->info.find_param("c")] = fr_value{{0, 0, 0}};
+    state.params[scene->info.find_param("c_w")] = fr_value{{0, 0, 0}};
+    state.params[scene->info.find_param("slice_w")] = fr_value{{0, 0, 0}};
+    std::string error;
+    auto instance = SceneInstance::create(scene, &error);
+    ASSERT_TRUE(instance->update(state, 0, &error)) << error;
+    EXPECT_NEAR(state.bounding_radius, 1.04, 1e-12);
+  }
   state.camera.eye[0] = 0.4;  // off-axis, so rays cross the surface at all angles
   state.camera.eye[1] = 0.9;
   state.camera.eye[2] = 3.2;
@@ -96,7 +113,9 @@ TEST_P(UnitBall, DepthAndMaskMatchTheSphere) {
   RecordProperty("checked_pixels", checked);
 }
 
-INSTANTIATE_TEST_SUITE_P(Lanes, UnitBall, ::testing::Values(1, 16));
+INSTANTIATE_TEST_SUITE_P(ScenesAndLanes, UnitBall,
+                         ::testing::Values(BallCase{"unit_ball", 1}, BallCase{"unit_ball", 16},
+                                           BallCase{"julia", 1}, BallCase{"julia", 16}));
 
 // The DE itself is 0.5 |p| ln|p| at every point (within float rounding), inside and out.
 TEST(UnitBallDe, IsHalfRLogR) {

@@ -1,0 +1,68 @@
+// The benchmark's statistics on a fake clock: known frame times in, known figures out.
+#include "bench/bench_report.hpp"
+#include "bench/frame_stats.hpp"
+
+#include <gtest/gtest.h>
+
+namespace fr {
+namespace {
+
+TEST(BenchStats, FakeClockFrameTimes) {
+  // A clock that advances by a scripted duration each time a frame renders.
+  const std::vector<double> scripted = {20, 10, 40, 30, 50, 10, 20, 30, 20, 70};
+  double now = 1000;
+  std::vector<int> rendered;
+  auto frames = time_frames(
+      static_cast<int>(scripted.size()), [&](int i) { rendered.push_back(i), now += scripted[i]; },
+      [&] { return now; });
+  EXPECT_EQ(frames, scripted);
+  EXPECT_EQ(rendered, (std::vector<int>{0, 1, 2, 3, 4, 5, 6, 7, 8, 9}));
+
+  const FrameStats s = summarize_frames(frames);
+  EXPECT_EQ(s.frames, 10u);
+  EXPECT_DOUBLE_EQ(s.total_ms, 300);
+  EXPECT_DOUBLE_EQ(s.min_ms, 10);
+  EXPECT_DOUBLE_EQ(s.max_ms, 70);
+  EXPECT_DOUBLE_EQ(s.mean_ms, 30);
+  // Sorted: 10 10 20 20 20 30 30 40 50 70; nearest rank: p50 is the 5th, p95 the 10th.
+  EXPECT_DOUBLE_EQ(s.p50_ms, 20);
+  EXPECT_DOUBLE_EQ(s.p95_ms, 70);
+  EXPECT_LE(s.min_ms, s.p50_ms);
+  EXPECT_LE(s.p50_ms, s.p95_ms);
+  EXPECT_LE(s.p95_ms, s.max_ms);
+  EXPECT_DOUBLE_EQ(s.mean_fps, 1000.0 / 30);
+  EXPECT_DOUBLE_EQ(s.min_fps, 1000.0 / 70);
+  EXPECT_DOUBLE_EQ(s.max_fps, 1000.0 / 10);
+}
+
+TEST(BenchStats, SingleFrameAndEmpty) {
+  const FrameStats s = summarize_frames({16});
+  EXPECT_DOUBLE_EQ(s.p50_ms, 16);
+  EXPECT_DOUBLE_EQ(s.p95_ms, 16);
+  EXPECT_DOUBLE_EQ(s.mean_fps, 62.5);
+  EXPECT_THROW(summarize_frames({}), std::invalid_argument);
+}
+
+TEST(BenchStats, ReportFormats) {
+  BenchReport r;
+  r.scene_id = "benchmark";
+  r.scene_version = "1.0.0";
+  r.width_px = 1366;
+  r.height_px = 768;
+  r.runs = 2;
+  r.frames_per_run = 3;
+  r.stats = summarize_frames({10, 20, 30, 40, 50, 60});
+  r.system.cpu_model = "Test \"CPU\"";
+  r.system.logical_cores = 2;
+  const std::string text = format_bench_text(r);
+  EXPECT_NE(text.find("1366x768"), std::string::npos);
+  EXPECT_NE(text.find("median 30.00 ms, min 10.00 ms, max 60.00 ms over 6 frames"), std::string::npos) << text;
+  EXPECT_NE(text.find("p95 60.00 ms"), std::string::npos) << text;
+  EXPECT_NE(text.find("fps: average 28.57, min 16.67, max 100.00"), std::string::npos) << text;
+  const std::string json = format_bench_json(r);
+  EXPECT_NE(json.find("\"cpu\": \"Test \\\"CPU\\\"\""), std::string::npos) << json;
+  EXPECT_NE(json.find("\"resolution\": {\"width\": 1366, \"height\": 768}"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace fr

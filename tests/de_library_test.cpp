@@ -1,0 +1,116 @@
+// The DE helper library (kernels/de/) against analytic values at sample points, evaluated
+// through the same OpenCL path the renderer uses (the probe kernel), at lane widths 1 and 16.
+#include "render/de_probe.hpp"
+#include "test_support.hpp"
+
+#include <cmath>
+
+namespace fr {
+namespace {
+
+struct Case {
+  const char* expression;  // OpenCL, in terms of p; evaluated at each point
+  std::array<float, 3> point;
+  double expected;  // computed by hand from the shape's geometry
+};
+
+void check(const char* include, const std::vector<Case>& cases) {
+  for (int lanes : {1, 16})
+    for (const Case& c : cases) {
+      SceneInfo info;
+      info.id = "library_probe";
+      info.de_source_name = "probe.cl";
+      info.de_source = std::string("#include \"") + include + "\"\n" +
+                       "real_t scene_de(vec3_t p, __constant const scene_params_t* params) {\n  return " +
+                       c.expression + ";\n}\n";
+      const auto got = probe_de(test::runtime(), info, {}, {c.point}, lanes);
+      EXPECT_NEAR(got[0], c.expected, 2e-6 + 2e-6 * std::abs(c.expected))
+          << c.expression << " at (" << c.point[0] << ", " << c.point[1] << ", " << c.point[2] << "), lanes "
+          << lanes;
+    }
+}
+
+const double kSqrt2 = std::sqrt(2.0), kSqrt3 = std::sqrt(3.0);
+
+TEST(DeLibrary, Primitives) {
+  check("fr/primitives.cl",
+        {
+            {"sd_sphere(p, 1)", {3, 0, 0}, 2},
+            {"sd_sphere(p, 1)", {0, 0, 0}, -1},
+            {"sd_box(p, v3s(1, 1, 1))", {2, 0, 0}, 1},                 // face
+            {"sd_box(p, v3s(1, 1, 1))", {2, 2, 0}, kSqrt2},            // edge
+            {"sd_box(p, v3s(1, 1, 1))", {2, 2, 2}, kSqrt3},            // corner
+            {"sd_box(p, v3s(1, 2, 3))", {0, 0, 0}, -1},                // inside: nearest face
+            {"sd_round_box(p, v3s(1, 1, 1), 0.25f)", {2, 0, 0}, 1},    // faces stay in place
+            {"sd_round_box(p, v3s(1, 1, 1), 0.25f)", {2, 2, 0}, std::hypot(1.25, 1.25) - 0.25},
+            {"sd_torus(p, 2, 0.5f)", {2, 0, 0}, -0.5},                 // tube centre
+            {"sd_torus(p, 2, 0.5f)", {0, 0, 0}, 1.5},                  // hole centre
+            {"sd_torus(p, 2, 0.5f)", {0, 3, 0}, std::hypot(2.0, 3.0) - 0.5},
+            {"sd_plane(p, v3s(0, 1, 0), -1)", {5, 2, 7}, 3},
+            {"sd_capsule(p, v3s(0, 0, 0), v3s(0, 2, 0), 0.5f)", {1, 1, 0}, 0.5},
+            {"sd_capsule(p, v3s(0, 0, 0), v3s(0, 2, 0), 0.5f)", {0, 4, 0}, 1.5},
+            {"sd_cylinder(p, 1, 2)", {3, 0, 0}, 2},
+            {"sd_cylinder(p, 1, 2)", {0, 5, 0}, 3},
+            {"sd_cylinder(p, 1, 2)", {2, 3, 0}, kSqrt2},
+            {"sd_cylinder(p, 1, 2)", {0, 0, 0}, -1},
+            // The tetrahedron (s = 1) has its face opposite (1,1,1) on x + y + z = -1, at distance
+            // 1/sqrt 3 from the origin; a point on the axis beyond it is exact.
+            {"de_tetrahedron(p, 1)", {-1, -1, -1}, (3.0 - 1.0) / kSqrt3},
+            {"de_tetrahedron(p, 1)", {0, 0, 0}, -1 / kSqrt3},
+            {"de_octahedron(p, 1)", {1, 1, 1}, 2 / kSqrt3},
+            {"de_octahedron(p, 1)", {0, 0, 0}, -1 / kSqrt3},
+        });
+}
+
+TEST(DeLibrary, OperatorsAndTransforms) {
+  check("fr/operators.cl",
+        {
+            {"op_union(to_real(0.3f), to_real(-0.2f))", {0, 0, 0}, -0.2},
+            {"op_intersect(to_real(0.3f), to_real(-0.2f))", {0, 0, 0}, 0.3},
+            {"op_subtract(to_real(0.3f), to_real(-0.2f))", {0, 0, 0}, -0.2},  // b minus a
+            {"op_subtract(to_real(-0.3f), to_real(-0.2f))", {0, 0, 0}, 0.3},
+            // Smooth versions equal the sharp ones when the inputs differ by at least k...
+            {"op_smooth_union(to_real(1), to_real(3), 0.5f)", {0, 0, 0}, 1},
+            {"op_smooth_intersect(to_real(1), to_real(3), 0.5f)", {0, 0, 0}, 3},
+            {"op_smooth_subtract(to_real(1), to_real(3), 0.5f)", {0, 0, 0}, 3},
+            // ...and at equal inputs deviate by k/4: smin(a, a) = a - k/4, smax(a, a) = a + k/4.
+            {"op_smooth_union(to_real(1), to_real(1), 0.5f)", {0, 0, 0}, 1 - 0.125},
+            {"op_smooth_intersect(to_real(1), to_real(1), 0.5f)", {0, 0, 0}, 1 + 0.125},
+            {"op_smooth_subtract(to_real(-1), to_real(1), 0.5f)", {0, 0, 0}, 1 + 0.125},
+            // Domain transforms: a unit sphere moved, rotated, scaled, repeated.
+            {"v3_length(p_translate(p, v3s(1, 2, 3))) - 1", {1, 2, 5}, 1},
+            {"p_rotate_z(p, M_PI_F / 2).x", {0, 1, 0}, 1},   // the shape turned by +90 degrees
+            {"p_rotate_x(p, M_PI_F / 2).y", {0, 0, 1}, 1},
+            {"p_rotate_y(p, M_PI_F / 2).z", {1, 0, 0}, 1},
+            {"op_rescale(v3_length(p_scale(p, 2)) - 1, 2)", {5, 0, 0}, 3},  // sphere of radius 2
+            {"v3_length(p_repeat(p, v3s(4, 0, 0))) - 1", {8.5f, 0, 0}, -0.5},
+            {"v3_length(p_repeat(p, v3s(4, 0, 0))) - 1", {0, 0, 3}, 2},       // y, z not repeated
+            {"p_twist(p, M_PI_F / 2).x", {1, 1, 0}, 0},   // at height 1, a quarter turn
+            {"p_bend(p, 0).y", {3, 2, 1}, 2},
+        });
+}
+
+TEST(DeLibrary, Folds) {
+  check("fr/folds.cl",
+        {
+            {"p_fold_abs(p).y", {1, -2, 3}, 2},
+            {"p_fold_plane(p, v3s(1, 0, 0), 1).x", {-1, 0, 0}, 3},  // mirrored across x = 1
+            {"p_fold_plane(p, v3s(1, 0, 0), 1).x", {2, 0, 0}, 2},   // already on the positive side
+            {"p_fold_box(p, 1).x", {1.5f, 0, 0}, 0.5},              // 2 * 1 - 1.5
+            {"p_fold_box(p, 1).y", {0, 0.5f, 0}, 0.5},
+            {"p_fold_menger(p).x", {-1, 3, -2}, 3},  // |.| sorted: 3, 2, 1
+            {"p_fold_menger(p).y", {-1, 3, -2}, 2},
+            {"p_fold_menger(p).z", {-1, 3, -2}, 1},
+            {"p_fold_sierpinski(p).x", {-1, -1, 1}, 1},  // vertex (-1,-1,1) folds onto (1,1,1)
+            {"p_fold_sierpinski(p).y", {-1, -1, 1}, 1},
+            {"p_fold_sierpinski(p).z", {-1, -1, 1}, 1},
+            {"p_fold_sierpinski(p).x", {0.5f, 0.2f, 0.1f}, 0.5},  // already in the domain
+        });
+  // The sphere fold: inside the minimum radius scale by (fixed/min)^2 (here 4).
+  check("fr/folds.cl", {{"({ real_t dr = 1; vec3_t q = p_fold_sphere(p, 0.5f, 1, &dr); q.x * 10 + dr; })",
+                         {0.25f, 0, 0},
+                         1 * 10 + 4}});
+}
+
+}  // namespace
+}  // namespace fr
