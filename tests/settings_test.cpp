@@ -4,6 +4,7 @@
 #include "test_support.hpp"
 
 #include <fstream>
+#include <sstream>
 
 namespace fr {
 namespace {
@@ -91,6 +92,38 @@ TEST(Settings, DefaultFileMatchesBuiltInDefaults) {
   EXPECT_EQ(from_file.render.exposure, builtin.render.exposure);
   EXPECT_EQ(from_file.render.ao_strength, builtin.render.ao_strength);
   EXPECT_EQ(from_file.render.disabled_stages, builtin.render.disabled_stages);
+  EXPECT_EQ(from_file.render.samples, builtin.render.samples);
+  EXPECT_EQ(from_file.render.max_bounces, builtin.render.max_bounces);
+  EXPECT_EQ(from_file.render.roughness, builtin.render.roughness);
+  EXPECT_EQ(from_file.render.reflectivity, builtin.render.reflectivity);
+  EXPECT_EQ(from_file.render.aperture_radius, builtin.render.aperture_radius);
+  EXPECT_EQ(from_file.render.focus_distance, builtin.render.focus_distance);
+  EXPECT_EQ(from_file.render.shading, builtin.render.shading);
+  EXPECT_EQ(from_file.render.normals, builtin.render.normals);
+  EXPECT_EQ(from_file.render.ao_method, builtin.render.ao_method);
+  EXPECT_EQ(from_file.render.shadow_method, builtin.render.shadow_method);
+  EXPECT_EQ(from_file.render.fog_method, builtin.render.fog_method);
+  // And it names every key the loader knows, so the file documents them all.
+  std::ifstream in(std::filesystem::path(SOURCE_DIR) / "config" / "default.toml");
+  std::stringstream text;
+  text << in.rdbuf();
+  for (const std::string& key : known_setting_keys()) {
+    const std::string leaf = key.substr(key.rfind('.') + 1);
+    EXPECT_NE(text.str().find("\n" + leaf + " = "), std::string::npos) << key << " is not in default.toml";
+  }
+}
+
+TEST(Settings, CommandLineOverride) {
+  Settings s;
+  EXPECT_TRUE(apply_setting_override("render.shading_model=oren-nayar", s).empty());
+  EXPECT_EQ(s.render.shading, ShadingModel::OrenNayar);
+  EXPECT_TRUE(apply_setting_override("render.effects.fog=false", s).empty());
+  EXPECT_EQ(s.render.disabled_stages, FR_FEATURE_FOG);
+  EXPECT_TRUE(apply_setting_override("render.samples=4", s).empty());
+  EXPECT_EQ(s.render.samples, 4);
+  const auto bad = apply_setting_override("render.samples=many", s);
+  ASSERT_EQ(bad.size(), 1u);
+  EXPECT_EQ(bad[0].to_string(), "--set render.samples=many: key 'render.samples': expected an integer in [1, 4096]");
 }
 
 }  // namespace

@@ -46,7 +46,7 @@ static const fr_param_desc* const params[P_COUNT] = {
     &c,          &c_w,      &slice_w,      &iterations,  &bailout,   &color_near,
     &color_far,  &animate,  &path_center,  &path_radius, &path_speed};
 
-static const fr_camera camera = FR_CAMERA(1.2, 1.6, 3.9, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 45.0);
+static const fr_camera camera = FR_CAMERA(1.4, 1.9, 4.6, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 45.0);
 static const fr_light key = FR_DIRECTIONAL_LIGHT(-0.5, -0.9, -0.4, 1.0, 0.95, 0.9, 1.3);
 static const fr_light fill = FR_DIRECTIONAL_LIGHT(0.6, 0.2, 0.5, 0.4, 0.5, 0.75, 0.25);
 static const fr_light* const lights[] = {&key, &fill};
