@@ -8,6 +8,8 @@
 
 namespace fr {
 
+static_assert(FR_MAX_LIGHTS == FR_MAX_SCENE_LIGHTS, "the kernel holds every light a scene may declare");
+
 // The kernels read this struct with OpenCL C's layout rules; with only 4-byte fields both sides
 // agree, and these checks keep it so.
 static_assert(sizeof(fr_frame_constants) == 720, "fr_frame_constants layout changed");
@@ -50,7 +52,8 @@ fr_frame_constants make_frame_constants(const CameraRays& rays, const SceneState
   put(fc.camera_up, rays.up);
   put(fc.camera_forward, rays.forward);
 
-  // Lights: the scene's, up to FR_MAX_LIGHTS; without any, one from above-behind the camera.
+  // Lights: the scene's (the loader refuses more than FR_MAX_SCENE_LIGHTS); without any, one from
+  // above-behind the camera.
   int count = 0;
   for (const fr_light& l : state.lights) {
     if (count == FR_MAX_LIGHTS) break;

@@ -34,6 +34,9 @@ typedef struct fr_camera {
   double fov_deg;       /* horizontal field of view in degrees, in (0, 180) */
 } fr_camera;
 
+/* The most lights a scene may declare; the host refuses a scene with more. */
+#define FR_MAX_SCENE_LIGHTS 8u
+
 typedef uint32_t fr_light_kind;
 #define FR_LIGHT_DIRECTIONAL 1u /* `vector` is the direction the light travels (towards scene) */
 #define FR_LIGHT_POINT 2u       /* `vector` is the light's world-space position */
@@ -116,7 +119,7 @@ typedef struct fr_scene_desc {
 
   const fr_param_desc* const* params; /* param_count pointers; may be null when param_count is 0 */
   uint32_t param_count;
-  uint32_t light_count; /* number of default lights */
+  uint32_t light_count; /* number of default lights, at most FR_MAX_SCENE_LIGHTS */
 
   fr_features features;         /* what the scene needs from the renderer */
   const fr_camera* camera;      /* default camera; null: the host's default view */
