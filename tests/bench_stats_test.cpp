@@ -56,7 +56,9 @@ TEST(BenchStats, ReportFormats) {
   r.system.logical_cores = 2;
   const std::string text = format_bench_text(r);
   EXPECT_NE(text.find("1366x768"), std::string::npos);
-  EXPECT_NE(text.find("median 30.00 ms, min 10.00 ms, max 60.00 ms over 6 frames"), std::string::npos) << text;
+  EXPECT_NE(text.find("median 30.00 ms, min 10.00 ms, max 60.00 ms over 6 frames"),
+            std::string::npos)
+      << text;
   EXPECT_NE(text.find("p95 60.00 ms"), std::string::npos) << text;
   EXPECT_NE(text.find("fps: average 28.57, min 16.67, max 100.00"), std::string::npos) << text;
   const std::string json = format_bench_json(r);

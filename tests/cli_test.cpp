@@ -32,7 +32,9 @@ TEST(Cli, UsageErrors) {
   expect_usage_error({"frobnicate"}, "unknown command 'frobnicate'");
   expect_usage_error({"render", "--bogus"}, "unknown option '--bogus'");
   expect_usage_error({"render", "--out"}, "option '--out' needs a value");
-  expect_usage_error({"render", "--scene", "nope"}, "unknown scene 'nope' (available: benchmark, julia, mandelbulb, menger, sierpinski)");
+  expect_usage_error(
+      {"render", "--scene", "nope"},
+      "unknown scene 'nope' (available: benchmark, julia, mandelbulb, menger, sierpinski)");
   expect_usage_error({"render", "--param", "nokey=1"}, "has no parameter 'nokey'");
   expect_usage_error({"render", "--param", "power"}, "expected KEY=VALUE");
   expect_usage_error({"render", "--param", "power=nan"}, "'nan' is not a finite number");
@@ -57,7 +59,8 @@ TEST(Cli, UsageErrors) {
   expect_usage_error({"render", "--config", "/no/such/file.toml"}, "--config: no such file");
   expect_usage_error({"bench", "--frames", "0"}, "--frames: 0 is outside");
   expect_usage_error({"list", "--size", "1x1"}, "unknown option '--size' for 'list'");
-  expect_usage_error({"render", "--set", "render.lanse=16"}, "key 'render.lanse': unknown key (did you mean 'render.lanes'?)");
+  expect_usage_error({"render", "--set", "render.lanse=16"},
+                     "key 'render.lanse': unknown key (did you mean 'render.lanes'?)");
   expect_usage_error({"render", "--set", "render.shading_model=phong"},
                      "expected one of \"lambert\", \"blinn-phong\", \"oren-nayar\"");
   expect_usage_error({"render", "--set", "render.effects.fog=maybe"}, "render.effects.fog");

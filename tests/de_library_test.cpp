@@ -20,13 +20,14 @@ void check(const char* include, const std::vector<Case>& cases) {
       SceneInfo info;
       info.id = "library_probe";
       info.de_source_name = "probe.cl";
-      info.de_source = std::string("#include \"") + include + "\"\n" +
-                       "real_t scene_de(vec3_t p, __constant const scene_params_t* params) {\n  return " +
-                       c.expression + ";\n}\n";
+      info.de_source =
+          std::string("#include \"") + include + "\"\n" +
+          "real_t scene_de(vec3_t p, __constant const scene_params_t* params) {\n  return " +
+          c.expression + ";\n}\n";
       const auto got = probe_de(test::runtime(), info, {}, {c.point}, lanes);
       EXPECT_NEAR(got[0], c.expected, 2e-6 + 2e-6 * std::abs(c.expected))
-          << c.expression << " at (" << c.point[0] << ", " << c.point[1] << ", " << c.point[2] << "), lanes "
-          << lanes;
+          << c.expression << " at (" << c.point[0] << ", " << c.point[1] << ", " << c.point[2]
+          << "), lanes " << lanes;
     }
 }
 
@@ -37,14 +38,14 @@ TEST(DeLibrary, Primitives) {
         {
             {"sd_sphere(p, 1)", {3, 0, 0}, 2},
             {"sd_sphere(p, 1)", {0, 0, 0}, -1},
-            {"sd_box(p, v3s(1, 1, 1))", {2, 0, 0}, 1},                 // face
-            {"sd_box(p, v3s(1, 1, 1))", {2, 2, 0}, kSqrt2},            // edge
-            {"sd_box(p, v3s(1, 1, 1))", {2, 2, 2}, kSqrt3},            // corner
-            {"sd_box(p, v3s(1, 2, 3))", {0, 0, 0}, -1},                // inside: nearest face
-            {"sd_round_box(p, v3s(1, 1, 1), 0.25f)", {2, 0, 0}, 1},    // faces stay in place
+            {"sd_box(p, v3s(1, 1, 1))", {2, 0, 0}, 1},               // face
+            {"sd_box(p, v3s(1, 1, 1))", {2, 2, 0}, kSqrt2},          // edge
+            {"sd_box(p, v3s(1, 1, 1))", {2, 2, 2}, kSqrt3},          // corner
+            {"sd_box(p, v3s(1, 2, 3))", {0, 0, 0}, -1},              // inside: nearest face
+            {"sd_round_box(p, v3s(1, 1, 1), 0.25f)", {2, 0, 0}, 1},  // faces stay in place
             {"sd_round_box(p, v3s(1, 1, 1), 0.25f)", {2, 2, 0}, std::hypot(1.25, 1.25) - 0.25},
-            {"sd_torus(p, 2, 0.5f)", {2, 0, 0}, -0.5},                 // tube centre
-            {"sd_torus(p, 2, 0.5f)", {0, 0, 0}, 1.5},                  // hole centre
+            {"sd_torus(p, 2, 0.5f)", {2, 0, 0}, -0.5},  // tube centre
+            {"sd_torus(p, 2, 0.5f)", {0, 0, 0}, 1.5},   // hole centre
             {"sd_torus(p, 2, 0.5f)", {0, 3, 0}, std::hypot(2.0, 3.0) - 0.5},
             {"sd_plane(p, v3s(0, 1, 0), -1)", {5, 2, 7}, 3},
             {"sd_capsule(p, v3s(0, 0, 0), v3s(0, 2, 0), 0.5f)", {1, 1, 0}, 0.5},
@@ -79,13 +80,13 @@ TEST(DeLibrary, OperatorsAndTransforms) {
             {"op_smooth_subtract(to_real(-1), to_real(1), 0.5f)", {0, 0, 0}, 1 + 0.125},
             // Domain transforms: a unit sphere moved, rotated, scaled, repeated.
             {"v3_length(p_translate(p, v3s(1, 2, 3))) - 1", {1, 2, 5}, 1},
-            {"p_rotate_z(p, M_PI_F / 2).x", {0, 1, 0}, 1},   // the shape turned by +90 degrees
+            {"p_rotate_z(p, M_PI_F / 2).x", {0, 1, 0}, 1},  // the shape turned by +90 degrees
             {"p_rotate_x(p, M_PI_F / 2).y", {0, 0, 1}, 1},
             {"p_rotate_y(p, M_PI_F / 2).z", {1, 0, 0}, 1},
             {"op_rescale(v3_length(p_scale(p, 2)) - 1, 2)", {5, 0, 0}, 3},  // sphere of radius 2
             {"v3_length(p_repeat(p, v3s(4, 0, 0))) - 1", {8.5f, 0, 0}, -0.5},
-            {"v3_length(p_repeat(p, v3s(4, 0, 0))) - 1", {0, 0, 3}, 2},       // y, z not repeated
-            {"p_twist(p, M_PI_F / 2).x", {1, 1, 0}, 0},   // at height 1, a quarter turn
+            {"v3_length(p_repeat(p, v3s(4, 0, 0))) - 1", {0, 0, 3}, 2},  // y, z not repeated
+            {"p_twist(p, M_PI_F / 2).x", {1, 1, 0}, 0},  // at height 1, a quarter turn
             {"p_bend(p, 0).y", {3, 2, 1}, 2},
         });
 }
@@ -107,9 +108,10 @@ TEST(DeLibrary, Folds) {
             {"p_fold_sierpinski(p).x", {0.5f, 0.2f, 0.1f}, 0.5},  // already in the domain
         });
   // The sphere fold: inside the minimum radius scale by (fixed/min)^2 (here 4).
-  check("fr/folds.cl", {{"({ real_t dr = 1; vec3_t q = p_fold_sphere(p, 0.5f, 1, &dr); q.x * 10 + dr; })",
-                         {0.25f, 0, 0},
-                         1 * 10 + 4}});
+  check("fr/folds.cl",
+        {{"({ real_t dr = 1; vec3_t q = p_fold_sphere(p, 0.5f, 1, &dr); q.x * 10 + dr; })",
+          {0.25f, 0, 0},
+          1 * 10 + 4}});
 }
 
 }  // namespace

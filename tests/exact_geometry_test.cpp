@@ -76,8 +76,10 @@ double tetra_entry(dvec3 o, dvec3 d, const Tetra& v, double grow) {
       continue;
     }
     const double t = dist / denom;
-    if (denom > 0) t1 = std::min(t1, t);
-    else t0 = std::max(t0, t);
+    if (denom > 0)
+      t1 = std::min(t1, t);
+    else
+      t0 = std::max(t0, t);
     if (t0 > t1) return kNone;
   }
   return t0;
@@ -127,7 +129,8 @@ Comparison compare(const std::string& id, int level, Entry entry) {
       const double t_exact = entry(rays.eye, d, 0.0);
       const bool rendered = std::isfinite(img.depth[i]);
       const double t = img.depth[i];
-      const double delta = 3 * settings.hit_threshold_k * rays.pixel_angle_rad * (rendered ? t : 1.0);
+      const double delta =
+          3 * settings.hit_threshold_k * rays.pixel_angle_rad * (rendered ? t : 1.0);
       const double slack = 1e-4 * glm::length(rays.eye);  // float rays and depths
       c.exact_hits += t_exact != kNone;
       c.rendered_hits += rendered;
@@ -135,8 +138,10 @@ Comparison compare(const std::string& id, int level, Entry entry) {
       if (t_exact != kNone && rendered && t > t_exact + slack) ++c.behind;
       if (rendered) {
         const double t_grown = entry(rays.eye, d, delta);
-        if (t_grown == kNone) ++c.stray;
-        else if (t < t_grown - slack) ++c.early;
+        if (t_grown == kNone)
+          ++c.stray;
+        else if (t < t_grown - slack)
+          ++c.early;
         ++c.checked;
       }
     }
@@ -146,7 +151,8 @@ Comparison compare(const std::string& id, int level, Entry entry) {
 void expect_matches(const Comparison& c, const char* what) {
   EXPECT_GT(c.exact_hits, 96 * 96 / 20) << what << ": the view should show the object";
   EXPECT_EQ(c.behind, 0) << what << ": pixels behind the exact surface";
-  EXPECT_EQ(c.stray, 0) << what << ": pixels hit where the exact geometry (grown by delta) has none";
+  EXPECT_EQ(c.stray, 0) << what
+                        << ": pixels hit where the exact geometry (grown by delta) has none";
   EXPECT_EQ(c.early, 0) << what << ": pixels nearer than the grown geometry";
   // A ray that grazes an edge exactly can fall either side in float; allow a handful.
   EXPECT_LE(c.missed, 96 * 96 / 500) << what << ": exact hits the renderer missed";

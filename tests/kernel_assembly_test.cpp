@@ -79,7 +79,8 @@ TEST(KernelAssembly, OnlyNeededStagesArePresentPerSceneAndSetting) {
           const bool needed = m.stage == kStageDepthOfField || (info.features & m.stage);
           const bool expected = needed && !(user_off && m.stage == off.stage);
           EXPECT_EQ(contains(k.source, m.code), expected)
-              << id << ": stage " << m.name << (user_off ? " with " + std::string(off.name) + " off" : "");
+              << id << ": stage " << m.name
+              << (user_off ? " with " + std::string(off.name) + " off" : "");
         }
       }
     }
@@ -92,7 +93,8 @@ TEST(KernelAssembly, MandelbulbHasNoShadowStage) {
   const SceneInfo& info = scene->info;
   ASSERT_EQ(info.features & FR_FEATURE_SHADOWS, 0u) << "the Mandelbulb does not declare shadows";
   const auto state = make_default_state(info);
-  const auto k = assemble_render_kernel(info, state.params, make_kernel_config(info, RenderSettings{}, 16));
+  const auto k =
+      assemble_render_kernel(info, state.params, make_kernel_config(info, RenderSettings{}, 16));
   EXPECT_FALSE(contains(k.source, "shadow_factor"));
   EXPECT_FALSE(contains(k.source, "#line 1 \"shadow.cl\""));
   EXPECT_TRUE(contains(k.source, "#define FR_STAGE_SHADOWS 0"));
@@ -108,20 +110,24 @@ TEST(KernelAssembly, LibraryIncludesExpandOnceAndUnknownOnesAreNamed) {
   info.de_source_name = "includer.cl";
   info.de_source =
       "#include \"fr/menger.cl\"\n#include \"fr/primitives.cl\"\n"
-      "real_t scene_de(vec3_t p, __constant const scene_params_t* params) { return sd_sphere(p, 1); }\n";
+      "real_t scene_de(vec3_t p, __constant const scene_params_t* params) { return sd_sphere(p, "
+      "1); }\n";
   const auto k = assemble_render_kernel(info, {}, KernelConfig{});
   size_t count = 0;
   for (size_t at = k.source.find("#line 1 \"fr/primitives.cl\""); at != std::string::npos;
        at = k.source.find("#line 1 \"fr/primitives.cl\"", at + 1))
     ++count;
   EXPECT_EQ(count, 1u) << "fr/primitives.cl is included by fr/menger.cl and again directly";
-  EXPECT_TRUE(contains(k.source, "#line 3 \"includer.cl\"")) << "line numbers resume after an include";
+  EXPECT_TRUE(contains(k.source, "#line 3 \"includer.cl\""))
+      << "line numbers resume after an include";
   info.de_source = "\n#include \"fr/nope.cl\"\n";
   try {
     assemble_render_kernel(info, {}, KernelConfig{});
     FAIL() << "an unknown library file was accepted";
   } catch (const KernelBuildError& e) {
-    EXPECT_TRUE(contains(e.what(), "scene 'includer': includer.cl:2: unknown library file 'fr/nope.cl'")) << e.what();
+    EXPECT_TRUE(
+        contains(e.what(), "scene 'includer': includer.cl:2: unknown library file 'fr/nope.cl'"))
+        << e.what();
   }
 }
 
@@ -177,21 +183,23 @@ TEST(KernelAssembly, LaneWidthAndPrecisionDefines) {
 // Every stage and mode combination compiles at both widths, and the program cache builds each
 // source once.
 TEST(KernelAssembly, EveryStageCombinationCompiles) {
-  SceneInfo info = sphere_scene(FR_FEATURE_AO | FR_FEATURE_SHADOWS | FR_FEATURE_GLOW | FR_FEATURE_FOG |
-                                FR_FEATURE_REFLECTIONS);
+  SceneInfo info = sphere_scene(FR_FEATURE_AO | FR_FEATURE_SHADOWS | FR_FEATURE_GLOW |
+                                FR_FEATURE_FOG | FR_FEATURE_REFLECTIONS);
   SceneState state = make_default_state(info);
   Renderer renderer(test::runtime());
   RenderSettings settings;
   settings.width_px = 8;
   settings.height_px = 8;
   settings.aperture_radius = 0.01f;
-  const fr_features all_off = FR_FEATURE_AO | FR_FEATURE_SHADOWS | FR_FEATURE_GLOW | FR_FEATURE_FOG |
-                              FR_FEATURE_REFLECTIONS | kStageDepthOfField;
+  const fr_features all_off = FR_FEATURE_AO | FR_FEATURE_SHADOWS | FR_FEATURE_GLOW |
+                              FR_FEATURE_FOG | FR_FEATURE_REFLECTIONS | kStageDepthOfField;
   for (int lanes : {1, 16})
-    for (fr_features off : {fr_features{0}, fr_features{FR_FEATURE_AO}, fr_features{FR_FEATURE_SHADOWS}, all_off}) {
+    for (fr_features off :
+         {fr_features{0}, fr_features{FR_FEATURE_AO}, fr_features{FR_FEATURE_SHADOWS}, all_off}) {
       settings.lanes = lanes;
       settings.disabled_stages = off;
-      EXPECT_NO_THROW(renderer.render(info, state, settings)) << "lanes " << lanes << " off " << off;
+      EXPECT_NO_THROW(renderer.render(info, state, settings))
+          << "lanes " << lanes << " off " << off;
     }
   settings.lanes = 16;
   settings.disabled_stages = 0;

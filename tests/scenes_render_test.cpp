@@ -45,7 +45,9 @@ void expect_sane(const Frame& f, const std::string& what) {
 
 class EveryScene : public ::testing::TestWithParam<const char*> {};
 
-TEST_P(EveryScene, DefaultSettings) { expect_sane(render_scene(GetParam(), RenderSettings{}), GetParam()); }
+TEST_P(EveryScene, DefaultSettings) {
+  expect_sane(render_scene(GetParam(), RenderSettings{}), GetParam());
+}
 
 TEST_P(EveryScene, AlternativeModesAndAntiAliasing) {
   RenderSettings s;
@@ -60,7 +62,8 @@ TEST_P(EveryScene, AlternativeModesAndAntiAliasing) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, EveryScene,
-                         ::testing::Values("mandelbulb", "menger", "sierpinski", "julia", "benchmark"));
+                         ::testing::Values("mandelbulb", "menger", "sierpinski", "julia",
+                                           "benchmark"));
 
 // Shadows darken: switching them on never raises a pixel's first-light factor and puts many hit
 // pixels in shadow (the benchmark scene has objects standing on a floor). With them off, the

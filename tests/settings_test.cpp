@@ -109,7 +109,8 @@ TEST(Settings, DefaultFileMatchesBuiltInDefaults) {
   text << in.rdbuf();
   for (const std::string& key : known_setting_keys()) {
     const std::string leaf = key.substr(key.rfind('.') + 1);
-    EXPECT_NE(text.str().find("\n" + leaf + " = "), std::string::npos) << key << " is not in default.toml";
+    EXPECT_NE(text.str().find("\n" + leaf + " = "), std::string::npos)
+        << key << " is not in default.toml";
   }
 }
 
@@ -123,7 +124,8 @@ TEST(Settings, CommandLineOverride) {
   EXPECT_EQ(s.render.samples, 4);
   const auto bad = apply_setting_override("render.samples=many", s);
   ASSERT_EQ(bad.size(), 1u);
-  EXPECT_EQ(bad[0].to_string(), "--set render.samples=many: key 'render.samples': expected an integer in [1, 4096]");
+  EXPECT_EQ(bad[0].to_string(),
+            "--set render.samples=many: key 'render.samples': expected an integer in [1, 4096]");
 }
 
 }  // namespace

@@ -16,10 +16,18 @@ std::string json_string(const std::string& s) {
   std::string out = "\"";
   for (char c : s) {
     switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\t': out += "\\t"; break;
+      case '"':
+        out += "\\\"";
+        break;
+      case '\\':
+        out += "\\\\";
+        break;
+      case '\n':
+        out += "\\n";
+        break;
+      case '\t':
+        out += "\\t";
+        break;
       default:
         if (static_cast<unsigned char>(c) < 0x20) {
           char buf[8];
@@ -38,17 +46,19 @@ std::string json_string(const std::string& s) {
 std::string format_bench_text(const BenchReport& r) {
   const FrameStats& s = r.stats;
   std::ostringstream out;
-  out << "scene " << r.scene_id << " " << r.scene_version << ", " << r.width_px << "x" << r.height_px << ", "
-      << r.precision << ", lanes " << r.lanes << ", effects: " << r.stages << "\n"
-      << r.runs << " run(s) x " << r.frames_per_run << " frames over " << fixed(r.path_duration_s, 1)
-      << " s of scene time; " << s.frames << " frames rendered in " << fixed(r.wall_s, 2) << " s"
+  out << "scene " << r.scene_id << " " << r.scene_version << ", " << r.width_px << "x"
+      << r.height_px << ", " << r.precision << ", lanes " << r.lanes << ", effects: " << r.stages
+      << "\n"
+      << r.runs << " run(s) x " << r.frames_per_run << " frames over "
+      << fixed(r.path_duration_s, 1) << " s of scene time; " << s.frames << " frames rendered in "
+      << fixed(r.wall_s, 2) << " s"
       << " (kernel build and warm-up: " << fixed(r.kernel_build_ms, 0) << " ms, not counted)\n"
-      << "median " << fixed(s.p50_ms) << " ms, min " << fixed(s.min_ms) << " ms, max " << fixed(s.max_ms)
-      << " ms over " << s.frames << " frames\n"
+      << "median " << fixed(s.p50_ms) << " ms, min " << fixed(s.min_ms) << " ms, max "
+      << fixed(s.max_ms) << " ms over " << s.frames << " frames\n"
       << "frame time: average " << fixed(s.mean_ms) << " ms, p50 " << fixed(s.p50_ms) << " ms, p95 "
       << fixed(s.p95_ms) << " ms\n"
-      << "fps: average " << fixed(s.mean_fps) << ", min " << fixed(s.min_fps) << ", max " << fixed(s.max_fps)
-      << "\n";
+      << "fps: average " << fixed(s.mean_fps) << ", min " << fixed(s.min_fps) << ", max "
+      << fixed(s.max_fps) << "\n";
   if (r.run_mean_ms.size() > 1) {
     out << "average frame time per run:";
     for (double m : r.run_mean_ms) out << " " << fixed(m) << " ms";
@@ -56,9 +66,10 @@ std::string format_bench_text(const BenchReport& r) {
   }
   const SystemInfo& y = r.system;
   out << "system: " << y.cpu_model << ", " << y.logical_cores << " logical cores, "
-      << fixed(static_cast<double>(y.memory_bytes) / (1024.0 * 1024 * 1024), 1) << " GiB, " << y.os << "\n"
-      << "OpenCL: " << y.opencl_device << " (" << y.opencl_platform << "), " << y.opencl_device_version
-      << ", driver " << y.opencl_driver << "\n";
+      << fixed(static_cast<double>(y.memory_bytes) / (1024.0 * 1024 * 1024), 1) << " GiB, " << y.os
+      << "\n"
+      << "OpenCL: " << y.opencl_device << " (" << y.opencl_platform << "), "
+      << y.opencl_device_version << ", driver " << y.opencl_driver << "\n";
   return out.str();
 }
 
@@ -78,10 +89,11 @@ std::string format_bench_json(const BenchReport& r) {
       << "  \"path_duration_s\": " << r.path_duration_s << ",\n"
       << "  \"frames_rendered\": " << s.frames << ",\n"
       << "  \"wall_s\": " << r.wall_s << ",\n"
-      << "  \"frame_ms\": {\"min\": " << s.min_ms << ", \"max\": " << s.max_ms << ", \"average\": " << s.mean_ms
-      << ", \"p50\": " << s.p50_ms << ", \"p95\": " << s.p95_ms << "},\n"
-      << "  \"fps\": {\"average\": " << s.mean_fps << ", \"min\": " << s.min_fps << ", \"max\": " << s.max_fps
+      << "  \"frame_ms\": {\"min\": " << s.min_ms << ", \"max\": " << s.max_ms
+      << ", \"average\": " << s.mean_ms << ", \"p50\": " << s.p50_ms << ", \"p95\": " << s.p95_ms
       << "},\n"
+      << "  \"fps\": {\"average\": " << s.mean_fps << ", \"min\": " << s.min_fps
+      << ", \"max\": " << s.max_fps << "},\n"
       << "  \"run_average_ms\": [";
   for (size_t i = 0; i < r.run_mean_ms.size(); ++i) out << (i ? ", " : "") << r.run_mean_ms[i];
   out << "],\n"

@@ -11,8 +11,8 @@ struct FrameStats {
   size_t frames = 0;
   double total_ms = 0;  // sum of frame times
   double min_ms = 0, max_ms = 0, mean_ms = 0;
-  double p50_ms = 0, p95_ms = 0;  // nearest-rank percentiles
-  double mean_fps = 0;            // 1000 / mean_ms: frames per second over the whole run
+  double p50_ms = 0, p95_ms = 0;    // nearest-rank percentiles
+  double mean_fps = 0;              // 1000 / mean_ms: frames per second over the whole run
   double min_fps = 0, max_fps = 0;  // 1000 / max_ms and 1000 / min_ms
 };
 

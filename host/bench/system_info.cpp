@@ -35,7 +35,8 @@ SystemInfo read_system_info(const DeviceInfo& device) {
   if (!mem_kb.empty()) s.memory_bytes = std::stoull(mem_kb) * 1024ull;
   s.os = read_field("/etc/os-release", "PRETTY_NAME", '=');
   utsname u{};
-  if (uname(&u) == 0) s.os += (s.os.empty() ? "" : ", ") + std::string(u.sysname) + " " + u.release + " " + u.machine;
+  if (uname(&u) == 0)
+    s.os += (s.os.empty() ? "" : ", ") + std::string(u.sysname) + " " + u.release + " " + u.machine;
   s.opencl_platform = device.platform_name;
   s.opencl_device = device.name;
   s.opencl_device_version = device.version;

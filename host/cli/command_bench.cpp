@@ -19,7 +19,8 @@ int command_bench(const std::vector<std::string>& args, std::ostream& out, std::
   specs.push_back({"help", nullptr, false, "show this help"});
   auto options = parse_options("bench", args, specs);
   if (options.has("help")) {
-    out << "usage: fractalis bench [--scene ID] [--size WxH] [--frames N] [--runs N] [--duration S]\n"
+    out << "usage: fractalis bench [--scene ID] [--size WxH] [--frames N] [--runs N] [--duration "
+           "S]\n"
            "                       [--json FILE] [options]\n\n"
            "Renders a scene along its animation for a fixed number of frames, several times,\n"
            "after one untimed warm-up frame that builds the kernel, and reports frame times\n"
@@ -32,10 +33,13 @@ int command_bench(const std::vector<std::string>& args, std::ostream& out, std::
         << "  fractalis bench --scene mandelbulb --size 640x360 --lanes 16\n";
     return 0;
   }
-  const int frames = static_cast<int>(parse_integer("--frames", options.get("frames").value_or("30"), 1, 100000));
-  const int runs = static_cast<int>(parse_integer("--runs", options.get("runs").value_or("3"), 1, 1000));
+  const int frames =
+      static_cast<int>(parse_integer("--frames", options.get("frames").value_or("30"), 1, 100000));
+  const int runs =
+      static_cast<int>(parse_integer("--runs", options.get("runs").value_or("3"), 1, 1000));
   const double duration = parse_finite("--duration", options.get("duration").value_or("10"));
-  if (!(duration >= 0)) throw UsageError("--duration: expected seconds >= 0, got " + *options.get("duration"));
+  if (!(duration >= 0))
+    throw UsageError("--duration: expected seconds >= 0, got " + *options.get("duration"));
   if (!options.has("scene")) options.values["scene"] = {"benchmark"};
   const auto json_file = options.get("json");
   if (json_file && json_file->empty()) throw UsageError("--json: empty file name");
@@ -50,7 +54,9 @@ int command_bench(const std::vector<std::string>& args, std::ostream& out, std::
   };
   using clock = std::chrono::steady_clock;
   const auto origin = clock::now();
-  auto now_ms = [&] { return std::chrono::duration<double, std::milli>(clock::now() - origin).count(); };
+  auto now_ms = [&] {
+    return std::chrono::duration<double, std::milli>(clock::now() - origin).count();
+  };
 
   BenchReport report;
   const double warm_start = now_ms();
@@ -60,7 +66,8 @@ int command_bench(const std::vector<std::string>& args, std::ostream& out, std::
   std::vector<double> all;
   const double wall_start = now_ms();
   for (int run = 0; run < runs; ++run) {
-    auto times = time_frames(frames, [&](int i) { frame(duration * i / frames); }, now_ms);
+    auto times = time_frames(
+        frames, [&](int i) { frame(duration * i / frames); }, now_ms);
     report.run_mean_ms.push_back(summarize_frames(times).mean_ms);
     all.insert(all.end(), times.begin(), times.end());
   }

@@ -26,8 +26,9 @@ std::vector<OptionSpec> scene_option_specs() {
       {"lanes", "1|4|8|16", false, "rays per work-item (default: 16 on CPUs, 1 on GPUs)"},
       {"precision", "float|double", false, "arithmetic precision of the kernel (default float)"},
       {"samples", "N", false, "jittered samples per pixel, accumulated (anti-aliasing; default 1)"},
-      {"set", "KEY=VALUE", true, "any setting, as in config/default.toml (repeatable), e.g.\n"
-                                 "                                 render.effects.fog=false"},
+      {"set", "KEY=VALUE", true,
+       "any setting, as in config/default.toml (repeatable), e.g.\n"
+       "                                 render.effects.fog=false"},
       {"device", "SEL", false, "OpenCL device: gpu, cpu, P:D or part of its name"},
   };
   specs.insert(specs.end(), more.begin(), more.end());
@@ -53,7 +54,8 @@ Settings load_settings(const ParsedOptions& options) {
   };
   if (file) report(load_settings_file(*file, settings));
   if (auto it = options.values.find("set"); it != options.values.end())
-    for (const std::string& assignment : it->second) report(apply_setting_override(assignment, settings));
+    for (const std::string& assignment : it->second)
+      report(apply_setting_override(assignment, settings));
   return settings;
 }
 

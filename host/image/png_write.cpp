@@ -14,8 +14,8 @@ void append_bytes(void* context, void* data, int size) {
 
 }  // namespace
 
-bool write_png_atomic(const std::filesystem::path& path, int w, int h, const std::vector<uint8_t>& rgba8,
-                      std::string* error) {
+bool write_png_atomic(const std::filesystem::path& path, int w, int h,
+                      const std::vector<uint8_t>& rgba8, std::string* error) {
   if (w <= 0 || h <= 0 || rgba8.size() != static_cast<size_t>(w) * h * 4) {
     *error = "cannot write " + path.string() + ": image size does not match its pixels";
     return false;

@@ -9,7 +9,8 @@
 
 namespace fr {
 
-bool write_file_atomic(const std::filesystem::path& path, std::string_view bytes, std::string* error) {
+bool write_file_atomic(const std::filesystem::path& path, std::string_view bytes,
+                       std::string* error) {
   const std::filesystem::path dir = path.has_parent_path() ? path.parent_path() : ".";
   std::string hidden_name = path.filename().string();
   hidden_name.insert(hidden_name.begin(), '.');
@@ -17,8 +18,8 @@ bool write_file_atomic(const std::filesystem::path& path, std::string_view bytes
   std::string tmpl = (dir / hidden_name).string();
   int fd = mkstemp(tmpl.data());
   if (fd < 0) {
-    *error = "cannot write " + path.string() + ": cannot create a temporary file in " + dir.string() +
-             ": " + std::strerror(errno);
+    *error = "cannot write " + path.string() + ": cannot create a temporary file in " +
+             dir.string() + ": " + std::strerror(errno);
     return false;
   }
   auto fail = [&](const char* what) {

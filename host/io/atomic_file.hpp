@@ -11,6 +11,7 @@ namespace fr {
 // Writes `bytes` to a temporary file beside `path`, flushes it to disk and renames it over
 // `path`. On failure returns false, sets *error (naming the path and the reason) and leaves any
 // existing file at `path` untouched.
-bool write_file_atomic(const std::filesystem::path& path, std::string_view bytes, std::string* error);
+bool write_file_atomic(const std::filesystem::path& path, std::string_view bytes,
+                       std::string* error);
 
 }  // namespace fr

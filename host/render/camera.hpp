@@ -24,9 +24,9 @@ struct CameraRays {
   glm::dvec3 first_pixel_dir{0.0};  // p_1m
   glm::dvec3 pixel_step_x{0.0};     // q_x
   glm::dvec3 pixel_step_y{0.0};     // q_y
-  glm::dvec3 right{0.0};    // unit: image +x (the seed's -b_n)
-  glm::dvec3 up{0.0};       // unit: image up (v_n)
-  glm::dvec3 forward{0.0};  // unit: view direction (t_n)
+  glm::dvec3 right{0.0};            // unit: image +x (the seed's -b_n)
+  glm::dvec3 up{0.0};               // unit: image up (v_n)
+  glm::dvec3 forward{0.0};          // unit: view direction (t_n)
   int width_px = 0;
   int height_px = 0;
   double pixel_angle_rad = 0;  // angle between neighbouring pixel centres at the image centre

@@ -8,7 +8,8 @@
 
 namespace fr {
 
-static_assert(FR_MAX_LIGHTS == FR_MAX_SCENE_LIGHTS, "the kernel holds every light a scene may declare");
+static_assert(FR_MAX_LIGHTS == FR_MAX_SCENE_LIGHTS,
+              "the kernel holds every light a scene may declare");
 
 // The kernels read this struct with OpenCL C's layout rules; with only 4-byte fields both sides
 // agree, and these checks keep it so.
@@ -31,7 +32,9 @@ void put(float out[4], glm::dvec3 v, double w = 0) {
 void put(float out[4], const std::array<float, 3>& v, double w = 0) {
   put(out, glm::dvec3(v[0], v[1], v[2]), w);
 }
-glm::dvec3 vec(const double v[3]) { return {v[0], v[1], v[2]}; }
+glm::dvec3 vec(const double v[3]) {
+  return {v[0], v[1], v[2]};
+}
 }  // namespace
 
 std::array<double, 2> sample_jitter(int i) {
@@ -103,7 +106,8 @@ fr_frame_constants make_frame_constants(const CameraRays& rays, const SceneState
   fc.glow_falloff = static_cast<float>(s.glow_falloff * radius);
   fc.aperture_radius = s.aperture_radius;
   fc.focus_distance = static_cast<float>(
-      s.focus_distance > 0 ? s.focus_distance : glm::length(vec(state.camera.target) - vec(state.camera.eye)));
+      s.focus_distance > 0 ? s.focus_distance
+                           : glm::length(vec(state.camera.target) - vec(state.camera.eye)));
   const auto jitter = sample_jitter(sample_index);
   fc.jitter_x = static_cast<float>(jitter[0]);
   fc.jitter_y = static_cast<float>(jitter[1]);

@@ -35,8 +35,9 @@ void append_file(std::ostringstream& out, std::string_view name, std::string_vie
 
 // Pastes `text` with its #include "fr/NAME.cl" lines replaced by the library files (each once,
 // recursively), keeping line numbers right with #line directives.
-void append_with_includes(std::ostringstream& out, const std::string& scene_id, std::string_view name,
-                          std::string_view text, std::set<std::string>& included) {
+void append_with_includes(std::ostringstream& out, const std::string& scene_id,
+                          std::string_view name, std::string_view text,
+                          std::set<std::string>& included) {
   out << "#line 1 \"" << name << "\"\n";
   std::istringstream lines{std::string(text)};
   std::string line;
@@ -46,17 +47,21 @@ void append_with_includes(std::ostringstream& out, const std::string& scene_id, 
     const auto first = line.find_first_not_of(" \t");
     if (first != std::string::npos && line.compare(first, 8, "#include") == 0) {
       const auto open = line.find('"'), close = line.rfind('"');
-      const std::string target = open != std::string::npos && close > open ? line.substr(open + 1, close - open - 1) : "";
+      const std::string target =
+          open != std::string::npos && close > open ? line.substr(open + 1, close - open - 1) : "";
       const auto library = kernel_library_files();
-      if (target.rfind("fr/", 0) != 0 || std::find(library.begin(), library.end(), target) == library.end()) {
+      if (target.rfind("fr/", 0) != 0 ||
+          std::find(library.begin(), library.end(), target) == library.end()) {
         std::string names;
         for (const auto& l : library) names += (names.empty() ? "" : ", ") + l;
-        throw KernelBuildError("scene '" + scene_id + "': " + std::string(name) + ":" + std::to_string(number) +
-                               ": unknown library file '" + (target.empty() ? line : target) +
+        throw KernelBuildError("scene '" + scene_id + "': " + std::string(name) + ":" +
+                               std::to_string(number) + ": unknown library file '" +
+                               (target.empty() ? line : target) +
                                "' (the DE library has: " + names + ")");
       }
       if (included.insert(target).second)
-        append_with_includes(out, scene_id, target, kernel_source("de/" + target.substr(3)), included);
+        append_with_includes(out, scene_id, target, kernel_source("de/" + target.substr(3)),
+                             included);
       out << "#line " << number + 1 << " \"" << name << "\"\n";
       continue;
     }
@@ -74,8 +79,8 @@ std::string literal(double v, Precision p) {
   return "((scalar_t)" + text + (p == Precision::Float ? "f" : "") + ")";
 }
 
-void append_params(std::ostringstream& out, const SceneInfo& info, const std::vector<fr_value>& values,
-                   Precision precision) {
+void append_params(std::ostringstream& out, const SceneInfo& info,
+                   const std::vector<fr_value>& values, Precision precision) {
   out << "/* Generated from the scene's parameter table. */\n";
   out << "typedef struct scene_params_t {\n";
   int runtime_count = 0;
@@ -83,10 +88,16 @@ void append_params(std::ostringstream& out, const SceneInfo& info, const std::ve
     if (p.specialized()) continue;
     ++runtime_count;
     switch (p.type) {
-      case FR_PARAM_FLOAT: out << "  float " << p.key << ";\n"; break;
+      case FR_PARAM_FLOAT:
+        out << "  float " << p.key << ";\n";
+        break;
       case FR_PARAM_INT:
-      case FR_PARAM_BOOL: out << "  int " << p.key << ";\n"; break;
-      default: out << "  float " << p.key << "[3];\n"; break;
+      case FR_PARAM_BOOL:
+        out << "  int " << p.key << ";\n";
+        break;
+      default:
+        out << "  float " << p.key << "[3];\n";
+        break;
     }
   }
   if (runtime_count == 0) out << "  int unused; /* OpenCL C has no empty structs */\n";
@@ -98,20 +109,29 @@ void append_params(std::ostringstream& out, const SceneInfo& info, const std::ve
     out << "#define FR_PARAM_" << p.key << " ";
     if (p.specialized()) {
       switch (p.type) {
-        case FR_PARAM_FLOAT: out << literal(v.v[0], precision); break;
+        case FR_PARAM_FLOAT:
+          out << literal(v.v[0], precision);
+          break;
         case FR_PARAM_INT:
-        case FR_PARAM_BOOL: out << "(" << static_cast<long long>(v.v[0]) << ")"; break;
+        case FR_PARAM_BOOL:
+          out << "(" << static_cast<long long>(v.v[0]) << ")";
+          break;
         default:
           out << "v3s(" << literal(v.v[0], precision) << ", " << literal(v.v[1], precision) << ", "
               << literal(v.v[2], precision) << ")";
       }
     } else {
       switch (p.type) {
-        case FR_PARAM_FLOAT: out << "((scalar_t)params->" << p.key << ")"; break;
+        case FR_PARAM_FLOAT:
+          out << "((scalar_t)params->" << p.key << ")";
+          break;
         case FR_PARAM_INT:
-        case FR_PARAM_BOOL: out << "(params->" << p.key << ")"; break;
+        case FR_PARAM_BOOL:
+          out << "(params->" << p.key << ")";
+          break;
         default:
-          out << "v3s(params->" << p.key << "[0], params->" << p.key << "[1], params->" << p.key << "[2])";
+          out << "v3s(params->" << p.key << "[0], params->" << p.key << "[1], params->" << p.key
+              << "[2])";
       }
     }
     out << "\n";
@@ -120,10 +140,12 @@ void append_params(std::ostringstream& out, const SceneInfo& info, const std::ve
 
 // What every kernel of a scene starts with: defines, shared structs, prelude, parameter block,
 // the scene's DE and (for rendering) its surface source.
-void append_scene_prefix(std::ostringstream& out, const SceneInfo& info, const std::vector<fr_value>& values,
-                         const KernelConfig& config, const char* kind, bool with_surface) {
+void append_scene_prefix(std::ostringstream& out, const SceneInfo& info,
+                         const std::vector<fr_value>& values, const KernelConfig& config,
+                         const char* kind, bool with_surface) {
   const bool has_surface = with_surface && !info.surface_source.empty();
-  out << "/* Fractalis " << kind << " kernel for scene '" << info.id << "'. Generated; see kernels/. */\n";
+  out << "/* Fractalis " << kind << " kernel for scene '" << info.id
+      << "'. Generated; see kernels/. */\n";
   out << "#define FR_LANES " << config.lanes << "\n";
   out << "#define FR_DOUBLE " << (config.precision == Precision::Double ? 1 : 0) << "\n";
   for (const auto& s : kOptionalStages)
@@ -139,7 +161,8 @@ void append_scene_prefix(std::ostringstream& out, const SceneInfo& info, const s
   append_params(out, info, values, config.precision);
   std::set<std::string> included;
   append_with_includes(out, info.id, info.de_source_name, info.de_source, included);
-  if (has_surface) append_with_includes(out, info.id, info.surface_source_name, info.surface_source, included);
+  if (has_surface)
+    append_with_includes(out, info.id, info.surface_source_name, info.surface_source, included);
 }
 
 AssembledKernel finish(std::ostringstream& out, const SceneInfo& info, const KernelConfig& config,
@@ -151,7 +174,8 @@ AssembledKernel finish(std::ostringstream& out, const SceneInfo& info, const Ker
   // 205 ms with it, 200 ms without, before the exp2/native trig changes). mad contraction costs
   // little accuracy and is checked against the double build by the tests.
   k.build_options = "-cl-std=CL1.2 -cl-mad-enable";
-  k.description = "scene '" + info.id + "' " + kind + " kernel (lanes " + std::to_string(config.lanes) + ", " +
+  k.description = "scene '" + info.id + "' " + kind + " kernel (lanes " +
+                  std::to_string(config.lanes) + ", " +
                   (config.precision == Precision::Double ? "double" : "float") +
                   ", stages: " + stage_names(config.stages) + ")";
   return k;
@@ -161,10 +185,14 @@ AssembledKernel finish(std::ostringstream& out, const SceneInfo& info, const Ker
 
 TileShape tile_shape(int lanes) {
   switch (lanes) {
-    case 16: return {4, 4};
-    case 8: return {4, 2};
-    case 4: return {2, 2};
-    default: return {1, 1};
+    case 16:
+      return {4, 4};
+    case 8:
+      return {4, 2};
+    case 4:
+      return {2, 2};
+    default:
+      return {1, 1};
   }
 }
 
@@ -177,7 +205,8 @@ KernelConfig make_kernel_config(const SceneInfo& info, const RenderSettings& s, 
   c.lanes = lanes;
   c.precision = s.precision;
   c.stages = enabled_stages(info, s.disabled_stages);
-  if (s.aperture_radius > 0 && !(s.disabled_stages & kStageDepthOfField)) c.stages |= kStageDepthOfField;
+  if (s.aperture_radius > 0 && !(s.disabled_stages & kStageDepthOfField))
+    c.stages |= kStageDepthOfField;
   c.shading = s.shading;
   c.normals = s.normals;
   c.ao_method = s.ao_method;

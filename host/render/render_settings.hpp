@@ -49,9 +49,9 @@ struct RenderSettings {
   float fog_density = 0.08f;  // exponential fog, per bounding radius
   float fog_scale = 0.12f;    // power-law fog: amount = fog_scale * (t / bounding radius)^0.75
   float glow_strength = 0.6f;
-  float glow_falloff = 0.02f;      // x bounding radius
-  float aperture_radius = 0.0f;    // thin lens, world units; 0: no depth of field
-  float focus_distance = 0.0f;     // world units; 0: the distance from eye to target
+  float glow_falloff = 0.02f;    // x bounding radius
+  float aperture_radius = 0.0f;  // thin lens, world units; 0: no depth of field
+  float focus_distance = 0.0f;   // world units; 0: the distance from eye to target
   std::array<float, 3> albedo{0.72f, 0.52f, 0.36f};
   std::array<float, 3> ambient{0.16f, 0.19f, 0.25f};
   std::array<float, 3> sky_zenith{0.22f, 0.36f, 0.62f};

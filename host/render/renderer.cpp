@@ -23,7 +23,9 @@ void set_arg(cl_kernel k, cl_uint index, const T& value) {
   cl_check(clSetKernelArg(k, index, sizeof(T), &value), "clSetKernelArg");
 }
 
-size_t round_up_div(size_t n, size_t d) { return (n + d - 1) / d; }
+size_t round_up_div(size_t n, size_t d) {
+  return (n + d - 1) / d;
+}
 
 }  // namespace
 
@@ -48,21 +50,22 @@ void Renderer::ensure_buffers(size_t n) {
   buffer_pixels_ = n;
 }
 
-FrameImage Renderer::render(const SceneInfo& info, const SceneState& state, const RenderSettings& settings,
-                            bool read_linear) {
+FrameImage Renderer::render(const SceneInfo& info, const SceneState& state,
+                            const RenderSettings& settings, bool read_linear) {
   for (int i = 0; i < std::max(1, settings.samples); ++i) render_sample(info, state, settings, i);
   return finish(settings, read_linear);
 }
 
-void Renderer::render_sample(const SceneInfo& info, const SceneState& state, const RenderSettings& settings,
-                             int sample_index) {
+void Renderer::render_sample(const SceneInfo& info, const SceneState& state,
+                             const RenderSettings& settings, int sample_index) {
   if (settings.precision == Precision::Double && !runtime_.device().has_fp64)
     throw std::runtime_error("device " + runtime_.device().name + " has no double precision");
   const int lanes = lanes_for(settings);
   const AssembledKernel assembled =
       assemble_render_kernel(info, state.params, make_kernel_config(info, settings, lanes));
   cl_kernel kernel = runtime_.kernel(
-      runtime_.program(assembled.source, assembled.build_options, assembled.description), "fr_render");
+      runtime_.program(assembled.source, assembled.build_options, assembled.description),
+      "fr_render");
 
   const int w = settings.width_px, h = settings.height_px;
   const size_t n = static_cast<size_t>(w) * h;
@@ -72,20 +75,21 @@ void Renderer::render_sample(const SceneInfo& info, const SceneState& state, con
 
   const fr_frame_constants fc =
       make_frame_constants(make_camera_rays(state.camera, w, h), state, settings, sample_index);
-  cl_check(clEnqueueWriteBuffer(q, constants_.get(), CL_FALSE, 0, sizeof fc, &fc, 0, nullptr, nullptr),
-           "clEnqueueWriteBuffer", "uploading frame constants");
+  cl_check(
+      clEnqueueWriteBuffer(q, constants_.get(), CL_FALSE, 0, sizeof fc, &fc, 0, nullptr, nullptr),
+      "clEnqueueWriteBuffer", "uploading frame constants");
   const std::vector<uint8_t> params = pack_scene_params(info, state.params);
   if (params.size() != params_bytes_) {
     params_ = make_buffer(runtime_.context(), CL_MEM_READ_ONLY, params.size(), "scene parameters");
     params_bytes_ = params.size();
   }
   // Blocking: `params` and `fc` are locals.
-  cl_check(clEnqueueWriteBuffer(q, params_.get(), CL_TRUE, 0, params.size(), params.data(), 0, nullptr,
-                                nullptr),
+  cl_check(clEnqueueWriteBuffer(q, params_.get(), CL_TRUE, 0, params.size(), params.data(), 0,
+                                nullptr, nullptr),
            "clEnqueueWriteBuffer", "uploading scene parameters");
 
-  const cl_mem args[] = {constants_.get(), params_.get(), hdr_.get(), depth_.get(), steps_.get(),
-                         factors_.get()};
+  const cl_mem args[] = {constants_.get(), params_.get(), hdr_.get(),
+                         depth_.get(),     steps_.get(),  factors_.get()};
   for (cl_uint i = 0; i < std::size(args); ++i) set_arg(kernel, i, args[i]);
   const TileShape tile = tile_shape(lanes);
   const size_t global[2] = {round_up_div(w, tile.width_px), round_up_div(h, tile.height_px)};
@@ -101,7 +105,8 @@ void Renderer::render_sample(const SceneInfo& info, const SceneState& state, con
 FrameImage Renderer::finish(const RenderSettings& settings, bool read_linear) {
   // The post stage does not depend on the scene: one program for all.
   static const std::string post_source = std::string(kernel_source("post.cl"));
-  cl_kernel post = runtime_.kernel(runtime_.program(post_source, "-cl-std=CL1.2", "post-processing"), "fr_post");
+  cl_kernel post =
+      runtime_.kernel(runtime_.program(post_source, "-cl-std=CL1.2", "post-processing"), "fr_post");
   const size_t n = buffer_pixels_;
   cl_command_queue q = runtime_.queue();
   const cl_mem hdr = hdr_.get(), out8 = rgba8_.get();
@@ -127,13 +132,17 @@ FrameImage Renderer::finish(const RenderSettings& settings, bool read_linear) {
     img.depth.resize(n);
     img.steps.resize(n);
     std::vector<float> factors(n * 2);
-    cl_check(clEnqueueReadBuffer(q, hdr, CL_FALSE, 0, n * 16, img.linear_rgba.data(), 0, nullptr, nullptr),
+    cl_check(clEnqueueReadBuffer(q, hdr, CL_FALSE, 0, n * 16, img.linear_rgba.data(), 0, nullptr,
+                                 nullptr),
              "clEnqueueReadBuffer");
-    cl_check(clEnqueueReadBuffer(q, depth_.get(), CL_FALSE, 0, n * 4, img.depth.data(), 0, nullptr, nullptr),
+    cl_check(clEnqueueReadBuffer(q, depth_.get(), CL_FALSE, 0, n * 4, img.depth.data(), 0, nullptr,
+                                 nullptr),
              "clEnqueueReadBuffer");
-    cl_check(clEnqueueReadBuffer(q, factors_.get(), CL_FALSE, 0, n * 8, factors.data(), 0, nullptr, nullptr),
+    cl_check(clEnqueueReadBuffer(q, factors_.get(), CL_FALSE, 0, n * 8, factors.data(), 0, nullptr,
+                                 nullptr),
              "clEnqueueReadBuffer");
-    cl_check(clEnqueueReadBuffer(q, steps_.get(), CL_TRUE, 0, n * 4, img.steps.data(), 0, nullptr, nullptr),
+    cl_check(clEnqueueReadBuffer(q, steps_.get(), CL_TRUE, 0, n * 4, img.steps.data(), 0, nullptr,
+                                 nullptr),
              "clEnqueueReadBuffer");
     img.occlusion.resize(n);
     img.shadow.resize(n);

@@ -5,8 +5,8 @@
 #include <toml++/toml.h>
 
 #include <algorithm>
-#include <fstream>
 #include <cstdlib>
+#include <fstream>
 #include <functional>
 #include <sstream>
 
@@ -38,7 +38,8 @@ std::string set_float(const toml::node& n, float& out, double lo, double hi, boo
 }
 
 template <typename Enum>
-std::string set_choice(const toml::node& n, Enum& out, std::initializer_list<std::pair<const char*, Enum>> choices) {
+std::string set_choice(const toml::node& n, Enum& out,
+                       std::initializer_list<std::pair<const char*, Enum>> choices) {
   auto v = n.value<std::string>();
   std::string names;
   for (const auto& [name, value] : choices) {
@@ -53,8 +54,10 @@ std::string set_choice(const toml::node& n, Enum& out, std::initializer_list<std
 
 std::string set_effect(const toml::node& n, Settings& s, fr_features feature) {
   if (!n.is_boolean()) return "expected true or false";
-  if (*n.value<bool>()) s.render.disabled_stages &= ~feature;
-  else s.render.disabled_stages |= feature;
+  if (*n.value<bool>())
+    s.render.disabled_stages &= ~feature;
+  else
+    s.render.disabled_stages |= feature;
   return "";
 }
 
@@ -74,7 +77,8 @@ const std::vector<Key>& known_keys() {
        }},
       {"device.select",
        [](const toml::node& n, Settings& s) -> std::string {
-         if (!n.is_string()) return "expected a string: \"\", \"gpu\", \"cpu\", \"P:D\" or part of a name";
+         if (!n.is_string())
+           return "expected a string: \"\", \"gpu\", \"cpu\", \"P:D\" or part of a name";
          s.device = n.as_string()->get();
          return "";
        }},
@@ -88,22 +92,39 @@ const std::vector<Key>& known_keys() {
        }},
       {"render.precision",
        [](const toml::node& n, Settings& s) {
-         return set_choice(n, s.render.precision, {{"float", Precision::Float}, {"double", Precision::Double}});
+         return set_choice(n, s.render.precision,
+                           {{"float", Precision::Float}, {"double", Precision::Double}});
        }},
-      {"render.samples", [](const toml::node& n, Settings& s) { return set_int(n, s.render.samples, 1, 4096); }},
-      {"render.max_steps", [](const toml::node& n, Settings& s) { return set_int(n, s.render.max_steps, 1, 10000); }},
-      {"render.max_bounces", [](const toml::node& n, Settings& s) { return set_int(n, s.render.max_bounces, 0, 8); }},
+      {"render.samples",
+       [](const toml::node& n, Settings& s) { return set_int(n, s.render.samples, 1, 4096); }},
+      {"render.max_steps",
+       [](const toml::node& n, Settings& s) { return set_int(n, s.render.max_steps, 1, 10000); }},
+      {"render.max_bounces",
+       [](const toml::node& n, Settings& s) { return set_int(n, s.render.max_bounces, 0, 8); }},
       {"render.hit_threshold_k",
-       [](const toml::node& n, Settings& s) { return set_float(n, s.render.hit_threshold_k, 0, 100, true); }},
-      {"render.exposure", [](const toml::node& n, Settings& s) { return set_float(n, s.render.exposure, 0, 100, true); }},
+       [](const toml::node& n, Settings& s) {
+         return set_float(n, s.render.hit_threshold_k, 0, 100, true);
+       }},
+      {"render.exposure",
+       [](const toml::node& n, Settings& s) {
+         return set_float(n, s.render.exposure, 0, 100, true);
+       }},
       {"render.ao_strength",
-       [](const toml::node& n, Settings& s) { return set_float(n, s.render.ao_strength, 0, 100, true); }},
-      {"render.roughness", [](const toml::node& n, Settings& s) { return set_float(n, s.render.roughness, 0, 1.5); }},
+       [](const toml::node& n, Settings& s) {
+         return set_float(n, s.render.ao_strength, 0, 100, true);
+       }},
+      {"render.roughness",
+       [](const toml::node& n, Settings& s) { return set_float(n, s.render.roughness, 0, 1.5); }},
       {"render.reflectivity",
        [](const toml::node& n, Settings& s) { return set_float(n, s.render.reflectivity, 0, 1); }},
-      {"render.aperture", [](const toml::node& n, Settings& s) { return set_float(n, s.render.aperture_radius, 0, 10); }},
+      {"render.aperture",
+       [](const toml::node& n, Settings& s) {
+         return set_float(n, s.render.aperture_radius, 0, 10);
+       }},
       {"render.focus_distance",
-       [](const toml::node& n, Settings& s) { return set_float(n, s.render.focus_distance, 0, 1000); }},
+       [](const toml::node& n, Settings& s) {
+         return set_float(n, s.render.focus_distance, 0, 1000);
+       }},
       {"render.shading_model",
        [](const toml::node& n, Settings& s) {
          return set_choice(n, s.render.shading,
@@ -114,28 +135,37 @@ const std::vector<Key>& known_keys() {
       {"render.normal_method",
        [](const toml::node& n, Settings& s) {
          return set_choice(n, s.render.normals,
-                           {{"tetrahedron", NormalMethod::Tetrahedron}, {"central", NormalMethod::CentralDifferences}});
+                           {{"tetrahedron", NormalMethod::Tetrahedron},
+                            {"central", NormalMethod::CentralDifferences}});
        }},
       {"render.ao_method",
        [](const toml::node& n, Settings& s) {
-         return set_choice(n, s.render.ao_method, {{"step-count", AoMethod::StepCount}, {"sampled", AoMethod::Sampled}});
+         return set_choice(n, s.render.ao_method,
+                           {{"step-count", AoMethod::StepCount}, {"sampled", AoMethod::Sampled}});
        }},
       {"render.shadow_method",
        [](const toml::node& n, Settings& s) {
-         return set_choice(n, s.render.shadow_method, {{"hard", ShadowMethod::Hard}, {"soft", ShadowMethod::Soft}});
+         return set_choice(n, s.render.shadow_method,
+                           {{"hard", ShadowMethod::Hard}, {"soft", ShadowMethod::Soft}});
        }},
       {"render.fog_method",
        [](const toml::node& n, Settings& s) {
-         return set_choice(n, s.render.fog_method,
-                           {{"power", FogMethod::PowerLaw}, {"exponential", FogMethod::Exponential}});
+         return set_choice(
+             n, s.render.fog_method,
+             {{"power", FogMethod::PowerLaw}, {"exponential", FogMethod::Exponential}});
        }},
-      {"render.effects.shadows", [](const toml::node& n, Settings& s) { return set_effect(n, s, FR_FEATURE_SHADOWS); }},
-      {"render.effects.ao", [](const toml::node& n, Settings& s) { return set_effect(n, s, FR_FEATURE_AO); }},
-      {"render.effects.glow", [](const toml::node& n, Settings& s) { return set_effect(n, s, FR_FEATURE_GLOW); }},
-      {"render.effects.fog", [](const toml::node& n, Settings& s) { return set_effect(n, s, FR_FEATURE_FOG); }},
+      {"render.effects.shadows",
+       [](const toml::node& n, Settings& s) { return set_effect(n, s, FR_FEATURE_SHADOWS); }},
+      {"render.effects.ao",
+       [](const toml::node& n, Settings& s) { return set_effect(n, s, FR_FEATURE_AO); }},
+      {"render.effects.glow",
+       [](const toml::node& n, Settings& s) { return set_effect(n, s, FR_FEATURE_GLOW); }},
+      {"render.effects.fog",
+       [](const toml::node& n, Settings& s) { return set_effect(n, s, FR_FEATURE_FOG); }},
       {"render.effects.reflections",
        [](const toml::node& n, Settings& s) { return set_effect(n, s, FR_FEATURE_REFLECTIONS); }},
-      {"render.effects.dof", [](const toml::node& n, Settings& s) { return set_effect(n, s, kStageDepthOfField); }},
+      {"render.effects.dof",
+       [](const toml::node& n, Settings& s) { return set_effect(n, s, kStageDepthOfField); }},
   };
   return keys;
 }
@@ -158,44 +188,51 @@ bool is_key_prefix(const std::string& prefix) {
 }
 
 // Applies every leaf of `table`, reporting unknown keys and bad values.
-void apply_table(const toml::table& table, const std::string& prefix, const std::string& file, Settings& s,
-                 std::vector<SettingsProblem>& problems) {
+void apply_table(const toml::table& table, const std::string& prefix, const std::string& file,
+                 Settings& s, std::vector<SettingsProblem>& problems) {
   for (const auto& [k, node] : table) {
-    const std::string key = prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str());
+    const std::string key =
+        prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str());
     const int line = static_cast<int>(node.source().begin.line);
     if (const auto* sub = node.as_table(); sub && is_key_prefix(key)) {
       apply_table(*sub, key, file, s, problems);
       continue;
     }
-    const auto it = std::find_if(known_keys().begin(), known_keys().end(), [&](const Key& known) { return key == known.name; });
+    const auto it = std::find_if(known_keys().begin(), known_keys().end(),
+                                 [&](const Key& known) { return key == known.name; });
     if (it == known_keys().end()) {
-      problems.push_back({file, line, key, "unknown key (did you mean '" + nearest_known_key(key) + "'?)"});
+      problems.push_back(
+          {file, line, key, "unknown key (did you mean '" + nearest_known_key(key) + "'?)"});
       continue;
     }
-    if (std::string error = it->apply(node, s); !error.empty()) problems.push_back({file, line, key, error});
+    if (std::string error = it->apply(node, s); !error.empty())
+      problems.push_back({file, line, key, error});
   }
 }
 
-std::vector<SettingsProblem> apply_toml(const std::string& text, const std::string& file, Settings& s) {
+std::vector<SettingsProblem> apply_toml(const std::string& text, const std::string& file,
+                                        Settings& s) {
   std::vector<SettingsProblem> problems;
   toml::table root;
   try {
     root = toml::parse(text, file);
   } catch (const toml::parse_error& e) {
-    problems.push_back({file, static_cast<int>(e.source().begin.line), "", "not valid TOML: " + std::string(e.description())});
+    problems.push_back({file, static_cast<int>(e.source().begin.line), "",
+                        "not valid TOML: " + std::string(e.description())});
     return problems;
   }
   apply_table(root, "", file, s, problems);
-  std::stable_sort(problems.begin(), problems.end(),
-                   [](const SettingsProblem& a, const SettingsProblem& b) { return a.line < b.line; });
+  std::stable_sort(
+      problems.begin(), problems.end(),
+      [](const SettingsProblem& a, const SettingsProblem& b) { return a.line < b.line; });
   return problems;
 }
 
 }  // namespace
 
 std::string SettingsProblem::to_string() const {
-  return file + (line > 0 ? ":" + std::to_string(line) : "") + ": " + (key.empty() ? "" : "key '" + key + "': ") +
-         message;
+  return file + (line > 0 ? ":" + std::to_string(line) : "") + ": " +
+         (key.empty() ? "" : "key '" + key + "': ") + message;
 }
 
 std::string nearest_known_key(const std::string& key) {
@@ -216,9 +253,12 @@ std::vector<std::string> known_setting_keys() {
 
 std::optional<std::filesystem::path> user_settings_file() {
   std::filesystem::path base;
-  if (const char* xdg = std::getenv("XDG_CONFIG_HOME"); xdg && *xdg) base = xdg;
-  else if (const char* home = std::getenv("HOME"); home && *home) base = std::filesystem::path(home) / ".config";
-  else return std::nullopt;
+  if (const char* xdg = std::getenv("XDG_CONFIG_HOME"); xdg && *xdg)
+    base = xdg;
+  else if (const char* home = std::getenv("HOME"); home && *home)
+    base = std::filesystem::path(home) / ".config";
+  else
+    return std::nullopt;
   auto file = base / "fractalis" / "config.toml";
   std::error_code ec;
   if (std::filesystem::is_regular_file(file, ec)) return file;
@@ -235,7 +275,8 @@ std::vector<SettingsProblem> load_settings_file(const std::filesystem::path& fil
 
 std::vector<SettingsProblem> apply_setting_override(const std::string& assignment, Settings& s) {
   const auto eq = assignment.find('=');
-  if (eq == std::string::npos) return {{"--set", 0, "", "expected KEY=VALUE, got '" + assignment + "'"}};
+  if (eq == std::string::npos)
+    return {{"--set", 0, "", "expected KEY=VALUE, got '" + assignment + "'"}};
   std::string key = assignment.substr(0, eq), value = assignment.substr(eq + 1);
   // Bare words are strings ("--set render.shading_model=lambert"); numbers, booleans, quoted
   // strings and arrays pass as TOML.

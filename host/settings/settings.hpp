@@ -37,7 +37,8 @@ std::vector<SettingsProblem> load_settings_file(const std::filesystem::path& fil
                                                 Settings& settings);
 
 // Applies one "key=value" from the command line (--set), checked exactly like a file's.
-std::vector<SettingsProblem> apply_setting_override(const std::string& assignment, Settings& settings);
+std::vector<SettingsProblem> apply_setting_override(const std::string& assignment,
+                                                    Settings& settings);
 
 // The known key closest to `key` by edit distance (for "did you mean").
 std::string nearest_known_key(const std::string& key);

@@ -11,30 +11,37 @@ extern const char fr_de_source[];
 extern const char fr_surface_source[];
 
 enum {
-  P_BULB_POWER, P_BULB_ITERATIONS, P_SPONGE_LEVEL, P_FLOOR_REFLECTIVITY, P_SPHERE_REFLECTIVITY,
-  P_PATH_PERIOD, P_PATH_RADIUS, P_COUNT
+  P_BULB_POWER,
+  P_BULB_ITERATIONS,
+  P_SPONGE_LEVEL,
+  P_FLOOR_REFLECTIVITY,
+  P_SPHERE_REFLECTIVITY,
+  P_PATH_PERIOD,
+  P_PATH_RADIUS,
+  P_COUNT
 };
 
-static const fr_param_desc bulb_power = FR_FLOAT_PARAM(
-    "bulb_power", "Bulb power", "Geometry", "Power of the Mandelbulb.", 8, 2, 16, FR_PARAM_ANIMATABLE);
-static const fr_param_desc bulb_iterations = FR_INT_PARAM(
-    "bulb_iterations", "Bulb iterations", "Geometry", "Escape-time iterations of the Mandelbulb.",
-    8, 1, 32, FR_PARAM_SPECIALIZE);
-static const fr_param_desc sponge_level = FR_INT_PARAM(
-    "sponge_level", "Sponge level", "Geometry", "Recursion level of the Menger sponge.", 4, 1, 7,
-    FR_PARAM_SPECIALIZE);
-static const fr_param_desc floor_reflectivity = FR_FLOAT_PARAM(
-    "floor_reflectivity", "Floor reflectivity", "Materials", "Fraction of light the floor mirrors.",
-    0.3, 0, 1, 0);
-static const fr_param_desc sphere_reflectivity = FR_FLOAT_PARAM(
-    "sphere_reflectivity", "Sphere reflectivity", "Materials",
-    "Fraction of light the spheres mirror.", 0.65, 0, 1, 0);
-static const fr_param_desc path_period = FR_FLOAT_PARAM(
-    "path_period_s", "Path period", "Camera path", "Seconds for one lap of the camera path.", 20,
-    2, 600, 0);
-static const fr_param_desc path_radius = FR_FLOAT_PARAM(
-    "path_radius", "Path radius", "Camera path", "Distance of the camera from the centre.", 7.4,
-    3, 8, 0);
+static const fr_param_desc bulb_power =
+    FR_FLOAT_PARAM("bulb_power", "Bulb power", "Geometry", "Power of the Mandelbulb.", 8, 2, 16,
+                   FR_PARAM_ANIMATABLE);
+static const fr_param_desc bulb_iterations =
+    FR_INT_PARAM("bulb_iterations", "Bulb iterations", "Geometry",
+                 "Escape-time iterations of the Mandelbulb.", 8, 1, 32, FR_PARAM_SPECIALIZE);
+static const fr_param_desc sponge_level =
+    FR_INT_PARAM("sponge_level", "Sponge level", "Geometry",
+                 "Recursion level of the Menger sponge.", 4, 1, 7, FR_PARAM_SPECIALIZE);
+static const fr_param_desc floor_reflectivity =
+    FR_FLOAT_PARAM("floor_reflectivity", "Floor reflectivity", "Materials",
+                   "Fraction of light the floor mirrors.", 0.3, 0, 1, 0);
+static const fr_param_desc sphere_reflectivity =
+    FR_FLOAT_PARAM("sphere_reflectivity", "Sphere reflectivity", "Materials",
+                   "Fraction of light the spheres mirror.", 0.65, 0, 1, 0);
+static const fr_param_desc path_period =
+    FR_FLOAT_PARAM("path_period_s", "Path period", "Camera path",
+                   "Seconds for one lap of the camera path.", 20, 2, 600, 0);
+static const fr_param_desc path_radius =
+    FR_FLOAT_PARAM("path_radius", "Path radius", "Camera path",
+                   "Distance of the camera from the centre.", 7.4, 3, 8, 0);
 
 static const fr_param_desc* const params[P_COUNT] = {
     &bulb_power,          &bulb_iterations, &sponge_level, &floor_reflectivity,
@@ -74,8 +81,9 @@ static const fr_scene_desc scene = {
     .version = "1.0.0",
     .author = "The Fractalis developers",
     .license = "MIT",
-    .description = "A Mandelbulb and a Menger sponge on a reflective floor with spheres, two "
-                   "coloured lights, every effect on, and a camera on a fixed path.",
+    .description =
+        "A Mandelbulb and a Menger sponge on a reflective floor with spheres, two "
+        "coloured lights, every effect on, and a camera on a fixed path.",
     .de_source = fr_de_source,
     .de_source_name = "benchmark.cl",
     .surface_source = fr_surface_source,

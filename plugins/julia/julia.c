@@ -8,43 +8,53 @@ extern const char fr_de_source[];
 extern const char fr_surface_source[];
 
 enum {
-  P_C, P_C_W, P_SLICE_W, P_ITERATIONS, P_BAILOUT, P_COLOR_NEAR, P_COLOR_FAR, P_ANIMATE,
-  P_PATH_CENTER, P_PATH_RADIUS, P_PATH_SPEED, P_COUNT
+  P_C,
+  P_C_W,
+  P_SLICE_W,
+  P_ITERATIONS,
+  P_BAILOUT,
+  P_COLOR_NEAR,
+  P_COLOR_FAR,
+  P_ANIMATE,
+  P_PATH_CENTER,
+  P_PATH_RADIUS,
+  P_PATH_SPEED,
+  P_COUNT
 };
 
-static const fr_param_desc c = FR_VEC3_PARAM(
-    "c", "c (x, y, z)", "Fractal", "First three components of the Julia constant.", -0.125,
-    -0.256, 0.847, -1.5, 1.5, FR_PARAM_ANIMATABLE);
-static const fr_param_desc c_w = FR_FLOAT_PARAM(
-    "c_w", "c (w)", "Fractal", "Fourth component of the Julia constant.", 0.0895, -1.5, 1.5,
-    FR_PARAM_ANIMATABLE);
-static const fr_param_desc slice_w = FR_FLOAT_PARAM(
-    "slice_w", "Slice w", "Fractal", "The 3D slice of the 4D set that is shown.", 0.0, -1.5, 1.5,
-    FR_PARAM_ANIMATABLE);
+static const fr_param_desc c =
+    FR_VEC3_PARAM("c", "c (x, y, z)", "Fractal", "First three components of the Julia constant.",
+                  -0.125, -0.256, 0.847, -1.5, 1.5, FR_PARAM_ANIMATABLE);
+static const fr_param_desc c_w =
+    FR_FLOAT_PARAM("c_w", "c (w)", "Fractal", "Fourth component of the Julia constant.", 0.0895,
+                   -1.5, 1.5, FR_PARAM_ANIMATABLE);
+static const fr_param_desc slice_w =
+    FR_FLOAT_PARAM("slice_w", "Slice w", "Fractal", "The 3D slice of the 4D set that is shown.",
+                   0.0, -1.5, 1.5, FR_PARAM_ANIMATABLE);
 static const fr_param_desc iterations = FR_INT_PARAM(
     "iterations", "Iterations", "Fractal", "Maximum iterations.", 11, 1, 64, FR_PARAM_SPECIALIZE);
 /* r < B before a step keeps the next |z| below B^2 + |c| <= 16^2 + 3: far from float's limits. */
-static const fr_param_desc bailout = FR_FLOAT_PARAM(
-    "bailout", "Bailout radius", "Fractal", "Escape radius.", 4, 2, 16, FR_PARAM_LOG_SCALE);
-static const fr_param_desc color_near = FR_COLOR_PARAM(
-    "color_near", "Colour (deep orbits)", "Colour", "Albedo where orbits stay small.", 0.75,
-    0.22, 0.15);
-static const fr_param_desc color_far = FR_COLOR_PARAM(
-    "color_far", "Colour (outer orbits)", "Colour", "Albedo where orbits stay large.", 0.78,
-    0.68, 0.52);
-static const fr_param_desc animate = FR_BOOL_PARAM(
-    "animate_c", "Animate c", "Animation", "Move c around a circle in its xy plane.", 0, 0);
-static const fr_param_desc path_center = FR_VEC3_PARAM(
-    "path_center", "Path centre", "Animation", "Centre of c's circle.", -0.125, -0.256, 0.847,
-    -1.5, 1.5, 0);
-static const fr_param_desc path_radius = FR_FLOAT_PARAM(
-    "path_radius", "Path radius", "Animation", "Radius of c's circle.", 0.12, 0, 1, 0);
-static const fr_param_desc path_speed = FR_FLOAT_PARAM(
-    "path_speed", "Path speed", "Animation", "Turns per second.", 0.05, 0.001, 1, 0);
+static const fr_param_desc bailout = FR_FLOAT_PARAM("bailout", "Bailout radius", "Fractal",
+                                                    "Escape radius.", 4, 2, 16, FR_PARAM_LOG_SCALE);
+static const fr_param_desc color_near =
+    FR_COLOR_PARAM("color_near", "Colour (deep orbits)", "Colour",
+                   "Albedo where orbits stay small.", 0.75, 0.22, 0.15);
+static const fr_param_desc color_far =
+    FR_COLOR_PARAM("color_far", "Colour (outer orbits)", "Colour",
+                   "Albedo where orbits stay large.", 0.78, 0.68, 0.52);
+static const fr_param_desc animate = FR_BOOL_PARAM("animate_c", "Animate c", "Animation",
+                                                   "Move c around a circle in its xy plane.", 0, 0);
+static const fr_param_desc path_center =
+    FR_VEC3_PARAM("path_center", "Path centre", "Animation", "Centre of c's circle.", -0.125,
+                  -0.256, 0.847, -1.5, 1.5, 0);
+static const fr_param_desc path_radius = FR_FLOAT_PARAM("path_radius", "Path radius", "Animation",
+                                                        "Radius of c's circle.", 0.12, 0, 1, 0);
+static const fr_param_desc path_speed =
+    FR_FLOAT_PARAM("path_speed", "Path speed", "Animation", "Turns per second.", 0.05, 0.001, 1, 0);
 
 static const fr_param_desc* const params[P_COUNT] = {
-    &c,          &c_w,      &slice_w,      &iterations,  &bailout,   &color_near,
-    &color_far,  &animate,  &path_center,  &path_radius, &path_speed};
+    &c,         &c_w,     &slice_w,     &iterations,  &bailout,   &color_near,
+    &color_far, &animate, &path_center, &path_radius, &path_speed};
 
 static const fr_camera camera = FR_CAMERA(1.4, 1.9, 4.6, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 45.0);
 static const fr_light key = FR_DIRECTIONAL_LIGHT(-0.5, -0.9, -0.4, 1.0, 0.95, 0.9, 1.3);

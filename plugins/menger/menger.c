@@ -10,18 +10,18 @@ extern const char fr_surface_source[];
 
 enum { P_ITERATIONS, P_SCALE, P_OFFSET, P_ROTATION, P_COLOR_NEAR, P_COLOR_FAR, P_COUNT };
 
-static const fr_param_desc iterations = FR_INT_PARAM(
-    "iterations", "Level", "Fractal", "Recursion level n: the sponge of 20^n cubes.", 4, 1, 8,
-    FR_PARAM_SPECIALIZE);
+static const fr_param_desc iterations =
+    FR_INT_PARAM("iterations", "Level", "Fractal", "Recursion level n: the sponge of 20^n cubes.",
+                 4, 1, 8, FR_PARAM_SPECIALIZE);
 static const fr_param_desc scale = FR_FLOAT_PARAM(
     "scale", "Scale", "Fractal", "Scale per fold; 3 is the classic sponge.", 3, 1.5, 4, 0);
-static const fr_param_desc offset = FR_VEC3_PARAM(
-    "offset", "Fold offset", "Fractal", "Corner the scale is taken about; 1,1,1 is classic.", 1,
-    1, 1, 0, 2, 0);
-static const fr_param_desc rotation = FR_FLOAT_PARAM(
-    "rotation_deg", "Rotation per fold", "Fractal",
-    "Rotation about x after each fold, degrees; 0 keeps the exact sponge.", 0, -180, 180,
-    FR_PARAM_ANIMATABLE);
+static const fr_param_desc offset =
+    FR_VEC3_PARAM("offset", "Fold offset", "Fractal",
+                  "Corner the scale is taken about; 1,1,1 is classic.", 1, 1, 1, 0, 2, 0);
+static const fr_param_desc rotation =
+    FR_FLOAT_PARAM("rotation_deg", "Rotation per fold", "Fractal",
+                   "Rotation about x after each fold, degrees; 0 keeps the exact sponge.", 0, -180,
+                   180, FR_PARAM_ANIMATABLE);
 static const fr_param_desc color_near = FR_COLOR_PARAM(
     "color_near", "Colour (outer)", "Colour", "Albedo of the large faces.", 0.82, 0.80, 0.74);
 static const fr_param_desc color_far = FR_COLOR_PARAM(

@@ -10,18 +10,18 @@ extern const char fr_surface_source[];
 
 enum { P_ITERATIONS, P_SCALE, P_OFFSET, P_COLOR_NEAR, P_COLOR_FAR, P_COUNT };
 
-static const fr_param_desc iterations = FR_INT_PARAM(
-    "iterations", "Level", "Fractal", "Recursion level n: 4^n tetrahedra.", 7, 1, 16,
-    FR_PARAM_SPECIALIZE);
+static const fr_param_desc iterations =
+    FR_INT_PARAM("iterations", "Level", "Fractal", "Recursion level n: 4^n tetrahedra.", 7, 1, 16,
+                 FR_PARAM_SPECIALIZE);
 static const fr_param_desc scale = FR_FLOAT_PARAM(
     "scale", "Scale", "Fractal", "Scale per fold; 2 is the classic tetrahedron.", 2, 1.5, 3, 0);
-static const fr_param_desc offset = FR_VEC3_PARAM(
-    "offset", "Fold offset", "Fractal", "Vertex the scale is taken about; 1,1,1 is classic.", 1,
-    1, 1, 0, 2, 0);
+static const fr_param_desc offset =
+    FR_VEC3_PARAM("offset", "Fold offset", "Fractal",
+                  "Vertex the scale is taken about; 1,1,1 is classic.", 1, 1, 1, 0, 2, 0);
 static const fr_param_desc color_near = FR_COLOR_PARAM(
     "color_near", "Colour A", "Colour", "Albedo of one end of the palette.", 0.85, 0.78, 0.55);
-static const fr_param_desc color_far = FR_COLOR_PARAM(
-    "color_far", "Colour B", "Colour", "Albedo of the other end.", 0.25, 0.45, 0.55);
+static const fr_param_desc color_far =
+    FR_COLOR_PARAM("color_far", "Colour B", "Colour", "Albedo of the other end.", 0.25, 0.45, 0.55);
 
 static const fr_param_desc* const params[P_COUNT] = {&iterations, &scale, &offset, &color_near,
                                                      &color_far};
