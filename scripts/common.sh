@@ -8,7 +8,8 @@ FRACTALIS_BUILD="${FRACTALIS_BUILD:-$FRACTALIS_ROOT/build}"
 FRACTALIS_PACKAGES=(
   cmake g++ make pkg-config ccache
   ocl-icd-opencl-dev opencl-c-headers pocl-opencl-icd
-  libglm-dev libspdlog-dev libtomlplusplus-dev libstb-dev
+  libglm-dev libspdlog-dev libtomlplusplus-dev libstb-dev libsdl2-dev libimgui-dev
+  xvfb xauth
   libgtest-dev libbenchmark-dev
 )
 

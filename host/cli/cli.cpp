@@ -18,6 +18,7 @@ const char* kUsage =
     "usage: fractalis <command> [options]\n"
     "\n"
     "commands:\n"
+    "  explore   open the explorer window and fly through a scene\n"
     "  render    render a scene to a PNG file\n"
     "  bench     time frames of a scene (median, min, max)\n"
     "  list      list scene plugins, their parameters, or why they failed to load\n"
@@ -41,11 +42,12 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
   const std::string command = args[0];
   const std::vector<std::string> rest(args.begin() + 1, args.end());
   try {
+    if (command == "explore") return command_explore(rest, out, err);
     if (command == "render") return command_render(rest, out, err);
     if (command == "bench") return command_bench(rest, out, err);
     if (command == "list") return command_list(rest, out, err);
     if (command == "devices") return command_devices(rest, out, err);
-    throw UsageError("unknown command '" + command + "' (expected render, bench, list or devices)");
+    throw UsageError("unknown command '" + command + "' (expected explore, render, bench, list or devices)");
   } catch (const UsageError& e) {
     err << "fractalis: error: " << e.what() << "\n";
     return 2;

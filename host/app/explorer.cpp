@@ -1,0 +1,135 @@
+#include "app/explorer.hpp"
+
+#include "image/png_write.hpp"
+#include "render/de_probe.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstring>
+
+namespace fr {
+namespace {
+
+bool same_state(const SceneState& a, const SceneState& b) {
+  return a.params.size() == b.params.size() &&
+         std::memcmp(a.params.data(), b.params.data(), a.params.size() * sizeof(fr_value)) == 0 &&
+         std::memcmp(&a.camera, &b.camera, sizeof(fr_camera)) == 0 && a.bounding_radius == b.bounding_radius;
+}
+
+}  // namespace
+
+Explorer::Explorer(const Settings& settings, ClRuntime& runtime, SceneLibrary& library, const std::string& scene_id)
+    : runtime_(runtime), library_(library), renderer_(runtime), render_(settings.render) {
+  if (library_.slots().empty()) throw std::runtime_error("no scene could be loaded");
+  const int index = library_.find(scene_id);
+  current_ = index >= 0 ? index : 0;
+  if (index < 0) add_message("no scene '" + scene_id + "'; showing '" + current().scene->info.id + "'");
+}
+
+void Explorer::add_message(std::string m) {
+  messages_.push_back(std::move(m));
+  while (messages_.size() > 8) messages_.pop_front();
+}
+
+void Explorer::select_scene(int index) {
+  const int count = static_cast<int>(library_.slots().size());
+  if (count == 0) return;
+  index = ((index % count) + count) % count;
+  if (index == current_) return;
+  const int previous = current_;
+  current_ = index;
+  // A removed scene goes once the user has switched away from it.
+  if (library_.slots()[previous].removed) {
+    library_.drop_if_removed(previous);
+    if (previous < current_) --current_;
+  }
+  changed_ = true;
+}
+
+bool Explorer::update(const InputState& input, double dt_s, double now_s) {
+  window_actions_.clear();
+  for (Action a : input.triggered) {
+    switch (a) {
+      case Action::Quit: return false;
+      case Action::NextScene: select_scene(current_ + 1); break;
+      case Action::PreviousScene: select_scene(current_ - 1); break;
+      case Action::ToggleCameraMode: mode_ = mode_ == CameraMode::Fly ? CameraMode::Orbit : CameraMode::Fly; break;
+      case Action::ToggleMouseLook: mouse_look_ = !mouse_look_; break;
+      default: window_actions_.push_back(a); break;
+    }
+  }
+  if (input.resized) changed_ = true;
+  for (std::string& m : library_.poll(now_s, render_)) {
+    if (m.rfind("reloaded '" + current().scene->info.id + "'", 0) == 0) changed_ = true;
+    add_message(std::move(m));
+  }
+
+  SceneSlot& slot = current();
+  // The flying speed follows the scene's own DE at the eye, evaluated on the device.
+  const auto& eye = slot.state.camera.eye;
+  const std::array<float, 3> eye_f = {static_cast<float>(eye[0]), static_cast<float>(eye[1]), static_cast<float>(eye[2])};
+  try {
+    stats_.surface_distance = probe_de(runtime_, slot.scene->info, slot.state.params, {eye_f})[0];
+  } catch (const std::exception& e) {
+    slot.error = e.what();
+    stats_.surface_distance = 0.1;
+  }
+  const SceneState before = slot.state;
+  if (update_camera(slot.state.camera, mode_, input, mouse_look_, dt_s, stats_.surface_distance, controls_).moved)
+    changed_ = true;
+  std::string error;
+  if (!slot.instance->update(slot.state, now_s, &error)) {
+    slot.error = error;
+    add_message(error);
+  }
+  if (!same_state(before, slot.state)) changed_ = true;
+  return true;
+}
+
+const FrameImage* Explorer::render(int window_width_px, int window_height_px) {
+  const FramePlan plan = frames_.plan(changed_);
+  changed_ = false;
+  stats_.resolution_scale = plan.resolution_scale;
+  stats_.sample_index = plan.sample_index;
+  stats_.refined = plan.done;
+  if (plan.done) return nullptr;
+  RenderSettings s = render_;
+  s.width_px = std::max(1, static_cast<int>(std::lround(window_width_px * plan.resolution_scale)));
+  s.height_px = std::max(1, static_cast<int>(std::lround(window_height_px * plan.resolution_scale)));
+  SceneSlot& slot = current();
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    renderer_.render_sample(slot.scene->info, slot.state, s, plan.sample_index);
+    last_ = renderer_.finish(s, plan.sample_index == 0);
+  } catch (const std::exception& e) {
+    slot.error = e.what();
+    add_message(e.what());
+    return nullptr;
+  }
+  stats_.frame_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  frames_.report(stats_.frame_ms);
+  if (plan.sample_index == 0 && !last_.steps.empty()) {
+    double total = 0;
+    for (float v : last_.steps) total += v;
+    stats_.de_steps_per_pixel = total / static_cast<double>(last_.steps.size());
+  }
+  return &last_;
+}
+
+bool Explorer::screenshot(const std::filesystem::path& file, int width_px, int height_px, std::string* error) {
+  RenderSettings s = render_;
+  s.width_px = width_px;
+  s.height_px = height_px;
+  s.samples = frames_.settings().full_quality_samples;
+  SceneSlot& slot = current();
+  try {
+    Renderer shot(runtime_);
+    const FrameImage img = shot.render(slot.scene->info, slot.state, s);
+    return write_png_atomic(file, img.width_px, img.height_px, img.rgba8, error);
+  } catch (const std::exception& e) {
+    *error = e.what();
+    return false;
+  }
+}
+
+}  // namespace fr

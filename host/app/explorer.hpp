@@ -1,0 +1,77 @@
+// explorer.hpp — the interactive explorer without its window: scenes, camera, frame-rate control
+// and progressive refinement. The window layer (ui/) feeds it input and shows its images; tests
+// and `bench --explore` drive it headless.
+#pragma once
+
+#include "app/camera_controller.hpp"
+#include "app/frame_controller.hpp"
+#include "app/input.hpp"
+#include "app/scene_library.hpp"
+#include "render/renderer.hpp"
+#include "settings/settings.hpp"
+
+#include <deque>
+#include <optional>
+#include <string>
+
+namespace fr {
+
+struct ExplorerStats {
+  double frame_ms = 0;         // last render (update excluded)
+  double resolution_scale = 1;
+  int sample_index = 0;
+  bool refined = false;        // full quality reached and shown
+  double de_steps_per_pixel = 0;
+  double surface_distance = 0; // DE at the eye
+};
+
+class Explorer {
+ public:
+  Explorer(const Settings& settings, ClRuntime& runtime, SceneLibrary& library, const std::string& scene_id);
+
+  // One frame's update: triggered actions, camera, the scene's update callback at scene time
+  // `now_s`, and the plugin folders. Returns false when the user asked to quit.
+  bool update(const InputState& input, double dt_s, double now_s);
+
+  // Renders what the frame controller plans for a window of this size. Returns null when the
+  // image is already at full quality (nothing new to show).
+  const FrameImage* render(int window_width_px, int window_height_px);
+
+  // Writes a PNG of the current view at the given size with full-quality samples.
+  bool screenshot(const std::filesystem::path& file, int width_px, int height_px, std::string* error);
+
+  void select_scene(int index);
+  int current_index() const { return current_; }
+  SceneSlot& current() { return library_.slots()[current_]; }
+  SceneLibrary& library() { return library_; }
+  RenderSettings& render_settings() { return render_; }
+  CameraMode camera_mode() const { return mode_; }
+  void set_camera_mode(CameraMode m) { mode_ = m; }
+  bool mouse_look() const { return mouse_look_; }
+  void set_mouse_look(bool on) { mouse_look_ = on; }
+  // Something outside update() (the overlay) changed the scene or settings: refine again.
+  void mark_changed() { changed_ = true; }
+
+  const ExplorerStats& stats() const { return stats_; }
+  const std::deque<std::string>& messages() const { return messages_; }
+  void add_message(std::string m);
+  const std::vector<Action>& pending_window_actions() const { return window_actions_; }
+
+ private:
+  ClRuntime& runtime_;
+  SceneLibrary& library_;
+  Renderer renderer_;
+  RenderSettings render_;
+  CameraControls controls_;
+  FrameController frames_;
+  CameraMode mode_ = CameraMode::Fly;
+  bool mouse_look_ = false;
+  int current_ = 0;
+  bool changed_ = true;
+  ExplorerStats stats_;
+  FrameImage last_;
+  std::deque<std::string> messages_;
+  std::vector<Action> window_actions_;  // overlay, fullscreen, screenshot: for the window layer
+};
+
+}  // namespace fr

@@ -1,0 +1,22 @@
+#include "app/game_loop.hpp"
+
+namespace fr {
+
+long run_game_loop(const LoopSteps& steps, long max_frames) {
+  InputState input;
+  double last = steps.now_s();
+  long frames = 0;
+  while (max_frames < 0 || frames < max_frames) {
+    steps.poll(input);
+    if (input.quit) break;
+    const double now = steps.now_s();
+    steps.update(input, now - last);
+    last = now;
+    steps.render();
+    input.end_frame();
+    ++frames;
+  }
+  return frames;
+}
+
+}  // namespace fr

@@ -1,0 +1,96 @@
+#include "app/input.hpp"
+
+#include <algorithm>
+
+namespace fr {
+namespace {
+
+struct NamedAction {
+  Action action;
+  const char* name;
+  bool held;  // true: lasts while the key is down; false: triggers once per press
+};
+const NamedAction kActions[] = {
+    {Action::MoveForward, "move_forward", true},   {Action::MoveBack, "move_back", true},
+    {Action::MoveLeft, "move_left", true},         {Action::MoveRight, "move_right", true},
+    {Action::MoveUp, "move_up", true},             {Action::MoveDown, "move_down", true},
+    {Action::SpeedUp, "speed_up", true},           {Action::ToggleMouseLook, "mouse_look", false},
+    {Action::ToggleCameraMode, "camera_mode", false}, {Action::ToggleOverlay, "overlay", false},
+    {Action::ToggleFullscreen, "fullscreen", false}, {Action::NextScene, "next_scene", false},
+    {Action::PreviousScene, "previous_scene", false}, {Action::Screenshot, "screenshot", false},
+    {Action::Quit, "quit", false},
+};
+
+const NamedAction& info(Action a) {
+  for (const auto& n : kActions)
+    if (n.action == a) return n;
+  return kActions[0];
+}
+
+}  // namespace
+
+const char* action_name(Action action) { return info(action).name; }
+
+std::optional<Action> action_from_name(const std::string& name) {
+  for (const auto& n : kActions)
+    if (name == n.name) return n.action;
+  return std::nullopt;
+}
+
+KeyBindings KeyBindings::defaults() {
+  KeyBindings b;
+  b.keys = {
+      {"W", Action::MoveForward},  {"S", Action::MoveBack},          {"A", Action::MoveLeft},
+      {"D", Action::MoveRight},    {"E", Action::MoveUp},            {"Space", Action::MoveUp},
+      {"Q", Action::MoveDown},     {"Left Ctrl", Action::MoveDown},  {"Left Shift", Action::SpeedUp},
+      {"M", Action::ToggleMouseLook}, {"O", Action::ToggleCameraMode}, {"F1", Action::ToggleOverlay},
+      {"F11", Action::ToggleFullscreen}, {"Tab", Action::NextScene}, {"Backspace", Action::PreviousScene},
+      {"F12", Action::Screenshot}, {"Escape", Action::Quit},
+  };
+  return b;
+}
+
+std::vector<std::string> KeyBindings::keys_for(Action action) const {
+  std::vector<std::string> out;
+  for (const auto& [key, a] : keys)
+    if (a == action) out.push_back(key);
+  return out;
+}
+
+bool InputState::was_triggered(Action a) const {
+  return std::find(triggered.begin(), triggered.end(), a) != triggered.end();
+}
+
+void InputState::end_frame() {
+  triggered.clear();
+  look_dx = look_dy = wheel = 0;
+  resized.reset();
+}
+
+void apply_input_event(const KeyBindings& bindings, const InputEvent& e, InputState& s) {
+  switch (e.type) {
+    case InputEvent::Type::Quit: s.quit = true; return;
+    case InputEvent::Type::MouseMotion:
+      s.look_dx += e.dx;
+      s.look_dy += e.dy;
+      return;
+    case InputEvent::Type::MouseWheel: s.wheel += e.dy; return;
+    case InputEvent::Type::WindowResized: s.resized = std::make_pair(e.width, e.height); return;
+    case InputEvent::Type::KeyDown:
+    case InputEvent::Type::KeyUp: {
+      auto it = bindings.keys.find(e.key);
+      if (it == bindings.keys.end()) return;
+      const bool down = e.type == InputEvent::Type::KeyDown;
+      if (info(it->second).held) {
+        if (down) s.held.insert(it->second);
+        else s.held.erase(it->second);
+      } else if (down) {
+        s.triggered.push_back(it->second);
+        if (it->second == Action::Quit) s.quit = true;
+      }
+      return;
+    }
+  }
+}
+
+}  // namespace fr

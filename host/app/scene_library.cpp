@@ -1,0 +1,105 @@
+#include "app/scene_library.hpp"
+
+#include "plugin/plugin_loader.hpp"
+#include "render/kernel_assembly.hpp"
+
+namespace fr {
+
+bool make_slot(std::shared_ptr<const LoadedScene> scene, SceneSlot* slot, std::string* error) {
+  slot->state = make_default_state(scene->info);
+  slot->instance = SceneInstance::create(scene, error);
+  if (!slot->instance) return false;
+  if (!slot->instance->update(slot->state, 0, error)) return false;
+  slot->scene = std::move(scene);
+  return true;
+}
+
+SceneLibrary::SceneLibrary(std::vector<std::filesystem::path> folders, ClRuntime& runtime,
+                           std::vector<std::string>* messages)
+    : runtime_(runtime) {
+  for (const auto& o : load_scene_folder(folders)) {
+    if (!o.scene) {
+      messages->push_back("skipped " + o.file.string() + ": " + o.message);
+      continue;
+    }
+    SceneSlot slot;
+    std::string error;
+    if (make_slot(o.scene, &slot, &error)) slots_.push_back(std::move(slot));
+    else messages->push_back("skipped " + o.file.string() + ": " + error);
+  }
+  for (const auto& f : folders) watchers_.push_back(std::make_unique<PluginWatcher>(f));
+}
+
+int SceneLibrary::find(const std::string& id) const {
+  for (size_t i = 0; i < slots_.size(); ++i)
+    if (slots_[i].scene->info.id == id) return static_cast<int>(i);
+  return -1;
+}
+
+std::string SceneLibrary::add_or_replace(const std::filesystem::path& file, const RenderSettings& settings) {
+  LoadOutcome o = load_scene_plugin(file);
+  int index = -1;
+  for (size_t i = 0; i < slots_.size(); ++i)
+    if (slots_[i].scene->file == file || (o.scene && slots_[i].scene->info.id == o.scene->info.id))
+      index = static_cast<int>(i);
+  auto keep_old = [&](const std::string& why) {
+    if (index >= 0) {
+      slots_[index].error = why;
+      return "kept the running '" + slots_[index].scene->info.id + "': " + why;
+    }
+    return "skipped " + file.string() + ": " + why;
+  };
+  if (!o.scene) return keep_old(o.message);
+
+  SceneSlot fresh;
+  std::string error;
+  if (!make_slot(o.scene, &fresh, &error)) return keep_old(error);
+  if (index >= 0) {
+    // Keep the user's values (by key) and camera.
+    const SceneSlot& old = slots_[index];
+    fresh.state.params = rebind_params(old.scene->info, old.state.params, o.scene->info);
+    fresh.state.camera = old.state.camera;
+    fresh.state.time_s = old.state.time_s;
+  }
+  // Build the kernel now, so a scene that does not compile never replaces a working one.
+  try {
+    const int lanes = settings.lanes > 0 ? settings.lanes : preferred_lanes(runtime_.device());
+    const auto k = assemble_render_kernel(o.scene->info, fresh.state.params,
+                                          make_kernel_config(o.scene->info, settings, lanes));
+    runtime_.program(k.source, k.build_options, k.description);
+  } catch (const std::exception& e) {
+    return keep_old(e.what());
+  }
+  const std::string id = o.scene->info.id;
+  if (index >= 0) {
+    slots_[index] = std::move(fresh);
+    return "reloaded '" + id + "' from " + file.filename().string();
+  }
+  slots_.push_back(std::move(fresh));
+  return "added '" + id + "' from " + file.filename().string();
+}
+
+std::vector<std::string> SceneLibrary::poll(double now_s, const RenderSettings& settings) {
+  std::vector<std::string> messages;
+  for (auto& w : watchers_) {
+    for (const PluginChange& c : w->poll(now_s)) {
+      if (c.kind == PluginChange::Kind::Removed) {
+        for (auto& slot : slots_)
+          if (slot.scene->file == c.file && !slot.removed) {
+            slot.removed = true;
+            messages.push_back("'" + slot.scene->info.id + "' was removed; it runs until you switch away");
+          }
+        continue;
+      }
+      messages.push_back(add_or_replace(c.file, settings));
+    }
+  }
+  return messages;
+}
+
+void SceneLibrary::drop_if_removed(int index) {
+  if (index >= 0 && index < static_cast<int>(slots_.size()) && slots_[index].removed)
+    slots_.erase(slots_.begin() + index);
+}
+
+}  // namespace fr

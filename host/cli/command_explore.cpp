@@ -1,0 +1,91 @@
+#include "app/explorer.hpp"
+#include "app/game_loop.hpp"
+#include "cli/commands.hpp"
+#include "cli/scene_setup.hpp"
+#include "ui/overlay.hpp"
+#include "ui/window.hpp"
+
+#include <chrono>
+#include <ostream>
+#include <thread>
+
+namespace fr {
+
+int command_explore(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  auto specs = scene_option_specs();
+  specs.push_back({"frames", "N", false, "quit after N frames (for scripts and tests)"});
+  specs.push_back({"fullscreen", nullptr, false, "start in fullscreen"});
+  specs.push_back({"help", nullptr, false, "show this help"});
+  auto options = parse_options("explore", args, specs);
+  if (options.has("help")) {
+    out << "usage: fractalis explore [--scene ID] [--size WxH] [options]\n\n"
+           "Opens the explorer window. Fly with W/A/S/D, E/Space up, Q/Ctrl down, Shift faster;\n"
+           "M captures the mouse to look around, O switches fly/orbit, Tab/Backspace switch scene,\n"
+           "F1 hides the overlay, F11 toggles fullscreen, F12 saves a screenshot, Esc quits.\n"
+           "Scenes dropped into the plugin folder appear while it runs; changed ones reload.\n\n"
+        << format_options(specs);
+    return 0;
+  }
+  const long max_frames = options.has("frames") ? parse_integer("--frames", *options.get("frames"), 1, 1L << 40) : -1;
+  Settings settings = load_settings(options);
+  RenderSettings render = render_settings_from(settings, options);
+  settings.render = render;
+  const auto folders = plugin_folders(settings, options);
+  if (folders.empty()) throw std::runtime_error("no plugin folder found (build the plugins, or pass --plugins DIR)");
+  if (!display_available())
+    throw std::runtime_error("no display (DISPLAY and WAYLAND_DISPLAY are unset); use `fractalis render` instead");
+
+  ClRuntime runtime(choose_device(settings, options));
+  std::vector<std::string> load_messages;
+  SceneLibrary library(folders, runtime, &load_messages);
+  for (const auto& m : load_messages) err << "fractalis: warning: " << m << "\n";
+  Explorer explorer(settings, runtime, library, options.get("scene").value_or("mandelbulb"));
+  for (const auto& m : load_messages) explorer.add_message(m);
+  if (options.has("param") || options.has("eye") || options.has("target") || options.has("fov"))
+    apply_scene_overrides(explorer.current().scene->info, options, explorer.current().state);
+
+  Window window("Fractalis", render.width_px, render.height_px, options.has("fullscreen"));
+  OverlayState overlay;
+  const KeyBindings bindings = KeyBindings::defaults();
+  using clock = std::chrono::steady_clock;
+  const auto start = clock::now();
+  auto now_s = [&] { return std::chrono::duration<double>(clock::now() - start).count(); };
+  bool mouse_captured = false;
+
+  LoopSteps steps;
+  steps.now_s = now_s;
+  steps.poll = [&](InputState& input) { window.poll(bindings, input); };
+  steps.update = [&](const InputState& input, double dt_s) {
+    explorer.update(input, dt_s, now_s());
+    for (Action a : explorer.pending_window_actions()) {
+      if (a == Action::ToggleOverlay) overlay.visible = !overlay.visible;
+      if (a == Action::ToggleFullscreen) window.set_fullscreen(!window.fullscreen());
+      if (a == Action::Screenshot) overlay.screenshot_requested = true;
+    }
+    if (explorer.mouse_look() != mouse_captured) {
+      mouse_captured = explorer.mouse_look();
+      window.set_mouse_capture(mouse_captured);
+    }
+  };
+  steps.render = [&] {
+    const FrameImage* image = explorer.render(window.width_px(), window.height_px());
+    window.present(image, [&] { draw_overlay(explorer, overlay); });
+    if (overlay.screenshot_requested) {
+      overlay.screenshot_requested = false;
+      const int w = overlay.screenshot_at_window_size ? window.width_px() : overlay.screenshot_size[0];
+      const int h = overlay.screenshot_at_window_size ? window.height_px() : overlay.screenshot_size[1];
+      std::string error;
+      if (explorer.screenshot(overlay.screenshot_file, w, h, &error))
+        explorer.add_message("saved " + overlay.screenshot_file);
+      else
+        explorer.add_message(error);
+    }
+    // Nothing left to refine: wait for input instead of spinning.
+    if (!image) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  };
+  const long frames = run_game_loop(steps, max_frames);
+  out << "explored for " << frames << " frames\n";
+  return 0;
+}
+
+}  // namespace fr

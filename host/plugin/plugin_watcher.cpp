@@ -1,0 +1,85 @@
+#include "plugin/plugin_watcher.hpp"
+
+#include <sys/inotify.h>
+#include <unistd.h>
+
+#include <array>
+
+namespace fr {
+
+PluginWatcher::PluginWatcher(std::filesystem::path folder, double debounce_s, double poll_interval_s)
+    : folder_(std::move(folder)), debounce_s_(debounce_s), poll_interval_s_(poll_interval_s) {
+  inotify_fd_ = inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
+  if (inotify_fd_ >= 0 &&
+      inotify_add_watch(inotify_fd_, folder_.c_str(),
+                        IN_CLOSE_WRITE | IN_MOVED_TO | IN_MOVED_FROM | IN_DELETE | IN_CREATE | IN_MODIFY) < 0) {
+    close(inotify_fd_);
+    inotify_fd_ = -1;  // fall back to polling
+  }
+  reported_ = scan();
+}
+
+PluginWatcher::~PluginWatcher() {
+  if (inotify_fd_ >= 0) close(inotify_fd_);
+}
+
+std::map<std::filesystem::path, PluginWatcher::Stamp> PluginWatcher::scan() const {
+  std::map<std::filesystem::path, Stamp> out;
+  std::error_code ec;
+  for (const auto& e : std::filesystem::directory_iterator(folder_, ec)) {
+    if (e.path().extension() != ".so" || !e.is_regular_file(ec)) continue;
+    Stamp s;
+    s.size = e.file_size(ec);
+    s.mtime = e.last_write_time(ec);
+    if (!ec) out[e.path()] = s;
+  }
+  return out;
+}
+
+std::vector<PluginChange> PluginWatcher::poll(double now_s) {
+  bool look = !pending_.empty() || now_s - last_scan_s_ >= poll_interval_s_;
+  if (inotify_fd_ >= 0) {
+    std::array<char, 4096> buffer;
+    bool events = false;
+    while (read(inotify_fd_, buffer.data(), buffer.size()) > 0) events = true;
+    // With inotify, scan on events, while something is settling, and rarely as a safety net.
+    look = events || !pending_.empty() || now_s - last_scan_s_ >= 10 * poll_interval_s_;
+  }
+  std::vector<PluginChange> changes;
+  if (!look) return changes;
+  last_scan_s_ = now_s;
+  const auto current = scan();
+  for (const auto& [file, stamp] : current) {
+    auto known = reported_.find(file);
+    if (known != reported_.end() && known->second == stamp) {
+      pending_.erase(file);
+      continue;
+    }
+    auto& p = pending_[file];
+    if (!p.started || !(p.stamp == stamp)) {
+      p.stamp = stamp;
+      p.stable_since_s = now_s;
+      p.started = true;
+      continue;
+    }
+    if (now_s - p.stable_since_s >= debounce_s_) {
+      changes.push_back({known == reported_.end() ? PluginChange::Kind::Added : PluginChange::Kind::Modified, file});
+      reported_[file] = stamp;
+      pending_.erase(file);
+    }
+  }
+  for (auto it = reported_.begin(); it != reported_.end();) {
+    if (current.count(it->first)) {
+      ++it;
+      continue;
+    }
+    changes.push_back({PluginChange::Kind::Removed, it->first});
+    pending_.erase(it->first);
+    it = reported_.erase(it);
+  }
+  for (auto it = pending_.begin(); it != pending_.end();)
+    it = current.count(it->first) ? std::next(it) : pending_.erase(it);
+  return changes;
+}
+
+}  // namespace fr

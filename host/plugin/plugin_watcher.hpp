@@ -1,0 +1,56 @@
+// plugin_watcher.hpp — noticing scene plugins that appear in, change in or leave a folder.
+//
+// inotify says when to look (without it, the folder is polled every poll_interval_s); a file is
+// reported only once its size and modification time have stayed the same for debounce_s, so a
+// plugin that is still being copied or linked is never loaded half-written.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <vector>
+
+namespace fr {
+
+struct PluginChange {
+  enum class Kind { Added, Modified, Removed };
+  Kind kind;
+  std::filesystem::path file;
+};
+
+class PluginWatcher {
+ public:
+  explicit PluginWatcher(std::filesystem::path folder, double debounce_s = 0.3, double poll_interval_s = 0.5);
+  ~PluginWatcher();
+  PluginWatcher(const PluginWatcher&) = delete;
+  PluginWatcher& operator=(const PluginWatcher&) = delete;
+
+  // The changes that became stable by `now_s` (a monotonic clock, seconds). Files present when
+  // the watcher starts count as known, not added. Cheap when nothing happened.
+  std::vector<PluginChange> poll(double now_s);
+
+  bool uses_inotify() const { return inotify_fd_ >= 0; }
+  const std::filesystem::path& folder() const { return folder_; }
+
+ private:
+  struct Stamp {
+    std::uintmax_t size = 0;
+    std::filesystem::file_time_type mtime{};
+    bool operator==(const Stamp& o) const { return size == o.size && mtime == o.mtime; }
+  };
+  struct Pending {
+    Stamp stamp;
+    double stable_since_s = 0;
+    bool started = false;
+  };
+  std::map<std::filesystem::path, Stamp> scan() const;
+
+  std::filesystem::path folder_;
+  double debounce_s_, poll_interval_s_;
+  int inotify_fd_ = -1;
+  double last_scan_s_ = -1e300;
+  std::map<std::filesystem::path, Stamp> reported_;   // what the caller knows
+  std::map<std::filesystem::path, Pending> pending_;  // changed, waiting to be stable
+};
+
+}  // namespace fr

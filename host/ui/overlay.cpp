@@ -1,0 +1,170 @@
+#include "ui/overlay.hpp"
+
+#include "render/kernel_assembly.hpp"
+
+#include <imgui.h>
+
+#include <cmath>
+#include <map>
+
+namespace fr {
+namespace {
+
+// One widget per parameter, by type; true when the value changed.
+bool edit_param(const ParamInfo& p, fr_value& v) {
+  const char* label = p.name.c_str();
+  bool changed = false;
+  switch (p.type) {
+    case FR_PARAM_FLOAT: {
+      float f = static_cast<float>(v.v[0]);
+      const ImGuiSliderFlags flags = (p.flags & FR_PARAM_LOG_SCALE) ? ImGuiSliderFlags_Logarithmic : 0;
+      changed = ImGui::SliderFloat(label, &f, static_cast<float>(p.min_value.v[0]),
+                                   static_cast<float>(p.max_value.v[0]), "%.4g", flags);
+      if (changed) v.v[0] = f;
+      break;
+    }
+    case FR_PARAM_INT: {
+      int i = static_cast<int>(v.v[0]);
+      changed = ImGui::SliderInt(label, &i, static_cast<int>(p.min_value.v[0]), static_cast<int>(p.max_value.v[0]));
+      if (changed) v.v[0] = i;
+      break;
+    }
+    case FR_PARAM_BOOL: {
+      bool b = v.v[0] != 0;
+      changed = ImGui::Checkbox(label, &b);
+      if (changed) v.v[0] = b ? 1 : 0;
+      break;
+    }
+    case FR_PARAM_COLOR: {
+      float c[3] = {static_cast<float>(v.v[0]), static_cast<float>(v.v[1]), static_cast<float>(v.v[2])};
+      changed = ImGui::ColorEdit3(label, c);
+      if (changed) v = fr_value{{c[0], c[1], c[2]}};
+      break;
+    }
+    default: {
+      float c[3] = {static_cast<float>(v.v[0]), static_cast<float>(v.v[1]), static_cast<float>(v.v[2])};
+      changed = ImGui::DragFloat3(label, c, 0.01f, static_cast<float>(p.min_value.v[0]),
+                                  static_cast<float>(p.max_value.v[0]));
+      if (changed) v = fr_value{{c[0], c[1], c[2]}};
+      break;
+    }
+  }
+  if (!p.description.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", p.description.c_str());
+  return changed;
+}
+
+bool effect_toggle(const char* label, fr_features feature, RenderSettings& s) {
+  bool on = !(s.disabled_stages & feature);
+  if (!ImGui::Checkbox(label, &on)) return false;
+  if (on) s.disabled_stages &= ~feature;
+  else s.disabled_stages |= feature;
+  return true;
+}
+
+template <typename Enum>
+bool choice(const char* label, Enum& value, std::initializer_list<const char*> names) {
+  int i = static_cast<int>(value);
+  std::vector<const char*> items(names);
+  if (!ImGui::Combo(label, &i, items.data(), static_cast<int>(items.size()))) return false;
+  value = static_cast<Enum>(i);
+  return true;
+}
+
+}  // namespace
+
+void draw_overlay(Explorer& explorer, OverlayState& overlay) {
+  if (!overlay.visible) return;
+  ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(360, 560), ImGuiCond_FirstUseEver);
+  ImGui::Begin("Fractalis (F1 hides)");
+  const ExplorerStats& st = explorer.stats();
+  ImGui::Text("%.1f ms/frame (%.0f fps), scale %.2f, sample %d%s", st.frame_ms,
+              st.frame_ms > 0 ? 1000.0 / st.frame_ms : 0.0, st.resolution_scale, st.sample_index,
+              st.refined ? " (refined)" : "");
+  ImGui::Text("%.1f DE steps/pixel, surface %.4g away", st.de_steps_per_pixel, st.surface_distance);
+
+  // Scenes.
+  auto& slots = explorer.library().slots();
+  if (ImGui::BeginCombo("Scene", explorer.current().scene->info.name.c_str())) {
+    for (int i = 0; i < static_cast<int>(slots.size()); ++i) {
+      std::string label = slots[i].scene->info.name + (slots[i].removed ? " (removed)" : "");
+      if (ImGui::Selectable(label.c_str(), i == explorer.current_index())) explorer.select_scene(i);
+    }
+    ImGui::EndCombo();
+  }
+  SceneSlot& slot = explorer.current();
+  if (!slot.error.empty()) ImGui::TextColored(ImVec4(1, 0.45f, 0.35f, 1), "%s", slot.error.c_str());
+
+  // Parameters, grouped as the scene declares them.
+  const SceneInfo& info = slot.scene->info;
+  std::map<std::string, std::vector<int>> groups;
+  for (int i = 0; i < static_cast<int>(info.params.size()); ++i) groups[info.params[i].group].push_back(i);
+  for (const auto& [group, indices] : groups) {
+    if (!ImGui::CollapsingHeader(group.empty() ? "Parameters" : group.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) continue;
+    for (int i : indices) {
+      ImGui::PushID(i);
+      if (edit_param(info.params[i], slot.state.params[i])) {
+        clamp_params(info, slot.state.params);
+        explorer.mark_changed();
+      }
+      ImGui::PopID();
+    }
+  }
+
+  if (ImGui::CollapsingHeader("Rendering")) {
+    RenderSettings& s = explorer.render_settings();
+    bool changed = false;
+    ImGui::TextDisabled("this scene uses: %s", stage_names(info.features).c_str());
+    changed |= effect_toggle("Shadows", FR_FEATURE_SHADOWS, s);
+    changed |= effect_toggle("Ambient occlusion", FR_FEATURE_AO, s);
+    changed |= effect_toggle("Glow", FR_FEATURE_GLOW, s);
+    changed |= effect_toggle("Fog", FR_FEATURE_FOG, s);
+    changed |= effect_toggle("Reflections", FR_FEATURE_REFLECTIONS, s);
+    changed |= choice("Shading", s.shading, {"Lambert", "Blinn-Phong", "Oren-Nayar"});
+    changed |= choice("Normals", s.normals, {"tetrahedron", "central differences"});
+    changed |= choice("AO method", s.ao_method, {"step count", "sampled"});
+    changed |= choice("Shadows", s.shadow_method, {"hard", "soft"});
+    changed |= ImGui::SliderFloat("Exposure", &s.exposure, 0.1f, 4.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
+    changed |= ImGui::SliderFloat("Detail (k)", &s.hit_threshold_k, 0.05f, 4.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
+    changed |= ImGui::SliderInt("Max steps", &s.max_steps, 16, 1000);
+    changed |= ImGui::SliderFloat("Aperture", &s.aperture_radius, 0.0f, 0.5f, "%.3f");
+    if (changed) explorer.mark_changed();
+  }
+
+  if (ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen)) {
+    fr_camera& c = slot.state.camera;
+    ImGui::Text("eye    %.4f, %.4f, %.4f", c.eye[0], c.eye[1], c.eye[2]);
+    ImGui::Text("target %.4f, %.4f, %.4f", c.target[0], c.target[1], c.target[2]);
+    ImGui::Text("mode: %s (O), mouse look: %s (M)", explorer.camera_mode() == CameraMode::Fly ? "fly" : "orbit",
+                explorer.mouse_look() ? "on" : "off");
+    float fov = static_cast<float>(c.fov_deg);
+    if (ImGui::SliderFloat("Field of view", &fov, 10, 120, "%.0f deg")) {
+      c.fov_deg = fov;
+      explorer.mark_changed();
+    }
+    if (ImGui::Button("Bookmark view")) overlay.bookmarks.push_back(c);
+    for (size_t i = 0; i < overlay.bookmarks.size(); ++i) {
+      ImGui::SameLine();
+      ImGui::PushID(static_cast<int>(i));
+      if (ImGui::Button(std::to_string(i + 1).c_str())) {
+        c = overlay.bookmarks[i];
+        explorer.mark_changed();
+      }
+      ImGui::PopID();
+    }
+    if (ImGui::Button("Reset view")) {
+      c = info.camera;
+      explorer.mark_changed();
+    }
+  }
+
+  if (ImGui::CollapsingHeader("Screenshot")) {
+    ImGui::Checkbox("At window size", &overlay.screenshot_at_window_size);
+    if (!overlay.screenshot_at_window_size) ImGui::InputInt2("Size", overlay.screenshot_size.data());
+    if (ImGui::Button("Save PNG (F12)")) overlay.screenshot_requested = true;
+  }
+  for (const std::string& m : explorer.messages()) ImGui::TextWrapped("%s", m.c_str());
+  ImGui::End();
+}
+
+}  // namespace fr

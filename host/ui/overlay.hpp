@@ -1,0 +1,28 @@
+// overlay.hpp — the explorer's Dear ImGui panel, generated from the scene's parameter table:
+// scene list, parameters (sliders with the declared ranges, log scale where flagged, colour
+// pickers, checkboxes, vec3 fields, grouped), effects and shading model, camera and bookmarks,
+// statistics, screenshot. Call between ImGui::NewFrame and ImGui::Render (Window::present does).
+#pragma once
+
+#include "app/explorer.hpp"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace fr {
+
+struct OverlayState {
+  bool visible = true;
+  std::vector<fr_camera> bookmarks;
+  std::array<int, 2> screenshot_size{1920, 1080};
+  std::string screenshot_file = "fractalis-screenshot.png";
+  bool screenshot_requested = false;
+  bool screenshot_at_window_size = true;
+};
+
+// Builds the panel; changes go straight into the explorer's scene state and settings (and mark
+// the view changed).
+void draw_overlay(Explorer& explorer, OverlayState& overlay);
+
+}  // namespace fr

@@ -1,0 +1,151 @@
+#include "ui/window.hpp"
+
+#include "render/renderer.hpp"
+
+#include <SDL.h>
+#include <imgui.h>
+#include <backends/imgui_impl_sdl.h>
+#include <backends/imgui_impl_sdlrenderer.h>
+
+#include <cstdlib>
+#include <stdexcept>
+
+namespace fr {
+
+bool display_available() {
+  const char* x = std::getenv("DISPLAY");
+  const char* wayland = std::getenv("WAYLAND_DISPLAY");
+  return (x && *x) || (wayland && *wayland);
+}
+
+Window::Window(const std::string& title, int w, int h, bool fullscreen) {
+  if (SDL_Init(SDL_INIT_VIDEO | SDL_INIT_EVENTS) != 0)
+    throw std::runtime_error(std::string("cannot start SDL video: ") + SDL_GetError());
+  window_ = SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, w, h,
+                             SDL_WINDOW_RESIZABLE | SDL_WINDOW_ALLOW_HIGHDPI);
+  if (!window_) {
+    std::string why = SDL_GetError();
+    SDL_Quit();
+    throw std::runtime_error("cannot open a window: " + why);
+  }
+  renderer_ = SDL_CreateRenderer(window_, -1, SDL_RENDERER_ACCELERATED);
+  if (!renderer_) renderer_ = SDL_CreateRenderer(window_, -1, SDL_RENDERER_SOFTWARE);
+  if (!renderer_) {
+    std::string why = SDL_GetError();
+    SDL_DestroyWindow(window_);
+    SDL_Quit();
+    throw std::runtime_error("cannot create a renderer for the window: " + why);
+  }
+  SDL_SetHint(SDL_HINT_RENDER_SCALE_QUALITY, "linear");
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;  // the explorer's settings live in config.toml, not imgui.ini
+  ImGui::StyleColorsDark();
+  ImGui_ImplSDL2_InitForSDLRenderer(window_);
+  ImGui_ImplSDLRenderer_Init(renderer_);
+  imgui_ready_ = true;
+  if (fullscreen) set_fullscreen(true);
+}
+
+Window::~Window() {
+  if (imgui_ready_) {
+    ImGui_ImplSDLRenderer_Shutdown();
+    ImGui_ImplSDL2_Shutdown();
+    ImGui::DestroyContext();
+  }
+  if (texture_) SDL_DestroyTexture(texture_);
+  if (renderer_) SDL_DestroyRenderer(renderer_);
+  if (window_) SDL_DestroyWindow(window_);
+  SDL_Quit();
+}
+
+int Window::width_px() const {
+  int w = 0, h = 0;
+  SDL_GetRendererOutputSize(renderer_, &w, &h);
+  return w;
+}
+
+int Window::height_px() const {
+  int w = 0, h = 0;
+  SDL_GetRendererOutputSize(renderer_, &w, &h);
+  return h;
+}
+
+void Window::set_fullscreen(bool on) {
+  SDL_SetWindowFullscreen(window_, on ? SDL_WINDOW_FULLSCREEN_DESKTOP : 0);
+  fullscreen_ = on;
+}
+
+void Window::set_mouse_capture(bool on) { SDL_SetRelativeMouseMode(on ? SDL_TRUE : SDL_FALSE); }
+
+void Window::poll(const KeyBindings& bindings, InputState& input) {
+  SDL_Event e;
+  while (SDL_PollEvent(&e)) {
+    ImGui_ImplSDL2_ProcessEvent(&e);
+    const bool overlay_keys = ImGui::GetIO().WantCaptureKeyboard;
+    const bool overlay_mouse = ImGui::GetIO().WantCaptureMouse && !SDL_GetRelativeMouseMode();
+    InputEvent ev;
+    switch (e.type) {
+      case SDL_QUIT: ev.type = InputEvent::Type::Quit; break;
+      case SDL_WINDOWEVENT:
+        if (e.window.event == SDL_WINDOWEVENT_CLOSE) ev.type = InputEvent::Type::Quit;
+        else if (e.window.event == SDL_WINDOWEVENT_SIZE_CHANGED) {
+          ev.type = InputEvent::Type::WindowResized;
+          ev.width = e.window.data1;
+          ev.height = e.window.data2;
+        } else continue;
+        break;
+      case SDL_KEYDOWN:
+      case SDL_KEYUP:
+        if (e.key.repeat || (overlay_keys && e.type == SDL_KEYDOWN)) continue;
+        ev.type = e.type == SDL_KEYDOWN ? InputEvent::Type::KeyDown : InputEvent::Type::KeyUp;
+        ev.key = SDL_GetKeyName(e.key.keysym.sym);
+        break;
+      case SDL_MOUSEMOTION:
+        if (overlay_mouse) continue;
+        ev.type = InputEvent::Type::MouseMotion;
+        ev.dx = e.motion.xrel;
+        ev.dy = e.motion.yrel;
+        break;
+      case SDL_MOUSEWHEEL:
+        if (overlay_mouse) continue;
+        ev.type = InputEvent::Type::MouseWheel;
+        ev.dy = e.wheel.y;
+        break;
+      default: continue;
+    }
+    apply_input_event(bindings, ev, input);
+  }
+}
+
+void Window::present(const FrameImage* image, const std::function<void()>& draw_overlay) {
+  if (image && !image->rgba8.empty()) {
+    if (!texture_ || texture_w_ != image->width_px || texture_h_ != image->height_px) {
+      if (texture_) SDL_DestroyTexture(texture_);
+      texture_ = SDL_CreateTexture(renderer_, SDL_PIXELFORMAT_ABGR8888, SDL_TEXTUREACCESS_STREAMING,
+                                   image->width_px, image->height_px);
+      texture_w_ = image->width_px;
+      texture_h_ = image->height_px;
+    }
+    SDL_UpdateTexture(texture_, nullptr, image->rgba8.data(), image->width_px * 4);
+  }
+  ImGui_ImplSDLRenderer_NewFrame();
+  ImGui_ImplSDL2_NewFrame();
+  ImGui::NewFrame();
+  if (draw_overlay) draw_overlay();
+  ImGui::Render();
+  SDL_SetRenderDrawColor(renderer_, 0, 0, 0, 255);
+  SDL_RenderClear(renderer_);
+  if (texture_) SDL_RenderCopy(renderer_, texture_, nullptr, nullptr);
+  ImGui_ImplSDLRenderer_RenderDrawData(ImGui::GetDrawData());
+  if (capture_) {
+    captured_w_ = width_px();
+    captured_h_ = height_px();
+    captured_.resize(static_cast<size_t>(captured_w_) * captured_h_ * 4);
+    SDL_RenderReadPixels(renderer_, nullptr, SDL_PIXELFORMAT_ABGR8888, captured_.data(), captured_w_ * 4);
+    capture_ = false;
+  }
+  SDL_RenderPresent(renderer_);
+}
+
+}  // namespace fr

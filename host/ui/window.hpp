@@ -1,0 +1,68 @@
+// window.hpp — the explorer's window: SDL2 window and renderer, a streaming texture that shows
+// the latest image scaled to the window, SDL events translated to InputEvents, and Dear ImGui
+// (SDL2 + SDL_Renderer backends) for the overlay. Owns all of SDL; nothing else includes it.
+#pragma once
+
+#include "app/input.hpp"
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+struct SDL_Window;
+struct SDL_Renderer;
+struct SDL_Texture;
+
+namespace fr {
+
+struct FrameImage;
+
+class Window {
+ public:
+  // Opens a resizable window; throws std::runtime_error (with SDL's reason) when there is no
+  // display or SDL cannot start.
+  Window(const std::string& title, int width_px, int height_px, bool fullscreen);
+  ~Window();
+  Window(const Window&) = delete;
+  Window& operator=(const Window&) = delete;
+
+  // Folds pending SDL events into `input` (key repeats ignored; keys typed into the overlay go to
+  // the overlay).
+  void poll(const KeyBindings& bindings, InputState& input);
+
+  // Uploads a new image (null: keep showing the last one), draws it over the whole window, then
+  // the overlay that `draw_overlay` builds with ImGui calls, and presents.
+  void present(const FrameImage* image, const std::function<void()>& draw_overlay);
+
+  void set_fullscreen(bool on);
+  bool fullscreen() const { return fullscreen_; }
+  void set_mouse_capture(bool on);
+  int width_px() const;
+  int height_px() const;
+
+  // Asks the next present() to keep a copy of what it draws (image and overlay), RGBA8, rows top
+  // to bottom, returned by captured().
+  void capture_next_frame() { capture_ = true; }
+  const std::vector<uint8_t>& captured(int* width_px, int* height_px) const {
+    *width_px = captured_w_;
+    *height_px = captured_h_;
+    return captured_;
+  }
+
+ private:
+  SDL_Window* window_ = nullptr;
+  SDL_Renderer* renderer_ = nullptr;
+  SDL_Texture* texture_ = nullptr;
+  int texture_w_ = 0, texture_h_ = 0;
+  bool fullscreen_ = false;
+  bool imgui_ready_ = false;
+  bool capture_ = false;
+  std::vector<uint8_t> captured_;
+  int captured_w_ = 0, captured_h_ = 0;
+};
+
+// True when a window can be opened here (a display server is reachable).
+bool display_available();
+
+}  // namespace fr

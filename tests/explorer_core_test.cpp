@@ -1,0 +1,195 @@
+// The explorer's parts without a window: input mapping, the camera controller, the frame-time
+// controller on a fake clock, the loop's order, and carrying parameters across a reload.
+#include "app/camera_controller.hpp"
+#include "app/frame_controller.hpp"
+#include "app/game_loop.hpp"
+#include "app/input.hpp"
+#include "app/scene_slot.hpp"
+
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+#include <cmath>
+
+namespace fr {
+namespace {
+
+InputEvent key(const char* name, bool down = true) {
+  InputEvent e;
+  e.type = down ? InputEvent::Type::KeyDown : InputEvent::Type::KeyUp;
+  e.key = name;
+  return e;
+}
+
+TEST(Input, BindingsMapKeysToActions) {
+  const KeyBindings b = KeyBindings::defaults();
+  InputState s;
+  apply_input_event(b, key("W"), s);
+  apply_input_event(b, key("Left Shift"), s);
+  apply_input_event(b, key("Tab"), s);
+  apply_input_event(b, key("Unbound Key"), s);
+  EXPECT_TRUE(s.is_held(Action::MoveForward));
+  EXPECT_TRUE(s.is_held(Action::SpeedUp));
+  EXPECT_TRUE(s.was_triggered(Action::NextScene));
+  EXPECT_FALSE(s.is_held(Action::NextScene)) << "one-shot actions are not held";
+  s.end_frame();
+  EXPECT_FALSE(s.was_triggered(Action::NextScene)) << "triggers last one frame";
+  EXPECT_TRUE(s.is_held(Action::MoveForward)) << "held keys stay held";
+  apply_input_event(b, key("W", false), s);
+  EXPECT_FALSE(s.is_held(Action::MoveForward));
+  apply_input_event(b, key("Escape"), s);
+  EXPECT_TRUE(s.quit);
+  EXPECT_EQ(b.keys_for(Action::MoveUp), (std::vector<std::string>{"E", "Space"}));
+  EXPECT_EQ(action_from_name("move_forward"), Action::MoveForward);
+  EXPECT_FALSE(action_from_name("fly_to_moon").has_value());
+}
+
+fr_camera looking_down_minus_z() {
+  fr_camera c{};
+  c.struct_size = sizeof c;
+  c.eye[2] = 10;
+  c.up[1] = 1;
+  c.fov_deg = 45;
+  return c;
+}
+
+TEST(CameraController, FlySpeedFollowsTheSurfaceDistance) {
+  InputState in;
+  in.held.insert(Action::MoveForward);
+  CameraControls controls;
+  fr_camera far = looking_down_minus_z(), near = looking_down_minus_z();
+  // 0.1 s at speed = 1 x distance: 0.5 units at distance 5, 0.001 at distance 0.01.
+  EXPECT_TRUE(update_camera(far, CameraMode::Fly, in, false, 0.1, 5.0, controls).moved);
+  update_camera(near, CameraMode::Fly, in, false, 0.1, 0.01, controls);
+  EXPECT_NEAR(far.eye[2], 10 - 0.5, 1e-12);
+  EXPECT_NEAR(near.eye[2], 10 - 0.001, 1e-12);
+  EXPECT_NEAR(far.target[2] - far.eye[2], -10, 1e-12) << "the target moves with the eye";
+}
+
+TEST(CameraController, NeverStepsThroughTheSurface) {
+  InputState in;
+  in.held.insert(Action::MoveForward);
+  in.held.insert(Action::SpeedUp);
+  CameraControls controls;
+  controls.speed_per_distance = 100;  // absurdly fast
+  fr_camera c = looking_down_minus_z();
+  update_camera(c, CameraMode::Fly, in, false, 1.0, 2.0, controls);
+  EXPECT_GE(c.eye[2], 10 - 0.9 * 2.0 - 1e-12);
+}
+
+TEST(CameraController, MouseLookYawsAndInvertY) {
+  InputState in;
+  in.look_dx = 100;  // 100 px at 0.15 deg/px: 15 degrees to the right
+  CameraControls controls;
+  fr_camera c = looking_down_minus_z();
+  update_camera(c, CameraMode::Fly, in, true, 0.016, 1.0, controls);
+  const glm::dvec3 forward = glm::normalize(glm::dvec3(c.target[0] - c.eye[0], c.target[1] - c.eye[1], c.target[2] - c.eye[2]));
+  EXPECT_NEAR(forward.x, std::sin(15 * M_PI / 180), 1e-9);
+  EXPECT_NEAR(forward.z, -std::cos(15 * M_PI / 180), 1e-9);
+  // Without mouse look the mouse does nothing.
+  fr_camera still = looking_down_minus_z();
+  EXPECT_FALSE(update_camera(still, CameraMode::Fly, in, false, 0.016, 1.0, controls).moved);
+  // Moving the mouse up looks up, or down with invert_y.
+  InputState up;
+  up.look_dy = -100;
+  fr_camera a = looking_down_minus_z(), b = looking_down_minus_z();
+  update_camera(a, CameraMode::Fly, up, true, 0.016, 1.0, controls);
+  controls.invert_y = true;
+  update_camera(b, CameraMode::Fly, up, true, 0.016, 1.0, controls);
+  EXPECT_GT(a.target[1], 0);
+  EXPECT_LT(b.target[1], 0);
+}
+
+TEST(CameraController, OrbitKeepsTheTarget) {
+  InputState in;
+  in.look_dx = 600;  // 90 degrees around
+  CameraControls controls;
+  fr_camera c = looking_down_minus_z();
+  update_camera(c, CameraMode::Orbit, in, true, 0.016, 5.0, controls);
+  EXPECT_NEAR(c.target[0], 0, 1e-12);
+  EXPECT_NEAR(c.target[2], 0, 1e-12);
+  EXPECT_NEAR(std::hypot(c.eye[0], c.eye[2]), 10, 1e-9);
+  EXPECT_NEAR(std::abs(c.eye[0]), 10, 1e-9);
+}
+
+// On a fake clock: frames slower than the target shrink the scale until they meet it; once still, the
+// controller goes to full resolution and counts samples up to full quality, then stops.
+TEST(FrameController, HoldsTheTargetThenRefines) {
+  FrameControllerSettings s;
+  s.target_frame_ms = 40;
+  s.full_quality_samples = 4;
+  FrameController fc(s);
+  double scale = fc.scale();
+  for (int i = 0; i < 10; ++i) {
+    const FramePlan p = fc.plan(true);
+    EXPECT_EQ(p.sample_index, 0);
+    // Render time proportional to pixels: 320 ms at full scale.
+    fc.report(320 * p.resolution_scale * p.resolution_scale);
+  }
+  EXPECT_LT(fc.scale(), scale);
+  EXPECT_NEAR(fc.scale(), std::sqrt(40.0 / 320), 0.02) << "320 ms x scale^2 = 40 ms, the target";
+  for (int i = 0; i < 4; ++i) {
+    const FramePlan p = fc.plan(false);
+    EXPECT_EQ(p.resolution_scale, 1);
+    EXPECT_EQ(p.sample_index, i);
+    EXPECT_FALSE(p.done);
+  }
+  EXPECT_TRUE(fc.plan(false).done);
+  EXPECT_EQ(fc.plan(true).sample_index, 0) << "a change restarts";
+}
+
+TEST(GameLoop, PollUpdateRenderInOrderOnAFakeClock) {
+  std::vector<std::string> order;
+  double clock = 100;
+  std::vector<double> dts;
+  int polls = 0;
+  LoopSteps steps;
+  steps.now_s = [&] { return clock; };
+  steps.poll = [&](InputState& in) {
+    order.push_back("poll");
+    if (++polls == 4) in.quit = true;
+  };
+  steps.update = [&](const InputState&, double dt) {
+    order.push_back("update");
+    dts.push_back(dt);
+  };
+  steps.render = [&] {
+    order.push_back("render");
+    clock += 0.025;
+  };
+  EXPECT_EQ(run_game_loop(steps), 3);
+  EXPECT_EQ(order, (std::vector<std::string>{"poll", "update", "render", "poll", "update", "render", "poll",
+                                             "update", "render", "poll"}));
+  ASSERT_EQ(dts.size(), 3u);
+  EXPECT_DOUBLE_EQ(dts[0], 0);
+  EXPECT_NEAR(dts[1], 0.025, 1e-12);
+  EXPECT_NEAR(dts[2], 0.025, 1e-12);
+}
+
+TEST(Reload, ParametersCarryOverByKey) {
+  auto param = [](const char* key, fr_param_type type, double def, double lo, double hi) {
+    ParamInfo p;
+    p.key = key;
+    p.type = type;
+    p.default_value.v[0] = def;
+    p.min_value.v[0] = lo;
+    p.max_value.v[0] = hi;
+    return p;
+  };
+  SceneInfo old_info, new_info;
+  old_info.params = {param("power", FR_PARAM_FLOAT, 8, 2, 16), param("gone", FR_PARAM_INT, 1, 0, 9),
+                     param("bailout", FR_PARAM_FLOAT, 2, 1, 64)};
+  new_info.params = {param("bailout", FR_PARAM_FLOAT, 2, 1, 12), param("fresh", FR_PARAM_FLOAT, 0.5, 0, 1),
+                     param("power", FR_PARAM_FLOAT, 8, 2, 16)};
+  const std::vector<fr_value> old_values = {{{11, 0, 0}}, {{7, 0, 0}}, {{40, 0, 0}}};
+  const auto v = rebind_params(old_info, old_values, new_info);
+  ASSERT_EQ(v.size(), 3u);
+  EXPECT_EQ(v[0].v[0], 12) << "out of the new range: clamped";
+  EXPECT_EQ(v[1].v[0], 0.5) << "new key: its default";
+  EXPECT_EQ(v[2].v[0], 11) << "same key: kept";
+}
+
+}  // namespace
+}  // namespace fr
