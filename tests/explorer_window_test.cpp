@@ -1,0 +1,187 @@
+// The explorer in a real window, under Xvfb (CTest runs this through xvfb-run): the window shows
+// the scene (not blank, and the same as a headless render of the same view), scripted keys and
+// mouse move the camera, a scene switch changes the image, a screenshot is written, and quitting
+// ends the loop with exit code 0.
+#include "app/explorer.hpp"
+#include "app/game_loop.hpp"
+#include "cli/cli.hpp"
+#include "test_support.hpp"
+#include "image/png_write.hpp"
+#include "ui/overlay.hpp"
+#include "ui/window.hpp"
+
+#include <SDL.h>
+#include <stb_image.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace fr {
+namespace {
+
+constexpr int kW = 640, kH = 400;
+
+void push_key(SDL_Keycode key, bool down) {
+  SDL_Event e{};
+  e.type = down ? SDL_KEYDOWN : SDL_KEYUP;
+  e.key.keysym.sym = key;
+  e.key.state = down ? SDL_PRESSED : SDL_RELEASED;
+  SDL_PushEvent(&e);
+}
+
+class ExplorerWindow : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ASSERT_TRUE(display_available()) << "run under xvfb-run";
+    window = std::make_unique<Window>("Fractalis test", kW, kH, false);
+    library = std::make_unique<SceneLibrary>(std::vector<std::filesystem::path>{SCENE_PLUGIN_DIR}, test::runtime(),
+                                             &messages);
+    explorer = std::make_unique<Explorer>(Settings{}, test::runtime(), *library, "mandelbulb");
+  }
+  // One frame of the loop: poll, update (scene time fixed at 0), render, present.
+  void frame(InputState& input, bool capture = false) {
+    window->poll(KeyBindings::defaults(), input);
+    explorer->update(input, 1.0 / 30, 0.0);
+    const FrameImage* img = explorer->render(window->width_px(), window->height_px());
+    if (capture) window->capture_next_frame();
+    window->present(img, {});
+    input.end_frame();
+  }
+  // Frames until the image is refined to full quality; returns what the window shows.
+  std::vector<uint8_t> settle() {
+    InputState input;
+    for (int i = 0; i < 60 && !explorer->stats().refined; ++i) frame(input);
+    frame(input, true);
+    int w = 0, h = 0;
+    return window->captured(&w, &h);
+  }
+  std::vector<std::string> messages;
+  std::unique_ptr<Window> window;
+  std::unique_ptr<SceneLibrary> library;
+  std::unique_ptr<Explorer> explorer;
+};
+
+double luminance_spread(const std::vector<uint8_t>& rgba) {
+  double sum = 0, sum2 = 0;
+  const size_t n = rgba.size() / 4;
+  for (size_t i = 0; i < n; ++i) {
+    const double y = 0.25 * rgba[4 * i] + 0.5 * rgba[4 * i + 1] + 0.25 * rgba[4 * i + 2];
+    sum += y;
+    sum2 += y * y;
+  }
+  return std::sqrt(std::max(0.0, sum2 / n - (sum / n) * (sum / n)));
+}
+
+TEST_F(ExplorerWindow, ShowsTheSceneAsAHeadlessRenderDoes) {
+  ASSERT_EQ(window->width_px(), kW);
+  const auto shown = settle();
+  ASSERT_EQ(shown.size(), size_t{kW} * kH * 4);
+  EXPECT_TRUE(explorer->stats().refined);
+  EXPECT_GT(luminance_spread(shown), 10) << "the window is blank";
+
+  RenderSettings s = explorer->render_settings();
+  s.width_px = kW;
+  s.height_px = kH;
+  s.samples = FrameControllerSettings{}.full_quality_samples;
+  const FrameImage reference = Renderer(test::runtime()).render(explorer->current().scene->info,
+                                                                explorer->current().state, s);
+  size_t differing = 0;
+  for (size_t i = 0; i < shown.size(); i += 4)
+    for (int c = 0; c < 3; ++c)
+      if (std::abs(int(shown[i + c]) - int(reference.rgba8[i + c])) > 2) {
+        ++differing;
+        break;
+      }
+  EXPECT_LE(differing, shown.size() / 4 / 100) << "more than 1% of pixels differ from the headless render";
+}
+
+TEST_F(ExplorerWindow, KeysAndMouseMoveTheCamera) {
+  InputState input;
+  frame(input);
+  const fr_camera before = explorer->current().state.camera;
+  push_key(SDLK_w, true);
+  for (int i = 0; i < 5; ++i) frame(input);
+  push_key(SDLK_w, false);
+  frame(input);
+  const fr_camera after = explorer->current().state.camera;
+  EXPECT_LT(std::hypot(after.eye[0], after.eye[1], after.eye[2]), std::hypot(before.eye[0], before.eye[1], before.eye[2]))
+      << "W flies forward, towards the bulb";
+
+  // Mouse look: M captures the pointer, then motion turns the view.
+  push_key(SDLK_m, true);
+  push_key(SDLK_m, false);
+  frame(input);
+  EXPECT_TRUE(explorer->mouse_look());
+  const fr_camera still = explorer->current().state.camera;
+  SDL_Event motion{};
+  motion.type = SDL_MOUSEMOTION;
+  motion.motion.xrel = 80;
+  SDL_PushEvent(&motion);
+  frame(input);
+  const fr_camera turned = explorer->current().state.camera;
+  EXPECT_NE(still.target[0] - still.eye[0], turned.target[0] - turned.eye[0]);
+  EXPECT_EQ(still.eye[0], turned.eye[0]) << "looking does not move the eye";
+}
+
+TEST_F(ExplorerWindow, SceneSwitchChangesTheImageAndKeepsState) {
+  const auto bulb = settle();
+  const int first = explorer->current_index();
+  explorer->current().state.params[explorer->current().scene->info.find_param("power")].v[0] = 5;
+  push_key(SDLK_TAB, true);
+  push_key(SDLK_TAB, false);
+  InputState input;
+  frame(input);
+  EXPECT_NE(explorer->current_index(), first);
+  const auto other = settle();
+  EXPECT_NE(bulb, other);
+  explorer->select_scene(first);
+  EXPECT_EQ(explorer->current().state.params[explorer->current().scene->info.find_param("power")].v[0], 5)
+      << "switching back keeps the scene's values";
+}
+
+// The overlay draws over the image; the capture is kept in the build folder to look at.
+TEST_F(ExplorerWindow, OverlayDraws) {
+  const auto plain = settle();
+  OverlayState overlay;
+  window->capture_next_frame();
+  window->present(nullptr, [&] { draw_overlay(*explorer, overlay); });
+  int w = 0, h = 0;
+  const auto with_overlay = window->captured(&w, &h);
+  EXPECT_NE(plain, with_overlay);
+  std::string error;
+  EXPECT_TRUE(write_png_atomic(std::filesystem::path(TEST_OUTPUT_DIR) / "explorer_window.png", w, h, with_overlay, &error));
+}
+
+TEST_F(ExplorerWindow, ScreenshotIsWritten) {
+  const auto file = test::fresh_dir("explorer_screenshot") / "shot.png";
+  std::string error;
+  ASSERT_TRUE(explorer->screenshot(file, 96, 54, &error)) << error;
+  int w = 0, h = 0, n = 0;
+  unsigned char* pixels = stbi_load(file.c_str(), &w, &h, &n, 4);
+  ASSERT_NE(pixels, nullptr);
+  EXPECT_EQ(w, 96);
+  EXPECT_EQ(h, 54);
+  stbi_image_free(pixels);
+}
+
+TEST_F(ExplorerWindow, QuitEndsTheLoop) {
+  SDL_Event quit{};
+  quit.type = SDL_QUIT;
+  SDL_PushEvent(&quit);
+  LoopSteps steps;
+  steps.now_s = [] { return 0.0; };
+  steps.poll = [&](InputState& in) { window->poll(KeyBindings::defaults(), in); };
+  steps.update = [&](const InputState& in, double dt) { explorer->update(in, dt, 0); };
+  steps.render = [&] { window->present(explorer->render(kW, kH), {}); };
+  EXPECT_EQ(run_game_loop(steps, 100), 0) << "the quit event ends the loop before any frame";
+}
+
+}  // namespace
+}  // namespace fr
+
+// The whole command, as a user runs it: exits with code 0.
+TEST(ExploreCommand, RunsAndExitsCleanly) {
+  std::ostringstream out, err;
+  EXPECT_EQ(fr::run_cli({"explore", "--frames", "5", "--size", "160x90"}, out, err), 0) << err.str();
+  EXPECT_NE(out.str().find("explored for 5 frames"), std::string::npos);
+}
