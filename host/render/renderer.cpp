@@ -39,7 +39,10 @@ int Renderer::lanes_for(const RenderSettings& s) const {
 }
 
 void Renderer::ensure_buffers(size_t n) {
-  if (n == buffer_pixels_) return;
+  frame_pixels_ = n;
+  // Grow only: the explorer changes the resolution scale every frame, and reallocating (and
+  // faulting in) the buffers each time cost up to 100 ms a frame on PoCL.
+  if (n <= buffer_pixels_) return;
   cl_context ctx = runtime_.context();
   const size_t padded = round_up_div(n, 4) * 4;  // the post kernel works on whole quads
   hdr_ = make_buffer(ctx, CL_MEM_READ_WRITE, padded * 4 * sizeof(float), "the HDR image");
@@ -107,7 +110,7 @@ FrameImage Renderer::finish(const RenderSettings& settings, bool read_linear) {
   static const std::string post_source = std::string(kernel_source("post.cl"));
   cl_kernel post =
       runtime_.kernel(runtime_.program(post_source, "-cl-std=CL1.2", "post-processing"), "fr_post");
-  const size_t n = buffer_pixels_;
+  const size_t n = frame_pixels_;
   cl_command_queue q = runtime_.queue();
   const cl_mem hdr = hdr_.get(), out8 = rgba8_.get();
   const cl_float exposure = settings.exposure;
@@ -116,8 +119,12 @@ FrameImage Renderer::finish(const RenderSettings& settings, bool read_linear) {
   set_arg(post, 1, out8);
   set_arg(post, 2, exposure);
   set_arg(post, 3, quad_count);
-  const size_t post_global = round_up_div(n, 4);  // four pixels per work-item
-  cl_check(clEnqueueNDRangeKernel(q, post, 1, nullptr, &post_global, nullptr, 0, nullptr, nullptr),
+  // Four pixels per work-item, in groups of a fixed size: left to itself PoCL picks a group size
+  // from the global size and compiles a variant for each new one, which cost ~100 ms whenever
+  // the explorer changed its resolution scale.
+  const size_t post_local = 64;
+  const size_t post_global = round_up_div(round_up_div(n, 4), post_local) * post_local;
+  cl_check(clEnqueueNDRangeKernel(q, post, 1, nullptr, &post_global, &post_local, 0, nullptr, nullptr),
            "clEnqueueNDRangeKernel", "post-processing");
 
   FrameImage img;

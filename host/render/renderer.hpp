@@ -47,7 +47,8 @@ class Renderer {
   void ensure_buffers(size_t pixel_count);
 
   ClRuntime& runtime_;
-  size_t buffer_pixels_ = 0;
+  size_t buffer_pixels_ = 0;  // capacity of the buffers
+  size_t frame_pixels_ = 0;   // pixels of the frame being rendered
   int last_lanes_ = 0;
   ClBufferHandle constants_, params_, hdr_, depth_, steps_, factors_, rgba8_;
   size_t params_bytes_ = 0;

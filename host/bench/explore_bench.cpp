@@ -1,0 +1,47 @@
+#include "bench/explore_bench.hpp"
+
+#include <chrono>
+#include <cmath>
+
+namespace fr {
+
+ExploreBenchResult run_explore_bench(Explorer& explorer, int w, int h, int moving_frames) {
+  using clock = std::chrono::steady_clock;
+  const auto origin = clock::now();
+  auto now_s = [&] { return std::chrono::duration<double>(clock::now() - origin).count(); };
+  ExploreBenchResult result;
+  explorer.set_mouse_look(true);
+  InputState input;
+  input.held.insert(Action::MoveForward);
+  std::vector<double> frame_ms;
+  double scale_sum = 0;
+  double last = now_s();
+  for (int i = 0; i < moving_frames; ++i) {
+    // Weaving left and right while flying forward keeps the scene in view.
+    input.look_dx = 6 * std::sin(2 * M_PI * i / 60.0);
+    const double start = now_s();
+    explorer.update(input, start - last, start);
+    last = start;
+    explorer.render(w, h);
+    frame_ms.push_back((now_s() - start) * 1000);
+    scale_sum += explorer.stats().resolution_scale;
+    input.end_frame();
+  }
+  result.moving = summarize_frames(frame_ms);
+  result.mean_resolution_scale = scale_sum / moving_frames;
+
+  InputState still;
+  const double stopped = now_s();
+  while (true) {
+    const double t = now_s();
+    explorer.update(still, t - last, t);
+    last = t;
+    const bool rendered = explorer.render(w, h) != nullptr;
+    if (!rendered && explorer.stats().refined) break;
+    ++result.refine_frames;
+  }
+  result.seconds_to_full_quality = now_s() - stopped;
+  return result;
+}
+
+}  // namespace fr

@@ -1,0 +1,24 @@
+// explore_bench.hpp — the explorer's interactivity measured: a scripted fly-through (a fixed
+// path of key presses and mouse turns) at a given window size, frames timed while moving, then
+// the time from stopping until the image reaches full quality. Headless: everything the
+// explorer does per frame except drawing to a window.
+#pragma once
+
+#include "app/explorer.hpp"
+#include "bench/frame_stats.hpp"
+
+namespace fr {
+
+struct ExploreBenchResult {
+  FrameStats moving;              // frames while the camera moves
+  double mean_resolution_scale = 0;
+  double seconds_to_full_quality = 0;  // after the camera stops
+  int refine_frames = 0;
+};
+
+// Flies for `moving_frames` frames (forward, weaving left and right), then stops and renders until the
+// frame controller reports full quality.
+ExploreBenchResult run_explore_bench(Explorer& explorer, int window_width_px, int window_height_px,
+                                     int moving_frames);
+
+}  // namespace fr
