@@ -130,3 +130,53 @@ TEST(Settings, CommandLineOverride) {
 
 }  // namespace
 }  // namespace fr
+
+namespace fr {
+namespace {
+
+// What the explorer writes back reads back to the same settings.
+TEST(Settings, WrittenSettingsReadBack) {
+  Settings s;
+  s.plugin_folders = {"/opt/scenes", "/tmp/with \"quote\""};
+  s.device = "cpu";
+  s.render.shading = ShadingModel::OrenNayar;
+  s.render.samples = 6;
+  s.render.disabled_stages = FR_FEATURE_FOG | FR_FEATURE_GLOW;
+  s.render.exposure = 1.5f;
+  s.explorer.window_width_px = 1920;
+  s.explorer.fullscreen = true;
+  s.explorer.full_quality_samples = 32;
+  s.explorer.invert_y = true;
+  s.explorer.key_bindings = {{"Up", "move_forward"}};
+  const auto file = std::filesystem::path(TEST_OUTPUT_DIR) / "written.toml";
+  std::ofstream(file) << format_settings_toml(s);
+  Settings back;
+  const auto problems = load_settings_file(file, back);
+  ASSERT_TRUE(problems.empty()) << problems.front().to_string();
+  EXPECT_EQ(back.plugin_folders, s.plugin_folders);
+  EXPECT_EQ(back.device, "cpu");
+  EXPECT_EQ(back.render.shading, ShadingModel::OrenNayar);
+  EXPECT_EQ(back.render.samples, 6);
+  EXPECT_EQ(back.render.disabled_stages, s.render.disabled_stages);
+  EXPECT_EQ(back.render.exposure, 1.5f);
+  EXPECT_EQ(back.explorer.window_width_px, 1920);
+  EXPECT_TRUE(back.explorer.fullscreen);
+  EXPECT_EQ(back.explorer.full_quality_samples, 32);
+  EXPECT_TRUE(back.explorer.invert_y);
+  EXPECT_EQ(back.explorer.key_bindings, s.explorer.key_bindings);
+}
+
+TEST(Settings, KeyBindingProblems) {
+  Settings s;
+  auto file = write_file("keys.toml", "[controls.keys]\nfly_to_moon = \"M\"\nquit = 3\nmove_up = \"Page Up\"\n");
+  auto problems = load_settings_file(file, s);
+  ASSERT_EQ(problems.size(), 2u);
+  EXPECT_EQ(problems[0].key, "controls.keys.fly_to_moon");
+  EXPECT_EQ(problems[0].line, 2);
+  EXPECT_NE(problems[0].message.find("unknown action"), std::string::npos);
+  EXPECT_EQ(problems[1].key, "controls.keys.quit");
+  EXPECT_EQ(s.explorer.key_bindings.at("Page Up"), "move_up");
+}
+
+}  // namespace
+}  // namespace fr

@@ -19,7 +19,14 @@ bool same_state(const SceneState& a, const SceneState& b) {
 }  // namespace
 
 Explorer::Explorer(const Settings& settings, ClRuntime& runtime, SceneLibrary& library, const std::string& scene_id)
-    : runtime_(runtime), library_(library), renderer_(runtime), render_(settings.render) {
+    : runtime_(runtime), library_(library), renderer_(runtime), settings_(settings) {
+  controls_.mouse_sensitivity_deg_per_px = settings.explorer.mouse_sensitivity_deg_per_px;
+  controls_.invert_y = settings.explorer.invert_y;
+  controls_.speed_per_distance = settings.explorer.speed;
+  FrameControllerSettings frame;
+  frame.target_frame_ms = 1000.0 / settings.explorer.target_fps;
+  frame.full_quality_samples = settings.explorer.full_quality_samples;
+  frames_ = FrameController(frame);
   if (library_.slots().empty()) throw std::runtime_error("no scene could be loaded");
   const int index = library_.find(scene_id);
   current_ = index >= 0 ? index : 0;
@@ -59,7 +66,7 @@ bool Explorer::update(const InputState& input, double dt_s, double now_s) {
     }
   }
   if (input.resized) changed_ = true;
-  for (std::string& m : library_.poll(now_s, render_)) {
+  for (std::string& m : library_.poll(now_s, settings_.render)) {
     if (m.rfind("reloaded '" + current().scene->info.id + "'", 0) == 0) changed_ = true;
     add_message(std::move(m));
   }
@@ -93,7 +100,7 @@ const FrameImage* Explorer::render(int window_width_px, int window_height_px) {
   stats_.sample_index = plan.sample_index;
   stats_.refined = plan.done;
   if (plan.done) return nullptr;
-  RenderSettings s = render_;
+  RenderSettings s = settings_.render;
   s.width_px = std::max(1, static_cast<int>(std::lround(window_width_px * plan.resolution_scale)));
   s.height_px = std::max(1, static_cast<int>(std::lround(window_height_px * plan.resolution_scale)));
   SceneSlot& slot = current();
@@ -117,7 +124,7 @@ const FrameImage* Explorer::render(int window_width_px, int window_height_px) {
 }
 
 bool Explorer::screenshot(const std::filesystem::path& file, int width_px, int height_px, std::string* error) {
-  RenderSettings s = render_;
+  RenderSettings s = settings_.render;
   s.width_px = width_px;
   s.height_px = height_px;
   s.samples = frames_.settings().full_quality_samples;

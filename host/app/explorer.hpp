@@ -44,7 +44,8 @@ class Explorer {
   int current_index() const { return current_; }
   SceneSlot& current() { return library_.slots()[current_]; }
   SceneLibrary& library() { return library_; }
-  RenderSettings& render_settings() { return render_; }
+  RenderSettings& render_settings() { return settings_.render; }
+  Settings& settings() { return settings_; }
   CameraMode camera_mode() const { return mode_; }
   void set_camera_mode(CameraMode m) { mode_ = m; }
   bool mouse_look() const { return mouse_look_; }
@@ -61,7 +62,7 @@ class Explorer {
   ClRuntime& runtime_;
   SceneLibrary& library_;
   Renderer renderer_;
-  RenderSettings render_;
+  Settings settings_;
   CameraControls controls_;
   FrameController frames_;
   CameraMode mode_ = CameraMode::Fly;

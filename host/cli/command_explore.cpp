@@ -27,7 +27,14 @@ int command_explore(const std::vector<std::string>& args, std::ostream& out, std
     return 0;
   }
   const long max_frames = options.has("frames") ? parse_integer("--frames", *options.get("frames"), 1, 1L << 40) : -1;
-  Settings settings = load_settings(options);
+  // A bad settings file does not stop the explorer: wrong values keep their defaults and the
+  // problems are shown (here and in the overlay).
+  std::vector<SettingsProblem> problems;
+  Settings settings = load_settings(options, &problems);
+  for (const auto& p : problems) err << "fractalis: warning: " << p.to_string() << "\n";
+  if (!options.has("size"))
+    options.values["size"] = {std::to_string(settings.explorer.window_width_px) + "x" +
+                              std::to_string(settings.explorer.window_height_px)};
   RenderSettings render = render_settings_from(settings, options);
   settings.render = render;
   const auto folders = plugin_folders(settings, options);
@@ -41,12 +48,17 @@ int command_explore(const std::vector<std::string>& args, std::ostream& out, std
   for (const auto& m : load_messages) err << "fractalis: warning: " << m << "\n";
   Explorer explorer(settings, runtime, library, options.get("scene").value_or("mandelbulb"));
   for (const auto& m : load_messages) explorer.add_message(m);
+  for (const auto& p : problems) explorer.add_message(p.to_string());
   if (options.has("param") || options.has("eye") || options.has("target") || options.has("fov"))
     apply_scene_overrides(explorer.current().scene->info, options, explorer.current().state);
 
-  Window window("Fractalis", render.width_px, render.height_px, options.has("fullscreen"));
+  Window window("Fractalis", render.width_px, render.height_px,
+                options.has("fullscreen") || settings.explorer.fullscreen);
   OverlayState overlay;
-  const KeyBindings bindings = KeyBindings::defaults();
+  overlay.settings_file = user_settings_path();
+  KeyBindings bindings = KeyBindings::defaults();
+  for (const auto& [key, action_name] : settings.explorer.key_bindings)
+    if (auto action = action_from_name(action_name)) bindings.keys[key] = *action;
   using clock = std::chrono::steady_clock;
   const auto start = clock::now();
   auto now_s = [&] { return std::chrono::duration<double>(clock::now() - start).count(); };

@@ -35,7 +35,7 @@ std::vector<OptionSpec> scene_option_specs() {
   return specs;
 }
 
-Settings load_settings(const ParsedOptions& options) {
+Settings load_settings(const ParsedOptions& options, std::vector<SettingsProblem>* collected) {
   Settings settings;
   std::optional<std::filesystem::path> file;
   if (auto given = options.get("config")) {
@@ -46,8 +46,12 @@ Settings load_settings(const ParsedOptions& options) {
   } else {
     file = user_settings_file();
   }
-  auto report = [](const std::vector<SettingsProblem>& problems) {
+  auto report = [&](const std::vector<SettingsProblem>& problems) {
     if (problems.empty()) return;
+    if (collected) {
+      collected->insert(collected->end(), problems.begin(), problems.end());
+      return;
+    }
     std::string message = problems.front().to_string();
     if (problems.size() > 1) message += " (and " + std::to_string(problems.size() - 1) + " more)";
     throw UsageError(message);

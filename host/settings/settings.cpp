@@ -166,6 +166,46 @@ const std::vector<Key>& known_keys() {
        [](const toml::node& n, Settings& s) { return set_effect(n, s, FR_FEATURE_REFLECTIONS); }},
       {"render.effects.dof",
        [](const toml::node& n, Settings& s) { return set_effect(n, s, kStageDepthOfField); }},
+      {"window.width", [](const toml::node& n, Settings& s) { return set_int(n, s.explorer.window_width_px, 64, 16384); }},
+      {"window.height", [](const toml::node& n, Settings& s) { return set_int(n, s.explorer.window_height_px, 64, 16384); }},
+      {"window.fullscreen",
+       [](const toml::node& n, Settings& s) -> std::string {
+         if (!n.is_boolean()) return "expected true or false";
+         s.explorer.fullscreen = *n.value<bool>();
+         return "";
+       }},
+      {"explorer.target_fps",
+       [](const toml::node& n, Settings& s) {
+         float v = static_cast<float>(s.explorer.target_fps);
+         std::string e = set_float(n, v, 1, 240);
+         if (e.empty()) s.explorer.target_fps = v;
+         return e;
+       }},
+      {"explorer.quality",
+       [](const toml::node& n, Settings& s) {
+         return set_choice(n, s.explorer.full_quality_samples, {{"fast", 2}, {"balanced", 8}, {"high", 32}});
+       }},
+      {"controls.mouse_sensitivity",
+       [](const toml::node& n, Settings& s) {
+         float v = static_cast<float>(s.explorer.mouse_sensitivity_deg_per_px);
+         std::string e = set_float(n, v, 0, 10, true);
+         if (e.empty()) s.explorer.mouse_sensitivity_deg_per_px = v;
+         return e;
+       }},
+      {"controls.invert_y",
+       [](const toml::node& n, Settings& s) -> std::string {
+         if (!n.is_boolean()) return "expected true or false";
+         s.explorer.invert_y = *n.value<bool>();
+         return "";
+       }},
+      {"controls.speed",
+       [](const toml::node& n, Settings& s) {
+         float v = static_cast<float>(s.explorer.speed);
+         std::string e = set_float(n, v, 0, 100, true);
+         if (e.empty()) s.explorer.speed = v;
+         return e;
+       }},
+      // controls.keys is a table of action = "key name"; apply_key_bindings checks it.
   };
   return keys;
 }
@@ -182,7 +222,38 @@ size_t edit_distance(const std::string& a, const std::string& b) {
   return prev[b.size()];
 }
 
+// The explorer's actions that keys can be bound to (app/input.cpp implements them).
+const char* const kActionNames[] = {"move_forward", "move_back", "move_left", "move_right", "move_up",
+                                    "move_down", "speed_up", "mouse_look", "camera_mode", "overlay",
+                                    "fullscreen", "next_scene", "previous_scene", "screenshot", "quit"};
+
+void apply_key_bindings(const toml::node& node, const std::string& file, Settings& s,
+                        std::vector<SettingsProblem>& problems) {
+  const auto* table = node.as_table();
+  if (!table) {
+    problems.push_back({file, static_cast<int>(node.source().begin.line), "controls.keys",
+                        "expected a table of action = \"key name\""});
+    return;
+  }
+  for (const auto& [action, value] : *table) {
+    const std::string key = "controls.keys." + std::string(action.str());
+    const int line = static_cast<int>(value.source().begin.line);
+    const bool known = std::any_of(std::begin(kActionNames), std::end(kActionNames),
+                                   [&](const char* a) { return action.str() == a; });
+    if (!known) {
+      std::string names;
+      for (const char* a : kActionNames) names += (names.empty() ? "" : ", ") + std::string(a);
+      problems.push_back({file, line, key, "unknown action (expected one of " + names + ")"});
+    } else if (!value.is_string() || value.as_string()->get().empty()) {
+      problems.push_back({file, line, key, "expected a key name such as \"W\" or \"Left Shift\""});
+    } else {
+      s.explorer.key_bindings[value.as_string()->get()] = std::string(action.str());
+    }
+  }
+}
+
 bool is_key_prefix(const std::string& prefix) {
+  if (prefix == "controls") return true;
   return std::any_of(known_keys().begin(), known_keys().end(),
                      [&](const Key& k) { return std::string(k.name).rfind(prefix + ".", 0) == 0; });
 }
@@ -194,6 +265,10 @@ void apply_table(const toml::table& table, const std::string& prefix, const std:
     const std::string key =
         prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str());
     const int line = static_cast<int>(node.source().begin.line);
+    if (key == "controls.keys") {
+      apply_key_bindings(node, file, s, problems);
+      continue;
+    }
     if (const auto* sub = node.as_table(); sub && is_key_prefix(key)) {
       apply_table(*sub, key, file, s, problems);
       continue;
@@ -245,21 +320,63 @@ std::string nearest_known_key(const std::string& key) {
   return best;
 }
 
+std::string format_settings_toml(const Settings& s) {
+  auto choice = [](int v, std::initializer_list<const char*> names) { return "\"" + std::string(*(names.begin() + v)) + "\""; };
+  auto on = [&](fr_features f) { return (s.render.disabled_stages & f) ? "false" : "true"; };
+  std::ostringstream out;
+  out << "# Fractalis settings, written by the explorer. See config/default.toml for every key.\n\n";
+  out << "[plugins]\nfolders = [";
+  for (size_t i = 0; i < s.plugin_folders.size(); ++i)
+    out << (i ? ", " : "") << toml::value<std::string>(s.plugin_folders[i].string());
+  out << "]\n\n[device]\nselect = " << toml::value<std::string>(s.device) << "\n\n";
+  const RenderSettings& r = s.render;
+  out << "[render]\nlanes = " << r.lanes << "\nprecision = " << (r.precision == Precision::Double ? "\"double\"" : "\"float\"")
+      << "\nsamples = " << r.samples << "\nmax_steps = " << r.max_steps << "\nmax_bounces = " << r.max_bounces
+      << "\nhit_threshold_k = " << r.hit_threshold_k << "\nexposure = " << r.exposure << "\nao_strength = " << r.ao_strength
+      << "\nroughness = " << r.roughness << "\nreflectivity = " << r.reflectivity << "\naperture = " << r.aperture_radius
+      << "\nfocus_distance = " << r.focus_distance
+      << "\nshading_model = " << choice(static_cast<int>(r.shading), {"lambert", "blinn-phong", "oren-nayar"})
+      << "\nnormal_method = " << choice(static_cast<int>(r.normals), {"tetrahedron", "central"})
+      << "\nao_method = " << choice(static_cast<int>(r.ao_method), {"step-count", "sampled"})
+      << "\nshadow_method = " << choice(static_cast<int>(r.shadow_method), {"hard", "soft"})
+      << "\nfog_method = " << choice(static_cast<int>(r.fog_method), {"power", "exponential"}) << "\n\n";
+  out << "[render.effects]\nshadows = " << on(FR_FEATURE_SHADOWS) << "\nao = " << on(FR_FEATURE_AO)
+      << "\nglow = " << on(FR_FEATURE_GLOW) << "\nfog = " << on(FR_FEATURE_FOG) << "\nreflections = "
+      << on(FR_FEATURE_REFLECTIONS) << "\ndof = " << on(kStageDepthOfField) << "\n\n";
+  const ExplorerSettings& e = s.explorer;
+  out << "[window]\nwidth = " << e.window_width_px << "\nheight = " << e.window_height_px
+      << "\nfullscreen = " << (e.fullscreen ? "true" : "false") << "\n\n";
+  const char* quality = e.full_quality_samples <= 2 ? "fast" : e.full_quality_samples <= 8 ? "balanced" : "high";
+  out << "[explorer]\ntarget_fps = " << e.target_fps << "\nquality = \"" << quality << "\"\n\n";
+  out << "[controls]\nmouse_sensitivity = " << e.mouse_sensitivity_deg_per_px << "\ninvert_y = "
+      << (e.invert_y ? "true" : "false") << "\nspeed = " << e.speed << "\n";
+  if (!e.key_bindings.empty()) {
+    out << "\n[controls.keys]\n";
+    for (const auto& [key, action] : e.key_bindings) out << action << " = " << toml::value<std::string>(key) << "\n";
+  }
+  return out.str();
+}
+
 std::vector<std::string> known_setting_keys() {
   std::vector<std::string> names;
   for (const Key& k : known_keys()) names.emplace_back(k.name);
   return names;
 }
 
-std::optional<std::filesystem::path> user_settings_file() {
+std::filesystem::path user_settings_path() {
   std::filesystem::path base;
   if (const char* xdg = std::getenv("XDG_CONFIG_HOME"); xdg && *xdg)
     base = xdg;
   else if (const char* home = std::getenv("HOME"); home && *home)
     base = std::filesystem::path(home) / ".config";
   else
-    return std::nullopt;
-  auto file = base / "fractalis" / "config.toml";
+    return {};
+  return base / "fractalis" / "config.toml";
+}
+
+std::optional<std::filesystem::path> user_settings_file() {
+  const auto file = user_settings_path();
+  if (file.empty()) return std::nullopt;
   std::error_code ec;
   if (std::filesystem::is_regular_file(file, ec)) return file;
   return std::nullopt;

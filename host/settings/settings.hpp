@@ -7,16 +7,31 @@
 #include "render/render_settings.hpp"
 
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace fr {
 
+// The explorer's own settings: window, frame rate and quality, controls and key bindings.
+struct ExplorerSettings {
+  int window_width_px = 1280;
+  int window_height_px = 720;
+  bool fullscreen = false;
+  double target_fps = 30;          // held while the camera moves
+  int full_quality_samples = 8;    // accumulated once it stops ("quality" presets: 2, 8, 32)
+  double mouse_sensitivity_deg_per_px = 0.15;
+  bool invert_y = false;
+  double speed = 1.0;              // fly speed, in distances-to-the-surface per second
+  std::map<std::string, std::string> key_bindings;  // key name -> action name, over the defaults
+};
+
 struct Settings {
   std::vector<std::filesystem::path> plugin_folders;  // searched before the built-in folders
   std::string device;                                 // selector, see select_device
   RenderSettings render;
+  ExplorerSettings explorer;
 };
 
 // One problem in a settings file: "FILE:LINE: key 'render.lanes': expected one of 1, 4, 8, 16".
@@ -30,6 +45,8 @@ struct SettingsProblem {
 
 // The user's file: $XDG_CONFIG_HOME/fractalis/config.toml (or ~/.config/...), if it exists.
 std::optional<std::filesystem::path> user_settings_file();
+// Where the user's file is or would be (empty when neither XDG_CONFIG_HOME nor HOME is set).
+std::filesystem::path user_settings_path();
 
 // Reads `file` over `settings`. Values that are wrong are reported and leave that setting as it
 // was; the rest still apply. Returns the problems (empty when the file is fine).
@@ -39,6 +56,10 @@ std::vector<SettingsProblem> load_settings_file(const std::filesystem::path& fil
 // Applies one "key=value" from the command line (--set), checked exactly like a file's.
 std::vector<SettingsProblem> apply_setting_override(const std::string& assignment,
                                                     Settings& settings);
+
+// The settings as a TOML file that load_settings_file reads back to the same values (the
+// explorer writes the user's file with it, atomically).
+std::string format_settings_toml(const Settings& settings);
 
 // The known key closest to `key` by edit distance (for "did you mean").
 std::string nearest_known_key(const std::string& key);

@@ -1,5 +1,6 @@
 #include "ui/overlay.hpp"
 
+#include "io/atomic_file.hpp"
 #include "render/kernel_assembly.hpp"
 
 #include <imgui.h>
@@ -129,6 +130,16 @@ void draw_overlay(Explorer& explorer, OverlayState& overlay) {
     changed |= ImGui::SliderInt("Max steps", &s.max_steps, 16, 1000);
     changed |= ImGui::SliderFloat("Aperture", &s.aperture_radius, 0.0f, 0.5f, "%.3f");
     if (changed) explorer.mark_changed();
+    // Written atomically (temporary file, then rename): a crash never leaves half a file.
+    if (!overlay.settings_file.empty() && ImGui::Button("Save settings")) {
+      std::error_code ec;
+      std::filesystem::create_directories(overlay.settings_file.parent_path(), ec);
+      std::string error;
+      if (write_file_atomic(overlay.settings_file, format_settings_toml(explorer.settings()), &error))
+        explorer.add_message("saved settings to " + overlay.settings_file.string());
+      else
+        explorer.add_message(error);
+    }
   }
 
   if (ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen)) {

@@ -19,6 +19,7 @@ struct OverlayState {
   std::string screenshot_file = "fractalis-screenshot.png";
   bool screenshot_requested = false;
   bool screenshot_at_window_size = true;
+  std::filesystem::path settings_file;  // where "Save settings" writes (the user's config.toml)
 };
 
 // Builds the panel; changes go straight into the explorer's scene state and settings (and mark
