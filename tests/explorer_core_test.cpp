@@ -85,7 +85,8 @@ TEST(CameraController, MouseLookYawsAndInvertY) {
   CameraControls controls;
   fr_camera c = looking_down_minus_z();
   update_camera(c, CameraMode::Fly, in, true, 0.016, 1.0, controls);
-  const glm::dvec3 forward = glm::normalize(glm::dvec3(c.target[0] - c.eye[0], c.target[1] - c.eye[1], c.target[2] - c.eye[2]));
+  const glm::dvec3 forward = glm::normalize(
+      glm::dvec3(c.target[0] - c.eye[0], c.target[1] - c.eye[1], c.target[2] - c.eye[2]));
   EXPECT_NEAR(forward.x, std::sin(15 * M_PI / 180), 1e-9);
   EXPECT_NEAR(forward.z, -std::cos(15 * M_PI / 180), 1e-9);
   // Without mouse look the mouse does nothing.
@@ -114,8 +115,8 @@ TEST(CameraController, OrbitKeepsTheTarget) {
   EXPECT_NEAR(std::abs(c.eye[0]), 10, 1e-9);
 }
 
-// On a fake clock: frames slower than the target shrink the scale until they meet it; once still, the
-// controller goes to full resolution and counts samples up to full quality, then stops.
+// On a fake clock: frames slower than the target shrink the scale until they meet it; once still,
+// the controller goes to full resolution and counts samples up to full quality, then stops.
 TEST(FrameController, HoldsTheTargetThenRefines) {
   FrameControllerSettings s;
   s.target_frame_ms = 40;
@@ -125,6 +126,7 @@ TEST(FrameController, HoldsTheTargetThenRefines) {
   for (int i = 0; i < 10; ++i) {
     const FramePlan p = fc.plan(true);
     EXPECT_EQ(p.sample_index, 0);
+    EXPECT_LT(p.step_budget, 1) << "a reduced step budget while moving";
     // Render time proportional to pixels: 320 ms at full scale.
     fc.report(320 * p.resolution_scale * p.resolution_scale);
   }
@@ -133,6 +135,7 @@ TEST(FrameController, HoldsTheTargetThenRefines) {
   for (int i = 0; i < 4; ++i) {
     const FramePlan p = fc.plan(false);
     EXPECT_EQ(p.resolution_scale, 1);
+    EXPECT_EQ(p.step_budget, 1);
     EXPECT_EQ(p.sample_index, i);
     EXPECT_FALSE(p.done);
   }
@@ -160,8 +163,8 @@ TEST(GameLoop, PollUpdateRenderInOrderOnAFakeClock) {
     clock += 0.025;
   };
   EXPECT_EQ(run_game_loop(steps), 3);
-  EXPECT_EQ(order, (std::vector<std::string>{"poll", "update", "render", "poll", "update", "render", "poll",
-                                             "update", "render", "poll"}));
+  EXPECT_EQ(order, (std::vector<std::string>{"poll", "update", "render", "poll", "update", "render",
+                                             "poll", "update", "render", "poll"}));
   ASSERT_EQ(dts.size(), 3u);
   EXPECT_DOUBLE_EQ(dts[0], 0);
   EXPECT_NEAR(dts[1], 0.025, 1e-12);
@@ -181,7 +184,8 @@ TEST(Reload, ParametersCarryOverByKey) {
   SceneInfo old_info, new_info;
   old_info.params = {param("power", FR_PARAM_FLOAT, 8, 2, 16), param("gone", FR_PARAM_INT, 1, 0, 9),
                      param("bailout", FR_PARAM_FLOAT, 2, 1, 64)};
-  new_info.params = {param("bailout", FR_PARAM_FLOAT, 2, 1, 12), param("fresh", FR_PARAM_FLOAT, 0.5, 0, 1),
+  new_info.params = {param("bailout", FR_PARAM_FLOAT, 2, 1, 12),
+                     param("fresh", FR_PARAM_FLOAT, 0.5, 0, 1),
                      param("power", FR_PARAM_FLOAT, 8, 2, 16)};
   const std::vector<fr_value> old_values = {{{11, 0, 0}}, {{7, 0, 0}}, {{40, 0, 0}}};
   const auto v = rebind_params(old_info, old_values, new_info);

@@ -5,8 +5,8 @@
 #include "app/explorer.hpp"
 #include "app/game_loop.hpp"
 #include "cli/cli.hpp"
-#include "test_support.hpp"
 #include "image/png_write.hpp"
+#include "test_support.hpp"
 #include "ui/overlay.hpp"
 #include "ui/window.hpp"
 
@@ -34,8 +34,8 @@ class ExplorerWindow : public ::testing::Test {
   void SetUp() override {
     ASSERT_TRUE(display_available()) << "run under xvfb-run";
     window = std::make_unique<Window>("Fractalis test", kW, kH, false);
-    library = std::make_unique<SceneLibrary>(std::vector<std::filesystem::path>{SCENE_PLUGIN_DIR}, test::runtime(),
-                                             &messages);
+    library = std::make_unique<SceneLibrary>(std::vector<std::filesystem::path>{SCENE_PLUGIN_DIR},
+                                             test::runtime(), &messages);
     explorer = std::make_unique<Explorer>(Settings{}, test::runtime(), *library, "mandelbulb");
   }
   // One frame of the loop: poll, update (scene time fixed at 0), render, present.
@@ -83,8 +83,9 @@ TEST_F(ExplorerWindow, ShowsTheSceneAsAHeadlessRenderDoes) {
   s.width_px = kW;
   s.height_px = kH;
   s.samples = FrameControllerSettings{}.full_quality_samples;
-  const FrameImage reference = Renderer(test::runtime()).render(explorer->current().scene->info,
-                                                                explorer->current().state, s);
+  const FrameImage reference =
+      Renderer(test::runtime())
+          .render(explorer->current().scene->info, explorer->current().state, s);
   size_t differing = 0;
   for (size_t i = 0; i < shown.size(); i += 4)
     for (int c = 0; c < 3; ++c)
@@ -92,7 +93,8 @@ TEST_F(ExplorerWindow, ShowsTheSceneAsAHeadlessRenderDoes) {
         ++differing;
         break;
       }
-  EXPECT_LE(differing, shown.size() / 4 / 100) << "more than 1% of pixels differ from the headless render";
+  EXPECT_LE(differing, shown.size() / 4 / 100)
+      << "more than 1% of pixels differ from the headless render";
 }
 
 TEST_F(ExplorerWindow, KeysAndMouseMoveTheCamera) {
@@ -104,7 +106,8 @@ TEST_F(ExplorerWindow, KeysAndMouseMoveTheCamera) {
   push_key(SDLK_w, false);
   frame(input);
   const fr_camera after = explorer->current().state.camera;
-  EXPECT_LT(std::hypot(after.eye[0], after.eye[1], after.eye[2]), std::hypot(before.eye[0], before.eye[1], before.eye[2]))
+  EXPECT_LT(std::hypot(after.eye[0], after.eye[1], after.eye[2]),
+            std::hypot(before.eye[0], before.eye[1], before.eye[2]))
       << "W flies forward, towards the bulb";
 
   // Mouse look: M captures the pointer, then motion turns the view.
@@ -135,7 +138,8 @@ TEST_F(ExplorerWindow, SceneSwitchChangesTheImageAndKeepsState) {
   const auto other = settle();
   EXPECT_NE(bulb, other);
   explorer->select_scene(first);
-  EXPECT_EQ(explorer->current().state.params[explorer->current().scene->info.find_param("power")].v[0], 5)
+  EXPECT_EQ(
+      explorer->current().state.params[explorer->current().scene->info.find_param("power")].v[0], 5)
       << "switching back keeps the scene's values";
 }
 
@@ -149,7 +153,8 @@ TEST_F(ExplorerWindow, OverlayDraws) {
   const auto with_overlay = window->captured(&w, &h);
   EXPECT_NE(plain, with_overlay);
   std::string error;
-  EXPECT_TRUE(write_png_atomic(std::filesystem::path(TEST_OUTPUT_DIR) / "explorer_window.png", w, h, with_overlay, &error));
+  EXPECT_TRUE(write_png_atomic(std::filesystem::path(TEST_OUTPUT_DIR) / "explorer_window.png", w, h,
+                               with_overlay, &error));
 }
 
 TEST_F(ExplorerWindow, ScreenshotIsWritten) {
@@ -182,6 +187,7 @@ TEST_F(ExplorerWindow, QuitEndsTheLoop) {
 // The whole command, as a user runs it: exits with code 0.
 TEST(ExploreCommand, RunsAndExitsCleanly) {
   std::ostringstream out, err;
-  EXPECT_EQ(fr::run_cli({"explore", "--frames", "5", "--size", "160x90"}, out, err), 0) << err.str();
+  EXPECT_EQ(fr::run_cli({"explore", "--frames", "5", "--size", "160x90"}, out, err), 0)
+      << err.str();
   EXPECT_NE(out.str().find("explored for 5 frames"), std::string::npos);
 }

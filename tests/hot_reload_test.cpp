@@ -22,14 +22,16 @@ std::filesystem::path reload_plugin(const char* name) {
 
 // Drops `from` into the folder as `name` the way a build or a file manager does: written under
 // another name, then renamed into place.
-void drop(const std::filesystem::path& from, const std::filesystem::path& folder, const std::string& name) {
+void drop(const std::filesystem::path& from, const std::filesystem::path& folder,
+          const std::string& name) {
   const auto tmp = folder / (name + ".partial");
   std::filesystem::copy_file(from, tmp, std::filesystem::copy_options::overwrite_existing);
   std::filesystem::rename(tmp, folder / name);
 }
 
 // Polls like a frame loop (every 20 ms) until a message starting with `prefix` or a timeout.
-double poll_until(SceneLibrary& lib, const std::string& prefix, std::string* message, double timeout_s = 5) {
+double poll_until(SceneLibrary& lib, const std::string& prefix, std::string* message,
+                  double timeout_s = 5) {
   const auto start = clock_type::now();
   RenderSettings settings;
   while (true) {
@@ -80,7 +82,8 @@ TEST(HotReload, AddChangeBreakRemove) {
   {
     SceneSlot& b = lib.slots()[0];
     EXPECT_EQ(b.scene->info.version, "2.0.0");
-    EXPECT_EQ(b.state.params[b.scene->info.find_param("radius")].v[0], 1.5) << "kept by key, clamped to B's range";
+    EXPECT_EQ(b.state.params[b.scene->info.find_param("radius")].v[0], 1.5)
+        << "kept by key, clamped to B's range";
     EXPECT_EQ(b.state.params[b.scene->info.find_param("tint")].v[0], 0.25) << "new key: default";
     EXPECT_EQ(b.scene->info.find_param("detail"), -1) << "dropped key";
     EXPECT_EQ(b.state.camera.eye[0], 0.25) << "the camera stays";
@@ -90,7 +93,8 @@ TEST(HotReload, AddChangeBreakRemove) {
   ASSERT_GE(poll_until(lib, "kept the running 'reload_probe'", &m), 0);
   EXPECT_NE(m.find("missing_radius"), std::string::npos) << m;
   EXPECT_EQ(lib.slots()[0].scene->info.version, "2.0.0") << "the old build keeps running";
-  EXPECT_NE(lib.slots()[0].error.find("reload_broken.cl:2:"), std::string::npos) << lib.slots()[0].error;
+  EXPECT_NE(lib.slots()[0].error.find("reload_broken.cl:2:"), std::string::npos)
+      << lib.slots()[0].error;
 
   std::ofstream(folder / "junk.so") << "not a plugin";
   ASSERT_GE(poll_until(lib, "skipped", &m), 0);

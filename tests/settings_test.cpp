@@ -168,7 +168,8 @@ TEST(Settings, WrittenSettingsReadBack) {
 
 TEST(Settings, KeyBindingProblems) {
   Settings s;
-  auto file = write_file("keys.toml", "[controls.keys]\nfly_to_moon = \"M\"\nquit = 3\nmove_up = \"Page Up\"\n");
+  auto file = write_file("keys.toml",
+                         "[controls.keys]\nfly_to_moon = \"M\"\nquit = 3\nmove_up = \"Page Up\"\n");
   auto problems = load_settings_file(file, s);
   ASSERT_EQ(problems.size(), 2u);
   EXPECT_EQ(problems[0].key, "controls.keys.fly_to_moon");

@@ -10,7 +10,9 @@
 namespace fr {
 namespace {
 
-glm::dvec3 get(const double v[3]) { return {v[0], v[1], v[2]}; }
+glm::dvec3 get(const double v[3]) {
+  return {v[0], v[1], v[2]};
+}
 void set(double v[3], glm::dvec3 x) {
   v[0] = x.x;
   v[1] = x.y;
@@ -19,8 +21,8 @@ void set(double v[3], glm::dvec3 x) {
 
 }  // namespace
 
-CameraMotion update_camera(fr_camera& camera, CameraMode mode, const InputState& input, bool look, double dt_s,
-                           double surface_distance, const CameraControls& c) {
+CameraMotion update_camera(fr_camera& camera, CameraMode mode, const InputState& input, bool look,
+                           double dt_s, double surface_distance, const CameraControls& c) {
   CameraMotion motion;
   glm::dvec3 eye = get(camera.eye), target = get(camera.target);
   const glm::dvec3 up = glm::normalize(get(camera.up));

@@ -13,12 +13,14 @@ namespace {
 bool same_state(const SceneState& a, const SceneState& b) {
   return a.params.size() == b.params.size() &&
          std::memcmp(a.params.data(), b.params.data(), a.params.size() * sizeof(fr_value)) == 0 &&
-         std::memcmp(&a.camera, &b.camera, sizeof(fr_camera)) == 0 && a.bounding_radius == b.bounding_radius;
+         std::memcmp(&a.camera, &b.camera, sizeof(fr_camera)) == 0 &&
+         a.bounding_radius == b.bounding_radius;
 }
 
 }  // namespace
 
-Explorer::Explorer(const Settings& settings, ClRuntime& runtime, SceneLibrary& library, const std::string& scene_id)
+Explorer::Explorer(const Settings& settings, ClRuntime& runtime, SceneLibrary& library,
+                   const std::string& scene_id)
     : runtime_(runtime), library_(library), renderer_(runtime), settings_(settings) {
   controls_.mouse_sensitivity_deg_per_px = settings.explorer.mouse_sensitivity_deg_per_px;
   controls_.invert_y = settings.explorer.invert_y;
@@ -30,7 +32,8 @@ Explorer::Explorer(const Settings& settings, ClRuntime& runtime, SceneLibrary& l
   if (library_.slots().empty()) throw std::runtime_error("no scene could be loaded");
   const int index = library_.find(scene_id);
   current_ = index >= 0 ? index : 0;
-  if (index < 0) add_message("no scene '" + scene_id + "'; showing '" + current().scene->info.id + "'");
+  if (index < 0)
+    add_message("no scene '" + scene_id + "'; showing '" + current().scene->info.id + "'");
 }
 
 void Explorer::add_message(std::string m) {
@@ -57,12 +60,23 @@ bool Explorer::update(const InputState& input, double dt_s, double now_s) {
   window_actions_.clear();
   for (Action a : input.triggered) {
     switch (a) {
-      case Action::Quit: return false;
-      case Action::NextScene: select_scene(current_ + 1); break;
-      case Action::PreviousScene: select_scene(current_ - 1); break;
-      case Action::ToggleCameraMode: mode_ = mode_ == CameraMode::Fly ? CameraMode::Orbit : CameraMode::Fly; break;
-      case Action::ToggleMouseLook: mouse_look_ = !mouse_look_; break;
-      default: window_actions_.push_back(a); break;
+      case Action::Quit:
+        return false;
+      case Action::NextScene:
+        select_scene(current_ + 1);
+        break;
+      case Action::PreviousScene:
+        select_scene(current_ - 1);
+        break;
+      case Action::ToggleCameraMode:
+        mode_ = mode_ == CameraMode::Fly ? CameraMode::Orbit : CameraMode::Fly;
+        break;
+      case Action::ToggleMouseLook:
+        mouse_look_ = !mouse_look_;
+        break;
+      default:
+        window_actions_.push_back(a);
+        break;
     }
   }
   if (input.resized) changed_ = true;
@@ -74,7 +88,8 @@ bool Explorer::update(const InputState& input, double dt_s, double now_s) {
   SceneSlot& slot = current();
   // The flying speed follows the scene's own DE at the eye, evaluated on the device.
   const auto& eye = slot.state.camera.eye;
-  const std::array<float, 3> eye_f = {static_cast<float>(eye[0]), static_cast<float>(eye[1]), static_cast<float>(eye[2])};
+  const std::array<float, 3> eye_f = {static_cast<float>(eye[0]), static_cast<float>(eye[1]),
+                                      static_cast<float>(eye[2])};
   try {
     stats_.surface_distance = probe_de(runtime_, slot.scene->info, slot.state.params, {eye_f})[0];
   } catch (const std::exception& e) {
@@ -82,7 +97,9 @@ bool Explorer::update(const InputState& input, double dt_s, double now_s) {
     stats_.surface_distance = 0.1;
   }
   const SceneState before = slot.state;
-  if (update_camera(slot.state.camera, mode_, input, mouse_look_, dt_s, stats_.surface_distance, controls_).moved)
+  if (update_camera(slot.state.camera, mode_, input, mouse_look_, dt_s, stats_.surface_distance,
+                    controls_)
+          .moved)
     changed_ = true;
   std::string error;
   if (!slot.instance->update(slot.state, now_s, &error)) {
@@ -102,7 +119,9 @@ const FrameImage* Explorer::render(int window_width_px, int window_height_px) {
   if (plan.done) return nullptr;
   RenderSettings s = settings_.render;
   s.width_px = std::max(1, static_cast<int>(std::lround(window_width_px * plan.resolution_scale)));
-  s.height_px = std::max(1, static_cast<int>(std::lround(window_height_px * plan.resolution_scale)));
+  s.height_px =
+      std::max(1, static_cast<int>(std::lround(window_height_px * plan.resolution_scale)));
+  s.max_steps = std::max(16, static_cast<int>(s.max_steps * plan.step_budget));
   SceneSlot& slot = current();
   const auto start = std::chrono::steady_clock::now();
   try {
@@ -113,7 +132,8 @@ const FrameImage* Explorer::render(int window_width_px, int window_height_px) {
     add_message(e.what());
     return nullptr;
   }
-  stats_.frame_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  stats_.frame_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   frames_.report(stats_.frame_ms);
   if (plan.sample_index == 0 && !last_.steps.empty()) {
     double total = 0;
@@ -123,7 +143,8 @@ const FrameImage* Explorer::render(int window_width_px, int window_height_px) {
   return &last_;
 }
 
-bool Explorer::screenshot(const std::filesystem::path& file, int width_px, int height_px, std::string* error) {
+bool Explorer::screenshot(const std::filesystem::path& file, int width_px, int height_px,
+                          std::string* error) {
   RenderSettings s = settings_.render;
   s.width_px = width_px;
   s.height_px = height_px;

@@ -17,17 +17,18 @@
 namespace fr {
 
 struct ExplorerStats {
-  double frame_ms = 0;         // last render (update excluded)
+  double frame_ms = 0;  // last render (update excluded)
   double resolution_scale = 1;
   int sample_index = 0;
-  bool refined = false;        // full quality reached and shown
+  bool refined = false;  // full quality reached and shown
   double de_steps_per_pixel = 0;
-  double surface_distance = 0; // DE at the eye
+  double surface_distance = 0;  // DE at the eye
 };
 
 class Explorer {
  public:
-  Explorer(const Settings& settings, ClRuntime& runtime, SceneLibrary& library, const std::string& scene_id);
+  Explorer(const Settings& settings, ClRuntime& runtime, SceneLibrary& library,
+           const std::string& scene_id);
 
   // One frame's update: triggered actions, camera, the scene's update callback at scene time
   // `now_s`, and the plugin folders. Returns false when the user asked to quit.
@@ -38,7 +39,8 @@ class Explorer {
   const FrameImage* render(int window_width_px, int window_height_px);
 
   // Writes a PNG of the current view at the given size with full-quality samples.
-  bool screenshot(const std::filesystem::path& file, int width_px, int height_px, std::string* error);
+  bool screenshot(const std::filesystem::path& file, int width_px, int height_px,
+                  std::string* error);
 
   void select_scene(int index);
   int current_index() const { return current_; }

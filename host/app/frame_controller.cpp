@@ -11,6 +11,7 @@ FramePlan FrameController::plan(bool changed) {
     moving_ = true;
     next_sample_ = 0;
     p.resolution_scale = moving_scale_;
+    p.step_budget = settings_.moving_step_budget;
     p.sample_index = 0;
   } else {
     // Still: full resolution, restarting the accumulation the first time.

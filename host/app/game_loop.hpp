@@ -10,10 +10,10 @@
 namespace fr {
 
 struct LoopSteps {
-  std::function<void(InputState&)> poll;                   // fold pending events into the state
+  std::function<void(InputState&)> poll;  // fold pending events into the state
   std::function<void(const InputState&, double dt_s)> update;
   std::function<void()> render;
-  std::function<double()> now_s;                           // a monotonic clock, seconds
+  std::function<double()> now_s;  // a monotonic clock, seconds
 };
 
 // Runs until the input asks to quit (or after max_frames when that is >= 0). Returns the number

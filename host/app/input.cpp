@@ -11,13 +11,20 @@ struct NamedAction {
   bool held;  // true: lasts while the key is down; false: triggers once per press
 };
 const NamedAction kActions[] = {
-    {Action::MoveForward, "move_forward", true},   {Action::MoveBack, "move_back", true},
-    {Action::MoveLeft, "move_left", true},         {Action::MoveRight, "move_right", true},
-    {Action::MoveUp, "move_up", true},             {Action::MoveDown, "move_down", true},
-    {Action::SpeedUp, "speed_up", true},           {Action::ToggleMouseLook, "mouse_look", false},
-    {Action::ToggleCameraMode, "camera_mode", false}, {Action::ToggleOverlay, "overlay", false},
-    {Action::ToggleFullscreen, "fullscreen", false}, {Action::NextScene, "next_scene", false},
-    {Action::PreviousScene, "previous_scene", false}, {Action::Screenshot, "screenshot", false},
+    {Action::MoveForward, "move_forward", true},
+    {Action::MoveBack, "move_back", true},
+    {Action::MoveLeft, "move_left", true},
+    {Action::MoveRight, "move_right", true},
+    {Action::MoveUp, "move_up", true},
+    {Action::MoveDown, "move_down", true},
+    {Action::SpeedUp, "speed_up", true},
+    {Action::ToggleMouseLook, "mouse_look", false},
+    {Action::ToggleCameraMode, "camera_mode", false},
+    {Action::ToggleOverlay, "overlay", false},
+    {Action::ToggleFullscreen, "fullscreen", false},
+    {Action::NextScene, "next_scene", false},
+    {Action::PreviousScene, "previous_scene", false},
+    {Action::Screenshot, "screenshot", false},
     {Action::Quit, "quit", false},
 };
 
@@ -29,7 +36,9 @@ const NamedAction& info(Action a) {
 
 }  // namespace
 
-const char* action_name(Action action) { return info(action).name; }
+const char* action_name(Action action) {
+  return info(action).name;
+}
 
 std::optional<Action> action_from_name(const std::string& name) {
   for (const auto& n : kActions)
@@ -40,12 +49,23 @@ std::optional<Action> action_from_name(const std::string& name) {
 KeyBindings KeyBindings::defaults() {
   KeyBindings b;
   b.keys = {
-      {"W", Action::MoveForward},  {"S", Action::MoveBack},          {"A", Action::MoveLeft},
-      {"D", Action::MoveRight},    {"E", Action::MoveUp},            {"Space", Action::MoveUp},
-      {"Q", Action::MoveDown},     {"Left Ctrl", Action::MoveDown},  {"Left Shift", Action::SpeedUp},
-      {"M", Action::ToggleMouseLook}, {"O", Action::ToggleCameraMode}, {"F1", Action::ToggleOverlay},
-      {"F11", Action::ToggleFullscreen}, {"Tab", Action::NextScene}, {"Backspace", Action::PreviousScene},
-      {"F12", Action::Screenshot}, {"Escape", Action::Quit},
+      {"W", Action::MoveForward},
+      {"S", Action::MoveBack},
+      {"A", Action::MoveLeft},
+      {"D", Action::MoveRight},
+      {"E", Action::MoveUp},
+      {"Space", Action::MoveUp},
+      {"Q", Action::MoveDown},
+      {"Left Ctrl", Action::MoveDown},
+      {"Left Shift", Action::SpeedUp},
+      {"M", Action::ToggleMouseLook},
+      {"O", Action::ToggleCameraMode},
+      {"F1", Action::ToggleOverlay},
+      {"F11", Action::ToggleFullscreen},
+      {"Tab", Action::NextScene},
+      {"Backspace", Action::PreviousScene},
+      {"F12", Action::Screenshot},
+      {"Escape", Action::Quit},
   };
   return b;
 }
@@ -69,21 +89,29 @@ void InputState::end_frame() {
 
 void apply_input_event(const KeyBindings& bindings, const InputEvent& e, InputState& s) {
   switch (e.type) {
-    case InputEvent::Type::Quit: s.quit = true; return;
+    case InputEvent::Type::Quit:
+      s.quit = true;
+      return;
     case InputEvent::Type::MouseMotion:
       s.look_dx += e.dx;
       s.look_dy += e.dy;
       return;
-    case InputEvent::Type::MouseWheel: s.wheel += e.dy; return;
-    case InputEvent::Type::WindowResized: s.resized = std::make_pair(e.width, e.height); return;
+    case InputEvent::Type::MouseWheel:
+      s.wheel += e.dy;
+      return;
+    case InputEvent::Type::WindowResized:
+      s.resized = std::make_pair(e.width, e.height);
+      return;
     case InputEvent::Type::KeyDown:
     case InputEvent::Type::KeyUp: {
       auto it = bindings.keys.find(e.key);
       if (it == bindings.keys.end()) return;
       const bool down = e.type == InputEvent::Type::KeyDown;
       if (info(it->second).held) {
-        if (down) s.held.insert(it->second);
-        else s.held.erase(it->second);
+        if (down)
+          s.held.insert(it->second);
+        else
+          s.held.erase(it->second);
       } else if (down) {
         s.triggered.push_back(it->second);
         if (it->second == Action::Quit) s.quit = true;

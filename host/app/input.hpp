@@ -11,11 +11,21 @@
 namespace fr {
 
 enum class Action {
-  MoveForward, MoveBack, MoveLeft, MoveRight, MoveUp, MoveDown,
+  MoveForward,
+  MoveBack,
+  MoveLeft,
+  MoveRight,
+  MoveUp,
+  MoveDown,
   SpeedUp,           // held: faster
   ToggleMouseLook,   // capture or release the pointer
   ToggleCameraMode,  // fly <-> orbit
-  ToggleOverlay, ToggleFullscreen, NextScene, PreviousScene, Screenshot, Quit,
+  ToggleOverlay,
+  ToggleFullscreen,
+  NextScene,
+  PreviousScene,
+  Screenshot,
+  Quit,
 };
 
 const char* action_name(Action action);
@@ -24,8 +34,8 @@ std::optional<Action> action_from_name(const std::string& name);
 struct InputEvent {
   enum class Type { KeyDown, KeyUp, MouseMotion, MouseWheel, WindowResized, Quit };
   Type type = Type::KeyDown;
-  std::string key;        // SDL key name ("W", "Left Shift", "Escape") for key events
-  double dx = 0, dy = 0;  // pixels (motion) or notches (wheel)
+  std::string key;            // SDL key name ("W", "Left Shift", "Escape") for key events
+  double dx = 0, dy = 0;      // pixels (motion) or notches (wheel)
   int width = 0, height = 0;  // for WindowResized
 };
 
@@ -39,10 +49,10 @@ struct KeyBindings {
 
 // What the user is doing this frame, from the events so far.
 struct InputState {
-  std::set<Action> held;           // movement keys currently down
-  std::vector<Action> triggered;   // one-shot actions pressed since the last frame
-  double look_dx = 0, look_dy = 0; // mouse movement since the last frame, pixels
-  double wheel = 0;                // wheel notches since the last frame
+  std::set<Action> held;            // movement keys currently down
+  std::vector<Action> triggered;    // one-shot actions pressed since the last frame
+  double look_dx = 0, look_dy = 0;  // mouse movement since the last frame, pixels
+  double wheel = 0;                 // wheel notches since the last frame
   bool quit = false;
   std::optional<std::pair<int, int>> resized;
 

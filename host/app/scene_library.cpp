@@ -24,8 +24,10 @@ SceneLibrary::SceneLibrary(std::vector<std::filesystem::path> folders, ClRuntime
     }
     SceneSlot slot;
     std::string error;
-    if (make_slot(o.scene, &slot, &error)) slots_.push_back(std::move(slot));
-    else messages->push_back("skipped " + o.file.string() + ": " + error);
+    if (make_slot(o.scene, &slot, &error))
+      slots_.push_back(std::move(slot));
+    else
+      messages->push_back("skipped " + o.file.string() + ": " + error);
   }
   for (const auto& f : folders) watchers_.push_back(std::make_unique<PluginWatcher>(f));
 }
@@ -36,7 +38,8 @@ int SceneLibrary::find(const std::string& id) const {
   return -1;
 }
 
-std::string SceneLibrary::add_or_replace(const std::filesystem::path& file, const RenderSettings& settings) {
+std::string SceneLibrary::add_or_replace(const std::filesystem::path& file,
+                                         const RenderSettings& settings) {
   LoadOutcome o = load_scene_plugin(file);
   int index = -1;
   for (size_t i = 0; i < slots_.size(); ++i)
@@ -87,7 +90,8 @@ std::vector<std::string> SceneLibrary::poll(double now_s, const RenderSettings& 
         for (auto& slot : slots_)
           if (slot.scene->file == c.file && !slot.removed) {
             slot.removed = true;
-            messages.push_back("'" + slot.scene->info.id + "' was removed; it runs until you switch away");
+            messages.push_back("'" + slot.scene->info.id +
+                               "' was removed; it runs until you switch away");
           }
         continue;
       }

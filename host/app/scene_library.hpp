@@ -20,7 +20,8 @@ namespace fr {
 class SceneLibrary {
  public:
   // Loads the folders (failures go to `messages`) and starts watching them.
-  SceneLibrary(std::vector<std::filesystem::path> folders, ClRuntime& runtime, std::vector<std::string>* messages);
+  SceneLibrary(std::vector<std::filesystem::path> folders, ClRuntime& runtime,
+               std::vector<std::string>* messages);
 
   std::vector<SceneSlot>& slots() { return slots_; }
   int find(const std::string& id) const;  // slot index or -1

@@ -20,7 +20,8 @@ struct SceneSlot {
 
 // Carries parameter values from `old_info` to `new_info` by key: keys that went are dropped,
 // new keys take their defaults, and values out of the new ranges are clamped.
-std::vector<fr_value> rebind_params(const SceneInfo& old_info, const std::vector<fr_value>& old_values,
+std::vector<fr_value> rebind_params(const SceneInfo& old_info,
+                                    const std::vector<fr_value>& old_values,
                                     const SceneInfo& new_info);
 
 }  // namespace fr

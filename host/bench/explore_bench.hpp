@@ -10,14 +10,14 @@
 namespace fr {
 
 struct ExploreBenchResult {
-  FrameStats moving;              // frames while the camera moves
+  FrameStats moving;  // frames while the camera moves
   double mean_resolution_scale = 0;
   double seconds_to_full_quality = 0;  // after the camera stops
   int refine_frames = 0;
 };
 
-// Flies for `moving_frames` frames (forward, weaving left and right), then stops and renders until the
-// frame controller reports full quality.
+// Flies for `moving_frames` frames (forward, weaving left and right), then stops and renders until
+// the frame controller reports full quality.
 ExploreBenchResult run_explore_bench(Explorer& explorer, int window_width_px, int window_height_px,
                                      int moving_frames);
 

@@ -47,7 +47,8 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
     if (command == "bench") return command_bench(rest, out, err);
     if (command == "list") return command_list(rest, out, err);
     if (command == "devices") return command_devices(rest, out, err);
-    throw UsageError("unknown command '" + command + "' (expected explore, render, bench, list or devices)");
+    throw UsageError("unknown command '" + command +
+                     "' (expected explore, render, bench, list or devices)");
   } catch (const UsageError& e) {
     err << "fractalis: error: " << e.what() << "\n";
     return 2;

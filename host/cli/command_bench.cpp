@@ -16,7 +16,8 @@ namespace {
 int bench_explore(ParsedOptions options, std::ostream& out, std::ostream& err) {
   if (!options.has("size")) options.values["size"] = {"1280x720"};
   if (!options.has("scene")) options.values["scene"] = {"mandelbulb"};
-  const int frames = static_cast<int>(parse_integer("--frames", options.get("frames").value_or("120"), 1, 100000));
+  const int frames =
+      static_cast<int>(parse_integer("--frames", options.get("frames").value_or("120"), 1, 100000));
   PreparedScene p = prepare_scene(options, err);
   ClRuntime runtime(p.device);
   std::vector<std::string> messages;
@@ -27,15 +28,19 @@ int bench_explore(ParsedOptions options, std::ostream& out, std::ostream& err) {
   explorer.current().state = p.state;
   // Warm-up: build the kernels the flight uses (render and DE probe), untimed.
   explorer.render(p.render.width_px, p.render.height_px);
-  const ExploreBenchResult r = run_explore_bench(explorer, p.render.width_px, p.render.height_px, frames);
+  const ExploreBenchResult r =
+      run_explore_bench(explorer, p.render.width_px, p.render.height_px, frames);
   char line[512];
   std::snprintf(line, sizeof line,
                 "explore bench: scene %s, window %dx%d, %d frames flying\n"
-                "moving: median %.2f ms (%.1f fps), p95 %.2f ms, min %.2f ms, max %.2f ms, mean resolution scale %.2f\n"
+                "moving: median %.2f ms (%.1f fps), p95 %.2f ms, min %.2f ms, max %.2f ms, mean "
+                "resolution scale %.2f\n"
                 "stopped: full quality (%d samples at full resolution) after %.2f s, %d frames\n",
-                p.scene->info.id.c_str(), p.render.width_px, p.render.height_px, frames, r.moving.p50_ms,
-                1000.0 / r.moving.p50_ms, r.moving.p95_ms, r.moving.min_ms, r.moving.max_ms, r.mean_resolution_scale,
-                FrameControllerSettings{}.full_quality_samples, r.seconds_to_full_quality, r.refine_frames);
+                p.scene->info.id.c_str(), p.render.width_px, p.render.height_px, frames,
+                r.moving.p50_ms, 1000.0 / r.moving.p50_ms, r.moving.p95_ms, r.moving.min_ms,
+                r.moving.max_ms, r.mean_resolution_scale,
+                FrameControllerSettings{}.full_quality_samples, r.seconds_to_full_quality,
+                r.refine_frames);
   out << line << "device " << p.device.name << "\n";
   return 0;
 }
@@ -48,9 +53,10 @@ int command_bench(const std::vector<std::string>& args, std::ostream& out, std::
   specs.push_back({"runs", "N", false, "runs of the whole path (default 3)"});
   specs.push_back({"duration", "SECONDS", false, "scene time one run covers (default 10)"});
   specs.push_back({"json", "FILE", false, "also write the report as JSON (atomically)"});
-  specs.push_back({"explore", nullptr, false,
-                   "measure the explorer instead: a scripted fly-through at --size (default\n"
-                   "                                 1280x720), fps while moving, time to full quality"});
+  specs.push_back(
+      {"explore", nullptr, false,
+       "measure the explorer instead: a scripted fly-through at --size (default\n"
+       "                                 1280x720), fps while moving, time to full quality"});
   specs.push_back({"help", nullptr, false, "show this help"});
   auto options = parse_options("bench", args, specs);
   if (options.has("help")) {

@@ -20,13 +20,15 @@ int command_explore(const std::vector<std::string>& args, std::ostream& out, std
   if (options.has("help")) {
     out << "usage: fractalis explore [--scene ID] [--size WxH] [options]\n\n"
            "Opens the explorer window. Fly with W/A/S/D, E/Space up, Q/Ctrl down, Shift faster;\n"
-           "M captures the mouse to look around, O switches fly/orbit, Tab/Backspace switch scene,\n"
+           "M captures the mouse to look around, O switches fly/orbit, Tab/Backspace switch "
+           "scene,\n"
            "F1 hides the overlay, F11 toggles fullscreen, F12 saves a screenshot, Esc quits.\n"
            "Scenes dropped into the plugin folder appear while it runs; changed ones reload.\n\n"
         << format_options(specs);
     return 0;
   }
-  const long max_frames = options.has("frames") ? parse_integer("--frames", *options.get("frames"), 1, 1L << 40) : -1;
+  const long max_frames =
+      options.has("frames") ? parse_integer("--frames", *options.get("frames"), 1, 1L << 40) : -1;
   // A bad settings file does not stop the explorer: wrong values keep their defaults and the
   // problems are shown (here and in the overlay).
   std::vector<SettingsProblem> problems;
@@ -38,9 +40,11 @@ int command_explore(const std::vector<std::string>& args, std::ostream& out, std
   RenderSettings render = render_settings_from(settings, options);
   settings.render = render;
   const auto folders = plugin_folders(settings, options);
-  if (folders.empty()) throw std::runtime_error("no plugin folder found (build the plugins, or pass --plugins DIR)");
+  if (folders.empty())
+    throw std::runtime_error("no plugin folder found (build the plugins, or pass --plugins DIR)");
   if (!display_available())
-    throw std::runtime_error("no display (DISPLAY and WAYLAND_DISPLAY are unset); use `fractalis render` instead");
+    throw std::runtime_error(
+        "no display (DISPLAY and WAYLAND_DISPLAY are unset); use `fractalis render` instead");
 
   ClRuntime runtime(choose_device(settings, options));
   std::vector<std::string> load_messages;
@@ -84,8 +88,10 @@ int command_explore(const std::vector<std::string>& args, std::ostream& out, std
     window.present(image, [&] { draw_overlay(explorer, overlay); });
     if (overlay.screenshot_requested) {
       overlay.screenshot_requested = false;
-      const int w = overlay.screenshot_at_window_size ? window.width_px() : overlay.screenshot_size[0];
-      const int h = overlay.screenshot_at_window_size ? window.height_px() : overlay.screenshot_size[1];
+      const int w =
+          overlay.screenshot_at_window_size ? window.width_px() : overlay.screenshot_size[0];
+      const int h =
+          overlay.screenshot_at_window_size ? window.height_px() : overlay.screenshot_size[1];
       std::string error;
       if (explorer.screenshot(overlay.screenshot_file, w, h, &error))
         explorer.add_message("saved " + overlay.screenshot_file);

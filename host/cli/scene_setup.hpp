@@ -22,7 +22,8 @@ std::vector<OptionSpec> plugin_option_specs();
 // Defaults, then the settings file (--config FILE, else the user's file), then the options.
 // Without `problems`, the first problem is a UsageError; with it, problems are collected there and
 // each wrong value keeps its default (the explorer starts anyway and shows them).
-Settings load_settings(const ParsedOptions& options, std::vector<SettingsProblem>* problems = nullptr);
+Settings load_settings(const ParsedOptions& options,
+                       std::vector<SettingsProblem>* problems = nullptr);
 
 // --plugins DIR, else plugins.folders from settings, else the build tree's and installed folders.
 std::vector<std::filesystem::path> plugin_folders(const Settings& settings,

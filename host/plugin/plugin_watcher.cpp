@@ -7,12 +7,13 @@
 
 namespace fr {
 
-PluginWatcher::PluginWatcher(std::filesystem::path folder, double debounce_s, double poll_interval_s)
+PluginWatcher::PluginWatcher(std::filesystem::path folder, double debounce_s,
+                             double poll_interval_s)
     : folder_(std::move(folder)), debounce_s_(debounce_s), poll_interval_s_(poll_interval_s) {
   inotify_fd_ = inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
-  if (inotify_fd_ >= 0 &&
-      inotify_add_watch(inotify_fd_, folder_.c_str(),
-                        IN_CLOSE_WRITE | IN_MOVED_TO | IN_MOVED_FROM | IN_DELETE | IN_CREATE | IN_MODIFY) < 0) {
+  if (inotify_fd_ >= 0 && inotify_add_watch(inotify_fd_, folder_.c_str(),
+                                            IN_CLOSE_WRITE | IN_MOVED_TO | IN_MOVED_FROM |
+                                                IN_DELETE | IN_CREATE | IN_MODIFY) < 0) {
     close(inotify_fd_);
     inotify_fd_ = -1;  // fall back to polling
   }
@@ -63,7 +64,9 @@ std::vector<PluginChange> PluginWatcher::poll(double now_s) {
       continue;
     }
     if (now_s - p.stable_since_s >= debounce_s_) {
-      changes.push_back({known == reported_.end() ? PluginChange::Kind::Added : PluginChange::Kind::Modified, file});
+      changes.push_back(
+          {known == reported_.end() ? PluginChange::Kind::Added : PluginChange::Kind::Modified,
+           file});
       reported_[file] = stamp;
       pending_.erase(file);
     }

@@ -20,7 +20,8 @@ struct PluginChange {
 
 class PluginWatcher {
  public:
-  explicit PluginWatcher(std::filesystem::path folder, double debounce_s = 0.3, double poll_interval_s = 0.5);
+  explicit PluginWatcher(std::filesystem::path folder, double debounce_s = 0.3,
+                         double poll_interval_s = 0.5);
   ~PluginWatcher();
   PluginWatcher(const PluginWatcher&) = delete;
   PluginWatcher& operator=(const PluginWatcher&) = delete;

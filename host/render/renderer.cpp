@@ -124,8 +124,9 @@ FrameImage Renderer::finish(const RenderSettings& settings, bool read_linear) {
   // the explorer changed its resolution scale.
   const size_t post_local = 64;
   const size_t post_global = round_up_div(round_up_div(n, 4), post_local) * post_local;
-  cl_check(clEnqueueNDRangeKernel(q, post, 1, nullptr, &post_global, &post_local, 0, nullptr, nullptr),
-           "clEnqueueNDRangeKernel", "post-processing");
+  cl_check(
+      clEnqueueNDRangeKernel(q, post, 1, nullptr, &post_global, &post_local, 0, nullptr, nullptr),
+      "clEnqueueNDRangeKernel", "post-processing");
 
   FrameImage img;
   img.width_px = settings.width_px;

@@ -166,8 +166,14 @@ const std::vector<Key>& known_keys() {
        [](const toml::node& n, Settings& s) { return set_effect(n, s, FR_FEATURE_REFLECTIONS); }},
       {"render.effects.dof",
        [](const toml::node& n, Settings& s) { return set_effect(n, s, kStageDepthOfField); }},
-      {"window.width", [](const toml::node& n, Settings& s) { return set_int(n, s.explorer.window_width_px, 64, 16384); }},
-      {"window.height", [](const toml::node& n, Settings& s) { return set_int(n, s.explorer.window_height_px, 64, 16384); }},
+      {"window.width",
+       [](const toml::node& n, Settings& s) {
+         return set_int(n, s.explorer.window_width_px, 64, 16384);
+       }},
+      {"window.height",
+       [](const toml::node& n, Settings& s) {
+         return set_int(n, s.explorer.window_height_px, 64, 16384);
+       }},
       {"window.fullscreen",
        [](const toml::node& n, Settings& s) -> std::string {
          if (!n.is_boolean()) return "expected true or false";
@@ -183,7 +189,8 @@ const std::vector<Key>& known_keys() {
        }},
       {"explorer.quality",
        [](const toml::node& n, Settings& s) {
-         return set_choice(n, s.explorer.full_quality_samples, {{"fast", 2}, {"balanced", 8}, {"high", 32}});
+         return set_choice(n, s.explorer.full_quality_samples,
+                           {{"fast", 2}, {"balanced", 8}, {"high", 32}});
        }},
       {"controls.mouse_sensitivity",
        [](const toml::node& n, Settings& s) {
@@ -223,9 +230,10 @@ size_t edit_distance(const std::string& a, const std::string& b) {
 }
 
 // The explorer's actions that keys can be bound to (app/input.cpp implements them).
-const char* const kActionNames[] = {"move_forward", "move_back", "move_left", "move_right", "move_up",
-                                    "move_down", "speed_up", "mouse_look", "camera_mode", "overlay",
-                                    "fullscreen", "next_scene", "previous_scene", "screenshot", "quit"};
+const char* const kActionNames[] = {"move_forward",   "move_back",  "move_left",  "move_right",
+                                    "move_up",        "move_down",  "speed_up",   "mouse_look",
+                                    "camera_mode",    "overlay",    "fullscreen", "next_scene",
+                                    "previous_scene", "screenshot", "quit"};
 
 void apply_key_bindings(const toml::node& node, const std::string& file, Settings& s,
                         std::vector<SettingsProblem>& problems) {
@@ -321,38 +329,49 @@ std::string nearest_known_key(const std::string& key) {
 }
 
 std::string format_settings_toml(const Settings& s) {
-  auto choice = [](int v, std::initializer_list<const char*> names) { return "\"" + std::string(*(names.begin() + v)) + "\""; };
+  auto choice = [](int v, std::initializer_list<const char*> names) {
+    return "\"" + std::string(*(names.begin() + v)) + "\"";
+  };
   auto on = [&](fr_features f) { return (s.render.disabled_stages & f) ? "false" : "true"; };
   std::ostringstream out;
-  out << "# Fractalis settings, written by the explorer. See config/default.toml for every key.\n\n";
+  out << "# Fractalis settings, written by the explorer. See config/default.toml for every "
+         "key.\n\n";
   out << "[plugins]\nfolders = [";
   for (size_t i = 0; i < s.plugin_folders.size(); ++i)
     out << (i ? ", " : "") << toml::value<std::string>(s.plugin_folders[i].string());
   out << "]\n\n[device]\nselect = " << toml::value<std::string>(s.device) << "\n\n";
   const RenderSettings& r = s.render;
-  out << "[render]\nlanes = " << r.lanes << "\nprecision = " << (r.precision == Precision::Double ? "\"double\"" : "\"float\"")
-      << "\nsamples = " << r.samples << "\nmax_steps = " << r.max_steps << "\nmax_bounces = " << r.max_bounces
-      << "\nhit_threshold_k = " << r.hit_threshold_k << "\nexposure = " << r.exposure << "\nao_strength = " << r.ao_strength
-      << "\nroughness = " << r.roughness << "\nreflectivity = " << r.reflectivity << "\naperture = " << r.aperture_radius
-      << "\nfocus_distance = " << r.focus_distance
-      << "\nshading_model = " << choice(static_cast<int>(r.shading), {"lambert", "blinn-phong", "oren-nayar"})
+  out << "[render]\nlanes = " << r.lanes
+      << "\nprecision = " << (r.precision == Precision::Double ? "\"double\"" : "\"float\"")
+      << "\nsamples = " << r.samples << "\nmax_steps = " << r.max_steps
+      << "\nmax_bounces = " << r.max_bounces << "\nhit_threshold_k = " << r.hit_threshold_k
+      << "\nexposure = " << r.exposure << "\nao_strength = " << r.ao_strength
+      << "\nroughness = " << r.roughness << "\nreflectivity = " << r.reflectivity
+      << "\naperture = " << r.aperture_radius << "\nfocus_distance = " << r.focus_distance
+      << "\nshading_model = "
+      << choice(static_cast<int>(r.shading), {"lambert", "blinn-phong", "oren-nayar"})
       << "\nnormal_method = " << choice(static_cast<int>(r.normals), {"tetrahedron", "central"})
       << "\nao_method = " << choice(static_cast<int>(r.ao_method), {"step-count", "sampled"})
       << "\nshadow_method = " << choice(static_cast<int>(r.shadow_method), {"hard", "soft"})
-      << "\nfog_method = " << choice(static_cast<int>(r.fog_method), {"power", "exponential"}) << "\n\n";
+      << "\nfog_method = " << choice(static_cast<int>(r.fog_method), {"power", "exponential"})
+      << "\n\n";
   out << "[render.effects]\nshadows = " << on(FR_FEATURE_SHADOWS) << "\nao = " << on(FR_FEATURE_AO)
-      << "\nglow = " << on(FR_FEATURE_GLOW) << "\nfog = " << on(FR_FEATURE_FOG) << "\nreflections = "
-      << on(FR_FEATURE_REFLECTIONS) << "\ndof = " << on(kStageDepthOfField) << "\n\n";
+      << "\nglow = " << on(FR_FEATURE_GLOW) << "\nfog = " << on(FR_FEATURE_FOG)
+      << "\nreflections = " << on(FR_FEATURE_REFLECTIONS) << "\ndof = " << on(kStageDepthOfField)
+      << "\n\n";
   const ExplorerSettings& e = s.explorer;
   out << "[window]\nwidth = " << e.window_width_px << "\nheight = " << e.window_height_px
       << "\nfullscreen = " << (e.fullscreen ? "true" : "false") << "\n\n";
-  const char* quality = e.full_quality_samples <= 2 ? "fast" : e.full_quality_samples <= 8 ? "balanced" : "high";
+  const char* quality = e.full_quality_samples <= 2   ? "fast"
+                        : e.full_quality_samples <= 8 ? "balanced"
+                                                      : "high";
   out << "[explorer]\ntarget_fps = " << e.target_fps << "\nquality = \"" << quality << "\"\n\n";
-  out << "[controls]\nmouse_sensitivity = " << e.mouse_sensitivity_deg_per_px << "\ninvert_y = "
-      << (e.invert_y ? "true" : "false") << "\nspeed = " << e.speed << "\n";
+  out << "[controls]\nmouse_sensitivity = " << e.mouse_sensitivity_deg_per_px
+      << "\ninvert_y = " << (e.invert_y ? "true" : "false") << "\nspeed = " << e.speed << "\n";
   if (!e.key_bindings.empty()) {
     out << "\n[controls.keys]\n";
-    for (const auto& [key, action] : e.key_bindings) out << action << " = " << toml::value<std::string>(key) << "\n";
+    for (const auto& [key, action] : e.key_bindings)
+      out << action << " = " << toml::value<std::string>(key) << "\n";
   }
   return out.str();
 }

@@ -19,11 +19,11 @@ struct ExplorerSettings {
   int window_width_px = 1280;
   int window_height_px = 720;
   bool fullscreen = false;
-  double target_fps = 30;          // held while the camera moves
-  int full_quality_samples = 8;    // accumulated once it stops ("quality" presets: 2, 8, 32)
+  double target_fps = 30;        // held while the camera moves
+  int full_quality_samples = 8;  // accumulated once it stops ("quality" presets: 2, 8, 32)
   double mouse_sensitivity_deg_per_px = 0.15;
   bool invert_y = false;
-  double speed = 1.0;              // fly speed, in distances-to-the-surface per second
+  double speed = 1.0;  // fly speed, in distances-to-the-surface per second
   std::map<std::string, std::string> key_bindings;  // key name -> action name, over the defaults
 };
 

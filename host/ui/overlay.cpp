@@ -18,7 +18,8 @@ bool edit_param(const ParamInfo& p, fr_value& v) {
   switch (p.type) {
     case FR_PARAM_FLOAT: {
       float f = static_cast<float>(v.v[0]);
-      const ImGuiSliderFlags flags = (p.flags & FR_PARAM_LOG_SCALE) ? ImGuiSliderFlags_Logarithmic : 0;
+      const ImGuiSliderFlags flags =
+          (p.flags & FR_PARAM_LOG_SCALE) ? ImGuiSliderFlags_Logarithmic : 0;
       changed = ImGui::SliderFloat(label, &f, static_cast<float>(p.min_value.v[0]),
                                    static_cast<float>(p.max_value.v[0]), "%.4g", flags);
       if (changed) v.v[0] = f;
@@ -26,7 +27,8 @@ bool edit_param(const ParamInfo& p, fr_value& v) {
     }
     case FR_PARAM_INT: {
       int i = static_cast<int>(v.v[0]);
-      changed = ImGui::SliderInt(label, &i, static_cast<int>(p.min_value.v[0]), static_cast<int>(p.max_value.v[0]));
+      changed = ImGui::SliderInt(label, &i, static_cast<int>(p.min_value.v[0]),
+                                 static_cast<int>(p.max_value.v[0]));
       if (changed) v.v[0] = i;
       break;
     }
@@ -37,28 +39,33 @@ bool edit_param(const ParamInfo& p, fr_value& v) {
       break;
     }
     case FR_PARAM_COLOR: {
-      float c[3] = {static_cast<float>(v.v[0]), static_cast<float>(v.v[1]), static_cast<float>(v.v[2])};
+      float c[3] = {static_cast<float>(v.v[0]), static_cast<float>(v.v[1]),
+                    static_cast<float>(v.v[2])};
       changed = ImGui::ColorEdit3(label, c);
       if (changed) v = fr_value{{c[0], c[1], c[2]}};
       break;
     }
     default: {
-      float c[3] = {static_cast<float>(v.v[0]), static_cast<float>(v.v[1]), static_cast<float>(v.v[2])};
+      float c[3] = {static_cast<float>(v.v[0]), static_cast<float>(v.v[1]),
+                    static_cast<float>(v.v[2])};
       changed = ImGui::DragFloat3(label, c, 0.01f, static_cast<float>(p.min_value.v[0]),
                                   static_cast<float>(p.max_value.v[0]));
       if (changed) v = fr_value{{c[0], c[1], c[2]}};
       break;
     }
   }
-  if (!p.description.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", p.description.c_str());
+  if (!p.description.empty() && ImGui::IsItemHovered())
+    ImGui::SetTooltip("%s", p.description.c_str());
   return changed;
 }
 
 bool effect_toggle(const char* label, fr_features feature, RenderSettings& s) {
   bool on = !(s.disabled_stages & feature);
   if (!ImGui::Checkbox(label, &on)) return false;
-  if (on) s.disabled_stages &= ~feature;
-  else s.disabled_stages |= feature;
+  if (on)
+    s.disabled_stages &= ~feature;
+  else
+    s.disabled_stages |= feature;
   return true;
 }
 
@@ -99,9 +106,12 @@ void draw_overlay(Explorer& explorer, OverlayState& overlay) {
   // Parameters, grouped as the scene declares them.
   const SceneInfo& info = slot.scene->info;
   std::map<std::string, std::vector<int>> groups;
-  for (int i = 0; i < static_cast<int>(info.params.size()); ++i) groups[info.params[i].group].push_back(i);
+  for (int i = 0; i < static_cast<int>(info.params.size()); ++i)
+    groups[info.params[i].group].push_back(i);
   for (const auto& [group, indices] : groups) {
-    if (!ImGui::CollapsingHeader(group.empty() ? "Parameters" : group.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) continue;
+    if (!ImGui::CollapsingHeader(group.empty() ? "Parameters" : group.c_str(),
+                                 ImGuiTreeNodeFlags_DefaultOpen))
+      continue;
     for (int i : indices) {
       ImGui::PushID(i);
       if (edit_param(info.params[i], slot.state.params[i])) {
@@ -125,8 +135,10 @@ void draw_overlay(Explorer& explorer, OverlayState& overlay) {
     changed |= choice("Normals", s.normals, {"tetrahedron", "central differences"});
     changed |= choice("AO method", s.ao_method, {"step count", "sampled"});
     changed |= choice("Shadows", s.shadow_method, {"hard", "soft"});
-    changed |= ImGui::SliderFloat("Exposure", &s.exposure, 0.1f, 4.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
-    changed |= ImGui::SliderFloat("Detail (k)", &s.hit_threshold_k, 0.05f, 4.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
+    changed |= ImGui::SliderFloat("Exposure", &s.exposure, 0.1f, 4.0f, "%.2f",
+                                  ImGuiSliderFlags_Logarithmic);
+    changed |= ImGui::SliderFloat("Detail (k)", &s.hit_threshold_k, 0.05f, 4.0f, "%.2f",
+                                  ImGuiSliderFlags_Logarithmic);
     changed |= ImGui::SliderInt("Max steps", &s.max_steps, 16, 1000);
     changed |= ImGui::SliderFloat("Aperture", &s.aperture_radius, 0.0f, 0.5f, "%.3f");
     if (changed) explorer.mark_changed();
@@ -135,7 +147,8 @@ void draw_overlay(Explorer& explorer, OverlayState& overlay) {
       std::error_code ec;
       std::filesystem::create_directories(overlay.settings_file.parent_path(), ec);
       std::string error;
-      if (write_file_atomic(overlay.settings_file, format_settings_toml(explorer.settings()), &error))
+      if (write_file_atomic(overlay.settings_file, format_settings_toml(explorer.settings()),
+                            &error))
         explorer.add_message("saved settings to " + overlay.settings_file.string());
       else
         explorer.add_message(error);
@@ -146,7 +159,8 @@ void draw_overlay(Explorer& explorer, OverlayState& overlay) {
     fr_camera& c = slot.state.camera;
     ImGui::Text("eye    %.4f, %.4f, %.4f", c.eye[0], c.eye[1], c.eye[2]);
     ImGui::Text("target %.4f, %.4f, %.4f", c.target[0], c.target[1], c.target[2]);
-    ImGui::Text("mode: %s (O), mouse look: %s (M)", explorer.camera_mode() == CameraMode::Fly ? "fly" : "orbit",
+    ImGui::Text("mode: %s (O), mouse look: %s (M)",
+                explorer.camera_mode() == CameraMode::Fly ? "fly" : "orbit",
                 explorer.mouse_look() ? "on" : "off");
     float fov = static_cast<float>(c.fov_deg);
     if (ImGui::SliderFloat("Field of view", &fov, 10, 120, "%.0f deg")) {
@@ -171,7 +185,8 @@ void draw_overlay(Explorer& explorer, OverlayState& overlay) {
 
   if (ImGui::CollapsingHeader("Screenshot")) {
     ImGui::Checkbox("At window size", &overlay.screenshot_at_window_size);
-    if (!overlay.screenshot_at_window_size) ImGui::InputInt2("Size", overlay.screenshot_size.data());
+    if (!overlay.screenshot_at_window_size)
+      ImGui::InputInt2("Size", overlay.screenshot_size.data());
     if (ImGui::Button("Save PNG (F12)")) overlay.screenshot_requested = true;
   }
   for (const std::string& m : explorer.messages()) ImGui::TextWrapped("%s", m.c_str());

@@ -3,9 +3,9 @@
 #include "render/renderer.hpp"
 
 #include <SDL.h>
-#include <imgui.h>
 #include <backends/imgui_impl_sdl.h>
 #include <backends/imgui_impl_sdlrenderer.h>
+#include <imgui.h>
 
 #include <cstdlib>
 #include <stdexcept>
@@ -39,7 +39,8 @@ Window::Window(const std::string& title, int w, int h, bool fullscreen) {
   SDL_SetHint(SDL_HINT_RENDER_SCALE_QUALITY, "linear");
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
-  ImGui::GetIO().IniFilename = nullptr;  // the explorer's settings live in config.toml, not imgui.ini
+  ImGui::GetIO().IniFilename =
+      nullptr;  // the explorer's settings live in config.toml, not imgui.ini
   ImGui::StyleColorsDark();
   ImGui_ImplSDL2_InitForSDLRenderer(window_);
   ImGui_ImplSDLRenderer_Init(renderer_);
@@ -76,7 +77,9 @@ void Window::set_fullscreen(bool on) {
   fullscreen_ = on;
 }
 
-void Window::set_mouse_capture(bool on) { SDL_SetRelativeMouseMode(on ? SDL_TRUE : SDL_FALSE); }
+void Window::set_mouse_capture(bool on) {
+  SDL_SetRelativeMouseMode(on ? SDL_TRUE : SDL_FALSE);
+}
 
 void Window::poll(const KeyBindings& bindings, InputState& input) {
   SDL_Event e;
@@ -86,14 +89,18 @@ void Window::poll(const KeyBindings& bindings, InputState& input) {
     const bool overlay_mouse = ImGui::GetIO().WantCaptureMouse && !SDL_GetRelativeMouseMode();
     InputEvent ev;
     switch (e.type) {
-      case SDL_QUIT: ev.type = InputEvent::Type::Quit; break;
+      case SDL_QUIT:
+        ev.type = InputEvent::Type::Quit;
+        break;
       case SDL_WINDOWEVENT:
-        if (e.window.event == SDL_WINDOWEVENT_CLOSE) ev.type = InputEvent::Type::Quit;
+        if (e.window.event == SDL_WINDOWEVENT_CLOSE)
+          ev.type = InputEvent::Type::Quit;
         else if (e.window.event == SDL_WINDOWEVENT_SIZE_CHANGED) {
           ev.type = InputEvent::Type::WindowResized;
           ev.width = e.window.data1;
           ev.height = e.window.data2;
-        } else continue;
+        } else
+          continue;
         break;
       case SDL_KEYDOWN:
       case SDL_KEYUP:
@@ -112,7 +119,8 @@ void Window::poll(const KeyBindings& bindings, InputState& input) {
         ev.type = InputEvent::Type::MouseWheel;
         ev.dy = e.wheel.y;
         break;
-      default: continue;
+      default:
+        continue;
     }
     apply_input_event(bindings, ev, input);
   }
@@ -142,7 +150,8 @@ void Window::present(const FrameImage* image, const std::function<void()>& draw_
     captured_w_ = width_px();
     captured_h_ = height_px();
     captured_.resize(static_cast<size_t>(captured_w_) * captured_h_ * 4);
-    SDL_RenderReadPixels(renderer_, nullptr, SDL_PIXELFORMAT_ABGR8888, captured_.data(), captured_w_ * 4);
+    SDL_RenderReadPixels(renderer_, nullptr, SDL_PIXELFORMAT_ABGR8888, captured_.data(),
+                         captured_w_ * 4);
     capture_ = false;
   }
   SDL_RenderPresent(renderer_);
