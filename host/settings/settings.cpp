@@ -37,6 +37,14 @@ std::string set_float(const toml::node& n, float& out, double lo, double hi, boo
   return "";
 }
 
+std::string set_double(const toml::node& n, double& out, double lo, double hi,
+                       bool lo_open = false) {
+  float v = static_cast<float>(out);
+  std::string error = set_float(n, v, lo, hi, lo_open);
+  if (error.empty()) out = *n.value<double>();
+  return error;
+}
+
 template <typename Enum>
 std::string set_choice(const toml::node& n, Enum& out,
                        std::initializer_list<std::pair<const char*, Enum>> choices) {
@@ -182,10 +190,7 @@ const std::vector<Key>& known_keys() {
        }},
       {"explorer.target_fps",
        [](const toml::node& n, Settings& s) {
-         float v = static_cast<float>(s.explorer.target_fps);
-         std::string e = set_float(n, v, 1, 240);
-         if (e.empty()) s.explorer.target_fps = v;
-         return e;
+         return set_double(n, s.explorer.target_fps, 1, 240);
        }},
       {"explorer.quality",
        [](const toml::node& n, Settings& s) {
@@ -194,10 +199,7 @@ const std::vector<Key>& known_keys() {
        }},
       {"controls.mouse_sensitivity",
        [](const toml::node& n, Settings& s) {
-         float v = static_cast<float>(s.explorer.mouse_sensitivity_deg_per_px);
-         std::string e = set_float(n, v, 0, 10, true);
-         if (e.empty()) s.explorer.mouse_sensitivity_deg_per_px = v;
-         return e;
+         return set_double(n, s.explorer.mouse_sensitivity_deg_per_px, 0, 10, true);
        }},
       {"controls.invert_y",
        [](const toml::node& n, Settings& s) -> std::string {
@@ -205,13 +207,8 @@ const std::vector<Key>& known_keys() {
          s.explorer.invert_y = *n.value<bool>();
          return "";
        }},
-      {"controls.speed",
-       [](const toml::node& n, Settings& s) {
-         float v = static_cast<float>(s.explorer.speed);
-         std::string e = set_float(n, v, 0, 100, true);
-         if (e.empty()) s.explorer.speed = v;
-         return e;
-       }},
+      {"controls.speed", [](const toml::node& n,
+                            Settings& s) { return set_double(n, s.explorer.speed, 0, 100, true); }},
       // controls.keys is a table of action = "key name"; apply_key_bindings checks it.
   };
   return keys;
