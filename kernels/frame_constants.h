@@ -60,7 +60,7 @@ typedef struct fr_frame_constants {
   float jitter_x;          /* sub-pixel offset of this sample, pixels */
   float jitter_y;
   float accumulate_weight; /* weight of this sample in the running mean: 1 / (sample_index + 1) */
-  float reserved;          /* zero; keeps the struct a multiple of 16 bytes */
+  float relaxation;        /* over-relaxation factor omega of the march, in [1, 2) */
 } fr_frame_constants;
 
 #endif /* FR_FRAME_CONSTANTS_H */

@@ -28,9 +28,13 @@ inline mask_t intersect_bounds(ray_t ray, scalar_t radius, real_t* t_enter, real
 /* Marches each lane until it is within the hit threshold of the surface, leaves the bounding
  * sphere or runs out of steps. `path_t` is the length already travelled (before a bounce), so
  * the threshold keeps following the pixel's footprint. Rays that run out of steps count as hits:
- * they are deep in a crevice, where a miss would show the sky through the surface. The DE is only
- * roughly 1-Lipschitz, so each step is scaled by fc->step_scale and never exceeds the bounding
- * radius. */
+ * they are deep in a crevice, where a miss would show the sky through the surface.
+ *
+ * Over-relaxed (Keinert et al. 2014): each step is omega times the DE. Where the unbounding
+ * spheres of two consecutive steps do not overlap, the step overshot the guarantee; the lane then
+ * steps back and continues with omega = 1 — the fallback that makes relaxation safe for DEs that
+ * are only roughly 1-Lipschitz. A hit is accepted only on a step that did not fail. The DE is
+ * also scaled by fc->step_scale, and no step exceeds the bounding radius. */
 march_result_t march(ray_t ray, real_t path_t, __constant const fr_frame_constants* fc,
                      __constant const scene_params_t* params) {
   real_t t, t_exit;
@@ -41,15 +45,24 @@ march_result_t march(ray_t ray, real_t path_t, __constant const fr_frame_constan
   real_t steps = (real_t)0;
   real_t min_dist = (real_t)FR_SCALAR_MAX;
   const real_t max_step = (real_t)fc->bounding_radius;
+  real_t omega = (real_t)fc->relaxation;
+  real_t previous_radius = (real_t)0;
+  real_t step = (real_t)0;
   for (int i = 0; i < fc->max_steps && any_lane(active); ++i) {
     vec3_t p = v3_mad(ray.origin, ray.dir, t);
-    real_t dist = scene_de(p, params);
+    real_t dist = scene_de(p, params) * (real_t)fc->step_scale;
     FR_MARCH_TRACK(min_dist, dist, active);
-    mask_t reached = active & (dist < hit_threshold(fc, path_t + t, p));
+    real_t radius = fabs(dist);
+    mask_t overshot = (omega > (real_t)1) & (radius + previous_radius < step);
+    /* Overshot: go back to where the previous (safe) sphere ended, unrelaxed from here on. */
+    step = lane_select(overshot, step - omega * step, fmin(dist * omega, max_step));
+    omega = lane_select(overshot, 1, omega);
+    previous_radius = radius;
+    mask_t reached = active & !overshot & (dist < hit_threshold(fc, path_t + t, p));
     steps += mask_to_real(active);
     hit |= reached;
     active &= !reached;
-    t = lane_select(active, t + fmin(dist * (real_t)fc->step_scale, max_step), t);
+    t = lane_select(active, t + step, t);
     active &= t < t_exit;
   }
   march_result_t r;

@@ -93,6 +93,7 @@ TEST(Settings, DefaultFileMatchesBuiltInDefaults) {
   EXPECT_EQ(from_file.render.ao_strength, builtin.render.ao_strength);
   EXPECT_EQ(from_file.render.disabled_stages, builtin.render.disabled_stages);
   EXPECT_EQ(from_file.render.samples, builtin.render.samples);
+  EXPECT_EQ(from_file.render.relaxation, builtin.render.relaxation);
   EXPECT_EQ(from_file.render.max_bounces, builtin.render.max_bounces);
   EXPECT_EQ(from_file.render.roughness, builtin.render.roughness);
   EXPECT_EQ(from_file.render.reflectivity, builtin.render.reflectivity);

@@ -35,12 +35,11 @@ int bench_explore(ParsedOptions options, std::ostream& out, std::ostream& err) {
                 "explore bench: scene %s, window %dx%d, %d frames flying\n"
                 "moving: median %.2f ms (%.1f fps), p95 %.2f ms, min %.2f ms, max %.2f ms, mean "
                 "resolution scale %.2f\n"
-                "stopped: full quality (%d samples at full resolution) after %.2f s, %d frames\n",
+                "stopped: full resolution after %.2f s, full quality (%d samples) after %.2f s, %d frames\n",
                 p.scene->info.id.c_str(), p.render.width_px, p.render.height_px, frames,
                 r.moving.p50_ms, 1000.0 / r.moving.p50_ms, r.moving.p95_ms, r.moving.min_ms,
-                r.moving.max_ms, r.mean_resolution_scale,
-                FrameControllerSettings{}.full_quality_samples, r.seconds_to_full_quality,
-                r.refine_frames);
+                r.moving.max_ms, r.mean_resolution_scale, r.seconds_to_full_resolution,
+                settings.explorer.full_quality_samples, r.seconds_to_full_quality, r.refine_frames);
   out << line << "device " << p.device.name << "\n";
   return 0;
 }

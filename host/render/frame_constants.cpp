@@ -20,7 +20,7 @@ static_assert(offsetof(fr_frame_constants, light_vector) == 112);
 static_assert(offsetof(fr_frame_constants, ambient_color) == 496);
 static_assert(offsetof(fr_frame_constants, width) == 608);
 static_assert(offsetof(fr_frame_constants, pixel_angle_rad) == 640);
-static_assert(offsetof(fr_frame_constants, reserved) == 716);
+static_assert(offsetof(fr_frame_constants, relaxation) == 716);
 
 namespace {
 void put(float out[4], glm::dvec3 v, double w = 0) {
@@ -112,6 +112,7 @@ fr_frame_constants make_frame_constants(const CameraRays& rays, const SceneState
   fc.jitter_x = static_cast<float>(jitter[0]);
   fc.jitter_y = static_cast<float>(jitter[1]);
   fc.accumulate_weight = 1.0f / static_cast<float>(sample_index + 1);
+  fc.relaxation = s.relaxation;
   return fc;
 }
 

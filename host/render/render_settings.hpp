@@ -37,6 +37,7 @@ struct RenderSettings {
   float hit_threshold_k = 0.5f;  // epsilon = k * t * pixel angle
   float max_distance = 100.0f;
   float step_scale = 1.0f;
+  float relaxation = 1.3f;  // over-relaxed sphere tracing's omega; 1 is plain sphere tracing
   float ao_strength = 2.5f;
   float ao_distance = 0.1f;  // x bounding radius
   float shadow_softness = 12.0f;

@@ -121,6 +121,8 @@ const std::vector<Key>& known_keys() {
        [](const toml::node& n, Settings& s) {
          return set_float(n, s.render.ao_strength, 0, 100, true);
        }},
+      {"render.relaxation",
+       [](const toml::node& n, Settings& s) { return set_float(n, s.render.relaxation, 1, 1.95); }},
       {"render.roughness",
        [](const toml::node& n, Settings& s) { return set_float(n, s.render.roughness, 0, 1.5); }},
       {"render.reflectivity",
