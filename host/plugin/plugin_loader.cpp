@@ -83,16 +83,6 @@ std::string check_param(const fr_param_desc& p, size_t index) {
   return "";
 }
 
-std::string check_camera(const fr_camera& c) {
-  for (int i = 0; i < 3; ++i)
-    if (!std::isfinite(c.eye[i]) || !std::isfinite(c.target[i]) || !std::isfinite(c.up[i]))
-      return "default camera has a non-finite coordinate";
-  if (c.eye[0] == c.target[0] && c.eye[1] == c.target[1] && c.eye[2] == c.target[2])
-    return "default camera's target equals its eye";
-  if (!(c.fov_deg > 0 && c.fov_deg < 180)) return "default camera's fov_deg must be in (0, 180)";
-  return "";
-}
-
 // Validates the descriptor and copies it into host memory.
 std::variant<SceneInfo, Invalid> copy_scene(const fr_scene_desc* desc_ptr) {
   auto invalid = [](std::string m) { return Invalid{LoadResult::InvalidScene, std::move(m)}; };
@@ -165,8 +155,8 @@ std::variant<SceneInfo, Invalid> copy_scene(const fr_scene_desc* desc_ptr) {
                                                      " is smaller than ABI 1.0's " +
                                                      std::to_string(kCameraSizeV1_0)};
     info.camera = copy_struct(d.camera);
-    if (std::string err = check_camera(info.camera); !err.empty())
-      return invalid("scene '" + id + "': " + err);
+    if (auto problem = check_camera(info.camera))
+      return invalid("scene '" + id + "': default camera: " + *problem);
   } else {
     info.camera = fr_camera{sizeof(fr_camera), 0, {0, 0, 4}, {0, 0, 0}, {0, 1, 0}, 45};
   }

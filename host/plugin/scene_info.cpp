@@ -1,5 +1,10 @@
 #include "plugin/scene_info.hpp"
 
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+#include <cmath>
+
 namespace fr {
 
 const char* param_type_name(fr_param_type type) {
@@ -22,6 +27,21 @@ int SceneInfo::find_param(const std::string& key) const {
   for (size_t i = 0; i < params.size(); ++i)
     if (params[i].key == key) return static_cast<int>(i);
   return -1;
+}
+
+std::optional<std::string> check_camera(const fr_camera& c) {
+  for (int i = 0; i < 3; ++i)
+    if (!std::isfinite(c.eye[i]) || !std::isfinite(c.target[i]) || !std::isfinite(c.up[i]))
+      return "camera has a non-finite coordinate";
+  if (!(c.fov_deg > 0 && c.fov_deg < 180))
+    return "field of view " + std::to_string(c.fov_deg) + " is outside (0, 180) degrees";
+  const glm::dvec3 eye(c.eye[0], c.eye[1], c.eye[2]), up(c.up[0], c.up[1], c.up[2]);
+  const glm::dvec3 t = glm::dvec3(c.target[0], c.target[1], c.target[2]) - eye;
+  if (glm::length(t) == 0) return "target equals eye";
+  const glm::dvec3 b = glm::cross(up, t);
+  if (!(glm::length(b) > 1e-12 * glm::length(t) * glm::length(up)))
+    return "up direction is zero or parallel to the view direction";
+  return std::nullopt;
 }
 
 }  // namespace fr

@@ -9,6 +9,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,11 @@ struct ParamInfo {
 };
 
 const char* param_type_name(fr_param_type type);
+
+// Why a camera cannot make rays (a non-finite value, fov outside (0, 180) degrees, target at the
+// eye, up zero or parallel to the view), or nullopt when it can. Checked on a scene's default
+// camera when it loads, and on the camera the command line sets.
+std::optional<std::string> check_camera(const fr_camera& camera);
 
 struct SceneInfo {
   std::string id;

@@ -11,20 +11,6 @@ glm::dvec3 to_vec(const double v[3]) {
 }
 }  // namespace
 
-std::optional<std::string> check_camera(const fr_camera& c) {
-  for (int i = 0; i < 3; ++i)
-    if (!std::isfinite(c.eye[i]) || !std::isfinite(c.target[i]) || !std::isfinite(c.up[i]))
-      return "camera has a non-finite coordinate";
-  if (!(c.fov_deg > 0 && c.fov_deg < 180))
-    return "field of view " + std::to_string(c.fov_deg) + " is outside (0, 180) degrees";
-  const glm::dvec3 t = to_vec(c.target) - to_vec(c.eye);
-  if (glm::length(t) == 0) return "target equals eye";
-  const glm::dvec3 b = glm::cross(to_vec(c.up), t);
-  if (!(glm::length(b) > 1e-12 * glm::length(t) * glm::length(to_vec(c.up))))
-    return "up direction is zero or parallel to the view direction";
-  return std::nullopt;
-}
-
 CameraRays make_camera_rays(const fr_camera& c, int k, int m) {
   const glm::dvec3 t = to_vec(c.target) - to_vec(c.eye);
   const glm::dvec3 b = glm::cross(to_vec(c.up), t);

@@ -10,6 +10,8 @@
 // pixel; image column x (0 = left) is i - 1 = k - 1 - x and row y (0 = top) is j - 1 = m - 1 - y.
 #pragma once
 
+#include "plugin/scene_info.hpp"  // check_camera
+
 #include <fractalis/scene.h>
 
 #include <glm/vec3.hpp>
@@ -32,12 +34,8 @@ struct CameraRays {
   double pixel_angle_rad = 0;  // angle between neighbouring pixel centres at the image centre
 };
 
-// Why the camera cannot make rays (target at the eye, up parallel to the view, fov outside
-// (0, 180) degrees, a non-finite value), or nullopt when it can.
-std::optional<std::string> check_camera(const fr_camera& camera);
-
 // The seed model's vectors for a width_px x height_px image (each >= 1). The camera must pass
-// check_camera.
+// check_camera (plugin/scene_info.hpp).
 CameraRays make_camera_rays(const fr_camera& camera, int width_px, int height_px);
 
 // Unit direction of the ray through image pixel (x, y), row 0 at the top; the same arithmetic

@@ -89,8 +89,8 @@ static const fr_scene_desc scene = {
     .surface_source = fr_surface_source,
     .surface_source_name = "benchmark_surface.cl",
     .params = params,
-    .param_count = P_COUNT,
-    .light_count = 2,
+    .param_count = FR_ARRAY_COUNT(params),
+    .light_count = FR_ARRAY_COUNT(lights),
     .features = FR_FEATURE_AO | FR_FEATURE_SHADOWS | FR_FEATURE_REFLECTIONS | FR_FEATURE_FOG |
                 FR_FEATURE_GLOW,
     .camera = &camera,

@@ -34,6 +34,10 @@
 #define FR_COLOR_PARAM(key, name, group, desc, r, g, b) \
   FR_PARAM_DESC_(FR_PARAM_COLOR, key, name, group, desc, 0, r, g, b, 0, 0, 0, 1, 1, 1)
 
+/* The number of elements of a static array, for fr_scene_desc.param_count and .light_count, so a
+ * count can never disagree with its table. */
+#define FR_ARRAY_COUNT(array) ((uint32_t)(sizeof(array) / sizeof((array)[0])))
+
 #define FR_CAMERA(eye_x, eye_y, eye_z, target_x, target_y, target_z, up_x, up_y, up_z, fov)        \
   {                                                                                                \
     .struct_size = sizeof(fr_camera), .reserved = 0, .eye = {(eye_x), (eye_y), (eye_z)},           \
