@@ -65,8 +65,10 @@ TEST(Cli, UsageErrors) {
                      "expected one of \"lambert\", \"blinn-phong\", \"oren-nayar\"");
   expect_usage_error({"render", "--set", "render.effects.fog=maybe"}, "render.effects.fog");
   expect_usage_error({"render", "--samples", "0"}, "--samples: 0 is outside [1, 4096]");
-  expect_usage_error({"render", "--out", "/no/such/folder/x.png"}, "--out: folder '/no/such/folder' does not exist");
+  expect_usage_error({"render", "--out", "/no/such/folder/x.png"},
+                     "--out: folder '/no/such/folder' does not exist");
   expect_usage_error({"bench", "--runs", "0"}, "--runs: 0 is outside");
+  expect_usage_error({"bench", "--explore", "--scene", "nope"}, "unknown scene 'nope'");
 }
 
 TEST(Cli, HelpAndVersion) {

@@ -18,29 +18,25 @@ int bench_explore(ParsedOptions options, std::ostream& out, std::ostream& err) {
   if (!options.has("scene")) options.values["scene"] = {"mandelbulb"};
   const int frames =
       static_cast<int>(parse_integer("--frames", options.get("frames").value_or("120"), 1, 100000));
-  PreparedScene p = prepare_scene(options, err);
-  ClRuntime runtime(p.device);
-  std::vector<std::string> messages;
-  SceneLibrary library(plugin_folders(p.settings, options), runtime, &messages);
-  Settings settings = p.settings;
-  settings.render = p.render;
-  Explorer explorer(settings, runtime, library, p.scene->info.id);
-  explorer.current().state = p.state;
+  ExplorerSetup setup = prepare_explorer(options, err);
+  Explorer& explorer = *setup.explorer;
+  const RenderSettings& render = setup.settings.render;
   // Warm-up: build the kernels the flight uses (render and DE probe), untimed.
-  explorer.render(p.render.width_px, p.render.height_px);
+  explorer.render(render.width_px, render.height_px);
   const ExploreBenchResult r =
-      run_explore_bench(explorer, p.render.width_px, p.render.height_px, frames);
+      run_explore_bench(explorer, render.width_px, render.height_px, frames);
   char line[512];
-  std::snprintf(line, sizeof line,
-                "explore bench: scene %s, window %dx%d, %d frames flying\n"
-                "moving: median %.2f ms (%.1f fps), p95 %.2f ms, min %.2f ms, max %.2f ms, mean "
-                "resolution scale %.2f\n"
-                "stopped: full resolution after %.2f s, full quality (%d samples) after %.2f s, %d frames\n",
-                p.scene->info.id.c_str(), p.render.width_px, p.render.height_px, frames,
-                r.moving.p50_ms, 1000.0 / r.moving.p50_ms, r.moving.p95_ms, r.moving.min_ms,
-                r.moving.max_ms, r.mean_resolution_scale, r.seconds_to_full_resolution,
-                settings.explorer.full_quality_samples, r.seconds_to_full_quality, r.refine_frames);
-  out << line << "device " << p.device.name << "\n";
+  std::snprintf(
+      line, sizeof line,
+      "explore bench: scene %s, window %dx%d, %d frames flying\n"
+      "moving: median %.2f ms (%.1f fps), p95 %.2f ms, min %.2f ms, max %.2f ms, mean "
+      "resolution scale %.2f\n"
+      "stopped: full resolution after %.2f s, full quality (%d samples) after %.2f s, %d frames\n",
+      explorer.current().scene->info.id.c_str(), render.width_px, render.height_px, frames,
+      r.moving.p50_ms, 1000.0 / r.moving.p50_ms, r.moving.p95_ms, r.moving.min_ms, r.moving.max_ms,
+      r.mean_resolution_scale, r.seconds_to_full_resolution,
+      setup.settings.explorer.full_quality_samples, r.seconds_to_full_quality, r.refine_frames);
+  out << line << "device " << setup.runtime->device().name << "\n";
   return 0;
 }
 

@@ -29,32 +29,13 @@ int command_explore(const std::vector<std::string>& args, std::ostream& out, std
   }
   const long max_frames =
       options.has("frames") ? parse_integer("--frames", *options.get("frames"), 1, 1L << 40) : -1;
-  // A bad settings file does not stop the explorer: wrong values keep their defaults and the
-  // problems are shown (here and in the overlay).
-  std::vector<SettingsProblem> problems;
-  Settings settings = load_settings(options, &problems);
-  for (const auto& p : problems) err << "fractalis: warning: " << p.to_string() << "\n";
-  if (!options.has("size"))
-    options.values["size"] = {std::to_string(settings.explorer.window_width_px) + "x" +
-                              std::to_string(settings.explorer.window_height_px)};
-  RenderSettings render = render_settings_from(settings, options);
-  settings.render = render;
-  const auto folders = plugin_folders(settings, options);
-  if (folders.empty())
-    throw std::runtime_error("no plugin folder found (build the plugins, or pass --plugins DIR)");
   if (!display_available())
     throw std::runtime_error(
         "no display (DISPLAY and WAYLAND_DISPLAY are unset); use `fractalis render` instead");
-
-  ClRuntime runtime(choose_device(settings, options));
-  std::vector<std::string> load_messages;
-  SceneLibrary library(folders, runtime, &load_messages);
-  for (const auto& m : load_messages) err << "fractalis: warning: " << m << "\n";
-  Explorer explorer(settings, runtime, library, options.get("scene").value_or("mandelbulb"));
-  for (const auto& m : load_messages) explorer.add_message(m);
-  for (const auto& p : problems) explorer.add_message(p.to_string());
-  if (options.has("param") || options.has("eye") || options.has("target") || options.has("fov"))
-    apply_scene_overrides(explorer.current().scene->info, options, explorer.current().state);
+  ExplorerSetup setup = prepare_explorer(options, err);
+  Explorer& explorer = *setup.explorer;
+  const Settings& settings = setup.settings;
+  const RenderSettings& render = settings.render;
 
   Window window("Fractalis", render.width_px, render.height_px,
                 options.has("fullscreen") || settings.explorer.fullscreen);

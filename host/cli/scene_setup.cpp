@@ -89,16 +89,24 @@ std::vector<LoadOutcome> load_plugins(const std::vector<std::filesystem::path>& 
   return outcomes;
 }
 
+namespace {
+UsageError unknown_scene(const std::string& id, const std::vector<std::string>& available) {
+  std::string list;
+  for (const auto& a : available) list += (list.empty() ? "" : ", ") + a;
+  return UsageError("unknown scene '" + id + "' (available: " + (list.empty() ? "none" : list) +
+                    ")");
+}
+}  // namespace
+
 std::shared_ptr<const LoadedScene> find_scene(const std::vector<LoadOutcome>& outcomes,
                                               const std::string& id) {
-  std::string available;
+  std::vector<std::string> available;
   for (const auto& o : outcomes) {
     if (!o.scene) continue;
     if (o.scene->info.id == id) return o.scene;
-    available += (available.empty() ? "" : ", ") + o.scene->info.id;
+    available.push_back(o.scene->info.id);
   }
-  throw UsageError("unknown scene '" + id +
-                   "' (available: " + (available.empty() ? "none" : available) + ")");
+  throw unknown_scene(id, available);
 }
 
 namespace {
@@ -230,6 +238,39 @@ PreparedScene prepare_scene(const ParsedOptions& options, std::ostream& err) {
   p.instance = SceneInstance::create(p.scene, &error);
   if (!p.instance) throw std::runtime_error(error);
   return p;
+}
+
+}  // namespace fr
+
+namespace fr {
+
+ExplorerSetup prepare_explorer(ParsedOptions options, std::ostream& err) {
+  ExplorerSetup x;
+  std::vector<SettingsProblem> problems;
+  x.settings = load_settings(options, &problems);
+  for (const auto& p : problems) err << "fractalis: warning: " << p.to_string() << "\n";
+  if (!options.has("size"))
+    options.values["size"] = {std::to_string(x.settings.explorer.window_width_px) + "x" +
+                              std::to_string(x.settings.explorer.window_height_px)};
+  x.settings.render = render_settings_from(x.settings, options);
+  const auto folders = plugin_folders(x.settings, options);
+  if (folders.empty())
+    throw std::runtime_error("no plugin folder found (build the plugins, or pass --plugins DIR)");
+  x.runtime = std::make_unique<ClRuntime>(choose_device(x.settings, options));
+  std::vector<std::string> messages;
+  x.library = std::make_unique<SceneLibrary>(folders, *x.runtime, &messages);
+  for (const auto& m : messages) err << "fractalis: warning: " << m << "\n";
+  const std::string scene_id = options.get("scene").value_or("mandelbulb");
+  if (x.library->find(scene_id) < 0) {
+    std::vector<std::string> available;
+    for (const auto& slot : x.library->slots()) available.push_back(slot.scene->info.id);
+    throw unknown_scene(scene_id, available);
+  }
+  x.explorer = std::make_unique<Explorer>(x.settings, *x.runtime, *x.library, scene_id);
+  for (const auto& m : messages) x.explorer->add_message(m);
+  for (const auto& p : problems) x.explorer->add_message(p.to_string());
+  apply_scene_overrides(x.explorer->current().scene->info, options, x.explorer->current().state);
+  return x;
 }
 
 }  // namespace fr

@@ -2,6 +2,7 @@
 // the scene and device, and applying command-line overrides. Bad input becomes a UsageError.
 #pragma once
 
+#include "app/explorer.hpp"
 #include "cli/options.hpp"
 #include "plugin/plugin_loader.hpp"
 #include "plugin/scene_instance.hpp"
@@ -65,5 +66,21 @@ struct PreparedScene {
 // device, and the scene's instance. Throws UsageError for bad input, runtime_error when the
 // scene's create callback fails.
 PreparedScene prepare_scene(const ParsedOptions& options, std::ostream& err);
+
+}  // namespace fr
+
+namespace fr {
+
+// An explorer session, as `explore` and `bench --explore` start it: settings (leniently: each
+// problem is reported on `err` and in the overlay, and that value keeps its default), window size
+// from --size or the settings, device, the scene library over the plugin folders, and the
+// explorer on --scene with the command line's overrides.
+struct ExplorerSetup {
+  Settings settings;
+  std::unique_ptr<ClRuntime> runtime;
+  std::unique_ptr<SceneLibrary> library;
+  std::unique_ptr<Explorer> explorer;
+};
+ExplorerSetup prepare_explorer(ParsedOptions options, std::ostream& err);
 
 }  // namespace fr
