@@ -84,6 +84,50 @@ TEST_F(MandelbulbDe, LaneWidthsAgree) {
   }
 }
 
+// The textbook formula in double on the host: the angles through acos and atan2, r^n through
+// pow. An independent reference for both device paths (de Moivre for whole powers, the angles
+// for fractional ones).
+double reference_de(double px, double py, double pz, double power, double bailout,
+                    int iterations) {
+  double x = px, y = py, z = pz, dr = 1;
+  double r = std::sqrt(x * x + y * y + z * z);
+  for (int i = 0; i < iterations && r < bailout; ++i) {
+    const double theta = std::acos(z / r) * power, phi = std::atan2(y, x) * power;
+    const double zr = std::pow(r, power);
+    dr = power * std::pow(r, power - 1) * dr + 1;
+    x = zr * std::sin(theta) * std::cos(phi) + px;
+    y = zr * std::sin(theta) * std::sin(phi) + py;
+    z = zr * std::cos(theta) + pz;
+    r = std::sqrt(x * x + y * y + z * z);
+  }
+  return 0.5 * std::log(r) * r / dr;
+}
+
+// Whole powers take the trigonometry-free path and fractional ones the angles; both must be the
+// textbook formula. In double on the device the only differences left are rounding, amplified by
+// the orbit's sensitivity, so a tight tolerance holds at points off the polar axis.
+TEST_F(MandelbulbDe, MatchesTextbookFormulaForWholeAndFractionalPowers) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> u(-1.3f, 1.3f);
+  std::vector<std::array<float, 3>> pts;
+  for (int i = 0; i < 400; ++i) pts.push_back({u(rng), u(rng), u(rng)});
+  set("bailout", 2);
+  set("iterations", 6);
+  for (double power : {2.0, 3.0, 8.0, 16.0, 2.5, 7.25}) {
+    set("power", power);
+    const auto de = probe(pts, 16, Precision::Double);
+    int checked = 0;
+    for (size_t i = 0; i < pts.size(); ++i) {
+      const double expected = reference_de(pts[i][0], pts[i][1], pts[i][2], power, 2, 6);
+      EXPECT_NEAR(de[i], expected, 1e-5 * std::abs(expected) + 1e-7)
+          << "power " << power << " at (" << pts[i][0] << "," << pts[i][1] << "," << pts[i][2]
+          << ")";
+      checked += std::abs(expected) < 0.05;
+    }
+    EXPECT_GT(checked, 10) << "power " << power << ": too few points near the surface";
+  }
+}
+
 // Outside the set the DE is positive: on the sphere |p| = bounding radius (for several powers)
 // every point escapes, as the bound's proof says.
 TEST_F(MandelbulbDe, BoundingSphereIsOutsideTheSet) {

@@ -11,7 +11,7 @@
 /* The bulb's polar axis (its z) stands along world y: swapping y and z is an isometry. */
 inline real_t bench_bulb(vec3_t p, __constant const scene_params_t* params, real_t* trap) {
   vec3_t q = p_translate(p, BULB_CENTRE);
-  return de_mandelbulb(v3(q.x, q.z, q.y), to_real(PARAM(bulb_power)), to_real(2), PARAM(bulb_iterations),
+  return de_mandelbulb(v3(q.x, q.z, q.y), PARAM(bulb_power), to_real(2), PARAM(bulb_iterations),
                        trap);
 }
 

@@ -3,5 +3,5 @@
 
 real_t scene_de(vec3_t p, __constant const scene_params_t* params) {
   real_t trap;
-  return de_mandelbulb(p, to_real(PARAM(power)), to_real(PARAM(bailout)), PARAM(iterations), &trap);
+  return de_mandelbulb(p, PARAM(power), to_real(PARAM(bailout)), PARAM(iterations), &trap);
 }
