@@ -126,7 +126,8 @@ const FrameImage* Explorer::render(int window_width_px, int window_height_px) {
   const auto start = std::chrono::steady_clock::now();
   try {
     renderer_.render_sample(slot.scene->info, slot.state, s, plan.sample_index);
-    last_ = renderer_.finish(s, plan.sample_index == 0);
+    renderer_.finish(s, plan.sample_index == 0 ? Readback::DisplayAndSteps : Readback::Display,
+                     last_);
   } catch (const std::exception& e) {
     slot.error = e.what();
     add_message(e.what());

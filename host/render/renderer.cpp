@@ -56,7 +56,9 @@ void Renderer::ensure_buffers(size_t n) {
 FrameImage Renderer::render(const SceneInfo& info, const SceneState& state,
                             const RenderSettings& settings, bool read_linear) {
   for (int i = 0; i < std::max(1, settings.samples); ++i) render_sample(info, state, settings, i);
-  return finish(settings, read_linear);
+  FrameImage image;
+  finish(settings, read_linear ? Readback::Everything : Readback::Display, image);
+  return image;
 }
 
 void Renderer::render_sample(const SceneInfo& info, const SceneState& state,
@@ -105,7 +107,7 @@ void Renderer::render_sample(const SceneInfo& info, const SceneState& state,
            "clEnqueueNDRangeKernel", "rendering " + assembled.description);
 }
 
-FrameImage Renderer::finish(const RenderSettings& settings, bool read_linear) {
+void Renderer::finish(const RenderSettings& settings, Readback what, FrameImage& img) {
   // The post stage does not depend on the scene: one program for all.
   static const std::string post_source = std::string(kernel_source("post.cl"));
   cl_kernel post =
@@ -128,30 +130,40 @@ FrameImage Renderer::finish(const RenderSettings& settings, bool read_linear) {
       clEnqueueNDRangeKernel(q, post, 1, nullptr, &post_global, &post_local, 0, nullptr, nullptr),
       "clEnqueueNDRangeKernel", "post-processing");
 
-  FrameImage img;
   img.width_px = settings.width_px;
   img.height_px = settings.height_px;
   img.lanes = last_lanes_;
   img.rgba8.resize(n * 4);
-  cl_check(clEnqueueReadBuffer(q, out8, CL_TRUE, 0, n * 4, img.rgba8.data(), 0, nullptr, nullptr),
+  cl_check(clEnqueueReadBuffer(q, out8, CL_FALSE, 0, n * 4, img.rgba8.data(), 0, nullptr, nullptr),
            "clEnqueueReadBuffer", "reading the image");
-  if (read_linear) {
+  img.steps.clear();
+  img.linear_rgba.clear();
+  img.depth.clear();
+  img.occlusion.clear();
+  img.shadow.clear();
+  std::vector<float> factors;
+  if (what != Readback::Display) {
+    img.steps.resize(n);
+    cl_check(clEnqueueReadBuffer(q, steps_.get(), CL_FALSE, 0, n * 4, img.steps.data(), 0, nullptr,
+                                 nullptr),
+             "clEnqueueReadBuffer", "reading DE step counts");
+  }
+  if (what == Readback::Everything) {
     img.linear_rgba.resize(n * 4);
     img.depth.resize(n);
-    img.steps.resize(n);
-    std::vector<float> factors(n * 2);
+    factors.resize(n * 2);
     cl_check(clEnqueueReadBuffer(q, hdr, CL_FALSE, 0, n * 16, img.linear_rgba.data(), 0, nullptr,
                                  nullptr),
-             "clEnqueueReadBuffer");
+             "clEnqueueReadBuffer", "reading the linear image");
     cl_check(clEnqueueReadBuffer(q, depth_.get(), CL_FALSE, 0, n * 4, img.depth.data(), 0, nullptr,
                                  nullptr),
-             "clEnqueueReadBuffer");
+             "clEnqueueReadBuffer", "reading depths");
     cl_check(clEnqueueReadBuffer(q, factors_.get(), CL_FALSE, 0, n * 8, factors.data(), 0, nullptr,
                                  nullptr),
-             "clEnqueueReadBuffer");
-    cl_check(clEnqueueReadBuffer(q, steps_.get(), CL_TRUE, 0, n * 4, img.steps.data(), 0, nullptr,
-                                 nullptr),
-             "clEnqueueReadBuffer");
+             "clEnqueueReadBuffer", "reading occlusion and shadow factors");
+  }
+  cl_check(clFinish(q), "clFinish", "reading back the frame");
+  if (what == Readback::Everything) {
     img.occlusion.resize(n);
     img.shadow.resize(n);
     for (size_t i = 0; i < n; ++i) {
@@ -159,7 +171,6 @@ FrameImage Renderer::finish(const RenderSettings& settings, bool read_linear) {
       img.shadow[i] = factors[2 * i + 1];
     }
   }
-  return img;
 }
 
 }  // namespace fr

@@ -17,12 +17,21 @@ struct FrameImage {
   int height_px = 0;
   int lanes = 0;               // lane width the frame was rendered with
   std::vector<uint8_t> rgba8;  // tonemapped, sRGB, 4 bytes per pixel, rows top to bottom
-  // Filled only when asked for (read_linear), for the primary rays of the last sample:
+  // Filled only when asked for (Readback), for the primary rays of the last sample; otherwise
+  // left empty:
   std::vector<float> linear_rgba;  // linear HDR (the accumulated mean), 4 floats per pixel
   std::vector<float> depth;        // distance along the ray to the hit; +inf for a miss
   std::vector<float> steps;        // DE evaluations of the primary ray
   std::vector<float> occlusion;    // ambient-occlusion factor at the hit, in [0, 1]; 1 on a miss
   std::vector<float> shadow;       // first light's shadow factor at the hit, in [0, 1]
+};
+
+// What `Renderer::finish` reads back from the device besides the display image. Reading
+// everything costs 33 MB of copies per 1280x720 frame, so the explorer asks only for steps.
+enum class Readback {
+  Display,          // rgba8 only
+  DisplayAndSteps,  // rgba8 and steps (for the DE-evaluations statistic)
+  Everything,       // every field of FrameImage
 };
 
 class Renderer {
@@ -35,10 +44,12 @@ class Renderer {
                     bool read_linear = false);
 
   // Progressive rendering: adds sample `sample_index` (0 restarts the mean) to the accumulation,
-  // then `finish` tonemaps what has accumulated so far.
+  // then `finish` tonemaps what has accumulated so far into `image`, reusing its vectors'
+  // storage (an interactive caller passes the same image every frame: no allocation, no page
+  // faults). Fields that `what` does not ask for are emptied.
   void render_sample(const SceneInfo& info, const SceneState& state, const RenderSettings& settings,
                      int sample_index);
-  FrameImage finish(const RenderSettings& settings, bool read_linear);
+  void finish(const RenderSettings& settings, Readback what, FrameImage& image);
 
   // The lane width a frame with these settings uses on this device.
   int lanes_for(const RenderSettings& settings) const;

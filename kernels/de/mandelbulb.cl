@@ -50,14 +50,15 @@ inline vec3_t mandelbulb_pow_int(vec3_t z, real_t r, int n, real_t* r_pow) {
   real_t safe_r = fmax(r, to_real(FR_SCALAR_MIN));
   real_t rho = sqrt(z.x * z.x + z.y * z.y);
   /* theta = acos(z.z / r) lies in [0, pi], so its sine is rho / r >= 0. */
-  real_t cos_theta = clamp(z.z / safe_r, to_real(-1), to_real(1));
-  real_t sin_theta = fmin(rho / safe_r, to_real(1));
+  real_t inv_r = to_real(1) / safe_r;
+  real_t cos_theta = clamp(z.z * inv_r, to_real(-1), to_real(1));
+  real_t sin_theta = fmin(rho * inv_r, to_real(1));
   /* On the polar axis phi is undefined, and irrelevant: sin(n theta) = 0 there, so z^n has no
    * x or y part whatever phi is. Take phi = 0, as atan2(0, 0) does. */
   mask_t on_axis = rho <= to_real(FR_SCALAR_MIN);
-  real_t safe_rho = fmax(rho, to_real(FR_SCALAR_MIN));
-  real_t cos_phi = lane_select(on_axis, to_real(1), z.x / safe_rho);
-  real_t sin_phi = lane_select(on_axis, to_real(0), z.y / safe_rho);
+  real_t inv_rho = to_real(1) / fmax(rho, to_real(FR_SCALAR_MIN));
+  real_t cos_phi = lane_select(on_axis, to_real(1), z.x * inv_rho);
+  real_t sin_phi = lane_select(on_axis, to_real(0), z.y * inv_rho);
   unit_complex_pow_int(&cos_theta, &sin_theta, n);
   unit_complex_pow_int(&cos_phi, &sin_phi, n);
   *r_pow = pow_int(safe_r, n - 1);
