@@ -14,8 +14,7 @@
  * (animated, say) takes the trigonometric path. */
 
 /* x^n for a whole n >= 0 by repeated squaring; n is the same in every lane. Not OpenCL's pown:
- * PoCL 3.1 computes it per lane through its general path, and with it a 640x360 Mandelbulb frame
- * took 25.4 ms instead of 9.7 ms. */
+ * with PoCL 3.1's pown a 640x360 Mandelbulb frame took 25.4 ms instead of 9.7 ms. */
 inline real_t pow_int(real_t x, int n) {
   real_t result = to_real(1);
   while (n > 0) {
