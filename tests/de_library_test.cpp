@@ -1,9 +1,11 @@
 // The DE helper library (kernels/de/) against analytic values at sample points, evaluated
-// through the same OpenCL path the renderer uses (the probe kernel), at lane widths 1 and 16.
+// through the same OpenCL path the renderer uses (the probe kernel), at lane widths 1 and 16,
+// checking every lane.
 #include "render/de_probe.hpp"
 #include "test_support.hpp"
 
 #include <cmath>
+#include <sstream>
 
 namespace fr {
 namespace {
@@ -14,21 +16,50 @@ struct Case {
   double expected;  // computed by hand from the shape's geometry
 };
 
+// All cases of one call go into one DE: the probe point (k, 0, 0) stands for case k, whose point
+// comes from a table in the source, and the result is case k's expression at that point. The
+// points are laid out so that, at width 16, every case is evaluated in every lane, next to
+// different cases in the other lanes (work-item w, lane l holds case (w + l) mod N), and every
+// lane is read back and checked. Mutation caught: a store that writes lane 0 into every lane
+// (vstore16((float16)(v.s0), ...) in the prelude) fails every case in lanes 1-15.
 void check(const char* include, const std::vector<Case>& cases) {
-  for (int lanes : {1, 16})
-    for (const Case& c : cases) {
-      SceneInfo info;
-      info.id = "library_probe";
-      info.de_source_name = "probe.cl";
-      info.de_source =
-          std::string("#include \"") + include + "\"\n" +
-          "real_t scene_de(vec3_t p, __constant const scene_params_t* params) {\n  return " +
-          c.expression + ";\n}\n";
-      const auto got = probe_de(test::runtime(), info, {}, {c.point}, lanes);
-      EXPECT_NEAR(got[0], c.expected, 2e-6 + 2e-6 * std::abs(c.expected))
-          << c.expression << " at (" << c.point[0] << ", " << c.point[1] << ", " << c.point[2]
-          << "), lanes " << lanes;
+  const int n = static_cast<int>(cases.size());
+  std::ostringstream src;
+  src << std::hexfloat;  // the points' exact float values; integers stay decimal
+  src << "#include \"" << include << "\"\n";
+  src << "real_t scene_de(vec3_t q, __constant const scene_params_t* params) {\n"
+      << "  vec3_t p = v3s(0, 0, 0);\n";
+  for (int k = 0; k < n; ++k)
+    src << "  p = v3_select(q.x == (real_t)" << k << ", v3s(" << double(cases[k].point[0])
+        << ", " << double(cases[k].point[1]) << ", " << double(cases[k].point[2]) << "), p);\n";
+  src << "  real_t result = (real_t)0;\n";
+  for (int k = 0; k < n; ++k)
+    src << "  result = lane_select(q.x == (real_t)" << k << ", (" << cases[k].expression
+        << "), result);\n";
+  src << "  return result;\n}\n";
+  SceneInfo info;
+  info.id = "library_probe";
+  info.de_source_name = "probe.cl";
+  info.de_source = src.str();
+
+  std::vector<std::array<float, 3>> points;
+  std::vector<int> case_of, lane_of;
+  for (int w = 0; w < std::max(n, 1); ++w)
+    for (int lane = 0; lane < 16; ++lane) {
+      const int k = (w + lane) % n;
+      points.push_back({static_cast<float>(k), 0, 0});
+      case_of.push_back(k);
+      lane_of.push_back(lane);
     }
+  for (int lanes : {1, 16}) {
+    const auto got = probe_de(test::runtime(), info, {}, points, lanes);
+    for (size_t i = 0; i < points.size(); ++i) {
+      const Case& c = cases[case_of[i]];
+      EXPECT_NEAR(got[i], c.expected, 2e-6 + 2e-6 * std::abs(c.expected))
+          << c.expression << " at (" << c.point[0] << ", " << c.point[1] << ", " << c.point[2]
+          << "), width " << lanes << ", lane " << (lanes == 1 ? 0 : lane_of[i]);
+    }
+  }
 }
 
 const double kSqrt2 = std::sqrt(2.0), kSqrt3 = std::sqrt(3.0);
