@@ -1,5 +1,6 @@
 // Plugin loading against one deliberately broken fixture per failure mode: the result code and
 // the message (what was wrong, what was expected) for each, and the good plugins still load.
+#include "plugin/plugin_library.hpp"
 #include "plugin/plugin_loader.hpp"
 #include "plugin/scene_instance.hpp"
 #include "render/renderer.hpp"
@@ -22,15 +23,58 @@ void expect_failure(const std::string& fixture, LoadResult result,
   EXPECT_EQ(o.file, fixture_plugin(fixture));
 }
 
+// Address ranges /proc/self/maps shows for files whose name contains `name_part`.
+std::vector<std::pair<uintptr_t, uintptr_t>> mapped_ranges(const std::string& name_part) {
+  std::vector<std::pair<uintptr_t, uintptr_t>> ranges;
+  std::ifstream maps("/proc/self/maps");
+  std::string line;
+  while (std::getline(maps, line)) {
+    if (line.find(name_part) == std::string::npos) continue;
+    const size_t dash = line.find('-'), space = line.find(' ');
+    ranges.emplace_back(std::stoull(line.substr(0, dash), nullptr, 16),
+                        std::stoull(line.substr(dash + 1, space - dash - 1), nullptr, 16));
+  }
+  return ranges;
+}
+
+// The descriptor's strings are copied into host memory: no string of the SceneInfo lies inside
+// the plugin's mapped image (where the plugin's own string literals are), and the copied values
+// survive the library being unmapped. The entry symbol's address is checked to lie inside, so the
+// range test itself is shown to be able to fail.
 TEST(PluginLoader, ValidFixtureLoadsAndCopiesStrings) {
-  auto scene = test::load_or_fail(fixture_plugin("valid_scene"));
+  const auto dir = test::fresh_dir("strings_copied");
+  std::filesystem::copy_file(fixture_plugin("valid_scene"), dir / "strings_probe.so");
+  auto scene = test::load_or_fail(dir / "strings_probe.so");
   ASSERT_TRUE(scene);
   EXPECT_EQ(scene->info.id, "fixture_valid");
   EXPECT_EQ(scene->info.de_source_name, "fixture.cl");
   EXPECT_EQ(scene->info.bounding_radius, 2.0);
-  // Strings live in host memory, not in the library's.
-  const void* lib_lo = scene->library.get();
-  EXPECT_NE(static_cast<const void*>(scene->info.id.data()), lib_lo);
+
+  const auto ranges = mapped_ranges("strings_probe.so");
+  ASSERT_FALSE(ranges.empty());
+  auto in_library = [&](const void* p) {
+    const auto a = reinterpret_cast<uintptr_t>(p);
+    for (const auto& [lo, hi] : ranges)
+      if (a >= lo && a < hi) return true;
+    return false;
+  };
+  EXPECT_TRUE(in_library(scene->library->symbol("fractalis_scene_entry")));
+  const SceneInfo& info = scene->info;
+  std::vector<const std::string*> strings = {&info.id,      &info.name,           &info.version,
+                                             &info.author,  &info.license,        &info.description,
+                                             &info.de_source, &info.de_source_name};
+  for (const ParamInfo& p : info.params)
+    for (const std::string* s : {&p.key, &p.name, &p.group, &p.description}) strings.push_back(s);
+  for (const std::string* s : strings)
+    EXPECT_FALSE(in_library(s->data())) << "'" << *s << "' points into the plugin's image";
+
+  const SceneInfo kept = scene->info;
+  const std::string de_source = kept.de_source;
+  scene.reset();
+  EXPECT_TRUE(mapped_ranges("strings_probe.so").empty()) << "still mapped";
+  EXPECT_EQ(kept.id, "fixture_valid");
+  EXPECT_EQ(kept.de_source, de_source);
+  EXPECT_NE(kept.de_source.find("scene_de"), std::string::npos);
 }
 
 TEST(PluginLoader, NotElf) {
@@ -86,15 +130,26 @@ TEST(PluginLoader, DuplicateIdNamesTheFirstFile) {
 TEST(PluginLoader, FolderSkipsBadPluginsAndKeepsGoodOnes) {
   const auto outcomes = load_scene_folder({FIXTURE_PLUGIN_DIR});
   std::map<std::string, LoadResult> by_file;
-  for (const auto& o : outcomes) by_file[o.file.filename().string()] = o.result;
-  EXPECT_EQ(by_file["fixture_valid_scene.so"], LoadResult::Loaded);
-  EXPECT_EQ(by_file["fixture_bad_de.so"], LoadResult::Loaded)
-      << "a DE is only compiled when rendered";
-  EXPECT_EQ(by_file["fixture_update_error.so"], LoadResult::Loaded);
-  EXPECT_EQ(by_file["fixture_not_elf.so"], LoadResult::NotLoadable);
-  EXPECT_EQ(by_file["fixture_wrong_major.so"], LoadResult::WrongAbiMajor);
-  EXPECT_EQ(by_file["fixture_null_id.so"], LoadResult::InvalidScene);
-  EXPECT_EQ(outcomes.size(), 10u);
+  for (const auto& o : outcomes) by_file.emplace(o.file.filename().string(), o.result);
+  // Every fixture, each with its result: a missing file fails here rather than reading a default.
+  const std::map<std::string, LoadResult> expected = {
+      {"fixture_valid_scene.so", LoadResult::Loaded},
+      {"fixture_bad_de.so", LoadResult::Loaded},  // a DE is only compiled when rendered
+      {"fixture_update_error.so", LoadResult::Loaded},
+      {"fixture_not_elf.so", LoadResult::NotLoadable},
+      {"fixture_no_entry.so", LoadResult::NoEntrySymbol},
+      {"fixture_wrong_major.so", LoadResult::WrongAbiMajor},
+      {"fixture_too_new_minor.so", LoadResult::AbiTooNew},
+      {"fixture_small_struct.so", LoadResult::StructTooSmall},
+      {"fixture_null_id.so", LoadResult::InvalidScene},
+      {"fixture_null_de.so", LoadResult::InvalidScene},
+  };
+  EXPECT_EQ(outcomes.size(), expected.size());
+  for (const auto& [file, result] : expected) {
+    const auto it = by_file.find(file);
+    ASSERT_NE(it, by_file.end()) << file << " was not reported";
+    EXPECT_EQ(it->second, result) << file << ": " << load_result_name(it->second);
+  }
 }
 
 TEST(PluginLoader, DeThatDoesNotCompileNamesSceneAndLine) {
