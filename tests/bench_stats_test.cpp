@@ -27,12 +27,20 @@ TEST(BenchStats, FakeClockFrameTimes) {
   // Sorted: 10 10 20 20 20 30 30 40 50 70; nearest rank: p50 is the 5th, p95 the 10th.
   EXPECT_DOUBLE_EQ(s.p50_ms, 20);
   EXPECT_DOUBLE_EQ(s.p95_ms, 70);
-  EXPECT_LE(s.min_ms, s.p50_ms);
-  EXPECT_LE(s.p50_ms, s.p95_ms);
-  EXPECT_LE(s.p95_ms, s.max_ms);
   EXPECT_DOUBLE_EQ(s.mean_fps, 1000.0 / 30);
   EXPECT_DOUBLE_EQ(s.min_fps, 1000.0 / 70);
   EXPECT_DOUBLE_EQ(s.max_fps, 1000.0 / 10);
+}
+
+// With 20 frames the nearest-rank p95 is the 19th value, not the maximum, and p50 the 10th: an
+// implementation returning max or the upper median fails here.
+TEST(BenchStats, PercentilesAreNearestRank) {
+  std::vector<double> frames;
+  for (int i = 20; i >= 1; --i) frames.push_back(i);  // unsorted on purpose
+  const FrameStats s = summarize_frames(frames);
+  EXPECT_DOUBLE_EQ(s.p50_ms, 10);
+  EXPECT_DOUBLE_EQ(s.p95_ms, 19);
+  EXPECT_DOUBLE_EQ(s.max_ms, 20);
 }
 
 TEST(BenchStats, SingleFrameAndEmpty) {

@@ -76,7 +76,16 @@ TEST(CameraController, NeverStepsThroughTheSurface) {
   controls.speed_per_distance = 100;  // absurdly fast
   fr_camera c = looking_down_minus_z();
   update_camera(c, CameraMode::Fly, in, false, 1.0, 2.0, controls);
-  EXPECT_GE(c.eye[2], 10 - 0.9 * 2.0 - 1e-12);
+  // Speed 100 x 2 x 4 = 800 clamps to max_speed 10, i.e. 10 units this second; the step is then
+  // cut to 0.9 of the surface distance 2: exactly 1.8 (a camera that did not move, or moved
+  // the full 10, fails).
+  EXPECT_NEAR(c.eye[2], 10 - 0.9 * 2.0, 1e-12);
+  EXPECT_EQ(c.eye[0], 0);
+  EXPECT_EQ(c.eye[1], 0);
+  // Far from any surface the clamp on speed is what limits the step: 10 units per second.
+  fr_camera free = looking_down_minus_z();
+  update_camera(free, CameraMode::Fly, in, false, 0.5, 1000.0, controls);
+  EXPECT_NEAR(free.eye[2], 10 - 0.5 * controls.max_speed, 1e-12);
 }
 
 TEST(CameraController, MouseLookYawsAndInvertY) {
