@@ -3,9 +3,13 @@
 // assembled actually compiles.
 #include "render/kernel_assembly.hpp"
 #include "plugin/scene_instance.hpp"
+#include "render/camera.hpp"
 #include "render/renderer.hpp"
 #include "test_support.hpp"
 
+#include <glm/geometric.hpp>
+
+#include <cmath>
 #include <cstring>
 
 namespace fr {
@@ -180,16 +184,45 @@ TEST(KernelAssembly, LaneWidthAndPrecisionDefines) {
   EXPECT_EQ(tile_shape(1).width_px, 1);
 }
 
-// Every stage and mode combination compiles at both widths, and the program cache builds each
-// source once.
-TEST(KernelAssembly, EveryStageCombinationCompiles) {
+// What a frame of the sphere scene must show whatever stages and modes are on: every colour
+// finite and non-negative, and the hit mask of the analytic unit sphere (eye (0, 0, 4), 45
+// degrees) — except within 1.5 pixels' angle of its rim, where the hit threshold and the thin
+// lens's jitter may tip a pixel either way. Mutation caught: a stage that writes NaN (fog's
+// division by a zero ray component) or a march that stops short (no hit) fails here.
+void expect_sphere_frame(const FrameImage& img, const SceneInfo& info, const std::string& what) {
+  const int w = img.width_px, h = img.height_px;
+  const CameraRays rays = make_camera_rays(info.camera, w, h);
+  int bad = 0, wrong_mask = 0, hits = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const size_t i = static_cast<size_t>(y) * w + x;
+      for (int c = 0; c < 3; ++c) {
+        const float v = img.linear_rgba[4 * i + c];
+        bad += !std::isfinite(v) || v < 0;
+      }
+      const glm::dvec3 d = camera_ray_dir(rays, x, y);
+      const double b = glm::dot(rays.eye, d);
+      const double closest = std::sqrt(glm::dot(rays.eye, rays.eye) - b * b);
+      if (std::abs(closest - 1) < 1.5 * rays.pixel_angle_rad * 4) continue;
+      const bool analytic_hit = closest < 1;
+      hits += analytic_hit;
+      wrong_mask += analytic_hit != std::isfinite(img.depth[i]);
+    }
+  EXPECT_EQ(bad, 0) << what << ": NaN, infinite or negative colour values";
+  EXPECT_GT(hits, w * h / 10) << what;
+  EXPECT_EQ(wrong_mask, 0) << what << ": hit mask differs from the sphere's";
+}
+
+// Every stage and mode combination compiles at both widths and renders the sphere, and the
+// program cache builds each source once.
+TEST(KernelAssembly, EveryStageCombinationRendersTheSphere) {
   SceneInfo info = sphere_scene(FR_FEATURE_AO | FR_FEATURE_SHADOWS | FR_FEATURE_GLOW |
                                 FR_FEATURE_FOG | FR_FEATURE_REFLECTIONS);
   SceneState state = make_default_state(info);
   Renderer renderer(test::runtime());
   RenderSettings settings;
-  settings.width_px = 8;
-  settings.height_px = 8;
+  settings.width_px = 24;
+  settings.height_px = 24;
   settings.aperture_radius = 0.01f;
   const fr_features all_off = FR_FEATURE_AO | FR_FEATURE_SHADOWS | FR_FEATURE_GLOW |
                               FR_FEATURE_FOG | FR_FEATURE_REFLECTIONS | kStageDepthOfField;
@@ -198,8 +231,8 @@ TEST(KernelAssembly, EveryStageCombinationCompiles) {
          {fr_features{0}, fr_features{FR_FEATURE_AO}, fr_features{FR_FEATURE_SHADOWS}, all_off}) {
       settings.lanes = lanes;
       settings.disabled_stages = off;
-      EXPECT_NO_THROW(renderer.render(info, state, settings))
-          << "lanes " << lanes << " off " << off;
+      expect_sphere_frame(renderer.render(info, state, settings, true), info,
+                          "lanes " + std::to_string(lanes) + " off " + std::to_string(off));
     }
   settings.lanes = 16;
   settings.disabled_stages = 0;
@@ -210,7 +243,9 @@ TEST(KernelAssembly, EveryStageCombinationCompiles) {
       settings.ao_method = alternative ? AoMethod::Sampled : AoMethod::StepCount;
       settings.shadow_method = alternative ? ShadowMethod::Hard : ShadowMethod::Soft;
       settings.fog_method = alternative ? FogMethod::PowerLaw : FogMethod::Exponential;
-      EXPECT_NO_THROW(renderer.render(info, state, settings));
+      expect_sphere_frame(renderer.render(info, state, settings, true), info,
+                          "shading " + std::to_string(int(shading)) +
+                              (alternative ? " alternative modes" : " default modes"));
     }
   const size_t built = test::runtime().programs_built();
   renderer.render(info, state, settings);
