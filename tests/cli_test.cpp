@@ -1,5 +1,7 @@
 // The CLI's error paths: every wrong option or value gets one line naming it and exit code 2.
 #include "cli/cli.hpp"
+#include "plugin/scene_instance.hpp"
+#include "render/renderer.hpp"
 #include "test_support.hpp"
 
 #include <sstream>
@@ -83,13 +85,38 @@ TEST(Cli, HelpAndVersion) {
   EXPECT_EQ(run({}).code, 2);
 }
 
-TEST(Cli, RenderWritesPng) {
+// The written PNG is read back: its size, and the picture a headless render of the same scene,
+// view and parameter gives (the CLI passes --size and --param through); and the parameter
+// visibly matters (the default power renders a different picture).
+TEST(Cli, RenderWritesThePng) {
   const auto dir = test::fresh_dir("cli_render");
   const auto file = (dir / "small.png").string();
-  const CliRun r = run({"render", "--size", "32x24", "--out", file, "--param", "power=6"});
+  const CliRun r = run({"render", "--size", "48x32", "--out", file, "--param", "power=6"});
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("wrote " + file), std::string::npos);
-  EXPECT_TRUE(std::filesystem::exists(file));
+  const test::LoadedPng png = test::load_png(file);
+  ASSERT_EQ(png.width_px, 48);
+  ASSERT_EQ(png.height_px, 32);
+
+  auto scene = test::mandelbulb();
+  ASSERT_TRUE(scene);
+  SceneState state = make_default_state(scene->info);
+  std::string error;
+  auto instance = SceneInstance::create(scene, &error);
+  ASSERT_TRUE(instance) << error;
+  RenderSettings settings;
+  settings.width_px = 48;
+  settings.height_px = 32;
+  Renderer renderer(test::runtime());
+  ASSERT_TRUE(instance->update(state, 0, &error)) << error;
+  const FrameImage power8 = renderer.render(scene->info, state, settings);
+  state.params[scene->info.find_param("power")].v[0] = 6;
+  ASSERT_TRUE(instance->update(state, 0, &error)) << error;
+  const FrameImage power6 = renderer.render(scene->info, state, settings);
+  EXPECT_LE(test::pixels_differing(png.rgba8, power6.rgba8, 2), 48 * 32 / 100)
+      << "the PNG is not the headless render of the same view";
+  EXPECT_GT(test::pixels_differing(power6.rgba8, power8.rgba8, 8), 48 * 32 / 20)
+      << "power 6 and 8 should look different";
 }
 
 TEST(Cli, ListShowsParametersAndFailures) {

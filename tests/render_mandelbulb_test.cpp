@@ -39,14 +39,7 @@ class MandelbulbRender : public ::testing::Test {
 
 // Fraction of pixels where some channel differs by more than `tolerance` (of 255).
 double fraction_differing(const FrameImage& a, const FrameImage& b, int tolerance) {
-  size_t differing = 0;
-  for (size_t p = 0; p < a.rgba8.size() / 4; ++p)
-    for (int c = 0; c < 3; ++c)
-      if (std::abs(int(a.rgba8[4 * p + c]) - int(b.rgba8[4 * p + c])) > tolerance) {
-        ++differing;
-        break;
-      }
-  return double(differing) / double(a.rgba8.size() / 4);
+  return double(test::pixels_differing(a.rgba8, b.rgba8, tolerance)) / double(a.rgba8.size() / 4);
 }
 
 size_t non_finite(const FrameImage& img) {

@@ -6,10 +6,14 @@
 #include "render/device.hpp"
 
 #include <gtest/gtest.h>
+#include <stb_image.h>
 
+#include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace fr::test {
 
@@ -48,6 +52,37 @@ inline std::filesystem::path fresh_dir(const std::string& name) {
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
+}
+
+// Pixels (RGBA8, alpha ignored) where some colour channel differs by more than `tolerance` of
+// 255. Images of different sizes differ everywhere.
+inline size_t pixels_differing(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b,
+                               int tolerance) {
+  if (a.size() != b.size()) return std::max(a.size(), b.size()) / 4;
+  size_t n = 0;
+  for (size_t p = 0; p + 3 < a.size(); p += 4)
+    for (int c = 0; c < 3; ++c)
+      if (std::abs(int(a[p + c]) - int(b[p + c])) > tolerance) {
+        ++n;
+        break;
+      }
+  return n;
+}
+
+struct LoadedPng {
+  int width_px = 0, height_px = 0;
+  std::vector<uint8_t> rgba8;
+};
+
+// A PNG read back as RGBA8; empty (0 x 0) if it cannot be read.
+inline LoadedPng load_png(const std::filesystem::path& file) {
+  LoadedPng png;
+  int channels = 0;
+  unsigned char* pixels = stbi_load(file.c_str(), &png.width_px, &png.height_px, &channels, 4);
+  if (!pixels) return {};
+  png.rgba8.assign(pixels, pixels + size_t(png.width_px) * png.height_px * 4);
+  stbi_image_free(pixels);
+  return png;
 }
 
 }  // namespace fr::test
