@@ -30,8 +30,8 @@ void check(const char* include, const std::vector<Case>& cases) {
   src << "real_t scene_de(vec3_t q, __constant const scene_params_t* params) {\n"
       << "  vec3_t p = v3s(0, 0, 0);\n";
   for (int k = 0; k < n; ++k)
-    src << "  p = v3_select(q.x == (real_t)" << k << ", v3s(" << double(cases[k].point[0])
-        << ", " << double(cases[k].point[1]) << ", " << double(cases[k].point[2]) << "), p);\n";
+    src << "  p = v3_select(q.x == (real_t)" << k << ", v3s(" << double(cases[k].point[0]) << ", "
+        << double(cases[k].point[1]) << ", " << double(cases[k].point[2]) << "), p);\n";
   src << "  real_t result = (real_t)0;\n";
   for (int k = 0; k < n; ++k)
     src << "  result = lane_select(q.x == (real_t)" << k << ", (" << cases[k].expression

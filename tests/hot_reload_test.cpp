@@ -1,8 +1,9 @@
 // Hot reload, against a running scene library (the explorer's, headless): the test copies new,
 // changed, broken and removed plugins into its folder and polls like the explorer's frame loop.
-// Checks: a new scene appears within 2 s of the poll's own clock (after the debounce time); a changed one reloads keeping parameter values by key;
-// a broken build leaves the old one running with the error kept; a removed one keeps running;
-// and 50 reloads grow neither open files nor threads, and leave one copy of the library mapped.
+// Checks: a new scene appears within 2 s of the poll's own clock (after the debounce time); a
+// changed one reloads keeping parameter values by key; a broken build leaves the old one running
+// with the error kept; a removed one keeps running; and 50 reloads grow neither open files nor
+// threads, and leave one copy of the library mapped.
 #include "app/scene_library.hpp"
 #include "test_support.hpp"
 

@@ -88,10 +88,10 @@ TEST_F(MandelbulbDe, LaneWidthsAgree) {
 // Mandelbulb is mirror-symmetric in x and y, so a lane that flips the sign of y computes the
 // same DE there and no Mandelbulb point can catch it; the Julia set with the default c and the
 // benchmark scene (objects at asymmetric places) have no such symmetry. The test first shows
-// that a sign flip of any axis changes the DE at a quarter or more of its points (so a lane with that error
-// would fail), then compares widths 8 and 16 with width 1 at every point. Mutation caught:
-// negating y in lane 5 of the probe's packet (probe.cl) fails 31 points per scene at width 16
-// and 58 at width 8 (the Mandelbulb-only test above passed with it).
+// that a sign flip of any axis changes the DE at a quarter or more of its points (so a lane with
+// that error would fail), then compares widths 8 and 16 with width 1 at every point. Mutation
+// caught: negating y in lane 5 of the probe's packet (probe.cl) fails 31 points per scene at width
+// 16 and 58 at width 8 (the Mandelbulb-only test above passed with it).
 TEST(LaneWidths, AgreeOnAsymmetricScenesOffEverySymmetryPlane) {
   struct SceneBox {
     const char* id;
@@ -99,7 +99,8 @@ TEST(LaneWidths, AgreeOnAsymmetricScenesOffEverySymmetryPlane) {
   };
   for (const SceneBox& box : {SceneBox{"julia", {-1.2f, -1.2f, -1.2f}, {1.2f, 1.2f, 1.2f}},
                               SceneBox{"benchmark", {-3, -1.2f, -2.2f}, {3.6f, 1.4f, 2.2f}}}) {
-    auto scene = test::load_or_fail(std::filesystem::path(SCENE_PLUGIN_DIR) / (std::string(box.id) + ".so"));
+    auto scene =
+        test::load_or_fail(std::filesystem::path(SCENE_PLUGIN_DIR) / (std::string(box.id) + ".so"));
     ASSERT_TRUE(scene);
     const auto values = make_default_state(scene->info).params;
     std::mt19937 rng(3);
@@ -121,7 +122,8 @@ TEST(LaneWidths, AgreeOnAsymmetricScenesOffEverySymmetryPlane) {
       for (auto& q : mirrored) q[axis] = -q[axis];
       const auto m = probe(mirrored, 1);
       int sensitive = 0;
-      for (size_t i = 0; i < pts.size(); ++i) sensitive += std::abs(m[i] - one[i]) > 10 * tolerance(one[i]);
+      for (size_t i = 0; i < pts.size(); ++i)
+        sensitive += std::abs(m[i] - one[i]) > 10 * tolerance(one[i]);
       EXPECT_GT(sensitive, 128) << box.id << ": a sign error in axis " << axis
                                 << " would pass at most points";
     }
@@ -129,8 +131,8 @@ TEST(LaneWidths, AgreeOnAsymmetricScenesOffEverySymmetryPlane) {
       const auto wide = probe(pts, lanes);
       for (size_t i = 0; i < pts.size(); ++i)
         EXPECT_NEAR(wide[i], one[i], tolerance(one[i]))
-            << box.id << " width " << lanes << " lane " << i % lanes << " at (" << pts[i][0]
-            << ", " << pts[i][1] << ", " << pts[i][2] << ")";
+            << box.id << " width " << lanes << " lane " << i % lanes << " at (" << pts[i][0] << ", "
+            << pts[i][1] << ", " << pts[i][2] << ")";
     }
   }
 }
@@ -138,8 +140,7 @@ TEST(LaneWidths, AgreeOnAsymmetricScenesOffEverySymmetryPlane) {
 // The textbook formula in double on the host: the angles through acos and atan2, r^n through
 // pow. An independent reference for both device paths (de Moivre for whole powers, the angles
 // for fractional ones).
-double reference_de(double px, double py, double pz, double power, double bailout,
-                    int iterations) {
+double reference_de(double px, double py, double pz, double power, double bailout, int iterations) {
   double x = px, y = py, z = pz, dr = 1;
   double r = std::sqrt(x * x + y * y + z * z);
   for (int i = 0; i < iterations && r < bailout; ++i) {
@@ -201,8 +202,8 @@ TEST_F(MandelbulbDe, FloatMatchesTextbookFormula) {
         const double error = std::abs(de[i] - expected) / (1e-3 * std::abs(expected) + 1e-5);
         worst = std::max(worst, error);
         EXPECT_LE(error, 1.0) << "power " << power << " width " << lanes << " at (" << pts[i][0]
-                              << "," << pts[i][1] << "," << pts[i][2] << "): " << de[i]
-                              << " vs " << expected;
+                              << "," << pts[i][1] << "," << pts[i][2] << "): " << de[i] << " vs "
+                              << expected;
       }
     }
   RecordProperty("worst_error_fraction_of_tolerance", std::to_string(worst));

@@ -1,7 +1,7 @@
 // Plugin loading against one deliberately broken fixture per failure mode: the result code and
 // the message (what was wrong, what was expected) for each, and the good plugins still load.
-#include "plugin/plugin_library.hpp"
 #include "plugin/plugin_loader.hpp"
+#include "plugin/plugin_library.hpp"
 #include "plugin/scene_instance.hpp"
 #include "render/renderer.hpp"
 #include "test_support.hpp"
@@ -60,9 +60,9 @@ TEST(PluginLoader, ValidFixtureLoadsAndCopiesStrings) {
   };
   EXPECT_TRUE(in_library(scene->library->symbol("fractalis_scene_entry")));
   const SceneInfo& info = scene->info;
-  std::vector<const std::string*> strings = {&info.id,      &info.name,           &info.version,
-                                             &info.author,  &info.license,        &info.description,
-                                             &info.de_source, &info.de_source_name};
+  std::vector<const std::string*> strings = {
+      &info.id,      &info.name,        &info.version,   &info.author,
+      &info.license, &info.description, &info.de_source, &info.de_source_name};
   for (const ParamInfo& p : info.params)
     for (const std::string* s : {&p.key, &p.name, &p.group, &p.description}) strings.push_back(s);
   for (const std::string* s : strings)
