@@ -1,6 +1,6 @@
 /* ao.cl — ambient occlusion, in [0, 1] (1: open). FR_AO_MODE:
  *   0  step count: rays that needed many march steps passed close to a lot of surface. Free,
- *      since the march counts steps anyway.
+ *      since the march counts steps anyway; ao_reference_steps steps is full occlusion.
  *   1  sampled: ao_samples DE evaluations along the normal up to ao_distance; where the DE is
  *      smaller than the distance from the surface, something is near (nearer samples weigh
  *      more). */
@@ -20,8 +20,11 @@ real_t sampled_ao(vec3_t p, vec3_t n, __constant const fr_frame_constants* fc,
 }
 #define FR_APPLY_AO(ao, p, n, m) ao = sampled_ao(p, n, fc, params)
 #else
+/* Normalised by a fixed step count, not the step budget: raising max_steps must not change
+ * converged pixels. */
 inline real_t step_count_ao(real_t steps, __constant const fr_frame_constants* fc) {
-  real_t openness = clamp((real_t)1 - steps / (real_t)fc->max_steps, (real_t)0, (real_t)1);
+  real_t openness =
+      clamp((real_t)1 - steps / (real_t)fc->ao_reference_steps, (real_t)0, (real_t)1);
   return pow_nonneg(openness, (real_t)fc->ao_strength);
 }
 #define FR_APPLY_AO(ao, p, n, m) ao = step_count_ao((m).steps, fc)

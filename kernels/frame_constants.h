@@ -10,7 +10,9 @@
 typedef struct fr_frame_constants {
   /* Camera, in the seed model's terms (host/render/camera.hpp): the ray through pixel column x,
    * row y (row 0 at the top) has direction first_pixel_dir + pixel_step_x * (width - 1 - x)
-   * + pixel_step_y * (height - 1 - y), normalised. */
+   * + pixel_step_y * (height - 1 - y), normalised. Each of these four vectors is the rounded
+   * float of the double value; the *_lo fields further down hold what rounding lost, so the
+   * double kernel rebuilds the double camera as hi + lo ("double end to end"). */
   float eye[4];
   float first_pixel_dir[4]; /* p_1m */
   float pixel_step_x[4];    /* q_x */
@@ -43,7 +45,7 @@ typedef struct fr_frame_constants {
 
   float pixel_angle_rad;   /* angle between neighbouring pixel centres at the image centre */
   float hit_threshold_k;   /* epsilon = k * t * pixel_angle_rad (the clarity function) */
-  float max_distance;      /* rays end here */
+  float reserved0;         /* was max_distance: rays now end where they leave the bounds */
   float bounding_radius;   /* the scene's surface lies inside this sphere around the origin */
   float step_scale;        /* multiplies each DE step (< 1 for DEs that over-estimate) */
   float ao_strength;       /* step-count: exponent; sampled: occlusion gain */
@@ -61,6 +63,28 @@ typedef struct fr_frame_constants {
   float jitter_y;
   float accumulate_weight; /* weight of this sample in the running mean: 1 / (sample_index + 1) */
   float relaxation;        /* over-relaxation factor omega of the march, in [1, 2) */
+
+  /* What float rounding lost of the camera vectors above (double kernels add it back). */
+  float eye_lo[4];
+  float first_pixel_dir_lo[4];
+  float pixel_step_x_lo[4];
+  float pixel_step_y_lo[4];
+  /* Where primary rays start (rays.cl): not at the eye but on the plane start_scale * (the
+   * direction's component along the view) ahead of it, just in front of the bounding sphere, so
+   * that a far camera's rays start next to the object and keep float's precision there. The ray
+   * of image offset (i - (width-1)/2, j - (height-1)/2) from the centre starts at
+   * ray_start + start_step_x * i' + start_step_y * j', having travelled start_scale * |d|. All
+   * zero-offset (start at the eye) when the eye is inside the bounds or the lens is on. */
+  float ray_start[4];
+  float ray_start_lo[4];
+  float start_step_x[4];
+  float start_step_x_lo[4];
+  float start_step_y[4];
+  float start_step_y_lo[4];
+  float start_scale;
+  float start_scale_lo;
+  float ao_reference_steps; /* step-count AO: this many steps is full occlusion */
+  float reserved1;
 } fr_frame_constants;
 
 #endif /* FR_FRAME_CONSTANTS_H */

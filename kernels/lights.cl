@@ -3,7 +3,7 @@
 
 typedef struct light_sample_t {
   vec3_t to_light; /* unit */
-  real_t distance; /* to the light; max_distance for a directional light */
+  real_t distance; /* to the light; FR_SCALAR_MAX for a directional light */
   vec3_t radiance; /* linear RGB arriving at p */
 } light_sample_t;
 
@@ -13,7 +13,7 @@ light_sample_t sample_light(int i, vec3_t p, __constant const fr_frame_constants
   vec3_t color = v3_from_float4(fc->light_color[i]);
   if (fc->light_vector[i][3] == 1.0f) {
     s.to_light = v3_normalize(v3_neg(v));
-    s.distance = (real_t)fc->max_distance;
+    s.distance = (real_t)FR_SCALAR_MAX; /* shadow rays end where they leave the bounds */
     s.radiance = color;
   } else {
     vec3_t d = v3_sub(v, p);

@@ -2,11 +2,19 @@
  * rays and mirror bounces both use it. */
 
 typedef struct march_result_t {
-  real_t t;        /* distance along the ray to the hit (meaningful where hit) */
-  mask_t hit;      /* the ray reached the surface */
-  real_t steps;    /* DE evaluations spent, for step-count AO and statistics */
-  real_t min_dist; /* closest approach to the surface (tracked only when glow is on) */
+  real_t t;            /* distance along the ray to the hit (meaningful where hit) */
+  mask_t hit;          /* the ray reached the surface, or ran out of steps (then also below) */
+  mask_t out_of_steps; /* the step budget ended first: t is the best candidate, see below */
+  mask_t inside;       /* the ray started inside the solid (DE below -eps at its origin) */
+  real_t steps;        /* DE evaluations spent, for step-count AO and statistics */
+  real_t min_dist;     /* closest approach to the surface (tracked only when glow is on) */
 } march_result_t;
+
+/* Ray status codes written per pixel (render.cl) and counted by the host (renderer.hpp). */
+#define FR_RAY_MISS 0
+#define FR_RAY_HIT 1
+#define FR_RAY_OUT_OF_STEPS 2
+#define FR_RAY_INSIDE 3
 
 /* Entry and exit distances of the ray through the sphere |p| = radius; false where the ray
  * misses it or it lies behind the origin. */
@@ -25,49 +33,71 @@ inline mask_t intersect_bounds(ray_t ray, scalar_t radius, real_t* t_enter, real
 #define FR_MARCH_TRACK(min_dist, dist, active)
 #endif
 
-/* Marches each lane until it is within the hit threshold of the surface, leaves the bounding
- * sphere or runs out of steps. `path_t` is the length already travelled (before a bounce), so
- * the threshold keeps following the pixel's footprint. Rays that run out of steps count as hits:
- * they are deep in a crevice, where a miss would show the sky through the surface.
+/* Marches each lane from where it enters the scene's bounding sphere until it is within the hit
+ * threshold of the surface, leaves the sphere (a miss: there is no other maximum distance) or
+ * runs out of steps. `path_t` is the length already travelled before this ray's origin (the
+ * start plane, or a bounce), so the threshold keeps following the pixel's footprint.
  *
  * Over-relaxed (Keinert et al. 2014): each step is omega times the DE. Where the unbounding
  * spheres of two consecutive steps do not overlap, the step overshot the guarantee; the lane then
  * steps back and continues with omega = 1 — the fallback that makes relaxation safe for DEs that
  * are only roughly 1-Lipschitz. A hit is accepted only on a step that did not fail. The DE is
- * also scaled by fc->step_scale, and no step exceeds the bounding radius. */
+ * also scaled by fc->step_scale, and no step exceeds the bounding radius.
+ *
+ * Documented results for the hard cases:
+ *  - Origin on the surface (|DE| <= eps at the ray's own origin, not at a point where it entered
+ *    the bounds from outside): that point is never a hit; the lane steps by at least eps, so looking away from a surface you stand on shows what is in front,
+ *    and looking into it hits within a step.
+ *  - Origin inside the solid (DE < -eps at the first point): the lane stops there with `inside`
+ *    set; render.cl shades it black (no light reaches inside a solid) at depth path_t.
+ *  - Out of steps: the lane ends at its best candidate, the point with the smallest DE/eps seen
+ *    (Keinert et al.'s "minimum error" point), and counts as a hit with `out_of_steps` set; the
+ *    host counts these rays and warns when there are many. */
 march_result_t march(ray_t ray, real_t path_t, __constant const fr_frame_constants* fc,
                      __constant const scene_params_t* params) {
   real_t t, t_exit;
   mask_t active = intersect_bounds(ray, fc->bounding_radius, &t, &t_exit);
-  t_exit = fmin(t_exit, (real_t)fc->max_distance);
   active &= t < t_exit;
-  mask_t hit = FR_MASK_FALSE;
+  mask_t hit = FR_MASK_FALSE, inside = FR_MASK_FALSE;
   real_t steps = (real_t)0;
   real_t min_dist = (real_t)FR_SCALAR_MAX;
   const real_t max_step = (real_t)fc->bounding_radius;
   real_t omega = (real_t)fc->relaxation;
   real_t previous_radius = (real_t)0;
   real_t step = (real_t)0;
+  real_t best_t = t, best_error = (real_t)FR_SCALAR_MAX;
   for (int i = 0; i < fc->max_steps && any_lane(active); ++i) {
     vec3_t p = v3_mad(ray.origin, ray.dir, t);
     real_t dist = scene_de(p, params) * (real_t)fc->step_scale;
+    real_t eps = hit_threshold(fc, path_t + t, p);
     FR_MARCH_TRACK(min_dist, dist, active);
+    steps += mask_to_real(active);
+    /* The first point is the ray's own origin (not where it entered the bounds from outside). */
+    const mask_t at_origin = i == 0 ? t <= (real_t)0 : FR_MASK_FALSE;
+    inside |= active & at_origin & (dist < -eps);
+    active &= !inside;
     real_t radius = fabs(dist);
     mask_t overshot = (omega > (real_t)1) & (radius + previous_radius < step);
     /* Overshot: go back to where the previous (safe) sphere ended, unrelaxed from here on. */
     step = lane_select(overshot, step - omega * step, fmin(dist * omega, max_step));
+    step = lane_select(at_origin, fmax(step, eps), step); /* leave a surface the origin is on */
     omega = lane_select(overshot, 1, omega);
     previous_radius = radius;
-    mask_t reached = active & !overshot & (dist < hit_threshold(fc, path_t + t, p));
-    steps += mask_to_real(active);
+    mask_t reached = active & !overshot & !at_origin & (dist < eps);
+    const real_t error = dist / eps;
+    mask_t better = active & !overshot & (error < best_error);
+    best_t = lane_select(better, t, best_t);
+    best_error = lane_select(better, error, best_error);
     hit |= reached;
     active &= !reached;
     t = lane_select(active, t + step, t);
     active &= t < t_exit;
   }
   march_result_t r;
-  r.t = t;
-  r.hit = hit | active; /* out of steps */
+  r.out_of_steps = active;
+  r.t = lane_select(active, best_t, t);
+  r.hit = hit | active;
+  r.inside = inside;
   r.steps = steps;
   r.min_dist = min_dist;
   return r;

@@ -5,25 +5,44 @@ typedef struct ray_t {
   vec3_t dir; /* unit */
 } ray_t;
 
+/* A host double stored as two floats (hi + lo): the double build gets the double back, the
+ * float build the rounded float. */
+inline scalar_t hi_lo(float hi, float lo) { return (scalar_t)hi + (scalar_t)lo; }
+inline vec3_t v3_hi_lo(__constant const float* hi, __constant const float* lo) {
+  return v3s(hi_lo(hi[0], lo[0]), hi_lo(hi[1], lo[1]), hi_lo(hi[2], lo[2]));
+}
+
 /* The ray through pixel (px, py), row 0 at the top; fractional coordinates sample inside a pixel.
  * The seed indexes columns from the right and rows from the bottom (its first pixel p_1m is
- * bottom-right for a right-handed world), hence the flips. */
-ray_t camera_ray(__constant const fr_frame_constants* fc, real_t px, real_t py) {
+ * bottom-right for a right-handed world), hence the flips. The ray starts on the start plane
+ * (frame_constants.h), *path_start from the eye: its origin is the start point of the image's
+ * centre plus a small offset, so a far camera loses no precision (eye + dir * 1e6 in float would
+ * round to the nearest 0.06 units). */
+ray_t camera_ray(__constant const fr_frame_constants* fc, real_t px, real_t py,
+                 real_t* path_start) {
   real_t i = (real_t)(fc->width - 1) - px;
   real_t j = (real_t)(fc->height - 1) - py;
-  vec3_t d = v3_from_float4(fc->first_pixel_dir);
-  d = v3_mad(d, v3_from_float4(fc->pixel_step_x), i);
-  d = v3_mad(d, v3_from_float4(fc->pixel_step_y), j);
+  vec3_t d = v3_hi_lo(fc->first_pixel_dir, fc->first_pixel_dir_lo);
+  d = v3_mad(d, v3_hi_lo(fc->pixel_step_x, fc->pixel_step_x_lo), i);
+  d = v3_mad(d, v3_hi_lo(fc->pixel_step_y, fc->pixel_step_y_lo), j);
+  const real_t ic = i - (real_t)((scalar_t)(fc->width - 1) * (scalar_t)0.5);
+  const real_t jc = j - (real_t)((scalar_t)(fc->height - 1) * (scalar_t)0.5);
   ray_t ray;
-  ray.origin = v3_from_float4(fc->eye);
+  ray.origin = v3_hi_lo(fc->ray_start, fc->ray_start_lo);
+  ray.origin = v3_mad(ray.origin, v3_hi_lo(fc->start_step_x, fc->start_step_x_lo), ic);
+  ray.origin = v3_mad(ray.origin, v3_hi_lo(fc->start_step_y, fc->start_step_y_lo), jc);
   ray.dir = v3_normalize(d);
+  *path_start = (real_t)hi_lo(fc->start_scale, fc->start_scale_lo) * v3_length(d);
   return ray;
 }
 
 /* Hit threshold at path length t from the eye: the clarity function k * t * pixel angle, never
- * below a few ulp of |p| so that far from the origin the test stays meaningful in float. */
+ * below a few ulp of max(|p|, bounding radius): positions near the scene are only that precise,
+ * and without the floor a ray next to a singular point (the Mandelbulb's centre, |p| -> 0,
+ * DE -> 0) would crawl by ever smaller steps for its whole budget. */
 inline real_t hit_threshold(__constant const fr_frame_constants* fc, real_t t, vec3_t p) {
   real_t clarity = (real_t)(fc->hit_threshold_k * fc->pixel_angle_rad) * t;
-  real_t ulp_floor = (real_t)(4 * FR_SCALAR_EPSILON) * v3_length(p);
+  real_t ulp_floor =
+      (real_t)(4 * FR_SCALAR_EPSILON) * fmax(v3_length(p), (real_t)fc->bounding_radius);
   return fmax(clarity, ulp_floor);
 }

@@ -1,8 +1,9 @@
 /* render.cl — the frame kernel: one work-item per tile of FR_TILE_W x FR_TILE_H pixels (one
  * pixel at FR_LANES 1). Lens -> march -> normal -> surface -> AO -> lights and shadows -> fog,
  * then mirror bounces; the sample is mixed into the running mean in hdr_rgba (progressive
- * anti-aliasing and depth of field). Also writes, for the primary ray, the hit depth (+inf for a
- * miss), the DE steps, and the occlusion and first-light shadow factors.
+ * anti-aliasing and depth of field). Also writes, for the primary ray, the hit depth from the eye
+ * (+inf for a miss), the DE steps, the occlusion and first-light shadow factors, and the ray's
+ * status (FR_RAY_* in march.cl).
  *
  * Optional stages (lens.cl, glow.cl, ao.cl, shadow.cl, fog.cl, reflect.cl) are pasted in only
  * when the scene needs them and they are switched on; each defines its hook, and a hook with no
@@ -40,26 +41,26 @@ inline surface_t default_surface(__constant const fr_frame_constants* fc) {
 __kernel void fr_render(__constant const fr_frame_constants* fc,
                         __constant const scene_params_t* params, __global float* hdr_rgba,
                         __global float* depth, __global float* steps_out,
-                        __global float* factors_out) {
+                        __global float* factors_out, __global uchar* status_out) {
   const int tile_x = get_global_id(0) * FR_TILE_W;
   const int tile_y = get_global_id(1) * FR_TILE_H;
   const real_t px = (real_t)tile_x + FR_LANE_X;
   const real_t py = (real_t)tile_y + FR_LANE_Y;
 
-  ray_t ray = camera_ray(fc, px + (real_t)fc->jitter_x, py + (real_t)fc->jitter_y);
+  real_t path_t;
+  ray_t ray = camera_ray(fc, px + (real_t)fc->jitter_x, py + (real_t)fc->jitter_y, &path_t);
   FR_APPLY_LENS(ray, px, py);
 
   vec3_t color = v3s(0, 0, 0);
   vec3_t throughput = v3s(1, 1, 1);
   mask_t active = FR_MASK_TRUE;
-  real_t path_t = (real_t)0;
-  real_t first_depth = (real_t)INFINITY, first_steps = (real_t)0;
+  real_t first_depth = (real_t)INFINITY, first_steps = (real_t)0, first_status = (real_t)0;
   real_t first_ao = (real_t)1, first_shadow = (real_t)1;
   const int bounces = FR_MAX_BOUNCES(fc);
   for (int bounce = 0; bounce <= bounces; ++bounce) {
     march_result_t m = march(ray, path_t, fc, params);
     const mask_t hit = active & m.hit;
-    const mask_t miss = active & !m.hit;
+    const mask_t miss = active & !m.hit & !m.inside;
     vec3_t segment = sky_color(ray.dir, fc);
     FR_APPLY_GLOW(segment, m, miss);
     real_t reflectivity = (real_t)0;
@@ -84,9 +85,14 @@ __kernel void fr_render(__constant const fr_frame_constants* fc,
         first_shadow = lane_select(hit, shadow, 1);
       }
     }
+    /* Inside the solid: black (march.cl). */
+    segment = v3_select(active & m.inside, v3s(0, 0, 0), segment);
     if (bounce == 0) {
-      first_depth = lane_select(m.hit, m.t, INFINITY);
+      first_depth = lane_select(m.hit | m.inside, path_t + m.t, INFINITY);
       first_steps = m.steps;
+      first_status = lane_select(m.inside, FR_RAY_INSIDE,
+                                 lane_select(m.out_of_steps, FR_RAY_OUT_OF_STEPS,
+                                             lane_select(m.hit, FR_RAY_HIT, FR_RAY_MISS)));
     }
     /* What is not mirrored is this segment's own colour; at the last bounce, all of it. */
     const real_t own = bounce == bounces ? (real_t)1 : (real_t)1 - reflectivity;
@@ -101,7 +107,7 @@ __kernel void fr_render(__constant const fr_frame_constants* fc,
 
   /* Scatter the lanes to their pixels; tiles at the right and bottom edges are partial. */
   float r[FR_LANES], g[FR_LANES], b[FR_LANES], d[FR_LANES], s[FR_LANES], o[FR_LANES],
-      sh[FR_LANES];
+      sh[FR_LANES], st[FR_LANES];
   store_lanes(color.x, r);
   store_lanes(color.y, g);
   store_lanes(color.z, b);
@@ -109,6 +115,7 @@ __kernel void fr_render(__constant const fr_frame_constants* fc,
   store_lanes(first_steps, s);
   store_lanes(first_ao, o);
   store_lanes(first_shadow, sh);
+  store_lanes(first_status, st);
   const float w = fc->accumulate_weight;
   for (int lane = 0; lane < FR_LANES; ++lane) {
     int x = tile_x + lane % FR_TILE_W;
@@ -129,5 +136,6 @@ __kernel void fr_render(__constant const fr_frame_constants* fc,
     steps_out[i] = s[lane];
     factors_out[2 * i + 0] = o[lane];
     factors_out[2 * i + 1] = sh[lane];
+    status_out[i] = (uchar)st[lane];
   }
 }

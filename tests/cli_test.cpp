@@ -53,7 +53,7 @@ TEST(Cli, UsageErrors) {
   expect_usage_error({"render", "--eye", "1,2"}, "not three comma-separated numbers");
   expect_usage_error({"render", "--fov", "200"}, "outside (0, 180) degrees");
   expect_usage_error({"render", "--lanes", "3"}, "--lanes: expected 1, 4, 8 or 16");
-  expect_usage_error({"render", "--precision", "half"}, "expected float or double");
+  expect_usage_error({"render", "--precision", "half"}, "expected auto, float or double");
   expect_usage_error({"render", "--device", "no-such-device"},
                      "--device no-such-device: matches no device");
   expect_usage_error({"render", "--plugins", "/no/such/folder"},

@@ -116,7 +116,7 @@ int command_bench(const std::vector<std::string>& args, std::ostream& out, std::
   report.width_px = p.render.width_px;
   report.height_px = p.render.height_px;
   report.lanes = renderer.lanes_for(p.render);
-  report.precision = p.render.precision == Precision::Double ? "double" : "float";
+  report.precision = precision_name(p.render.precision);
   report.stages = stage_names(make_kernel_config(p.scene->info, p.render, report.lanes).stages);
   report.runs = runs;
   report.frames_per_run = frames;

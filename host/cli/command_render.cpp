@@ -1,13 +1,54 @@
 #include "cli/commands.hpp"
 #include "cli/scene_setup.hpp"
 #include "image/png_write.hpp"
+#include "render/camera.hpp"
+#include "render/precision.hpp"
 #include "render/renderer.hpp"
+
+#include <algorithm>
+#include <cstdio>
 
 #include <chrono>
 #include <filesystem>
 #include <ostream>
 
 namespace fr {
+namespace {
+
+// How the primary rays ended, and the warnings a user must see: many rays out of steps, a camera
+// inside the solid, surface detail finer than float resolves.
+void report_rays(const FrameImage& image, const fr_camera& camera, const RenderSettings& settings,
+                 std::ostream& out, std::ostream& err) {
+  const RayCounts rays = count_rays(image);
+  const size_t total = image.ray_status.size();
+  auto percent = [&](size_t n) { return 100.0 * double(n) / double(std::max<size_t>(total, 1)); };
+  out << "rays: " << rays.hit << " hit, " << rays.miss << " missed, " << rays.out_of_steps
+      << " out of steps, " << rays.inside << " started inside the surface\n";
+  char line[256];
+  if (percent(rays.out_of_steps) > kOutOfStepsWarnPercent) {
+    std::snprintf(line, sizeof line,
+                  "fractalis: warning: %.2f%% of rays ran out of steps (render.max_steps = %d); "
+                  "they are shaded at their closest approach, raise render.max_steps\n",
+                  percent(rays.out_of_steps), settings.max_steps);
+    err << line;
+  }
+  if (rays.inside > 0 && rays.inside == total)
+    err << "fractalis: warning: the camera is inside the surface: every ray starts inside the "
+           "solid and is black\n";
+  if (image.precision == Precision::Float) {
+    const CameraRays camera_rays = make_camera_rays(camera, image.width_px, image.height_px);
+    const size_t fine = pixels_below_float_resolution(image.depth, camera_rays);
+    if (fine > 0) {
+      std::snprintf(line, sizeof line,
+                    "fractalis: warning: %.2f%% of surface pixels are finer than float can "
+                    "resolve there; use --precision double\n",
+                    percent(fine));
+      err << line;
+    }
+  }
+}
+
+}  // namespace
 
 int command_render(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   auto specs = scene_option_specs();
@@ -38,18 +79,25 @@ int command_render(const std::vector<std::string>& args, std::ostream& out, std:
   }
   ClRuntime runtime(p.device);
   Renderer renderer(runtime);
-  const auto start = std::chrono::steady_clock::now();
-  FrameImage image = renderer.render(p.scene->info, p.state, p.render);
-  const double ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  using clock = std::chrono::steady_clock;
+  auto ms_since = [](clock::time_point t) {
+    return std::chrono::duration<double, std::milli>(clock::now() - t).count();
+  };
+  const auto build_start = clock::now();
+  renderer.prepare(p.scene->info, p.state, p.render);
+  const double build_ms = ms_since(build_start);
+  const auto render_start = clock::now();
+  FrameImage image = renderer.render(p.scene->info, p.state, p.render, true);
+  const double render_ms = ms_since(render_start);
   if (!write_png_atomic(out_file, image.width_px, image.height_px, image.rgba8, &error)) {
     err << "fractalis: error: " << error << "\n";
     return 1;
   }
   out << "rendered " << p.scene->info.id << " " << image.width_px << "x" << image.height_px
       << " on " << p.device.name << " (lanes " << image.lanes << ", "
-      << (p.render.precision == Precision::Double ? "double" : "float") << ") in "
-      << static_cast<int>(ms) << " ms including kernel build; wrote " << out_file << "\n";
+      << precision_name(image.precision) << "): kernel build " << static_cast<int>(build_ms)
+      << " ms, render " << static_cast<int>(render_ms) << " ms; wrote " << out_file << "\n";
+  report_rays(image, p.state.camera, p.render, out, err);
   return 0;
 }
 

@@ -24,7 +24,8 @@ std::vector<OptionSpec> scene_option_specs() {
       {"param", "KEY=VALUE", true, "set a scene parameter (repeatable); vec3 as x,y,z"},
       {"time", "SECONDS", false, "scene time for the update callback (default 0)"},
       {"lanes", "1|4|8|16", false, "rays per work-item (default: 16 on CPUs, 1 on GPUs)"},
-      {"precision", "float|double", false, "arithmetic precision of the kernel (default float)"},
+      {"precision", "auto|float|double", false,
+       "arithmetic precision of the kernel (default auto: double where float cannot resolve the view)"},
       {"samples", "N", false, "jittered samples per pixel, accumulated (anti-aliasing; default 1)"},
       {"set", "KEY=VALUE", true,
        "any setting, as in config/default.toml (repeatable), e.g.\n"
@@ -197,8 +198,10 @@ RenderSettings render_settings_from(const Settings& settings, const ParsedOption
       r.precision = Precision::Float;
     else if (*precision == "double")
       r.precision = Precision::Double;
+    else if (*precision == "auto")
+      r.precision = Precision::Auto;
     else
-      throw UsageError("--precision: expected float or double, got '" + *precision + "'");
+      throw UsageError("--precision: expected auto, float or double, got '" + *precision + "'");
   }
   return r;
 }

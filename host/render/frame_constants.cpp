@@ -13,7 +13,7 @@ static_assert(FR_MAX_LIGHTS == FR_MAX_SCENE_LIGHTS,
 
 // The kernels read this struct with OpenCL C's layout rules; with only 4-byte fields both sides
 // agree, and these checks keep it so.
-static_assert(sizeof(fr_frame_constants) == 720, "fr_frame_constants layout changed");
+static_assert(sizeof(fr_frame_constants) == 896, "fr_frame_constants layout changed");
 static_assert(sizeof(fr_frame_constants) % 16 == 0);
 static_assert(offsetof(fr_frame_constants, eye) == 0);
 static_assert(offsetof(fr_frame_constants, light_vector) == 112);
@@ -21,6 +21,10 @@ static_assert(offsetof(fr_frame_constants, ambient_color) == 496);
 static_assert(offsetof(fr_frame_constants, width) == 608);
 static_assert(offsetof(fr_frame_constants, pixel_angle_rad) == 640);
 static_assert(offsetof(fr_frame_constants, relaxation) == 716);
+static_assert(offsetof(fr_frame_constants, eye_lo) == 720);
+static_assert(offsetof(fr_frame_constants, ray_start) == 784);
+static_assert(offsetof(fr_frame_constants, start_scale) == 880);
+static_assert(offsetof(fr_frame_constants, ao_reference_steps) == 888);
 
 namespace {
 void put(float out[4], glm::dvec3 v, double w = 0) {
@@ -32,8 +36,30 @@ void put(float out[4], glm::dvec3 v, double w = 0) {
 void put(float out[4], const std::array<float, 3>& v, double w = 0) {
   put(out, glm::dvec3(v[0], v[1], v[2]), w);
 }
+// A double vector as its rounded float (hi) and what the rounding lost (lo): hi + lo in double
+// is the value to about 48 bits, so the double kernel gets the camera in double.
+void put_hi_lo(float hi[4], float lo[4], glm::dvec3 v) {
+  put(hi, v);
+  put(lo, v - glm::dvec3(hi[0], hi[1], hi[2]));
+}
+void put_hi_lo(float& hi, float& lo, double v) {
+  hi = static_cast<float>(v);
+  lo = static_cast<float>(v - hi);
+}
 glm::dvec3 vec(const double v[3]) {
   return {v[0], v[1], v[2]};
+}
+
+// The start plane of primary rays (frame_constants.h): the eye's distance along the view to
+// just before the bounding sphere, as a multiple of the direction vectors' component along the
+// view (which the seed's image plane keeps the same for every pixel). 0 (start at the eye) when
+// the eye is within the bounds, or when a thin lens moves ray origins off the eye.
+double start_scale(const CameraRays& rays, double bounding_radius, float aperture_radius) {
+  if (aperture_radius > 0) return 0;
+  const double ahead = glm::dot(-rays.eye, rays.forward) - 1.001 * bounding_radius;
+  const double along = glm::dot(rays.first_pixel_dir, rays.forward);
+  if (ahead <= 0 || along <= 0) return 0;
+  return ahead / along;
 }
 }  // namespace
 
@@ -47,10 +73,19 @@ std::array<double, 2> sample_jitter(int i) {
 fr_frame_constants make_frame_constants(const CameraRays& rays, const SceneState& state,
                                         const RenderSettings& s, int sample_index) {
   fr_frame_constants fc{};
-  put(fc.eye, rays.eye);
-  put(fc.first_pixel_dir, rays.first_pixel_dir);
-  put(fc.pixel_step_x, rays.pixel_step_x);
-  put(fc.pixel_step_y, rays.pixel_step_y);
+  put_hi_lo(fc.eye, fc.eye_lo, rays.eye);
+  put_hi_lo(fc.first_pixel_dir, fc.first_pixel_dir_lo, rays.first_pixel_dir);
+  put_hi_lo(fc.pixel_step_x, fc.pixel_step_x_lo, rays.pixel_step_x);
+  put_hi_lo(fc.pixel_step_y, fc.pixel_step_y_lo, rays.pixel_step_y);
+  const double scale = start_scale(rays, state.bounding_radius, s.aperture_radius);
+  const glm::dvec3 centre_dir = rays.first_pixel_dir +
+                                rays.pixel_step_x * (0.5 * (rays.width_px - 1)) +
+                                rays.pixel_step_y * (0.5 * (rays.height_px - 1));
+  put_hi_lo(fc.ray_start, fc.ray_start_lo, rays.eye + centre_dir * scale);
+  put_hi_lo(fc.start_step_x, fc.start_step_x_lo, rays.pixel_step_x * scale);
+  put_hi_lo(fc.start_step_y, fc.start_step_y_lo, rays.pixel_step_y * scale);
+  put_hi_lo(fc.start_scale, fc.start_scale_lo, scale);
+  fc.ao_reference_steps = static_cast<float>(s.ao_reference_steps);
   put(fc.camera_right, rays.right);
   put(fc.camera_up, rays.up);
   put(fc.camera_forward, rays.forward);
@@ -92,7 +127,6 @@ fr_frame_constants make_frame_constants(const CameraRays& rays, const SceneState
   fc.sample_index = sample_index;
   fc.pixel_angle_rad = static_cast<float>(rays.pixel_angle_rad);
   fc.hit_threshold_k = s.hit_threshold_k;
-  fc.max_distance = s.max_distance;
   fc.bounding_radius = static_cast<float>(radius);
   fc.step_scale = s.step_scale;
   fc.ao_strength = s.ao_strength;

@@ -203,7 +203,7 @@ fr_features enabled_stages(const SceneInfo& info, fr_features disabled_by_user) 
 KernelConfig make_kernel_config(const SceneInfo& info, const RenderSettings& s, int lanes) {
   KernelConfig c;
   c.lanes = lanes;
-  c.precision = s.precision;
+  c.precision = s.precision == Precision::Double ? Precision::Double : Precision::Float;
   c.stages = enabled_stages(info, s.disabled_stages);
   if (s.aperture_radius > 0 && !(s.disabled_stages & kStageDepthOfField))
     c.stages |= kStageDepthOfField;

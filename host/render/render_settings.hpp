@@ -9,7 +9,12 @@
 
 namespace fr {
 
-enum class Precision { Float, Double };
+// Auto: float, unless the pixel footprint at the surface comes near float's resolution there
+// (resolve_precision in render/precision.hpp), then double.
+enum class Precision { Float, Double, Auto };
+inline const char* precision_name(Precision p) {
+  return p == Precision::Float ? "float" : p == Precision::Double ? "double" : "auto";
+}
 enum class ShadingModel { Lambert, BlinnPhong, OrenNayar };
 enum class NormalMethod { Tetrahedron, CentralDifferences };
 enum class AoMethod { StepCount, Sampled };
@@ -20,7 +25,7 @@ struct RenderSettings {
   int width_px = 1280;
   int height_px = 720;
   int lanes = 0;  // 1, 4, 8 or 16; 0 picks the device's preferred width
-  Precision precision = Precision::Float;
+  Precision precision = Precision::Auto;
   int samples = 1;                  // jittered samples accumulated per image (anti-aliasing)
   fr_features disabled_stages = 0;  // effects the user switched off
 
@@ -35,10 +40,10 @@ struct RenderSettings {
   int max_bounces = 2;  // mirror bounces, when reflections are on
   int ao_samples = 5;
   float hit_threshold_k = 0.5f;  // epsilon = k * t * pixel angle
-  float max_distance = 100.0f;
   float step_scale = 1.0f;
   float relaxation = 1.3f;  // over-relaxed sphere tracing's omega; 1 is plain sphere tracing
   float ao_strength = 2.5f;
+  int ao_reference_steps = 160;  // step-count AO: this many march steps is full occlusion
   float ao_distance = 0.1f;  // x bounding radius
   float shadow_softness = 12.0f;
   float specular_strength = 0.35f;

@@ -4,6 +4,7 @@
 #include "render/frame_constants.hpp"
 #include "render/kernel_assembly.hpp"
 #include "render/kernel_sources.hpp"
+#include "render/precision.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -49,6 +50,7 @@ void Renderer::ensure_buffers(size_t n) {
   depth_ = make_buffer(ctx, CL_MEM_WRITE_ONLY, n * sizeof(float), "the depth buffer");
   steps_ = make_buffer(ctx, CL_MEM_WRITE_ONLY, n * sizeof(float), "the step buffer");
   factors_ = make_buffer(ctx, CL_MEM_WRITE_ONLY, n * 2 * sizeof(float), "the AO and shadow buffer");
+  status_ = make_buffer(ctx, CL_MEM_WRITE_ONLY, n, "the ray status buffer");
   rgba8_ = make_buffer(ctx, CL_MEM_WRITE_ONLY, padded * 4, "the display image");
   buffer_pixels_ = n;
 }
@@ -62,15 +64,18 @@ FrameImage Renderer::render(const SceneInfo& info, const SceneState& state,
 }
 
 void Renderer::render_sample(const SceneInfo& info, const SceneState& state,
-                             const RenderSettings& settings, int sample_index) {
-  if (settings.precision == Precision::Double && !runtime_.device().has_fp64)
+                             const RenderSettings& requested, int sample_index) {
+  if (requested.precision == Precision::Double && !runtime_.device().has_fp64)
     throw std::runtime_error("device " + runtime_.device().name + " has no double precision");
+  // Auto is decided once per accumulation, at its first sample.
+  RenderSettings settings = requested;
+  settings.precision = sample_index == 0 || requested.precision != Precision::Auto
+                           ? resolve_precision(runtime_, info, state, requested)
+                           : last_precision_;
+  last_precision_ = settings.precision;
   const int lanes = lanes_for(settings);
-  const AssembledKernel assembled =
-      assemble_render_kernel(info, state.params, make_kernel_config(info, settings, lanes));
-  cl_kernel kernel = runtime_.kernel(
-      runtime_.program(assembled.source, assembled.build_options, assembled.description),
-      "fr_render");
+  std::string description;
+  cl_kernel kernel = render_kernel(info, state, settings, lanes, &description);
 
   const int w = settings.width_px, h = settings.height_px;
   const size_t n = static_cast<size_t>(w) * h;
@@ -93,8 +98,8 @@ void Renderer::render_sample(const SceneInfo& info, const SceneState& state,
                                 nullptr, nullptr),
            "clEnqueueWriteBuffer", "uploading scene parameters");
 
-  const cl_mem args[] = {constants_.get(), params_.get(), hdr_.get(),
-                         depth_.get(),     steps_.get(),  factors_.get()};
+  const cl_mem args[] = {constants_.get(), params_.get(),  hdr_.get(),   depth_.get(),
+                         steps_.get(),     factors_.get(), status_.get()};
   for (cl_uint i = 0; i < std::size(args); ++i) set_arg(kernel, i, args[i]);
   const TileShape tile = tile_shape(lanes);
   const size_t global[2] = {round_up_div(w, tile.width_px), round_up_div(h, tile.height_px)};
@@ -104,14 +109,39 @@ void Renderer::render_sample(const SceneInfo& info, const SceneState& state,
   const size_t one[2] = {1, 1};
   const size_t* local = (runtime_.device().type & CL_DEVICE_TYPE_CPU) ? one : nullptr;
   cl_check(clEnqueueNDRangeKernel(q, kernel, 2, nullptr, global, local, 0, nullptr, nullptr),
-           "clEnqueueNDRangeKernel", "rendering " + assembled.description);
+           "clEnqueueNDRangeKernel", "rendering " + description);
+}
+
+cl_kernel Renderer::render_kernel(const SceneInfo& info, const SceneState& state,
+                                  const RenderSettings& settings, int lanes,
+                                  std::string* description) {
+  const AssembledKernel assembled =
+      assemble_render_kernel(info, state.params, make_kernel_config(info, settings, lanes));
+  *description = assembled.description;
+  return runtime_.kernel(
+      runtime_.program(assembled.source, assembled.build_options, assembled.description),
+      "fr_render");
+}
+
+Precision Renderer::prepare(const SceneInfo& info, const SceneState& state,
+                            const RenderSettings& requested) {
+  RenderSettings settings = requested;
+  settings.precision = resolve_precision(runtime_, info, state, requested);
+  std::string description;
+  render_kernel(info, state, settings, lanes_for(settings), &description);
+  post_kernel();
+  return settings.precision;
+}
+
+cl_kernel Renderer::post_kernel() {
+  // The post stage does not depend on the scene: one program for all.
+  static const std::string post_source = std::string(kernel_source("post.cl"));
+  return runtime_.kernel(runtime_.program(post_source, "-cl-std=CL1.2", "post-processing"),
+                         "fr_post");
 }
 
 void Renderer::finish(const RenderSettings& settings, Readback what, FrameImage& img) {
-  // The post stage does not depend on the scene: one program for all.
-  static const std::string post_source = std::string(kernel_source("post.cl"));
-  cl_kernel post =
-      runtime_.kernel(runtime_.program(post_source, "-cl-std=CL1.2", "post-processing"), "fr_post");
+  cl_kernel post = post_kernel();
   const size_t n = frame_pixels_;
   cl_command_queue q = runtime_.queue();
   const cl_mem hdr = hdr_.get(), out8 = rgba8_.get();
@@ -133,6 +163,7 @@ void Renderer::finish(const RenderSettings& settings, Readback what, FrameImage&
   img.width_px = settings.width_px;
   img.height_px = settings.height_px;
   img.lanes = last_lanes_;
+  img.precision = last_precision_;
   img.rgba8.resize(n * 4);
   cl_check(clEnqueueReadBuffer(q, out8, CL_FALSE, 0, n * 4, img.rgba8.data(), 0, nullptr, nullptr),
            "clEnqueueReadBuffer", "reading the image");
@@ -141,12 +172,17 @@ void Renderer::finish(const RenderSettings& settings, Readback what, FrameImage&
   img.depth.clear();
   img.occlusion.clear();
   img.shadow.clear();
+  img.ray_status.clear();
   std::vector<float> factors;
   if (what != Readback::Display) {
     img.steps.resize(n);
+    img.ray_status.resize(n);
     cl_check(clEnqueueReadBuffer(q, steps_.get(), CL_FALSE, 0, n * 4, img.steps.data(), 0, nullptr,
                                  nullptr),
              "clEnqueueReadBuffer", "reading DE step counts");
+    cl_check(clEnqueueReadBuffer(q, status_.get(), CL_FALSE, 0, n, img.ray_status.data(), 0,
+                                 nullptr, nullptr),
+             "clEnqueueReadBuffer", "reading ray status");
   }
   if (what == Readback::Everything) {
     img.linear_rgba.resize(n * 4);
@@ -171,6 +207,17 @@ void Renderer::finish(const RenderSettings& settings, Readback what, FrameImage&
       img.shadow[i] = factors[2 * i + 1];
     }
   }
+}
+
+RayCounts count_rays(const FrameImage& image) {
+  RayCounts c;
+  for (uint8_t s : image.ray_status) switch (static_cast<RayStatus>(s)) {
+      case RayStatus::Miss: ++c.miss; break;
+      case RayStatus::Hit: ++c.hit; break;
+      case RayStatus::OutOfSteps: ++c.out_of_steps; break;
+      case RayStatus::Inside: ++c.inside; break;
+    }
+  return c;
 }
 
 }  // namespace fr

@@ -24,7 +24,26 @@ struct FrameImage {
   std::vector<float> steps;        // DE evaluations of the primary ray
   std::vector<float> occlusion;    // ambient-occlusion factor at the hit, in [0, 1]; 1 on a miss
   std::vector<float> shadow;       // first light's shadow factor at the hit, in [0, 1]
+  // Filled with the steps (DisplayAndSteps, Everything): each primary ray's RayStatus.
+  std::vector<uint8_t> ray_status;
+  Precision precision = Precision::Float;  // what the kernel ran in (Auto resolved)
 };
+
+// How each primary ray ended (kernels/march.cl's FR_RAY_*).
+enum class RayStatus : uint8_t {
+  Miss = 0,
+  Hit = 1,
+  OutOfSteps = 2,  // the step budget ended first: shaded at the best candidate point
+  Inside = 3,      // started inside the solid: black
+};
+
+struct RayCounts {
+  size_t miss = 0, hit = 0, out_of_steps = 0, inside = 0;
+};
+RayCounts count_rays(const FrameImage& image);
+
+// `render` warns when more than this percentage of primary rays ran out of steps.
+constexpr double kOutOfStepsWarnPercent = 0.5;
 
 // What `Renderer::finish` reads back from the device besides the display image. Reading
 // everything costs 33 MB of copies per 1280x720 frame, so the explorer asks only for steps.
@@ -54,14 +73,24 @@ class Renderer {
   // The lane width a frame with these settings uses on this device.
   int lanes_for(const RenderSettings& settings) const;
 
+  // Builds (or finds in the cache) the kernel a frame with these settings runs, deciding Auto
+  // precision as the first sample would; returns the precision. Lets a caller time the kernel
+  // build apart from the render.
+  Precision prepare(const SceneInfo& info, const SceneState& state, const RenderSettings& settings);
+
  private:
   void ensure_buffers(size_t pixel_count);
+  // The render kernel for `settings` (precision already resolved); *description names it.
+  cl_kernel render_kernel(const SceneInfo& info, const SceneState& state,
+                          const RenderSettings& settings, int lanes, std::string* description);
+  cl_kernel post_kernel();
 
   ClRuntime& runtime_;
   size_t buffer_pixels_ = 0;  // capacity of the buffers
   size_t frame_pixels_ = 0;   // pixels of the frame being rendered
   int last_lanes_ = 0;
-  ClBufferHandle constants_, params_, hdr_, depth_, steps_, factors_, rgba8_;
+  Precision last_precision_ = Precision::Float;
+  ClBufferHandle constants_, params_, hdr_, depth_, steps_, factors_, status_, rgba8_;
   size_t params_bytes_ = 0;
 };
 

@@ -101,7 +101,9 @@ const std::vector<Key>& known_keys() {
       {"render.precision",
        [](const toml::node& n, Settings& s) {
          return set_choice(n, s.render.precision,
-                           {{"float", Precision::Float}, {"double", Precision::Double}});
+                           {{"auto", Precision::Auto},
+                            {"float", Precision::Float},
+                            {"double", Precision::Double}});
        }},
       {"render.samples",
        [](const toml::node& n, Settings& s) { return set_int(n, s.render.samples, 1, 4096); }},
@@ -341,7 +343,7 @@ std::string format_settings_toml(const Settings& s) {
   out << "]\n\n[device]\nselect = " << toml::value<std::string>(s.device) << "\n\n";
   const RenderSettings& r = s.render;
   out << "[render]\nlanes = " << r.lanes
-      << "\nprecision = " << (r.precision == Precision::Double ? "\"double\"" : "\"float\"")
+      << "\nprecision = \"" << precision_name(r.precision) << "\""
       << "\nsamples = " << r.samples << "\nmax_steps = " << r.max_steps
       << "\nmax_bounces = " << r.max_bounces << "\nhit_threshold_k = " << r.hit_threshold_k
       << "\nexposure = " << r.exposure << "\nao_strength = " << r.ao_strength

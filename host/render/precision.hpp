@@ -1,0 +1,37 @@
+// precision.hpp — choosing float or double for a view, and checking afterwards whether float
+// resolved it.
+//
+// A float position near |p| is only good to about |p| * 2^-23. Where the pixel footprint at the
+// surface (distance x pixel angle) comes within a small factor of that, float can no longer tell
+// neighbouring pixels' hit points apart: deep zooms turn blocky and normals noisy. The automatic
+// mode estimates the footprint before rendering from the scene's DE at the eye (the nearest
+// surface is at least that far) and picks double there.
+#pragma once
+
+#include "plugin/scene_info.hpp"
+#include "plugin/scene_instance.hpp"
+#include "render/camera.hpp"
+#include "render/cl_runtime.hpp"
+#include "render/render_settings.hpp"
+
+#include <vector>
+
+namespace fr {
+
+// Footprints smaller than this many float ulps of the surface position need double.
+constexpr double kFloatFootprintUlps = 16;
+
+// Float's resolution at world position scale |p|: one ulp, 2^-23 |p|.
+double float_resolution(double position_scale);
+
+// The precision a frame of this view should use. Float and Double are returned as they are; Auto
+// probes the DE at the eye (on the device) and returns Double when the footprint estimate is
+// under kFloatFootprintUlps ulps and the device has doubles, else Float.
+Precision resolve_precision(ClRuntime& runtime, const SceneInfo& info, const SceneState& state,
+                            const RenderSettings& settings);
+
+// After a render: how many hit pixels (depth finite) have a footprint under
+// kFloatFootprintUlps ulps of their hit position, i.e. were below float's resolution.
+size_t pixels_below_float_resolution(const std::vector<float>& depth, const CameraRays& rays);
+
+}  // namespace fr
