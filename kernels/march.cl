@@ -46,8 +46,11 @@ inline mask_t intersect_bounds(ray_t ray, scalar_t radius, real_t* t_enter, real
  *
  * Documented results for the hard cases:
  *  - Origin on the surface (|DE| <= eps at the ray's own origin, not at a point where it entered
- *    the bounds from outside): that point is never a hit; the lane steps by at least eps, so looking away from a surface you stand on shows what is in front,
- *    and looking into it hits within a step.
+ *    the bounds from outside): the lane steps by at least eps and counts a hit only where the
+ *    DE falls below -eps (it went through the surface) until the DE first exceeds eps; so
+ *    looking away from a surface you stand on shows what is in front, and looking into it hits
+ *    within a step or two. (A camera exactly at a singular point where the DE is 0, such as
+ *    the Mandelbulb's centre, is on the surface in this sense.)
  *  - Origin inside the solid (DE < -eps at the first point): the lane stops there with `inside`
  *    set; render.cl shades it black (no light reaches inside a solid) at depth path_t.
  *  - Out of steps: the lane ends at its best candidate, the point with the smallest DE/eps seen
@@ -58,7 +61,7 @@ march_result_t march(ray_t ray, real_t path_t, __constant const fr_frame_constan
   real_t t, t_exit;
   mask_t active = intersect_bounds(ray, fc->bounding_radius, &t, &t_exit);
   active &= t < t_exit;
-  mask_t hit = FR_MASK_FALSE, inside = FR_MASK_FALSE;
+  mask_t hit = FR_MASK_FALSE, inside = FR_MASK_FALSE, leaving = FR_MASK_FALSE;
   real_t steps = (real_t)0;
   real_t min_dist = (real_t)FR_SCALAR_MAX;
   const real_t max_step = (real_t)fc->bounding_radius;
@@ -72,18 +75,26 @@ march_result_t march(ray_t ray, real_t path_t, __constant const fr_frame_constan
     real_t eps = hit_threshold(fc, path_t + t, p);
     FR_MARCH_TRACK(min_dist, dist, active);
     steps += mask_to_real(active);
-    /* The first point is the ray's own origin (not where it entered the bounds from outside). */
-    const mask_t at_origin = i == 0 ? t <= (real_t)0 : FR_MASK_FALSE;
-    inside |= active & at_origin & (dist < -eps);
-    active &= !inside;
+    /* The first point is the ray's own origin (not where it entered the bounds from outside):
+     * below -eps it is inside the solid; within eps it is on a surface, and the lane is
+     * "leaving" until the DE first exceeds eps. */
+    if (i == 0) {
+      const mask_t at_origin = t <= (real_t)0;
+      inside = active & at_origin & (dist < -eps);
+      active &= !inside;
+      leaving = active & at_origin & (dist < eps);
+    }
     real_t radius = fabs(dist);
-    mask_t overshot = (omega > (real_t)1) & (radius + previous_radius < step);
+    mask_t overshot = !leaving & (omega > (real_t)1) & (radius + previous_radius < step);
     /* Overshot: go back to where the previous (safe) sphere ended, unrelaxed from here on. */
     step = lane_select(overshot, step - omega * step, fmin(dist * omega, max_step));
-    step = lane_select(at_origin, fmax(step, eps), step); /* leave a surface the origin is on */
-    omega = lane_select(overshot, 1, omega);
+    /* Leaving a surface: steps of at least eps, unrelaxed; a hit only once the ray has gone
+     * through it (DE below -eps), so looking away from the surface is never a hit at the eye. */
+    step = lane_select(leaving, fmin(fmax(radius, eps), max_step), step);
+    omega = lane_select(leaving, 1, omega);
     previous_radius = radius;
-    mask_t reached = active & !overshot & !at_origin & (dist < eps);
+    mask_t reached = active & !overshot & ((leaving & (dist < -eps)) | (!leaving & (dist < eps)));
+    leaving &= dist < eps;
     const real_t error = dist / eps;
     mask_t better = active & !overshot & (error < best_error);
     best_t = lane_select(better, t, best_t);
