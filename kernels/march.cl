@@ -54,8 +54,11 @@ inline mask_t intersect_bounds(ray_t ray, scalar_t radius, real_t* t_enter, real
  *  - Origin inside the solid (DE < -eps at the first point): the lane stops there with `inside`
  *    set; render.cl shades it black (no light reaches inside a solid) at depth path_t.
  *  - Out of steps: the lane ends at its best candidate, the point with the smallest DE/eps seen
- *    (Keinert et al.'s "minimum error" point), and counts as a hit with `out_of_steps` set; the
- *    host counts these rays and warns when there are many. */
+ *    (Keinert et al.'s "minimum error" point). If that point came within FR_CANDIDATE_MAX_ERROR
+ *    thresholds of the surface (a ray deep in a crevice), it is shaded as surface there; else
+ *    (a ray creeping past an edge) as a miss. Either way `out_of_steps` is set, and the host
+ *    counts these rays and warns when there are many. */
+#define FR_CANDIDATE_MAX_ERROR 4
 march_result_t march(ray_t ray, real_t path_t, __constant const fr_frame_constants* fc,
                      __constant const scene_params_t* params) {
   real_t t, t_exit;
@@ -91,7 +94,7 @@ march_result_t march(ray_t ray, real_t path_t, __constant const fr_frame_constan
     /* Leaving a surface: steps of at least eps, unrelaxed; a hit only once the ray has gone
      * through it (DE below -eps), so looking away from the surface is never a hit at the eye. */
     step = lane_select(leaving, fmin(fmax(radius, eps), max_step), step);
-    omega = lane_select(leaving, 1, omega);
+    omega = lane_select(overshot | leaving, 1, omega);
     previous_radius = radius;
     mask_t reached = active & !overshot & ((leaving & (dist < -eps)) | (!leaving & (dist < eps)));
     leaving &= dist < eps;
@@ -107,7 +110,7 @@ march_result_t march(ray_t ray, real_t path_t, __constant const fr_frame_constan
   march_result_t r;
   r.out_of_steps = active;
   r.t = lane_select(active, best_t, t);
-  r.hit = hit | active;
+  r.hit = hit | (active & (best_error <= (real_t)FR_CANDIDATE_MAX_ERROR));
   r.inside = inside;
   r.steps = steps;
   r.min_dist = min_dist;

@@ -19,6 +19,7 @@
 // Besides the scenes' oblique default views, a face-on view: there the DE is exact in front of
 // the faces, so a march that over-steps lands behind the surface (render.step_scale = 1.02
 // fails it; the mutation case below keeps that true).
+#include "exact_shapes.hpp"
 #include "plugin/scene_instance.hpp"
 #include "render/camera.hpp"
 #include "render/de_probe.hpp"
@@ -37,41 +38,9 @@ namespace fr {
 namespace {
 
 using glm::dvec3;
-constexpr double kNone = std::numeric_limits<double>::infinity();
-
-// Entry distance of the ray into the axis-aligned box centre +- half (0 if it starts inside).
-double box_entry(dvec3 o, dvec3 d, dvec3 centre, double half) {
-  double t0 = 0, t1 = kNone;
-  for (int a = 0; a < 3; ++a) {
-    const double lo = centre[a] - half, hi = centre[a] + half;
-    if (d[a] == 0) {
-      if (o[a] < lo || o[a] > hi) return kNone;
-      continue;
-    }
-    double ta = (lo - o[a]) / d[a], tb = (hi - o[a]) / d[a];
-    if (ta > tb) std::swap(ta, tb);
-    t0 = std::max(t0, ta);
-    t1 = std::min(t1, tb);
-    if (t0 > t1) return kNone;
-  }
-  return t0;
-}
-
-// The level-n sponge in the cube centre +- half, each leaf cube grown by `grow`.
-double menger_entry(dvec3 o, dvec3 d, dvec3 centre, double half, int level, double grow) {
-  if (box_entry(o, d, centre, half + grow) == kNone) return kNone;
-  if (level == 0) return box_entry(o, d, centre, half + grow);
-  double best = kNone;
-  const double third = half / 3;
-  for (int i = -1; i <= 1; ++i)
-    for (int j = -1; j <= 1; ++j)
-      for (int k = -1; k <= 1; ++k) {
-        if ((i == 0) + (j == 0) + (k == 0) >= 2) continue;  // the removed cross
-        const dvec3 c = centre + 2 * third * dvec3(i, j, k);
-        best = std::min(best, menger_entry(o, d, c, third, level - 1, grow));
-      }
-  return best;
-}
+using test::box_entry;
+using test::kNone;
+using test::menger_entry;
 
 using Tetra = std::array<dvec3, 4>;
 

@@ -172,8 +172,10 @@ AssembledKernel finish(std::ostringstream& out, const SceneInfo& info, const Ker
   // No -cl-fast-relaxed-math: it permits atan2 as atan(y/x) and finite-math-only, which break
   // the DEs' polar-axis and origin guards, and on PoCL it measured no faster (Mandelbulb 640x360:
   // 205 ms with it, 200 ms without, before the exp2/native trig changes). mad contraction costs
-  // little accuracy and is checked against the double build by the tests.
+  // little accuracy and is checked against the double build by the tests. render.fast_math
+  // turns it on for experiments; the stability tier renders with it.
   k.build_options = "-cl-std=CL1.2 -cl-mad-enable";
+  if (config.fast_math) k.build_options += " -cl-fast-relaxed-math";
   k.description = "scene '" + info.id + "' " + kind + " kernel (lanes " +
                   std::to_string(config.lanes) + ", " +
                   (config.precision == Precision::Double ? "double" : "float") +
@@ -212,6 +214,7 @@ KernelConfig make_kernel_config(const SceneInfo& info, const RenderSettings& s, 
   c.ao_method = s.ao_method;
   c.shadow_method = s.shadow_method;
   c.fog_method = s.fog_method;
+  c.fast_math = s.fast_math;
   return c;
 }
 

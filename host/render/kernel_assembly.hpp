@@ -30,6 +30,7 @@ struct KernelConfig {
   AoMethod ao_method = AoMethod::StepCount;
   ShadowMethod shadow_method = ShadowMethod::Soft;
   FogMethod fog_method = FogMethod::Exponential;
+  bool fast_math = false;  // -cl-fast-relaxed-math (off by default, see kernel_assembly.cpp)
 };
 
 // The kernel configuration a frame with these settings compiles for this scene.

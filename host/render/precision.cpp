@@ -29,7 +29,7 @@ Precision resolve_precision(ClRuntime& runtime, const SceneInfo& info, const Sce
   const double position_scale = std::min(state.bounding_radius, eye_distance + distance);
   const double footprint = distance * rays.pixel_angle_rad;
   return footprint < kFloatFootprintUlps * float_resolution(position_scale) ? Precision::Double
-                                                                             : Precision::Float;
+                                                                            : Precision::Float;
 }
 
 size_t pixels_below_float_resolution(const std::vector<float>& depth, const CameraRays& rays) {
@@ -39,8 +39,8 @@ size_t pixels_below_float_resolution(const std::vector<float>& depth, const Came
       const float t = depth[static_cast<size_t>(y) * rays.width_px + x];
       if (!std::isfinite(t)) continue;
       const glm::dvec3 p = rays.eye + camera_ray_dir(rays, x, y) * double(t);
-      n += double(t) * rays.pixel_angle_rad <
-           kFloatFootprintUlps * float_resolution(glm::length(p));
+      n +=
+          double(t) * rays.pixel_angle_rad < kFloatFootprintUlps * float_resolution(glm::length(p));
     }
   return n;
 }

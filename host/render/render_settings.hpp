@@ -41,10 +41,12 @@ struct RenderSettings {
   int ao_samples = 5;
   float hit_threshold_k = 0.5f;  // epsilon = k * t * pixel angle
   float step_scale = 1.0f;
-  float relaxation = 1.3f;  // over-relaxed sphere tracing's omega; 1 is plain sphere tracing
+  float relaxation = 1.3f;
+  bool fast_math = false;  // build with -cl-fast-relaxed-math (finite-math-only, relaxed trig)  //
+                           // over-relaxed sphere tracing's omega; 1 is plain sphere tracing
   float ao_strength = 2.5f;
   int ao_reference_steps = 160;  // step-count AO: this many march steps is full occlusion
-  float ao_distance = 0.1f;  // x bounding radius
+  float ao_distance = 0.1f;      // x bounding radius
   float shadow_softness = 12.0f;
   float specular_strength = 0.35f;
   float specular_power = 48.0f;

@@ -212,10 +212,18 @@ void Renderer::finish(const RenderSettings& settings, Readback what, FrameImage&
 RayCounts count_rays(const FrameImage& image) {
   RayCounts c;
   for (uint8_t s : image.ray_status) switch (static_cast<RayStatus>(s)) {
-      case RayStatus::Miss: ++c.miss; break;
-      case RayStatus::Hit: ++c.hit; break;
-      case RayStatus::OutOfSteps: ++c.out_of_steps; break;
-      case RayStatus::Inside: ++c.inside; break;
+      case RayStatus::Miss:
+        ++c.miss;
+        break;
+      case RayStatus::Hit:
+        ++c.hit;
+        break;
+      case RayStatus::OutOfSteps:
+        ++c.out_of_steps;
+        break;
+      case RayStatus::Inside:
+        ++c.inside;
+        break;
     }
   return c;
 }

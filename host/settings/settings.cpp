@@ -125,6 +125,16 @@ const std::vector<Key>& known_keys() {
        }},
       {"render.relaxation",
        [](const toml::node& n, Settings& s) { return set_float(n, s.render.relaxation, 1, 1.95); }},
+      {"render.fast_math",
+       [](const toml::node& n, Settings& s) {
+         if (!n.is_boolean()) return std::string("expected true or false");
+         s.render.fast_math = *n.value<bool>();
+         return std::string();
+       }},
+      {"render.ao_reference_steps",
+       [](const toml::node& n, Settings& s) {
+         return set_int(n, s.render.ao_reference_steps, 1, 100000);
+       }},
       {"render.roughness",
        [](const toml::node& n, Settings& s) { return set_float(n, s.render.roughness, 0, 1.5); }},
       {"render.reflectivity",
@@ -342,14 +352,15 @@ std::string format_settings_toml(const Settings& s) {
     out << (i ? ", " : "") << toml::value<std::string>(s.plugin_folders[i].string());
   out << "]\n\n[device]\nselect = " << toml::value<std::string>(s.device) << "\n\n";
   const RenderSettings& r = s.render;
-  out << "[render]\nlanes = " << r.lanes
-      << "\nprecision = \"" << precision_name(r.precision) << "\""
+  out << "[render]\nlanes = " << r.lanes << "\nprecision = \"" << precision_name(r.precision)
+      << "\""
       << "\nsamples = " << r.samples << "\nmax_steps = " << r.max_steps
       << "\nmax_bounces = " << r.max_bounces << "\nhit_threshold_k = " << r.hit_threshold_k
       << "\nexposure = " << r.exposure << "\nao_strength = " << r.ao_strength
-      << "\nroughness = " << r.roughness << "\nreflectivity = " << r.reflectivity
-      << "\naperture = " << r.aperture_radius << "\nfocus_distance = " << r.focus_distance
-      << "\nshading_model = "
+      << "\nao_reference_steps = " << r.ao_reference_steps << "\nrelaxation = " << r.relaxation
+      << "\nfast_math = " << (r.fast_math ? "true" : "false") << "\nroughness = " << r.roughness
+      << "\nreflectivity = " << r.reflectivity << "\naperture = " << r.aperture_radius
+      << "\nfocus_distance = " << r.focus_distance << "\nshading_model = "
       << choice(static_cast<int>(r.shading), {"lambert", "blinn-phong", "oren-nayar"})
       << "\nnormal_method = " << choice(static_cast<int>(r.normals), {"tetrahedron", "central"})
       << "\nao_method = " << choice(static_cast<int>(r.ao_method), {"step-count", "sampled"})
