@@ -1,5 +1,6 @@
 // The seed camera model against rays computed by hand from its formulas.
 #include "render/camera.hpp"
+#include "render/frame_constants.hpp"
 
 #include <gtest/gtest.h>
 
@@ -93,6 +94,55 @@ TEST(Camera, RejectsDegenerateCameras) {
 TEST(Camera, SinglePixelLooksAtTarget) {
   const CameraRays r = make_camera_rays(make_camera({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 45), 1, 1);
   expect_dir(camera_ray_dir(r, 0, 0), {0, 0, -1});
+}
+
+// The camera reaches the double kernel as float pairs (hi + lo): their sum must give back the
+// double camera to ~1e-15, or a double deep zoom is only float-precise. (GCC 12 once vectorised
+// lo into v - v = 0 here; this test failed with that build.)
+TEST(FrameConstants, CameraSurvivesAsHiLoPairs) {
+  SceneState state;
+  state.bounding_radius = 2;
+  state.camera.struct_size = sizeof state.camera;
+  const glm::dvec3 eye(0.6 * (1 + 1e-9), 0.8 * (1 + 1e-9), 1.0 / 3);
+  for (int a = 0; a < 3; ++a) state.camera.eye[a] = eye[a];
+  state.camera.up[2] = 1;
+  state.camera.fov_deg = 1e-3;
+  const CameraRays rays = make_camera_rays(state.camera, 8, 6);
+  const fr_frame_constants fc = make_frame_constants(rays, state, RenderSettings{}, 0);
+  for (int a = 0; a < 3; ++a) {
+    EXPECT_NEAR(double(fc.eye[a]) + double(fc.eye_lo[a]), eye[a], 1e-15) << a;
+    EXPECT_NEAR(double(fc.ray_start[a]) + double(fc.ray_start_lo[a]), eye[a], 1e-15)
+        << a << ": inside the bounds, rays start at the eye";
+    EXPECT_NEAR(double(fc.first_pixel_dir[a]) + double(fc.first_pixel_dir_lo[a]),
+                rays.first_pixel_dir[a], 1e-15);
+    EXPECT_NEAR(double(fc.pixel_step_x[a]) + double(fc.pixel_step_x_lo[a]), rays.pixel_step_x[a],
+                1e-20);
+  }
+  EXPECT_EQ(fc.start_scale, 0.0f);
+}
+
+// A far camera's rays start on a plane just in front of the bounding sphere: the image centre's
+// start point lies on the view axis, 1.001 R before the origin's plane, wherever the eye is.
+TEST(FrameConstants, FarCameraRaysStartAtTheBounds) {
+  for (double distance : {10.0, 1e3, 1e6}) {
+    SceneState state;
+    state.bounding_radius = 1.5;
+    state.camera.struct_size = sizeof state.camera;
+    const glm::dvec3 dir = glm::normalize(glm::dvec3(1, 2, 3));
+    for (int a = 0; a < 3; ++a) state.camera.eye[a] = dir[a] * distance;
+    state.camera.up[1] = 1;
+    state.camera.fov_deg = 10;
+    const CameraRays rays = make_camera_rays(state.camera, 9, 7);  // odd: a centre pixel
+    const fr_frame_constants fc = make_frame_constants(rays, state, RenderSettings{}, 0);
+    glm::dvec3 start;
+    for (int a = 0; a < 3; ++a) start[a] = double(fc.ray_start[a]) + double(fc.ray_start_lo[a]);
+    EXPECT_NEAR(glm::length(start - dir * 1.5 * 1.001), 0, 1e-9 * distance) << distance;
+    // The travelled length is the eye's distance to that point.
+    const double travelled =
+        (double(fc.start_scale) + double(fc.start_scale_lo)) *
+        glm::length(rays.first_pixel_dir + rays.pixel_step_x * 4.0 + rays.pixel_step_y * 3.0);
+    EXPECT_NEAR(travelled, distance - 1.5 * 1.001, 1e-9 * distance) << distance;
+  }
 }
 
 }  // namespace

@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <optional>
 
@@ -138,6 +139,11 @@ void expect_unit_ball(const Frame& f, const std::string& what) {
       early_count += early > allowed;
     }
   wrong += behind + early_count;
+  std::printf(
+      "[measured] %s: %d of %d pixels checked against the analytic ball off (%d hit/miss, "
+      "%d behind, %d too far in front); %zu rays out of steps\n",
+      what.c_str(), wrong, checked, wrong_mask, behind, early_count,
+      count_rays(f.image).out_of_steps);
   EXPECT_GT(checked, 0) << what;
   EXPECT_EQ(wrong, 0) << what << ": pixels off the analytic ball (of " << checked
                       << "): " << wrong_mask << " hit/miss, " << behind << " behind the surface, "
@@ -167,6 +173,10 @@ void expect_menger(const Frame& f, int level, const std::string& what, int allow
         if (test::menger_entry(f.rays.eye, d, dvec3(0), 1.0, level, delta) == kNone) ++stray;
       }
     }
+  std::printf(
+      "[measured] %s: %d exact hits; %d missed, %d behind, %d stray; %zu rays out of "
+      "steps\n",
+      what.c_str(), exact_hits, missed, behind, stray, count_rays(f.image).out_of_steps);
   EXPECT_GT(exact_hits, 0) << what << ": the view should show the sponge";
   EXPECT_EQ(behind, 0) << what << ": pixels behind the exact surface";
   EXPECT_EQ(stray, 0) << what << ": hits where the exact geometry has none";
@@ -198,11 +208,18 @@ void expect_matches_double(const std::string& id, const View& view, const Render
                          (s.hit_threshold_k * f.rays.pixel_angle_rad * d.image.depth[i]));
   }
   EXPECT_LE(fraction(mask_diff, f), mask_tolerance) << what << ": hit masks differ";
+  double median = 0;
   if (!relative.empty()) {
     std::nth_element(relative.begin(), relative.begin() + relative.size() / 2, relative.end());
+    median = relative[relative.size() / 2];
     EXPECT_LE(relative[relative.size() / 2], depth_tolerance)
         << what << ": median depth difference, in thresholds";
   }
+  const RayCounts c = count_rays(f.image);
+  std::printf(
+      "[measured] %s: hit mask differs from double at %.2f%% of pixels, median depth "
+      "difference %.3f thresholds; %zu hit, %zu missed, %zu out of steps\n",
+      what.c_str(), 100 * fraction(mask_diff, f), median, c.hit, c.miss, c.out_of_steps);
 }
 
 Setup params(std::vector<std::pair<const char*, fr_value>> values) {
@@ -491,6 +508,43 @@ TEST(Stability, DeepZoomFloatStaysFinite) {
   const Frame f = render_view("unit_ball", {eye, dvec3(0), dvec3(0, 0, 1), 0.01}, float_settings());
   expect_clean(f, "deep zoom, float");
   EXPECT_GT(count_rays(f.image).hit, f.image.depth.size() / 2) << "the surface fills the view";
+}
+
+// The deepest zoom each precision resolves: the eye h above the unit sphere at (0.6, 0.8, 0)
+// (no coordinate is a float) looking at it, 64x48 at 90 degrees, so the pixel footprint at the
+// surface is about 0.03 h. Resolved means every hit pixel's depth within 2 footprints of the
+// analytic one. Measured: float resolves h = 1e-4 (footprint 3.2e-6, 27 float ulps of |p| = 1)
+// and fails from h = 1e-5 (2.7 ulps: worst 6 footprints, then 89 at 1e-6); double resolves
+// h = 1e-12 (footprint 3.2e-14) and h = 1e-13, and fails at 1e-14 (1.4 double ulps). Auto
+// switches to double below 16 float ulps, i.e. between the two.
+double worst_zoom_error(double h, Precision p, Precision* used = nullptr) {
+  const dvec3 eye = dvec3(0.6, 0.8, 0) * (1 + h);
+  RenderSettings s;
+  s.precision = p;
+  const Frame f = render_view("unit_ball", {eye, dvec3(0), dvec3(0, 0, 1), 90}, s);
+  expect_clean(f, "zoom");
+  if (used) *used = f.image.precision;
+  double worst = 0;
+  for (int y = 0; y < f.image.height_px; ++y)
+    for (int x = 0; x < f.image.width_px; ++x) {
+      const dvec3 d = camera_ray_dir(f.rays, x, y);
+      const double t = test::sphere_entry(f.rays.eye, d, 1.0);
+      if (t == kNone) continue;
+      const double depth = f.image.depth[static_cast<size_t>(y) * f.image.width_px + x];
+      worst = std::max(worst, std::abs(depth - t) / (f.rays.pixel_angle_rad * t));
+    }
+  return worst;
+}
+
+TEST(Stability, DeepestZoomEachPrecisionResolves) {
+  EXPECT_LT(worst_zoom_error(1e-4, Precision::Float), 2) << "float at 27 ulps";
+  EXPECT_GT(worst_zoom_error(1e-5, Precision::Float), 2) << "float at 2.7 ulps: past its limit";
+  EXPECT_LT(worst_zoom_error(1e-12, Precision::Double), 2) << "double at footprint 3e-14";
+  Precision used = Precision::Float;
+  EXPECT_LT(worst_zoom_error(1e-5, Precision::Auto, &used), 2) << "auto";
+  EXPECT_EQ(used, Precision::Double);
+  EXPECT_LT(worst_zoom_error(1e-2, Precision::Auto, &used), 2);
+  EXPECT_EQ(used, Precision::Float) << "auto keeps float where it suffices";
 }
 
 // -cl-fast-relaxed-math (finite-math-only, atan2 as atan(y/x), relaxed trig): the polar-axis

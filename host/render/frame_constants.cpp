@@ -36,15 +36,19 @@ void put(float out[4], glm::dvec3 v, double w = 0) {
 void put(float out[4], const std::array<float, 3>& v, double w = 0) {
   put(out, glm::dvec3(v[0], v[1], v[2]), w);
 }
-// A double vector as its rounded float (hi) and what the rounding lost (lo): hi + lo in double
-// is the value to about 48 bits, so the double kernel gets the camera in double.
-void put_hi_lo(float hi[4], float lo[4], glm::dvec3 v) {
-  put(hi, v);
-  put(lo, v - glm::dvec3(hi[0], hi[1], hi[2]));
-}
+// A double as its rounded float (hi) and what the rounding lost (lo): hi + lo in double is the
+// value to about 48 bits, so the double kernel gets the camera in double. The rounded value
+// goes through a volatile: GCC 12 at -O3 vectorised the vector version of this into
+// lo = v - v = 0 (it reused the unrounded double), which silently made double renders of deep
+// zooms float-precise (frame_constants_test catches it).
 void put_hi_lo(float& hi, float& lo, double v) {
-  hi = static_cast<float>(v);
-  lo = static_cast<float>(v - hi);
+  volatile float rounded = static_cast<float>(v);
+  hi = rounded;
+  lo = static_cast<float>(v - static_cast<double>(rounded));
+}
+void put_hi_lo(float hi[4], float lo[4], glm::dvec3 v) {
+  for (int a = 0; a < 3; ++a) put_hi_lo(hi[a], lo[a], v[a]);
+  hi[3] = lo[3] = 0;
 }
 glm::dvec3 vec(const double v[3]) {
   return {v[0], v[1], v[2]};
