@@ -51,6 +51,7 @@ void Renderer::ensure_buffers(size_t n) {
   steps_ = make_buffer(ctx, CL_MEM_WRITE_ONLY, n * sizeof(float), "the step buffer");
   factors_ = make_buffer(ctx, CL_MEM_WRITE_ONLY, n * 2 * sizeof(float), "the AO and shadow buffer");
   status_ = make_buffer(ctx, CL_MEM_WRITE_ONLY, n, "the ray status buffer");
+  normal_ = make_buffer(ctx, CL_MEM_WRITE_ONLY, n * 3 * sizeof(float), "the normal buffer");
   rgba8_ = make_buffer(ctx, CL_MEM_WRITE_ONLY, padded * 4, "the display image");
   buffer_pixels_ = n;
 }
@@ -99,7 +100,7 @@ void Renderer::render_sample(const SceneInfo& info, const SceneState& state,
            "clEnqueueWriteBuffer", "uploading scene parameters");
 
   const cl_mem args[] = {constants_.get(), params_.get(),  hdr_.get(),   depth_.get(),
-                         steps_.get(),     factors_.get(), status_.get()};
+                         steps_.get(),     factors_.get(), status_.get(), normal_.get()};
   for (cl_uint i = 0; i < std::size(args); ++i) set_arg(kernel, i, args[i]);
   const TileShape tile = tile_shape(lanes);
   const size_t global[2] = {round_up_div(w, tile.width_px), round_up_div(h, tile.height_px)};
@@ -173,6 +174,7 @@ void Renderer::finish(const RenderSettings& settings, Readback what, FrameImage&
   img.occlusion.clear();
   img.shadow.clear();
   img.ray_status.clear();
+  img.normal.clear();
   std::vector<float> factors;
   if (what != Readback::Display) {
     img.steps.resize(n);
@@ -197,6 +199,10 @@ void Renderer::finish(const RenderSettings& settings, Readback what, FrameImage&
     cl_check(clEnqueueReadBuffer(q, factors_.get(), CL_FALSE, 0, n * 8, factors.data(), 0, nullptr,
                                  nullptr),
              "clEnqueueReadBuffer", "reading occlusion and shadow factors");
+    img.normal.resize(n * 3);
+    cl_check(clEnqueueReadBuffer(q, normal_.get(), CL_FALSE, 0, n * 12, img.normal.data(), 0,
+                                 nullptr, nullptr),
+             "clEnqueueReadBuffer", "reading normals");
   }
   cl_check(clFinish(q), "clFinish", "reading back the frame");
   if (what == Readback::Everything) {
