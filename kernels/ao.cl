@@ -1,6 +1,8 @@
 /* ao.cl — ambient occlusion, in [0, 1] (1: open). FR_AO_MODE:
  *   0  step count: rays that needed many march steps passed close to a lot of surface. Free,
- *      since the march counts steps anyway; ao_reference_steps steps is full occlusion.
+ *      since the march counts steps anyway; ao_reference_steps steps is full occlusion. The
+ *      count stops once the ray is within a pixel footprint of the surface (march.cl), so a
+ *      finer hit threshold does not darken the picture.
  *   1  sampled: ao_samples DE evaluations along the normal up to ao_distance; where the DE is
  *      smaller than the distance from the surface, something is near (nearer samples weigh
  *      more). */
@@ -27,5 +29,5 @@ inline real_t step_count_ao(real_t steps, __constant const fr_frame_constants* f
       clamp((real_t)1 - steps / (real_t)fc->ao_reference_steps, (real_t)0, (real_t)1);
   return pow_nonneg(openness, (real_t)fc->ao_strength);
 }
-#define FR_APPLY_AO(ao, p, n, m) ao = step_count_ao((m).steps, fc)
+#define FR_APPLY_AO(ao, p, n, m) ao = step_count_ao((m).ao_steps, fc)
 #endif

@@ -6,7 +6,10 @@ typedef struct march_result_t {
   mask_t hit;          /* the ray reached the surface, or ran out of steps (then also below) */
   mask_t out_of_steps; /* the step budget ended first: t is the best candidate, see below */
   mask_t inside;       /* the ray started inside the solid (DE below -eps at its origin) */
-  real_t steps;        /* DE evaluations spent, for step-count AO and statistics */
+  real_t steps;        /* DE evaluations spent, for statistics */
+  real_t ao_steps;     /* evaluations until the ray first came within a pixel footprint of the
+                          surface: step-count AO's measure, the same whatever the hit threshold
+                          (the steps after that only refine the hit) and the step budget */
   real_t min_dist;     /* closest approach to the surface (tracked only when glow is on) */
 } march_result_t;
 
@@ -65,7 +68,8 @@ march_result_t march(ray_t ray, real_t path_t, __constant const fr_frame_constan
   mask_t active = intersect_bounds(ray, fc->bounding_radius, &t, &t_exit);
   active &= t < t_exit;
   mask_t hit = FR_MASK_FALSE, inside = FR_MASK_FALSE, leaving = FR_MASK_FALSE;
-  real_t steps = (real_t)0;
+  real_t steps = (real_t)0, ao_steps = (real_t)0;
+  mask_t near = FR_MASK_FALSE;
   real_t min_dist = (real_t)FR_SCALAR_MAX;
   const real_t max_step = (real_t)fc->bounding_radius;
   real_t omega = (real_t)fc->relaxation;
@@ -78,6 +82,8 @@ march_result_t march(ray_t ray, real_t path_t, __constant const fr_frame_constan
     real_t eps = hit_threshold(fc, path_t + t, p);
     FR_MARCH_TRACK(min_dist, dist, active);
     steps += mask_to_real(active);
+    ao_steps += mask_to_real(active & !near);
+    near |= dist < (real_t)(0.5f * fc->pixel_angle_rad) * (path_t + t);
     /* The first point is the ray's own origin (not where it entered the bounds from outside):
      * below -eps it is inside the solid; within eps it is on a surface, and the lane is
      * "leaving" until the DE first exceeds eps. */
@@ -113,6 +119,7 @@ march_result_t march(ray_t ray, real_t path_t, __constant const fr_frame_constan
   r.hit = hit | (active & (best_error <= (real_t)FR_CANDIDATE_MAX_ERROR));
   r.inside = inside;
   r.steps = steps;
+  r.ao_steps = ao_steps;
   r.min_dist = min_dist;
   return r;
 }

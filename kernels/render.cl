@@ -71,7 +71,11 @@ __kernel void fr_render(__constant const fr_frame_constants* fc,
     real_t h = (real_t)0;
     if (any_lane(hit)) {
       h = hit_threshold(fc, path_t + m.t, p);
-      vec3_t gradient = calc_normal(p, h, params);
+      /* Normals at the scale of the pixel's footprint (half of it), not of the hit threshold: a
+       * fractal's normal depends on the scale it is taken at, and a smaller threshold (more
+       * accuracy) must not turn the shading into sub-pixel noise. */
+      const real_t normal_h = fmax(h, (real_t)(0.5f * fc->pixel_angle_rad) * (path_t + m.t));
+      vec3_t gradient = calc_normal(p, normal_h, params);
       /* A degenerate normal (all samples equal) faces the viewer. */
       n = v3_select(v3_length2(gradient) > (real_t)0, gradient, n);
       surface_t surface = surface_at(p);

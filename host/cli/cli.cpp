@@ -21,6 +21,7 @@ const char* kUsage =
     "  explore   open the explorer window and fly through a scene\n"
     "  render    render a scene to a PNG file\n"
     "  bench     time frames of a scene (median, min, max)\n"
+    "  sweep     measure image error against frame time over the quality knobs\n"
     "  list      list scene plugins, their parameters, or why they failed to load\n"
     "  devices   list OpenCL platforms and devices\n"
     "\n"
@@ -45,6 +46,7 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
     if (command == "explore") return command_explore(rest, out, err);
     if (command == "render") return command_render(rest, out, err);
     if (command == "bench") return command_bench(rest, out, err);
+    if (command == "sweep") return command_sweep(rest, out, err);
     if (command == "list") return command_list(rest, out, err);
     if (command == "devices") return command_devices(rest, out, err);
     throw UsageError("unknown command '" + command +

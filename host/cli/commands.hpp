@@ -12,6 +12,7 @@ int command_render(const std::vector<std::string>& args, std::ostream& out, std:
 int command_bench(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 int command_list(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 int command_explore(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+int command_sweep(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 int command_devices(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 
 }  // namespace fr

@@ -30,7 +30,9 @@ struct RenderSettings {
   fr_features disabled_stages = 0;  // effects the user switched off
 
   ShadingModel shading = ShadingModel::BlinnPhong;
-  NormalMethod normals = NormalMethod::Tetrahedron;
+  // Central differences: the sweep put them on the Pareto front for every scene (Menger: image
+  // error 3.64 vs 4.15 for the tetrahedron at the same frame time).
+  NormalMethod normals = NormalMethod::CentralDifferences;
   AoMethod ao_method = AoMethod::StepCount;
   ShadowMethod shadow_method = ShadowMethod::Soft;
   FogMethod fog_method = FogMethod::Exponential;

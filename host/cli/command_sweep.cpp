@@ -1,0 +1,235 @@
+#include "bench/frame_stats.hpp"
+#include "cli/commands.hpp"
+#include "cli/scene_setup.hpp"
+#include "io/atomic_file.hpp"
+#include "render/camera.hpp"
+#include "render/renderer.hpp"
+#include "sweep/sweep_plan.hpp"
+#include "sweep/sweep_reference.hpp"
+#include "sweep/sweep_report.hpp"
+
+#include <signal.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdlib>
+#include <ostream>
+#include <sstream>
+
+namespace fr {
+namespace {
+
+std::atomic<bool> g_interrupted{false};
+
+// Ctrl-C and SIGTERM stop the sweep between two renders; the results are written only at the
+// end, atomically, so an interrupted sweep leaves no file behind (a reference already cached
+// stays: it is complete). The previous handlers come back when the sweep ends.
+class InterruptGuard {
+ public:
+  InterruptGuard() {
+    g_interrupted = false;
+    struct sigaction sa {};
+    sa.sa_handler = [](int) { g_interrupted = true; };
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, &old_int_);
+    sigaction(SIGTERM, &sa, &old_term_);
+  }
+  ~InterruptGuard() {
+    sigaction(SIGINT, &old_int_, nullptr);
+    sigaction(SIGTERM, &old_term_, nullptr);
+  }
+
+ private:
+  struct sigaction old_int_ {
+  }, old_term_{};
+};
+
+std::filesystem::path default_cache_dir() {
+  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg)
+    return std::filesystem::path(xdg) / "fractalis" / "sweep";
+  if (const char* home = std::getenv("HOME"); home && *home)
+    return std::filesystem::path(home) / ".cache" / "fractalis" / "sweep";
+  return std::filesystem::temp_directory_path() / "fractalis-sweep-cache";
+}
+
+std::vector<std::string> split_list(const std::string& text) {
+  std::vector<std::string> items;
+  std::stringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ','))
+    if (!item.empty()) items.push_back(item);
+  return items;
+}
+
+// The output folder exists (made if need be) and is writable, or a UsageError says why.
+void check_out_dir(const std::filesystem::path& dir) {
+  std::error_code ec;
+  if (std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec))
+    throw UsageError("--out: '" + dir.string() + "' is not a folder");
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw UsageError("--out: cannot create '" + dir.string() + "': " + ec.message());
+  if (access(dir.c_str(), W_OK) != 0)
+    throw UsageError("--out: folder '" + dir.string() + "' is not writable");
+}
+
+// One line of progress: a bar on a terminal, plain lines otherwise.
+void progress(std::ostream& err, bool terminal, size_t done, size_t total,
+              const std::string& what) {
+  if (!terminal) {
+    err << "sweep: " << done << "/" << total << " " << what << "\n";
+    return;
+  }
+  const int width = 30, filled = total ? static_cast<int>(width * done / total) : width;
+  err << "\r[" << std::string(filled, '#') << std::string(width - filled, '.') << "] " << done
+      << "/" << total << " " << what << "\033[K" << std::flush;
+}
+
+}  // namespace
+
+int command_sweep(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  auto specs = scene_option_specs();
+  specs.push_back({"out", "DIR", false,
+                   "folder for sweep.csv, sweep.json, sweep.svg "
+                   "(default sweep-SCENE)"});
+  specs.push_back({"knobs", "LIST", false,
+                   "comma-separated knobs to sweep (default: all that apply): precision,\n"
+                   "                                 hit_threshold_k, max_steps, relaxation, "
+                   "normals, samples, lanes, ao,\n                                 shadow_steps"});
+  specs.push_back({"frames", "N", false, "timed frames per configuration (default 9)"});
+  specs.push_back(
+      {"cache", "DIR", false, "reference cache (default $XDG_CACHE_HOME/fractalis/sweep)"});
+  specs.push_back({"help", nullptr, false, "show this help"});
+  auto options = parse_options("sweep", args, specs);
+  if (options.has("help")) {
+    out << "usage: fractalis sweep [--scene ID] [--size WxH] [--out DIR] [--knobs LIST] "
+           "[options]\n\n"
+           "Measures image and geometric error against frame time: renders the view under each\n"
+           "quality knob's values (one at a time, the rest at their defaults), compares every\n"
+           "frame with a converged double-precision reference of the same view, and writes a\n"
+           "table (CSV, JSON) and a plot (SVG) of error against time with the Pareto front.\n\n"
+        << format_options(specs) << "\nexample:\n"
+        << "  fractalis sweep --scene menger --size 320x180 --out sweep-menger\n";
+    return 0;
+  }
+  if (!options.has("size")) options.values["size"] = {"320x180"};
+  const int frames =
+      static_cast<int>(parse_integer("--frames", options.get("frames").value_or("9"), 1, 1000));
+  const std::string scene_id = options.get("scene").value_or("mandelbulb");
+  const std::filesystem::path out_dir = options.get("out").value_or("sweep-" + scene_id);
+  if (out_dir.empty()) throw UsageError("--out: empty folder name");
+  PreparedScene p = prepare_scene(options, err);
+  std::vector<std::string> knobs = knob_names(p.scene->info);
+  if (auto list = options.get("knobs")) {
+    knobs = split_list(*list);
+    if (knobs.empty()) throw UsageError("--knobs: empty sweep (name at least one knob)");
+  }
+  std::vector<SweepConfig> configs;
+  try {
+    configs = plan_sweep(p.scene->info, p.render, knobs);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--knobs: ") + e.what());
+  }
+  check_out_dir(out_dir);
+
+  std::string error;
+  if (!p.instance->update(p.state, p.state.time_s, &error)) {
+    err << "fractalis: error: " << error << "\n";
+    return 1;
+  }
+  InterruptGuard interrupt_guard;
+  const bool terminal = isatty(STDERR_FILENO) == 1;
+  ClRuntime runtime(p.device);
+  Renderer renderer(runtime);
+  SweepResult result;
+  result.scene_id = p.scene->info.id;
+  result.device = p.device.name;
+  result.width_px = p.render.width_px;
+  result.height_px = p.render.height_px;
+  result.timed_frames = frames;
+  const size_t total = configs.size() + 1;
+  std::string warning;
+  result.reference = make_reference(
+      renderer, p.scene->info, p.state, p.render, p.device.name,
+      options.get("cache").value_or(default_cache_dir().string()),
+      [&](double k, int level) {
+        progress(
+            err, terminal, 0, total,
+            "reference: refinement " + std::to_string(level + 1) + ", k = " + std::to_string(k));
+      },
+      &warning);
+  if (!warning.empty()) err << (terminal ? "\n" : "") << "fractalis: warning: " << warning << "\n";
+  const double pixel_angle =
+      make_camera_rays(p.state.camera, p.render.width_px, p.render.height_px).pixel_angle_rad;
+
+  using clock = std::chrono::steady_clock;
+  const auto now_ms = [] {
+    return std::chrono::duration<double, std::milli>(clock::now().time_since_epoch()).count();
+  };
+  std::vector<uint8_t> lanes_image[2];
+  for (size_t i = 0; i < configs.size(); ++i) {
+    if (g_interrupted) break;
+    const SweepConfig& c = configs[i];
+    const std::string name = c.knob == "default" ? "default" : c.knob + "=" + c.value;
+    progress(err, terminal, i + 1, total, name);
+    renderer.prepare(p.scene->info, p.state, c.settings);  // kernel build, not timed
+    // The picture with the configuration's samples (also the warm-up), and the geometry from
+    // centred rays like the reference's (a jittered last sample would count as depth error).
+    FrameImage image = renderer.render(p.scene->info, p.state, c.settings, true);
+    RenderSettings centred = c.settings;
+    centred.samples = 1;
+    const FrameImage geometry = renderer.render(p.scene->info, p.state, centred, true);
+    image.depth = geometry.depth;
+    image.normal = geometry.normal;
+    image.ray_status = geometry.ray_status;
+    const auto times = time_frames(
+        frames, [&](int) { renderer.render(p.scene->info, p.state, c.settings); }, now_ms);
+    SweepRow row{c.knob, c.value, summarize_frames(times).p50_ms,
+                 compare_to_reference(image, result.reference.image, pixel_angle), false};
+    result.rows.push_back(row);
+    if (c.knob == "lanes") lanes_image[c.value == "1" ? 0 : 1] = image.rgba8;
+  }
+  if (terminal) err << "\n";
+  if (g_interrupted) {
+    err << "fractalis: sweep interrupted; nothing written\n";
+    return 130;
+  }
+  double lanes_difference = -1;
+  if (!lanes_image[0].empty() && !lanes_image[1].empty()) {
+    size_t differing = 0;
+    for (size_t i = 0; i + 3 < lanes_image[0].size(); i += 4)
+      for (int c = 0; c < 3; ++c)
+        if (std::abs(int(lanes_image[0][i + c]) - int(lanes_image[1][i + c])) > 2) {
+          ++differing;
+          break;
+        }
+    lanes_difference = double(differing) / double(lanes_image[0].size() / 4);
+  }
+  analyse_sweep(result, lanes_difference);
+
+  char line[640];
+  std::snprintf(line, sizeof line,
+                "sweep of %s at %dx%d on %s, %d timed frames per configuration\n"
+                "reference: double, plain sphere tracing, %d samples, k = %g after %d renders%s; "
+                "its last refinement changed the picture by %.3f (8-bit MAE) and the surface by "
+                "%.3f footprints\n",
+                result.scene_id.c_str(), result.width_px, result.height_px, p.device.name.c_str(),
+                frames, kReferenceSamples, result.reference.hit_threshold_k,
+                result.reference.refinements, result.reference.from_cache ? " (cached)" : "",
+                result.reference.convergence_mae, result.reference.convergence_depth_px);
+  out << line << format_sweep_table(result);
+  for (const auto& note : result.notes) out << "note: " << note << "\n";
+  for (const auto& [file, text] :
+       {std::pair<const char*, std::string>{"sweep.csv", format_sweep_csv(result)},
+        {"sweep.json", format_sweep_json(result)},
+        {"sweep.svg", format_sweep_svg(result)}}) {
+    if (!write_file_atomic(out_dir / file, text, &error)) {
+      err << "fractalis: error: " << error << "\n";
+      return 1;
+    }
+  }
+  out << "wrote " << (out_dir / "sweep.csv").string() << ", sweep.json, sweep.svg\n";
+  return 0;
+}
+
+}  // namespace fr

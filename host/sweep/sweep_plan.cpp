@@ -1,0 +1,109 @@
+#include "sweep/sweep_plan.hpp"
+
+#include <functional>
+#include <sstream>
+#include <stdexcept>
+
+namespace fr {
+namespace {
+
+struct KnobValue {
+  std::string value;
+  std::function<void(RenderSettings&)> apply;
+};
+
+std::string number(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+// Each knob's values, and how the default spells its value (to recognise the default row).
+std::vector<KnobValue> knob_values(const std::string& knob, const RenderSettings& d,
+                                   std::string* default_value) {
+  std::vector<KnobValue> v;
+  if (knob == "precision") {
+    *default_value = precision_name(d.precision);
+    for (Precision p : {Precision::Float, Precision::Double})
+      v.push_back({precision_name(p), [p](RenderSettings& s) { s.precision = p; }});
+  } else if (knob == "hit_threshold_k") {
+    *default_value = number(d.hit_threshold_k);
+    for (float k : {2.0f, 1.0f, 0.5f, 0.25f, 0.125f})
+      v.push_back({number(k), [k](RenderSettings& s) { s.hit_threshold_k = k; }});
+  } else if (knob == "max_steps") {
+    *default_value = number(d.max_steps);
+    for (int n : {40, 80, 160, 320, 640})
+      v.push_back({number(n), [n](RenderSettings& s) { s.max_steps = n; }});
+  } else if (knob == "relaxation") {
+    *default_value = number(d.relaxation);
+    for (float w : {1.0f, 1.3f, 1.6f, 1.9f})
+      v.push_back({number(w), [w](RenderSettings& s) { s.relaxation = w; }});
+  } else if (knob == "normals") {
+    *default_value = d.normals == NormalMethod::Tetrahedron ? "tetrahedron" : "central";
+    v.push_back({"tetrahedron", [](RenderSettings& s) { s.normals = NormalMethod::Tetrahedron; }});
+    v.push_back(
+        {"central", [](RenderSettings& s) { s.normals = NormalMethod::CentralDifferences; }});
+  } else if (knob == "samples") {
+    *default_value = number(d.samples);
+    for (int n : {1, 2, 4, 8, 16})
+      v.push_back({number(n), [n](RenderSettings& s) { s.samples = n; }});
+  } else if (knob == "lanes") {
+    *default_value = number(d.lanes);
+    for (int n : {1, 16}) v.push_back({number(n), [n](RenderSettings& s) { s.lanes = n; }});
+  } else if (knob == "ao") {
+    *default_value =
+        d.ao_method == AoMethod::StepCount ? "step-count" : "sampled-" + number(d.ao_samples);
+    v.push_back({"step-count", [](RenderSettings& s) { s.ao_method = AoMethod::StepCount; }});
+    for (int n : {3, 5, 8})
+      v.push_back({"sampled-" + number(n), [n](RenderSettings& s) {
+                     s.ao_method = AoMethod::Sampled;
+                     s.ao_samples = n;
+                   }});
+  } else if (knob == "shadow_steps") {
+    *default_value = number(d.shadow_max_steps);
+    for (int n : {16, 32, 64, 128})
+      v.push_back({number(n), [n](RenderSettings& s) { s.shadow_max_steps = n; }});
+  } else {
+    std::string known;
+    for (const auto& k : all_knob_names()) known += (known.empty() ? "" : ", ") + k;
+    throw std::invalid_argument("unknown knob '" + knob + "' (known: " + known + ")");
+  }
+  return v;
+}
+
+}  // namespace
+
+const std::vector<std::string>& all_knob_names() {
+  static const std::vector<std::string> names = {
+      "precision", "hit_threshold_k", "max_steps", "relaxation",  "normals",
+      "samples",   "lanes",           "ao",        "shadow_steps"};
+  return names;
+}
+
+std::vector<std::string> knob_names(const SceneInfo& info) {
+  std::vector<std::string> names;
+  for (const auto& k : all_knob_names()) {
+    if (k == "ao" && !(info.features & FR_FEATURE_AO)) continue;
+    if (k == "shadow_steps" && !(info.features & FR_FEATURE_SHADOWS)) continue;
+    names.push_back(k);
+  }
+  return names;
+}
+
+std::vector<SweepConfig> plan_sweep(const SceneInfo& info, const RenderSettings& defaults,
+                                    const std::vector<std::string>& knobs) {
+  (void)info;
+  std::vector<SweepConfig> configs = {{"default", "", defaults}};
+  for (const auto& knob : knobs) {
+    std::string default_value;
+    for (const KnobValue& kv : knob_values(knob, defaults, &default_value)) {
+      if (kv.value == default_value) continue;
+      SweepConfig c{knob, kv.value, defaults};
+      kv.apply(c.settings);
+      configs.push_back(std::move(c));
+    }
+  }
+  return configs;
+}
+
+}  // namespace fr

@@ -1,0 +1,179 @@
+#include "sweep/sweep_reference.hpp"
+
+#include "io/atomic_file.hpp"
+#include "render/camera.hpp"
+#include "render/kernel_assembly.hpp"
+
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+namespace fr {
+namespace {
+
+constexpr char kMagic[8] = {'F', 'R', 'S', 'W', 'R', 'E', 'F', '1'};
+
+// FNV-1a, 64 bits: a stable key across runs and machines (std::hash is neither).
+uint64_t fnv1a(const std::string& text) {
+  uint64_t h = 1469598103934665603ULL;
+  for (unsigned char c : text) h = (h ^ c) * 1099511628211ULL;
+  return h;
+}
+
+template <typename T>
+void append(std::string& out, const T& v) {
+  out.append(reinterpret_cast<const char*>(&v), sizeof v);
+}
+template <typename T>
+void append_vector(std::string& out, const std::vector<T>& v) {
+  out.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
+}
+
+bool read_cache(const std::filesystem::path& file, const RenderSettings& s, SweepReference* r) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return false;
+  char magic[8];
+  int32_t w = 0, h = 0, refinements = 0;
+  double k = 0, mae = 0, depth = 0;
+  in.read(magic, 8);
+  in.read(reinterpret_cast<char*>(&w), 4);
+  in.read(reinterpret_cast<char*>(&h), 4);
+  in.read(reinterpret_cast<char*>(&refinements), 4);
+  in.read(reinterpret_cast<char*>(&k), 8);
+  in.read(reinterpret_cast<char*>(&mae), 8);
+  in.read(reinterpret_cast<char*>(&depth), 8);
+  if (!in || std::memcmp(magic, kMagic, 8) != 0 || w != s.width_px || h != s.height_px)
+    return false;
+  const size_t n = size_t(w) * h;
+  ReferenceImage img;
+  img.width_px = w;
+  img.height_px = h;
+  img.rgba8.resize(n * 4);
+  img.depth.resize(n);
+  img.normal.resize(n * 3);
+  in.read(reinterpret_cast<char*>(img.rgba8.data()), n * 4);
+  in.read(reinterpret_cast<char*>(img.depth.data()), n * 4);
+  in.read(reinterpret_cast<char*>(img.normal.data()), n * 12);
+  if (!in || in.peek() != EOF) return false;
+  r->image = std::move(img);
+  r->refinements = refinements;
+  r->hit_threshold_k = k;
+  r->convergence_mae = mae;
+  r->convergence_depth_px = depth;
+  r->from_cache = true;
+  return true;
+}
+
+std::string cache_bytes(const SweepReference& r) {
+  std::string out(kMagic, 8);
+  append(out, int32_t(r.image.width_px));
+  append(out, int32_t(r.image.height_px));
+  append(out, int32_t(r.refinements));
+  append(out, r.hit_threshold_k);
+  append(out, r.convergence_mae);
+  append(out, r.convergence_depth_px);
+  append_vector(out, r.image.rgba8);
+  append_vector(out, r.image.depth);
+  append_vector(out, r.image.normal);
+  return out;
+}
+
+}  // namespace
+
+std::string reference_key(const SceneInfo& info, const SceneState& state, const RenderSettings& s,
+                          const std::string& device_name) {
+  std::ostringstream k;
+  k.precision(17);
+  k << info.id << '\n' << info.version << '\n' << device_name << '\n';
+  for (const fr_value& v : state.params) k << v.v[0] << ',' << v.v[1] << ',' << v.v[2] << ';';
+  const fr_camera& c = state.camera;
+  for (int a = 0; a < 3; ++a) k << c.eye[a] << ',' << c.target[a] << ',' << c.up[a] << ';';
+  k << c.fov_deg << '\n';
+  for (const fr_light& l : state.lights) {
+    k << l.kind << ':' << l.intensity << ':' << l.attenuation << ':' << l.falloff;
+    for (int a = 0; a < 3; ++a) k << ',' << l.vector[a] << ',' << l.color[a];
+    k << ';';
+  }
+  k << state.time_s << ',' << state.bounding_radius << '\n';
+  // Everything that shapes the picture except the knobs a sweep turns.
+  k << s.width_px << 'x' << s.height_px << ' ' << int(s.shading) << int(s.shadow_method)
+    << int(s.fog_method) << ' ' << s.disabled_stages << ' ' << s.max_bounces << ' ' << s.ao_strength
+    << ' ' << s.ao_distance << ' ' << s.ao_reference_steps << ' ' << s.shadow_softness << ' '
+    << s.specular_strength << ' ' << s.specular_power << ' ' << s.roughness << ' ' << s.fresnel_f0
+    << ' ' << s.exposure << ' ' << s.reflectivity << ' ' << s.fog_density << ' ' << s.fog_scale
+    << ' ' << s.glow_strength << ' ' << s.glow_falloff << ' ' << s.aperture_radius << ' '
+    << s.focus_distance << ' ' << s.step_scale << ' ' << int(s.ao_method) << ' ' << s.ao_samples;
+  for (const auto* a :
+       {&s.albedo, &s.ambient, &s.sky_zenith, &s.sky_horizon, &s.glow_color, &s.fog_color})
+    for (float v : *a) k << ' ' << v;
+  // The kernel source itself: a changed renderer or DE is a new reference.
+  k << '\n' << assemble_render_kernel(info, state.params, make_kernel_config(info, s, 1)).source;
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(fnv1a(k.str())));
+  return hex;
+}
+
+SweepReference make_reference(Renderer& renderer, const SceneInfo& info, const SceneState& state,
+                              const RenderSettings& settings, const std::string& device_name,
+                              const std::filesystem::path& cache_dir,
+                              const std::function<void(double, int)>& progress,
+                              std::string* warning) {
+  const auto file = cache_dir / (reference_key(info, state, settings, device_name) + ".ref");
+  SweepReference r;
+  if (read_cache(file, settings, &r)) return r;
+
+  RenderSettings ref = settings;
+  ref.precision = Precision::Double;
+  ref.relaxation = 1;
+  ref.max_steps = 5000;
+  ref.shadow_max_steps = std::max(ref.shadow_max_steps, 1024);
+  ref.normals = NormalMethod::CentralDifferences;
+  const double pixel_angle =
+      make_camera_rays(state.camera, settings.width_px, settings.height_px).pixel_angle_rad;
+  ReferenceImage previous;
+  double k = settings.hit_threshold_k;
+  for (int level = 0; level < 5; ++level, k /= 4) {
+    if (progress) progress(k, level);
+    ref.hit_threshold_k = static_cast<float>(k);
+    ref.samples = 1;  // centred rays: the geometry
+    const FrameImage geometry = renderer.render(info, state, ref, true);
+    ref.samples = kReferenceSamples;  // the picture
+    const FrameImage picture = renderer.render(info, state, ref);
+    ReferenceImage current;
+    current.width_px = settings.width_px;
+    current.height_px = settings.height_px;
+    current.rgba8 = picture.rgba8;
+    current.depth = geometry.depth;
+    current.normal = geometry.normal;
+    r.refinements = level + 1;
+    r.hit_threshold_k = k;
+    if (level > 0) {
+      FrameImage as_image;
+      as_image.rgba8 = current.rgba8;
+      as_image.depth = current.depth;
+      as_image.normal = current.normal;
+      as_image.ray_status.assign(current.depth.size(), 0);
+      const ErrorMetrics change = compare_to_reference(as_image, previous, pixel_angle);
+      r.convergence_mae = change.mean_abs_error;
+      r.convergence_depth_px = change.depth_median_px;
+      // Converged: the picture moved by less than a quarter of an 8-bit level on average, and
+      // the surface by less than 2% of a footprint.
+      if (change.mean_abs_error < 0.25 && change.depth_median_px < 0.02) {
+        r.image = std::move(current);
+        break;
+      }
+    }
+    previous = current;
+    r.image = std::move(current);
+  }
+  std::error_code ec;
+  std::filesystem::create_directories(cache_dir, ec);
+  std::string error;
+  if (ec || !write_file_atomic(file, cache_bytes(r), &error))
+    *warning = "could not cache the reference in " + cache_dir.string() + ": " +
+               (ec ? ec.message() : error);
+  return r;
+}
+
+}  // namespace fr

@@ -1,0 +1,46 @@
+// sweep_reference.hpp — the converged picture a sweep measures against, computed by the
+// renderer itself at settings no configuration uses: double precision end to end, plain sphere
+// tracing (no over-relaxation), a budget of 5000 steps, 16 samples per pixel, and a hit
+// threshold divided by 4 until the picture stops changing (or 4 refinements). How much the last
+// refinement still changed is reported: no configuration can be measured as better than that.
+#pragma once
+
+#include "plugin/scene_info.hpp"
+#include "plugin/scene_instance.hpp"
+#include "render/renderer.hpp"
+#include "sweep/sweep_metrics.hpp"
+
+#include <filesystem>
+#include <functional>
+#include <string>
+
+namespace fr {
+
+struct SweepReference {
+  ReferenceImage image;
+  double hit_threshold_k = 0;       // of the last refinement
+  int refinements = 0;              // renders it took (1 + refinements of the threshold)
+  double convergence_mae = 0;       // mean |difference| of the last two refinements, 8-bit units
+  double convergence_depth_px = 0;  // median depth difference of the last two, in footprints
+  bool from_cache = false;
+};
+
+// Samples per pixel of the reference picture.
+constexpr int kReferenceSamples = 16;
+
+// A key for the cache: the scene (id, version), its parameter values, camera, lights, time,
+// image size, the settings that change the picture other than the swept knobs, the device, and
+// the assembled kernel source (so a changed renderer or DE never reuses an old reference).
+std::string reference_key(const SceneInfo& info, const SceneState& state,
+                          const RenderSettings& settings, const std::string& device_name);
+
+// The reference for this view, from `cache_dir` (file <key>.ref) when there, else computed
+// (progress(k, refinement) is called before each render) and stored there atomically. A cache
+// file that cannot be read is recomputed; one that cannot be written is reported on *warning.
+SweepReference make_reference(Renderer& renderer, const SceneInfo& info, const SceneState& state,
+                              const RenderSettings& settings, const std::string& device_name,
+                              const std::filesystem::path& cache_dir,
+                              const std::function<void(double, int)>& progress,
+                              std::string* warning);
+
+}  // namespace fr

@@ -1,0 +1,185 @@
+// The sweep: its metrics on hand-made images with known answers, the Pareto front on known
+// points, the plan of configurations, bad input before any work, and one small sweep end to end
+// (files written whole, the reference cached and reused).
+#include "cli/cli.hpp"
+#include "sweep/sweep_metrics.hpp"
+#include "sweep/sweep_plan.hpp"
+#include "sweep/sweep_report.hpp"
+#include "test_support.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace fr {
+namespace {
+
+// A 2x2 reference: two hits at depth 10 and 20 facing +z, two misses, grey pixels.
+ReferenceImage two_by_two() {
+  ReferenceImage r;
+  r.width_px = 2;
+  r.height_px = 2;
+  r.rgba8 = std::vector<uint8_t>(16, 100);
+  r.depth = {10, 20, INFINITY, INFINITY};
+  r.normal = {0, 0, 1, 0, 0, 1, 0, 0, 0, 0, 0, 0};
+  return r;
+}
+
+FrameImage as_frame(const ReferenceImage& r) {
+  FrameImage f;
+  f.width_px = r.width_px;
+  f.height_px = r.height_px;
+  f.rgba8 = r.rgba8;
+  f.depth = r.depth;
+  f.normal = r.normal;
+  f.ray_status = {1, 1, 0, 0};
+  return f;
+}
+
+TEST(SweepMetrics, IdenticalImagesHaveNoError) {
+  const ReferenceImage ref = two_by_two();
+  const ErrorMetrics m = compare_to_reference(as_frame(ref), ref, 0.01);
+  EXPECT_EQ(m.mean_abs_error, 0);
+  EXPECT_TRUE(std::isinf(m.psnr_db));
+  EXPECT_EQ(m.silhouette_mismatch, 0);
+  EXPECT_EQ(m.depth_p95_px, 0);
+  EXPECT_EQ(m.normal_p95_deg, 0);
+  EXPECT_EQ(m.overstep_rate, 0);
+  EXPECT_EQ(m.non_finite, 0u);
+}
+
+// Each metric against a value worked out by hand.
+TEST(SweepMetrics, HandComputedValues) {
+  const ReferenceImage ref = two_by_two();
+  FrameImage f = as_frame(ref);
+  f.rgba8[0] = 112;        // pixel 0, red: off by 12 (> 8)
+  f.rgba8[4 + 1] = 104;    // pixel 1, green: off by 4
+  f.depth[0] = 10 - 0.05;  // footprint 10 x 0.01 = 0.1: 0.5 footprints in front
+  f.depth[1] = 20 + 0.1;   // footprint 0.2: 0.5 footprints behind (an overstep)
+  f.normal[3] = 1;         // pixel 1's normal turned 90 degrees
+  f.normal[5] = 0;
+  f.depth[2] = 30;      // a hit where the reference misses
+  f.ray_status[2] = 2;  // ... out of steps
+  const ErrorMetrics m = compare_to_reference(f, ref, 0.01);
+  EXPECT_NEAR(m.mean_abs_error, (12.0 + 4.0) / 12, 1e-12);
+  EXPECT_NEAR(m.psnr_db, 20 * std::log10(255 / std::sqrt((144.0 + 16.0) / 12)), 1e-9);
+  EXPECT_EQ(m.fraction_over_8, 0.25);
+  EXPECT_NEAR(m.depth_median_px, 0.5, 1e-5);
+  EXPECT_NEAR(m.depth_p95_px, 0.5, 1e-5);
+  EXPECT_EQ(m.silhouette_mismatch, 0.25);
+  EXPECT_NEAR(m.normal_p95_deg, 90, 1e-9);
+  EXPECT_EQ(m.overstep_rate, 0.5) << "one of the two reference hits is behind";
+  EXPECT_EQ(m.out_of_steps_fraction, 0.25);
+  f.normal[7] = NAN;
+  EXPECT_EQ(compare_to_reference(f, ref, 0.01).non_finite, 1u);
+  f.depth.pop_back();
+  EXPECT_THROW(compare_to_reference(f, ref, 0.01), std::invalid_argument);
+}
+
+TEST(SweepMetrics, PercentileIsNearestRank) {
+  EXPECT_EQ(percentile({5, 1, 4, 2, 3}, 50), 3);
+  EXPECT_EQ(percentile({5, 1, 4, 2, 3}, 95), 5);
+  EXPECT_EQ(percentile({}, 50), 0);
+}
+
+TEST(SweepMetrics, ParetoFront) {
+  // time, error: a (1, 9), b (2, 5), c (3, 6) dominated by b, d (4, 1), e (2, 7) dominated by b.
+  const std::vector<double> time = {1, 2, 3, 4, 2}, error = {9, 5, 6, 1, 7};
+  EXPECT_EQ(pareto_front(time, error), (std::vector<size_t>{0, 1, 3}));
+}
+
+TEST(SweepPlan, OneKnobAtATimeAroundTheDefaults) {
+  SceneInfo info;
+  info.features = FR_FEATURE_AO;
+  EXPECT_EQ(knob_names(info),
+            (std::vector<std::string>{"precision", "hit_threshold_k", "max_steps", "relaxation",
+                                      "normals", "samples", "lanes", "ao"}));
+  const RenderSettings defaults;
+  const auto configs = plan_sweep(info, defaults, {"max_steps", "relaxation"});
+  ASSERT_EQ(configs.size(), 1u + 4 + 3) << "the default's own values are the default row";
+  EXPECT_EQ(configs[0].knob, "default");
+  for (const auto& c : configs) {
+    if (c.knob == "max_steps") {
+      EXPECT_EQ(std::to_string(c.settings.max_steps), c.value);
+      EXPECT_EQ(c.settings.relaxation, defaults.relaxation);
+    }
+    if (c.knob == "relaxation") {
+      EXPECT_EQ(c.settings.max_steps, defaults.max_steps);
+    }
+  }
+  EXPECT_THROW(plan_sweep(info, defaults, {"warp_drive"}), std::invalid_argument);
+}
+
+TEST(SweepReport, DefaultOffTheFrontIsSaid) {
+  SweepResult r;
+  r.rows = {{"default", "", 10, {}, false}, {"samples", "2", 5, {}, false}};
+  r.rows[0].error.mean_abs_error = 4;
+  r.rows[1].error.mean_abs_error = 1;  // faster and better: the default is off the front
+  analyse_sweep(r, 0.0);
+  EXPECT_FALSE(r.rows[0].on_front);
+  EXPECT_TRUE(r.rows[1].on_front);
+  ASSERT_EQ(r.notes.size(), 2u);
+  EXPECT_NE(r.notes[0].find("OFF the Pareto front"), std::string::npos) << r.notes[0];
+  EXPECT_NE(r.notes[1].find("error-neutral"), std::string::npos);
+  const std::string svg = format_sweep_svg(r);
+  EXPECT_NE(svg.find("<svg"), std::string::npos);
+  EXPECT_NE(svg.find("default"), std::string::npos);
+  EXPECT_EQ(format_sweep_csv(r).substr(0, 10), "knob,value");
+}
+
+struct CliRun {
+  int code;
+  std::string out, err;
+};
+CliRun run(std::vector<std::string> args) {
+  std::ostringstream out, err;
+  const int code = run_cli(args, out, err);
+  return {code, out.str(), err.str()};
+}
+
+TEST(SweepCommand, BadInputBeforeAnyWork) {
+  const auto dir = test::fresh_dir("sweep_bad");
+  for (const auto& [args, message] : std::vector<std::pair<std::vector<std::string>, std::string>>{
+           {{"sweep", "--knobs", "warp_drive", "--out", dir.string()}, "unknown knob 'warp_drive'"},
+           {{"sweep", "--knobs", ",", "--out", dir.string()}, "--knobs: empty sweep"},
+           {{"sweep", "--out", "/proc/version"}, "is not a folder"},
+           {{"sweep", "--out", "/proc/no/such"}, "--out: cannot create"},
+           {{"sweep", "--frames", "0"}, "--frames: 0 is outside"}}) {
+    const CliRun r = run(args);
+    EXPECT_EQ(r.code, 2) << message << ": " << r.err;
+    EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  }
+  EXPECT_TRUE(std::filesystem::is_empty(dir)) << "nothing written";
+}
+
+// A small sweep of the unit ball: every file is written whole, the table names every
+// configuration, and the reference converged far below the default's error.
+TEST(SweepCommand, SmallSweepEndToEnd) {
+  const auto dir = test::fresh_dir("sweep_small");
+  const auto cache = test::fresh_dir("sweep_cache");
+  const CliRun r = run({"sweep", "--plugins", TEST_SCENE_DIR, "--scene", "unit_ball", "--size",
+                        "48x32", "--knobs", "hit_threshold_k,samples", "--frames", "1", "--out",
+                        dir.string(), "--cache", cache.string()});
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (const char* f : {"sweep.csv", "sweep.json", "sweep.svg"})
+    EXPECT_TRUE(std::filesystem::file_size(dir / f) > 100) << f;
+  std::ifstream csv(dir / "sweep.csv");
+  std::string line;
+  int rows = 0;
+  while (std::getline(csv, line)) ++rows;
+  EXPECT_EQ(rows, 1 + 1 + 4 + 4) << "header, default, 4 thresholds, 4 sample counts";
+  EXPECT_NE(r.out.find("hit_threshold_k=0.125"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("note: the default settings"), std::string::npos) << r.out;
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(cache), {}), 1)
+      << "one cached reference";
+  // Again: the reference comes from the cache.
+  const CliRun again = run({"sweep", "--plugins", TEST_SCENE_DIR, "--scene", "unit_ball", "--size",
+                            "48x32", "--knobs", "samples", "--frames", "1", "--out", dir.string(),
+                            "--cache", cache.string()});
+  ASSERT_EQ(again.code, 0) << again.err;
+  EXPECT_NE(again.out.find("(cached)"), std::string::npos) << again.out;
+}
+
+}  // namespace
+}  // namespace fr
