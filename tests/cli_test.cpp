@@ -133,6 +133,22 @@ TEST(Cli, ListShowsParametersAndFailures) {
       << fixtures.out;
 }
 
+// list --verbose shows what each kernel compiles in: the Mandelbulb's has AO and not shadows, its
+// own library file and not the sponge's, and its iteration count baked in.
+TEST(Cli, ListVerboseShowsTheKernel) {
+  const CliRun r = run({"list", "--verbose"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const size_t start = r.out.find("\nmandelbulb "), end = r.out.find("\n\n", start + 1);
+  ASSERT_NE(start, std::string::npos);
+  const std::string bulb = r.out.substr(start, end - start);
+  EXPECT_NE(bulb.find("stages ao; left out: dof, glow, shadows, fog, reflections"),
+            std::string::npos)
+      << bulb;
+  EXPECT_NE(bulb.find("DE library files: fr/mandelbulb.cl fr/palette.cl\n"), std::string::npos)
+      << bulb;
+  EXPECT_NE(bulb.find("baked in as constants: iterations=8;"), std::string::npos) << bulb;
+}
+
 TEST(Cli, Devices) {
   const CliRun r = run({"devices"});
   EXPECT_EQ(r.code, 0) << r.err;

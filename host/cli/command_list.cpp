@@ -1,7 +1,11 @@
 #include "cli/commands.hpp"
 #include "cli/scene_setup.hpp"
+#include "plugin/scene_instance.hpp"
+#include "render/kernel_assembly.hpp"
 
+#include <algorithm>
 #include <ostream>
+#include <set>
 
 namespace fr {
 namespace {
@@ -18,15 +22,49 @@ std::string format_value(const ParamInfo& p, const fr_value& v) {
   return num(v.v[0]) + "," + num(v.v[1]) + "," + num(v.v[2]);
 }
 
+// What the scene's kernel contains with the current settings: the stages compiled in and left
+// out, the DE library files it includes, and the parameters baked in as constants. This is
+// "each scene's kernel contains only what it needs", made visible.
+void describe_kernel(const SceneInfo& info, const RenderSettings& settings, std::ostream& out) {
+  const int lanes = settings.lanes > 0 ? settings.lanes : 16;
+  const KernelConfig config = make_kernel_config(info, settings, lanes);
+  const AssembledKernel k = assemble_render_kernel(info, make_default_state(info).params, config);
+  const fr_features all = FR_FEATURE_AO | FR_FEATURE_SHADOWS | FR_FEATURE_GLOW | FR_FEATURE_FOG |
+                          FR_FEATURE_REFLECTIONS | kStageDepthOfField;
+  out << "  kernel (lanes " << lanes << ", " << precision_name(config.precision) << "): stages "
+      << stage_names(config.stages) << "; left out: " << stage_names(all & ~config.stages) << "\n";
+  std::set<std::string> library;
+  for (size_t at = k.source.find("#line 1 \"fr/"); at != std::string::npos;
+       at = k.source.find("#line 1 \"fr/", at + 1)) {
+    const size_t start = at + 9, end = k.source.find('"', start);
+    library.insert(k.source.substr(start, end - start));
+  }
+  out << "  DE library files:";
+  for (const auto& f : library) out << " " << f;
+  out << (library.empty() ? " none\n" : "\n");
+  out << "  baked in as constants:";
+  bool any = false;
+  for (const auto& p : info.params)
+    if (p.specialized()) {
+      out << " " << p.key << "=" << format_value(p, p.default_value);
+      any = true;
+    }
+  out << (any ? "" : " none") << "; " << std::count(k.source.begin(), k.source.end(), '\n')
+      << " lines of OpenCL C\n";
+}
+
 }  // namespace
 
 int command_list(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   auto specs = plugin_option_specs();
+  specs.push_back({"verbose", nullptr, false,
+                   "also show what each scene's kernel compiles in: stages, DE library files,\n"
+                   "                                 parameters baked in as constants"});
   specs.push_back({"help", nullptr, false, "show this help"});
   auto options = parse_options("list", args, specs);
   if (options.has("help")) {
-    out << "usage: fractalis list [--plugins DIR]\n\nLists every scene plugin found: id, version, "
-           "parameters with their ranges, or why it failed to load.\n\n"
+    out << "usage: fractalis list [--plugins DIR] [--verbose]\n\nLists every scene plugin found: "
+           "id, version, parameters with their ranges, or why it failed to load.\n\n"
         << format_options(specs);
     return 0;
   }
@@ -58,6 +96,7 @@ int command_list(const std::vector<std::string>& args, std::ostream& out, std::o
           << (p.flags & FR_PARAM_SPECIALIZE ? ", compiled in" : "")
           << (p.flags & FR_PARAM_ANIMATABLE ? ", animatable" : "") << "  " << p.description << "\n";
     }
+    if (options.has("verbose")) describe_kernel(s, settings.render, out);
   }
   return 0;
 }
