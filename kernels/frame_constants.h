@@ -84,7 +84,7 @@ typedef struct fr_frame_constants {
   float start_scale;
   float start_scale_lo;
   float ao_reference_steps; /* step-count AO: this many steps is full occlusion */
-  float reserved1;
+  int refine_steps;         /* plain DE steps after a hit, towards the surface (march.cl) */
 } fr_frame_constants;
 
 #endif /* FR_FRAME_CONSTANTS_H */

@@ -113,6 +113,14 @@ march_result_t march(ray_t ray, real_t path_t, __constant const fr_frame_constan
     t = lane_select(active, t + step, t);
     active &= t < t_exit;
   }
+  /* Refinement: the hit stopped up to eps in front of the surface (more at grazing angles: the
+   * silhouette bias); a few more plain steps of the DE, a lower bound, close that gap without
+   * ever passing through. */
+  const mask_t converged = hit;
+  for (int i = 0; i < fc->refine_steps && any_lane(converged); ++i) {
+    const real_t dist = scene_de(v3_mad(ray.origin, ray.dir, t), params) * (real_t)fc->step_scale;
+    t = lane_select(converged, t + fmax(dist, (real_t)0), t);
+  }
   march_result_t r;
   r.out_of_steps = active;
   r.t = lane_select(active, best_t, t);

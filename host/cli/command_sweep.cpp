@@ -94,8 +94,9 @@ int command_sweep(const std::vector<std::string>& args, std::ostream& out, std::
                    "(default sweep-SCENE)"});
   specs.push_back({"knobs", "LIST", false,
                    "comma-separated knobs to sweep (default: all that apply): precision,\n"
-                   "                                 hit_threshold_k, max_steps, relaxation, "
-                   "normals, samples, lanes, ao,\n                                 shadow_steps"});
+                   "                                 hit_threshold_k, max_steps, refine_steps, "
+                   "relaxation, normals,\n                                 samples, lanes, ao, "
+                   "shadow_steps"});
   specs.push_back({"frames", "N", false, "timed frames per configuration (default 9)"});
   specs.push_back(
       {"cache", "DIR", false, "reference cache (default $XDG_CACHE_HOME/fractalis/sweep)"});

@@ -25,7 +25,8 @@ std::vector<OptionSpec> scene_option_specs() {
       {"time", "SECONDS", false, "scene time for the update callback (default 0)"},
       {"lanes", "1|4|8|16", false, "rays per work-item (default: 16 on CPUs, 1 on GPUs)"},
       {"precision", "auto|float|double", false,
-       "arithmetic precision of the kernel (default auto: double where float cannot resolve the view)"},
+       "arithmetic precision of the kernel (default auto: double where float cannot resolve the "
+       "view)"},
       {"samples", "N", false, "jittered samples per pixel, accumulated (anti-aliasing; default 1)"},
       {"set", "KEY=VALUE", true,
        "any setting, as in config/default.toml (repeatable), e.g.\n"

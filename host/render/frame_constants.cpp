@@ -90,6 +90,7 @@ fr_frame_constants make_frame_constants(const CameraRays& rays, const SceneState
   put_hi_lo(fc.start_step_y, fc.start_step_y_lo, rays.pixel_step_y * scale);
   put_hi_lo(fc.start_scale, fc.start_scale_lo, scale);
   fc.ao_reference_steps = static_cast<float>(s.ao_reference_steps);
+  fc.refine_steps = s.refine_steps;
   put(fc.camera_right, rays.right);
   put(fc.camera_up, rays.up);
   put(fc.camera_forward, rays.forward);

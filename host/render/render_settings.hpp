@@ -38,6 +38,7 @@ struct RenderSettings {
   FogMethod fog_method = FogMethod::Exponential;
 
   int max_steps = 160;
+  int refine_steps = 0;  // plain DE steps after a hit, towards the surface (0 to 8)
   int shadow_max_steps = 64;
   int max_bounces = 2;  // mirror bounces, when reflections are on
   int ao_samples = 5;

@@ -125,6 +125,8 @@ const std::vector<Key>& known_keys() {
        }},
       {"render.relaxation",
        [](const toml::node& n, Settings& s) { return set_float(n, s.render.relaxation, 1, 1.95); }},
+      {"render.refine_steps",
+       [](const toml::node& n, Settings& s) { return set_int(n, s.render.refine_steps, 0, 8); }},
       {"render.fast_math",
        [](const toml::node& n, Settings& s) {
          if (!n.is_boolean()) return std::string("expected true or false");
@@ -358,7 +360,8 @@ std::string format_settings_toml(const Settings& s) {
       << "\nmax_bounces = " << r.max_bounces << "\nhit_threshold_k = " << r.hit_threshold_k
       << "\nexposure = " << r.exposure << "\nao_strength = " << r.ao_strength
       << "\nao_reference_steps = " << r.ao_reference_steps << "\nrelaxation = " << r.relaxation
-      << "\nfast_math = " << (r.fast_math ? "true" : "false") << "\nroughness = " << r.roughness
+      << "\nfast_math = " << (r.fast_math ? "true" : "false")
+      << "\nrefine_steps = " << r.refine_steps << "\nroughness = " << r.roughness
       << "\nreflectivity = " << r.reflectivity << "\naperture = " << r.aperture_radius
       << "\nfocus_distance = " << r.focus_distance << "\nshading_model = "
       << choice(static_cast<int>(r.shading), {"lambert", "blinn-phong", "oren-nayar"})

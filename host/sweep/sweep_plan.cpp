@@ -34,6 +34,10 @@ std::vector<KnobValue> knob_values(const std::string& knob, const RenderSettings
     *default_value = number(d.max_steps);
     for (int n : {40, 80, 160, 320, 640})
       v.push_back({number(n), [n](RenderSettings& s) { s.max_steps = n; }});
+  } else if (knob == "refine_steps") {
+    *default_value = number(d.refine_steps);
+    for (int n : {0, 1, 2, 4})
+      v.push_back({number(n), [n](RenderSettings& s) { s.refine_steps = n; }});
   } else if (knob == "relaxation") {
     *default_value = number(d.relaxation);
     for (float w : {1.0f, 1.3f, 1.6f, 1.9f})
@@ -75,8 +79,8 @@ std::vector<KnobValue> knob_values(const std::string& knob, const RenderSettings
 
 const std::vector<std::string>& all_knob_names() {
   static const std::vector<std::string> names = {
-      "precision", "hit_threshold_k", "max_steps", "relaxation",  "normals",
-      "samples",   "lanes",           "ao",        "shadow_steps"};
+      "precision", "hit_threshold_k", "max_steps", "refine_steps", "relaxation",
+      "normals",   "samples",         "lanes",     "ao",           "shadow_steps"};
   return names;
 }
 
