@@ -85,6 +85,10 @@ void progress(std::ostream& err, bool terminal, size_t done, size_t total,
       << "/" << total << " " << what << "\033[K" << std::flush;
 }
 
+std::string config_name(const SweepConfig& c) {
+  return c.knob == "default" ? "default" : c.knob + "=" + c.value;
+}
+
 }  // namespace
 
 int command_sweep(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
@@ -97,7 +101,8 @@ int command_sweep(const std::vector<std::string>& args, std::ostream& out, std::
                    "                                 hit_threshold_k, max_steps, refine_steps, "
                    "relaxation, normals,\n                                 samples, lanes, ao, "
                    "shadow_steps"});
-  specs.push_back({"frames", "N", false, "timed frames per configuration (default 9)"});
+  specs.push_back({"frames", "N", false,
+                   "timing rounds: frames timed per configuration, interleaved (default 9)"});
   specs.push_back(
       {"cache", "DIR", false, "reference cache (default $XDG_CACHE_HOME/fractalis/sweep)"});
   specs.push_back({"help", nullptr, false, "show this help"});
@@ -148,7 +153,7 @@ int command_sweep(const std::vector<std::string>& args, std::ostream& out, std::
   result.width_px = p.render.width_px;
   result.height_px = p.render.height_px;
   result.timed_frames = frames;
-  const size_t total = configs.size() + 1;
+  const size_t total = configs.size() + 2;
   std::string warning;
   result.reference = make_reference(
       renderer, p.scene->info, p.state, p.render, p.device.name,
@@ -167,15 +172,16 @@ int command_sweep(const std::vector<std::string>& args, std::ostream& out, std::
   const auto now_ms = [] {
     return std::chrono::duration<double, std::milli>(clock::now().time_since_epoch()).count();
   };
+  // First every configuration's picture and geometry (this also builds its kernel and warms it
+  // up); then the timing, in rounds that render each configuration once, so that the machine's
+  // slow moments spread over all of them instead of landing on a few.
   std::vector<uint8_t> lanes_image[2];
-  for (size_t i = 0; i < configs.size(); ++i) {
-    if (g_interrupted) break;
+  for (size_t i = 0; i < configs.size() && !g_interrupted; ++i) {
     const SweepConfig& c = configs[i];
-    const std::string name = c.knob == "default" ? "default" : c.knob + "=" + c.value;
-    progress(err, terminal, i + 1, total, name);
-    renderer.prepare(p.scene->info, p.state, c.settings);  // kernel build, not timed
-    // The picture with the configuration's samples (also the warm-up), and the geometry from
-    // centred rays like the reference's (a jittered last sample would count as depth error).
+    progress(err, terminal, i + 1, total, "measuring " + config_name(c));
+    renderer.prepare(p.scene->info, p.state, c.settings);
+    // The picture with the configuration's samples, and the geometry from centred rays like the
+    // reference's (a jittered last sample would count as depth error).
     FrameImage image = renderer.render(p.scene->info, p.state, c.settings, true);
     RenderSettings centred = c.settings;
     centred.samples = 1;
@@ -183,13 +189,23 @@ int command_sweep(const std::vector<std::string>& args, std::ostream& out, std::
     image.depth = geometry.depth;
     image.normal = geometry.normal;
     image.ray_status = geometry.ray_status;
-    const auto times = time_frames(
-        frames, [&](int) { renderer.render(p.scene->info, p.state, c.settings); }, now_ms);
-    SweepRow row{c.knob, c.value, summarize_frames(times).p50_ms,
-                 compare_to_reference(image, result.reference.image, pixel_angle), false};
-    result.rows.push_back(row);
+    result.rows.push_back({c.knob, c.value, 0,
+                           compare_to_reference(image, result.reference.image, pixel_angle),
+                           false});
     if (c.knob == "lanes") lanes_image[c.value == "1" ? 0 : 1] = image.rgba8;
   }
+  std::vector<std::vector<double>> times(configs.size());
+  for (int round = 0; round < frames && !g_interrupted; ++round) {
+    progress(err, terminal, configs.size() + 1, total,
+             "timing, round " + std::to_string(round + 1) + " of " + std::to_string(frames));
+    for (size_t i = 0; i < configs.size() && !g_interrupted; ++i) {
+      const auto t = time_frames(
+          1, [&](int) { renderer.render(p.scene->info, p.state, configs[i].settings); }, now_ms);
+      times[i].push_back(t[0]);
+    }
+  }
+  for (size_t i = 0; i < result.rows.size() && !times[i].empty(); ++i)
+    result.rows[i].frame_ms = summarize_frames(times[i]).p50_ms;
   if (terminal) err << "\n";
   if (g_interrupted) {
     err << "fractalis: sweep interrupted; nothing written\n";

@@ -39,7 +39,9 @@ struct RenderSettings {
 
   int max_steps = 160;
   int refine_steps = 0;  // plain DE steps after a hit, towards the surface (0 to 8)
-  int shadow_max_steps = 64;
+  // 32, not 64: the sweep found 64 dominated (same image error to 0.6%, 4-7% slower) on every
+  // scene with shadows.
+  int shadow_max_steps = 32;
   int max_bounces = 2;  // mirror bounces, when reflections are on
   int ao_samples = 5;
   float hit_threshold_k = 0.5f;  // epsilon = k * t * pixel angle

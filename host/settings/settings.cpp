@@ -125,6 +125,10 @@ const std::vector<Key>& known_keys() {
        }},
       {"render.relaxation",
        [](const toml::node& n, Settings& s) { return set_float(n, s.render.relaxation, 1, 1.95); }},
+      {"render.shadow_max_steps",
+       [](const toml::node& n, Settings& s) {
+         return set_int(n, s.render.shadow_max_steps, 1, 10000);
+       }},
       {"render.refine_steps",
        [](const toml::node& n, Settings& s) { return set_int(n, s.render.refine_steps, 0, 8); }},
       {"render.fast_math",
@@ -361,9 +365,10 @@ std::string format_settings_toml(const Settings& s) {
       << "\nexposure = " << r.exposure << "\nao_strength = " << r.ao_strength
       << "\nao_reference_steps = " << r.ao_reference_steps << "\nrelaxation = " << r.relaxation
       << "\nfast_math = " << (r.fast_math ? "true" : "false")
-      << "\nrefine_steps = " << r.refine_steps << "\nroughness = " << r.roughness
-      << "\nreflectivity = " << r.reflectivity << "\naperture = " << r.aperture_radius
-      << "\nfocus_distance = " << r.focus_distance << "\nshading_model = "
+      << "\nrefine_steps = " << r.refine_steps << "\nshadow_max_steps = " << r.shadow_max_steps
+      << "\nroughness = " << r.roughness << "\nreflectivity = " << r.reflectivity
+      << "\naperture = " << r.aperture_radius << "\nfocus_distance = " << r.focus_distance
+      << "\nshading_model = "
       << choice(static_cast<int>(r.shading), {"lambert", "blinn-phong", "oren-nayar"})
       << "\nnormal_method = " << choice(static_cast<int>(r.normals), {"tetrahedron", "central"})
       << "\nao_method = " << choice(static_cast<int>(r.ao_method), {"step-count", "sampled"})

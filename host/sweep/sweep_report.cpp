@@ -159,7 +159,7 @@ std::string format_sweep_json(const SweepResult& s) {
 }
 
 std::string format_sweep_svg(const SweepResult& s) {
-  const double W = 720, H = 460, left = 70, right = 20, top = 40, bottom = 50;
+  const double W = 760, H = 460, left = 70, right = 110, top = 40, bottom = 50;
   double t_lo = INFINITY, t_hi = 0, e_lo = INFINITY, e_hi = 0;
   for (const auto& r : s.rows) {
     t_lo = std::min(t_lo, r.frame_ms);
@@ -209,18 +209,28 @@ std::string format_sweep_svg(const SweepResult& s) {
   out << "<polyline fill=\"none\" stroke=\"#2a7\" stroke-width=\"2\" points=\"";
   for (const SweepRow* r : front) out << x(r->frame_ms) << "," << y(plotted_error(*r)) << " ";
   out << "\"/>\n";
-  for (const auto& r : s.rows) {
-    const bool is_default = r.knob == "default";
-    out << "<circle cx=\"" << x(r.frame_ms) << "\" cy=\"" << y(plotted_error(r)) << "\" r=\""
+  // Every configuration as a dot; only the front and the defaults are labelled (the CSV names
+  // the rest), and the defaults are drawn last, on top.
+  std::vector<const SweepRow*> order;
+  for (const auto& r : s.rows) order.push_back(&r);
+  std::stable_partition(order.begin(), order.end(),
+                        [](const SweepRow* r) { return r->knob != "default"; });
+  for (const SweepRow* r : order) {
+    const bool is_default = r->knob == "default";
+    out << "<circle cx=\"" << x(r->frame_ms) << "\" cy=\"" << y(plotted_error(*r)) << "\" r=\""
         << (is_default ? 6 : 4) << "\" fill=\""
-        << (is_default   ? "#d22"
-            : r.on_front ? "#2a7"
-                         : "#58a")
-        << "\"/><text x=\"" << x(r.frame_ms) + 7 << "\" y=\"" << y(plotted_error(r)) - 5
-        << "\" fill=\"#333\">" << label(r) << "</text>\n";
+        << (is_default    ? "#d22"
+            : r->on_front ? "#2a7"
+                          : "#9ab")
+        << "\"/>\n";
+    if (is_default || r->on_front)
+      out << "<text x=\"" << x(r->frame_ms) + 7 << "\" y=\"" << y(plotted_error(*r)) - 6
+          << "\" fill=\"" << (is_default ? "#d22" : "#333") << "\""
+          << (is_default ? " font-weight=\"bold\"" : "") << ">" << label(*r) << "</text>\n";
   }
   out << "<text x=\"" << W - right << "\" y=\"" << top - 4
-      << "\" text-anchor=\"end\" fill=\"#2a7\">green line: Pareto front; red: the defaults</text>\n"
+      << "\" text-anchor=\"end\" fill=\"#2a7\">green: the Pareto front; red: the defaults; grey: "
+         "the rest</text>\n"
       << "</svg>\n";
   return out.str();
 }
