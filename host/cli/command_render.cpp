@@ -28,7 +28,7 @@ void report_rays(const FrameImage& image, const fr_camera& camera, const RenderS
   if (percent(rays.out_of_steps) > kOutOfStepsWarnPercent) {
     std::snprintf(line, sizeof line,
                   "fractalis: warning: %.2f%% of rays ran out of steps (render.max_steps = %d); "
-                  "they are shaded at their closest approach, raise render.max_steps\n",
+                  "each is shaded at its closest approach or as a miss; raise render.max_steps\n",
                   percent(rays.out_of_steps), settings.max_steps);
     err << line;
   }
