@@ -7,6 +7,11 @@
 #include "sweep/sweep_report.hpp"
 #include "test_support.hpp"
 
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -179,6 +184,35 @@ TEST(SweepCommand, SmallSweepEndToEnd) {
                             "--cache", cache.string()});
   ASSERT_EQ(again.code, 0) << again.err;
   EXPECT_NE(again.out.find("(cached)"), std::string::npos) << again.out;
+}
+
+// Ctrl-C (SIGINT) and SIGTERM during a sweep, as a user sends them to the real command: it
+// stops with exit code 130 and writes nothing into --out, nor a partial reference.
+TEST(SweepCommand, InterruptedSweepWritesNothing) {
+  for (int signal_number : {SIGINT, SIGTERM}) {
+    const auto dir = test::fresh_dir("sweep_interrupted");
+    const auto cache = test::fresh_dir("sweep_interrupted_cache");
+    const pid_t child = fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+      const int devnull = open("/dev/null", O_WRONLY);
+      dup2(devnull, 1);
+      dup2(devnull, 2);
+      execl(FRACTALIS_EXECUTABLE, "fractalis", "sweep", "--scene", "benchmark", "--size", "320x180",
+            "--out", dir.c_str(), "--cache", cache.c_str(), nullptr);
+      _exit(127);
+    }
+    // Long enough to be rendering (plugins loaded, kernels building or the reference running).
+    usleep(1500 * 1000);
+    kill(child, signal_number);
+    int status = 0;
+    ASSERT_EQ(waitpid(child, &status, 0), child);
+    ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status);
+    EXPECT_EQ(WEXITSTATUS(status), 130);
+    EXPECT_TRUE(std::filesystem::is_empty(dir)) << "an interrupted sweep wrote results";
+    for (const auto& e : std::filesystem::directory_iterator(cache))
+      EXPECT_EQ(e.path().extension(), ".ref") << "a temporary file was left: " << e.path();
+  }
 }
 
 }  // namespace

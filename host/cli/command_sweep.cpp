@@ -92,6 +92,7 @@ std::string config_name(const SweepConfig& c) {
 }  // namespace
 
 int command_sweep(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  InterruptGuard interrupt_guard;  // from the start: a Ctrl-C while loading plugins counts too
   auto specs = scene_option_specs();
   specs.push_back({"out", "DIR", false,
                    "folder for sweep.csv, sweep.json, sweep.svg "
@@ -143,7 +144,6 @@ int command_sweep(const std::vector<std::string>& args, std::ostream& out, std::
     err << "fractalis: error: " << error << "\n";
     return 1;
   }
-  InterruptGuard interrupt_guard;
   const bool terminal = isatty(STDERR_FILENO) == 1;
   ClRuntime runtime(p.device);
   Renderer renderer(runtime);
@@ -162,6 +162,7 @@ int command_sweep(const std::vector<std::string>& args, std::ostream& out, std::
         progress(
             err, terminal, 0, total,
             "reference: refinement " + std::to_string(level + 1) + ", k = " + std::to_string(k));
+        return !g_interrupted;
       },
       &warning);
   if (!warning.empty()) err << (terminal ? "\n" : "") << "fractalis: warning: " << warning << "\n";

@@ -117,7 +117,7 @@ std::string reference_key(const SceneInfo& info, const SceneState& state, const 
 SweepReference make_reference(Renderer& renderer, const SceneInfo& info, const SceneState& state,
                               const RenderSettings& settings, const std::string& device_name,
                               const std::filesystem::path& cache_dir,
-                              const std::function<void(double, int)>& progress,
+                              const std::function<bool(double, int)>& progress,
                               std::string* warning) {
   const auto file = cache_dir / (reference_key(info, state, settings, device_name) + ".ref");
   SweepReference r;
@@ -134,7 +134,7 @@ SweepReference make_reference(Renderer& renderer, const SceneInfo& info, const S
   ReferenceImage previous;
   double k = settings.hit_threshold_k;
   for (int level = 0; level < 5; ++level, k /= 4) {
-    if (progress) progress(k, level);
+    if (progress && !progress(k, level)) return {};
     ref.hit_threshold_k = static_cast<float>(k);
     ref.samples = 1;  // centred rays: the geometry
     const FrameImage geometry = renderer.render(info, state, ref, true);

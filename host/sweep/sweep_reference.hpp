@@ -35,12 +35,13 @@ std::string reference_key(const SceneInfo& info, const SceneState& state,
                           const RenderSettings& settings, const std::string& device_name);
 
 // The reference for this view, from `cache_dir` (file <key>.ref) when there, else computed
-// (progress(k, refinement) is called before each render) and stored there atomically. A cache
+// (progress(k, refinement) is called before each render; returning false abandons the
+// reference: nothing is cached and the result is empty) and stored there atomically. A cache
 // file that cannot be read is recomputed; one that cannot be written is reported on *warning.
 SweepReference make_reference(Renderer& renderer, const SceneInfo& info, const SceneState& state,
                               const RenderSettings& settings, const std::string& device_name,
                               const std::filesystem::path& cache_dir,
-                              const std::function<void(double, int)>& progress,
+                              const std::function<bool(double, int)>& progress,
                               std::string* warning);
 
 }  // namespace fr
