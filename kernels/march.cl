@@ -104,8 +104,9 @@ march_result_t march(ray_t ray, real_t path_t, __constant const fr_frame_constan
     previous_radius = radius;
     mask_t reached = active & !overshot & ((leaving & (dist < -eps)) | (!leaving & (dist < eps)));
     leaving &= dist < eps;
+    /* The best candidate so far; the surface a lane is leaving is not one. */
     const real_t error = dist / eps;
-    mask_t better = active & !overshot & (error < best_error);
+    mask_t better = active & !overshot & !leaving & (error < best_error);
     best_t = lane_select(better, t, best_t);
     best_error = lane_select(better, error, best_error);
     hit |= reached;

@@ -4,6 +4,7 @@
 #include "render/camera.hpp"
 #include "render/kernel_assembly.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -129,6 +130,9 @@ SweepReference make_reference(Renderer& renderer, const SceneInfo& info, const S
   ref.max_steps = 5000;
   ref.shadow_max_steps = std::max(ref.shadow_max_steps, 1024);
   ref.normals = NormalMethod::CentralDifferences;
+  ref.refine_steps = 0;
+  ref.fast_math = false;
+  ref.step_scale = std::min(ref.step_scale, 1.0f);  // a scale above 1 over-steps: never truth
   const double pixel_angle =
       make_camera_rays(state.camera, settings.width_px, settings.height_px).pixel_angle_rad;
   ReferenceImage previous;
