@@ -158,11 +158,17 @@ double reference_de(double px, double py, double pz, double power, double bailou
 // Whole powers take the trigonometry-free path and fractional ones the angles; both must be the
 // textbook formula. In double on the device the only differences left are rounding, amplified by
 // the orbit's sensitivity, so a tight tolerance holds at points off the polar axis.
-TEST_F(MandelbulbDe, MatchesTextbookFormulaForWholeAndFractionalPowers) {
+// 400 points in the cube around the bulb, where the textbook formula is compared.
+std::vector<std::array<float, 3>> textbook_points() {
   std::mt19937 rng(5);
   std::uniform_real_distribution<float> u(-1.3f, 1.3f);
   std::vector<std::array<float, 3>> pts;
   for (int i = 0; i < 400; ++i) pts.push_back({u(rng), u(rng), u(rng)});
+  return pts;
+}
+
+TEST_F(MandelbulbDe, MatchesTextbookFormulaForWholeAndFractionalPowers) {
+  const auto pts = textbook_points();
   set("bailout", 2);
   set("iterations", 6);
   for (double power : {2.0, 3.0, 8.0, 16.0, 2.5, 7.25}) {
@@ -186,10 +192,7 @@ TEST_F(MandelbulbDe, MatchesTextbookFormulaForWholeAndFractionalPowers) {
 // Mutation caught: dropping the "+ 1" of the derivative's update (dr = n r^(n-1) dr) fails at
 // most points.
 TEST_F(MandelbulbDe, FloatMatchesTextbookFormula) {
-  std::mt19937 rng(5);
-  std::uniform_real_distribution<float> u(-1.3f, 1.3f);
-  std::vector<std::array<float, 3>> pts;
-  for (int i = 0; i < 400; ++i) pts.push_back({u(rng), u(rng), u(rng)});
+  const auto pts = textbook_points();
   set("bailout", 2);
   set("iterations", 6);
   double worst = 0;

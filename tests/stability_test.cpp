@@ -309,22 +309,20 @@ TEST(Stability, MengerGrazingAngle) {
 // Far cameras: the sponge from 10^3 and 10^6 units with a field of view that frames it. Rays
 // start at the bounding sphere (no maximum distance), and near it (the start plane), so float
 // keeps its precision at the object.
-TEST(Stability, MengerFarCamera1e3) {
-  const dvec3 eye = glm::normalize(dvec3(3.3, 2.5, 4.3)) * 1e3;
-  const Frame f =
-      render_view("menger", {eye, dvec3(0), dvec3(0, 1, 0), 2 * std::atan(1.9 / 1e3) * 180 / M_PI},
-                  float_settings(), params({{"iterations", num(3)}}));
-  expect_clean(f, "10^3");
-  expect_menger(f, 3, "10^3", 64 * 48 / 100);
+void expect_far_menger(double distance, const std::string& what) {
+  const dvec3 eye = glm::normalize(dvec3(3.3, 2.5, 4.3)) * distance;
+  const double fov_deg = 2 * std::atan(1.9 / distance) * 180 / M_PI;  // frames the sponge
+  const Frame f = render_view("menger", {eye, dvec3(0), dvec3(0, 1, 0), fov_deg}, float_settings(),
+                              params({{"iterations", num(3)}}));
+  expect_clean(f, what);
+  expect_menger(f, 3, what, 64 * 48 / 100);
 }
 
+TEST(Stability, MengerFarCamera1e3) {
+  expect_far_menger(1e3, "10^3");
+}
 TEST(Stability, MengerFarCamera1e6) {
-  const dvec3 eye = glm::normalize(dvec3(3.3, 2.5, 4.3)) * 1e6;
-  const Frame f =
-      render_view("menger", {eye, dvec3(0), dvec3(0, 1, 0), 2 * std::atan(1.9 / 1e6) * 180 / M_PI},
-                  float_settings(), params({{"iterations", num(3)}}));
-  expect_clean(f, "10^6");
-  expect_menger(f, 3, "10^6", 64 * 48 / 100);
+  expect_far_menger(1e6, "10^6");
 }
 
 // The camera inside the solid: every ray starts inside, is black, and costs one DE evaluation.
