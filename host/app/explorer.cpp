@@ -140,7 +140,10 @@ const FrameImage* Explorer::render(int window_width_px, int window_height_px) {
     double total = 0;
     for (float v : last_.steps) total += v;
     stats_.de_steps_per_pixel = total / static_cast<double>(last_.steps.size());
+    stats_.out_of_steps_fraction =
+        double(count_rays(last_).out_of_steps) / static_cast<double>(last_.steps.size());
   }
+  stats_.precision = last_.precision;
   return &last_;
 }
 

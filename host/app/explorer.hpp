@@ -22,7 +22,9 @@ struct ExplorerStats {
   int sample_index = 0;
   bool refined = false;  // full quality reached and shown
   double de_steps_per_pixel = 0;
-  double surface_distance = 0;  // DE at the eye
+  double out_of_steps_fraction = 0;  // primary rays of the last full frame that ran out of steps
+  Precision precision = Precision::Float;  // what the last frame ran in (auto resolved)
+  double surface_distance = 0;             // DE at the eye
 };
 
 class Explorer {

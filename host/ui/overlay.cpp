@@ -90,6 +90,11 @@ void draw_overlay(Explorer& explorer, OverlayState& overlay) {
               st.frame_ms > 0 ? 1000.0 / st.frame_ms : 0.0, st.resolution_scale, st.sample_index,
               st.refined ? " (refined)" : "");
   ImGui::Text("%.1f DE steps/pixel, surface %.4g away", st.de_steps_per_pixel, st.surface_distance);
+  // Never silent: rays out of steps and the precision in use, in warning colour when it matters.
+  const bool many = 100 * st.out_of_steps_fraction > kOutOfStepsWarnPercent;
+  ImGui::TextColored(many ? ImVec4(1, 0.6f, 0.2f, 1) : ImVec4(0.7f, 0.7f, 0.7f, 1),
+                     "%.2f%% of rays out of steps%s; %s", 100 * st.out_of_steps_fraction,
+                     many ? " (raise Max steps)" : "", precision_name(st.precision));
 
   // Scenes.
   auto& slots = explorer.library().slots();
@@ -140,6 +145,8 @@ void draw_overlay(Explorer& explorer, OverlayState& overlay) {
     changed |= ImGui::SliderFloat("Detail (k)", &s.hit_threshold_k, 0.05f, 4.0f, "%.2f",
                                   ImGuiSliderFlags_Logarithmic);
     changed |= ImGui::SliderInt("Max steps", &s.max_steps, 16, 1000);
+    changed |= choice("Precision", s.precision, {"float", "double", "auto"});
+    changed |= ImGui::SliderInt("Refine steps", &s.refine_steps, 0, 8);
     changed |= ImGui::SliderFloat("Aperture", &s.aperture_radius, 0.0f, 0.5f, "%.3f");
     if (changed) explorer.mark_changed();
     // Written atomically (temporary file, then rename): a crash never leaves half a file.
