@@ -144,6 +144,13 @@ TEST(Settings, WrittenSettingsReadBack) {
   s.render.samples = 6;
   s.render.disabled_stages = FR_FEATURE_FOG | FR_FEATURE_GLOW;
   s.render.exposure = 1.5f;
+  s.render.precision = Precision::Double;
+  s.render.relaxation = 1.6f;  // the overlay's "Save settings" used to drop it
+  s.render.fast_math = true;
+  s.render.refine_steps = 2;
+  s.render.shadow_max_steps = 48;
+  s.render.ao_reference_steps = 200;
+  s.render.normals = NormalMethod::Tetrahedron;
   s.explorer.window_width_px = 1920;
   s.explorer.fullscreen = true;
   s.explorer.full_quality_samples = 32;
@@ -160,6 +167,13 @@ TEST(Settings, WrittenSettingsReadBack) {
   EXPECT_EQ(back.render.samples, 6);
   EXPECT_EQ(back.render.disabled_stages, s.render.disabled_stages);
   EXPECT_EQ(back.render.exposure, 1.5f);
+  EXPECT_EQ(back.render.precision, Precision::Double);
+  EXPECT_EQ(back.render.relaxation, 1.6f);
+  EXPECT_TRUE(back.render.fast_math);
+  EXPECT_EQ(back.render.refine_steps, 2);
+  EXPECT_EQ(back.render.shadow_max_steps, 48);
+  EXPECT_EQ(back.render.ao_reference_steps, 200);
+  EXPECT_EQ(back.render.normals, NormalMethod::Tetrahedron);
   EXPECT_EQ(back.explorer.window_width_px, 1920);
   EXPECT_TRUE(back.explorer.fullscreen);
   EXPECT_EQ(back.explorer.full_quality_samples, 32);
