@@ -31,13 +31,8 @@ ReferenceImage two_by_two() {
 }
 
 FrameImage as_frame(const ReferenceImage& r) {
-  FrameImage f;
-  f.width_px = r.width_px;
-  f.height_px = r.height_px;
-  f.rgba8 = r.rgba8;
-  f.depth = r.depth;
-  f.normal = r.normal;
-  f.ray_status = {1, 1, 0, 0};
+  FrameImage f = reference_as_frame(r);
+  EXPECT_EQ(f.ray_status, (std::vector<uint8_t>{1, 1, 0, 0})) << "hits and misses from the depth";
   return f;
 }
 

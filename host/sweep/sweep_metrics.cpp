@@ -16,6 +16,19 @@ double percentile(std::vector<double> values, double p) {
   return values[index];
 }
 
+FrameImage reference_as_frame(const ReferenceImage& r) {
+  FrameImage f;
+  f.width_px = r.width_px;
+  f.height_px = r.height_px;
+  f.rgba8 = r.rgba8;
+  f.depth = r.depth;
+  f.normal = r.normal;
+  f.ray_status.resize(r.depth.size());
+  for (size_t i = 0; i < r.depth.size(); ++i)
+    f.ray_status[i] = uint8_t(std::isfinite(r.depth[i]) ? RayStatus::Hit : RayStatus::Miss);
+  return f;
+}
+
 ErrorMetrics compare_to_reference(const FrameImage& image, const ReferenceImage& ref,
                                   double pixel_angle_rad) {
   const size_t n = static_cast<size_t>(ref.width_px) * ref.height_px;

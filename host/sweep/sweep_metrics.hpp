@@ -32,6 +32,9 @@ struct ErrorMetrics {
   size_t non_finite = 0;             // NaN or infinite values in colour, normals or depth (hits)
 };
 
+// A reference as a frame (what compare_to_reference takes), every ray's status a hit or a miss.
+FrameImage reference_as_frame(const ReferenceImage& reference);
+
 // How far behind the reference surface (in footprints) a hit must be to count as an overstep:
 // the reference's own threshold is far below a footprint, so a quarter is already past it.
 constexpr double kOverstepFootprints = 0.25;

@@ -153,12 +153,8 @@ SweepReference make_reference(Renderer& renderer, const SceneInfo& info, const S
     r.refinements = level + 1;
     r.hit_threshold_k = k;
     if (level > 0) {
-      FrameImage as_image;
-      as_image.rgba8 = current.rgba8;
-      as_image.depth = current.depth;
-      as_image.normal = current.normal;
-      as_image.ray_status.assign(current.depth.size(), 0);
-      const ErrorMetrics change = compare_to_reference(as_image, previous, pixel_angle);
+      const ErrorMetrics change =
+          compare_to_reference(reference_as_frame(current), previous, pixel_angle);
       r.convergence_mae = change.mean_abs_error;
       r.convergence_depth_px = change.depth_median_px;
       // Converged: the picture moved by less than a quarter of an 8-bit level on average, and
