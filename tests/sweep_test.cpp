@@ -155,6 +155,17 @@ TEST(SweepCommand, BadInputBeforeAnyWork) {
 
 // A small sweep of the unit ball: every file is written whole, the table names every
 // configuration, and the reference converged far below the default's error.
+// A view of empty space is said to be one, not reported as a perfect score.
+TEST(SweepCommand, EmptyViewIsSaid) {
+  const auto dir = test::fresh_dir("sweep_empty");
+  const auto cache = test::fresh_dir("sweep_empty_cache");
+  const CliRun r = run({"sweep", "--plugins", TEST_SCENE_DIR, "--scene", "unit_ball", "--size",
+                        "16x12", "--eye", "3,0,0", "--target", "6,0,0", "--knobs", "samples",
+                        "--frames", "1", "--out", dir.string(), "--cache", cache.string()});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("the reference shows no surface in this view"), std::string::npos) << r.out;
+}
+
 TEST(SweepCommand, SmallSweepEndToEnd) {
   const auto dir = test::fresh_dir("sweep_small");
   const auto cache = test::fresh_dir("sweep_cache");

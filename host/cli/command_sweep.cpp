@@ -11,8 +11,10 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <ostream>
 #include <sstream>
@@ -224,6 +226,11 @@ int command_sweep(const std::vector<std::string>& args, std::ostream& out, std::
     lanes_difference = double(differing) / double(lanes_image[0].size() / 4);
   }
   analyse_sweep(result, lanes_difference);
+  // A view of empty space measures nothing about the surface: say so rather than print zeros.
+  const auto& ref_depth = result.reference.image.depth;
+  if (std::none_of(ref_depth.begin(), ref_depth.end(), [](float d) { return std::isfinite(d); }))
+    result.notes.push_back(
+        "the reference shows no surface in this view: the geometric errors are empty");
 
   char line[640];
   std::snprintf(line, sizeof line,
