@@ -14,10 +14,10 @@ bool make_slot(std::shared_ptr<const LoadedScene> scene, SceneSlot* slot, std::s
   return true;
 }
 
-SceneLibrary::SceneLibrary(std::vector<std::filesystem::path> folders, ClRuntime& runtime,
-                           std::vector<std::string>* messages)
-    : runtime_(runtime) {
-  for (const auto& o : load_scene_folder(folders)) {
+SceneLibrary::SceneLibrary(std::vector<std::filesystem::path> folders, const PluginPolicy& policy,
+                           ClRuntime& runtime, std::vector<std::string>* messages)
+    : policy_(policy), runtime_(runtime) {
+  for (const auto& o : load_scene_folder(folders, policy_)) {
     if (!o.scene) {
       messages->push_back("skipped " + o.file.string() + ": " + o.message);
       continue;
@@ -40,7 +40,7 @@ int SceneLibrary::find(const std::string& id) const {
 
 std::string SceneLibrary::add_or_replace(const std::filesystem::path& file,
                                          const RenderSettings& settings) {
-  LoadOutcome o = load_scene_plugin(file);
+  LoadOutcome o = load_scene_plugin(file, policy_);
   int index = -1;
   for (size_t i = 0; i < slots_.size(); ++i)
     if (slots_[i].scene->file == file || (o.scene && slots_[i].scene->info.id == o.scene->info.id))

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "app/scene_slot.hpp"
+#include "plugin/plugin_policy.hpp"
 #include "plugin/plugin_watcher.hpp"
 #include "render/cl_runtime.hpp"
 #include "render/render_settings.hpp"
@@ -20,8 +21,8 @@ namespace fr {
 class SceneLibrary {
  public:
   // Loads the folders (failures go to `messages`) and starts watching them.
-  SceneLibrary(std::vector<std::filesystem::path> folders, ClRuntime& runtime,
-               std::vector<std::string>* messages);
+  SceneLibrary(std::vector<std::filesystem::path> folders, const PluginPolicy& policy,
+               ClRuntime& runtime, std::vector<std::string>* messages);
 
   std::vector<SceneSlot>& slots() { return slots_; }
   int find(const std::string& id) const;  // slot index or -1
@@ -36,6 +37,7 @@ class SceneLibrary {
  private:
   std::string add_or_replace(const std::filesystem::path& file, const RenderSettings& settings);
 
+  PluginPolicy policy_;
   ClRuntime& runtime_;
   std::vector<SceneSlot> slots_;
   std::vector<std::unique_ptr<PluginWatcher>> watchers_;

@@ -1,5 +1,6 @@
 #include "cli/commands.hpp"
 #include "cli/scene_setup.hpp"
+#include "plugin/plugin_text.hpp"
 #include "plugin/scene_instance.hpp"
 #include "render/kernel_assembly.hpp"
 
@@ -75,10 +76,10 @@ int command_list(const std::vector<std::string>& args, std::ostream& out, std::o
     return 1;
   }
   for (const auto& f : folders) out << "plugin folder: " << f.string() << "\n";
-  for (const auto& o : load_scene_folder(folders)) {
+  for (const auto& o : load_scene_folder(folders, settings.plugins)) {
     if (!o.scene) {
       out << "\n"
-          << o.file.filename().string() << ": FAILED (" << load_result_name(o.result)
+          << printable(o.file.filename().string()) << ": FAILED (" << load_result_name(o.result)
           << "): " << o.message << "\n";
       continue;
     }

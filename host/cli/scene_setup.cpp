@@ -1,5 +1,6 @@
 #include "cli/scene_setup.hpp"
 
+#include "plugin/plugin_text.hpp"
 #include "render/camera.hpp"
 
 #include <ostream>
@@ -83,11 +84,12 @@ std::vector<std::filesystem::path> plugin_folders(const Settings& settings,
 }
 
 std::vector<LoadOutcome> load_plugins(const std::vector<std::filesystem::path>& folders,
-                                      std::ostream& err) {
-  auto outcomes = load_scene_folder(folders);
+                                      const PluginPolicy& policy, std::ostream& err) {
+  auto outcomes = load_scene_folder(folders, policy);
   for (const auto& o : outcomes)
     if (o.result != LoadResult::Loaded)
-      err << "fractalis: warning: skipped plugin " << o.file.string() << ": " << o.message << "\n";
+      err << "fractalis: warning: skipped plugin " << printable(o.file.string()) << ": "
+          << o.message << "\n";
   return outcomes;
 }
 
@@ -230,7 +232,7 @@ PreparedScene prepare_scene(const ParsedOptions& options, std::ostream& err) {
   const auto folders = plugin_folders(p.settings, options);
   if (folders.empty())
     throw std::runtime_error("no plugin folder found (build the plugins, or pass --plugins DIR)");
-  const auto outcomes = load_plugins(folders, err);
+  const auto outcomes = load_plugins(folders, p.settings.plugins, err);
   p.scene = find_scene(outcomes, options.get("scene").value_or("mandelbulb"));
   p.state = make_default_state(p.scene->info);
   apply_scene_overrides(p.scene->info, options, p.state);
@@ -262,7 +264,7 @@ ExplorerSetup prepare_explorer(ParsedOptions options, std::ostream& err) {
     throw std::runtime_error("no plugin folder found (build the plugins, or pass --plugins DIR)");
   x.runtime = std::make_unique<ClRuntime>(choose_device(x.settings, options));
   std::vector<std::string> messages;
-  x.library = std::make_unique<SceneLibrary>(folders, *x.runtime, &messages);
+  x.library = std::make_unique<SceneLibrary>(folders, x.settings.plugins, *x.runtime, &messages);
   for (const auto& m : messages) err << "fractalis: warning: " << m << "\n";
   const std::string scene_id = options.get("scene").value_or("mandelbulb");
   if (x.library->find(scene_id) < 0) {

@@ -33,7 +33,7 @@ std::vector<std::filesystem::path> plugin_folders(const Settings& settings,
 // Loads the folders, reports each plugin that failed on `err` (one line each), and returns the
 // outcomes.
 std::vector<LoadOutcome> load_plugins(const std::vector<std::filesystem::path>& folders,
-                                      std::ostream& err);
+                                      const PluginPolicy& policy, std::ostream& err);
 
 // The loaded scene with this id, or a UsageError listing the ids there are.
 std::shared_ptr<const LoadedScene> find_scene(const std::vector<LoadOutcome>& outcomes,

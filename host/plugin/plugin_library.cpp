@@ -2,64 +2,132 @@
 
 #include <dlfcn.h>
 #include <elf.h>
+#include <fcntl.h>
+#include <link.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
-#include <array>
-#include <atomic>
+#include <algorithm>
+#include <cerrno>
 #include <cstdio>
-#include <fstream>
-#include <memory>
-#include <system_error>
+#include <cstring>
+#include <vector>
 
 namespace fr {
 namespace {
 
-std::filesystem::path private_copy_dir() {
-  return std::filesystem::temp_directory_path() /
-         ("fractalis-" + std::to_string(getuid()) + "-" + std::to_string(getpid()));
-}
-
-// ELF files start with 0x7f 'E' 'L' 'F'; anything else gets a clearer message than dlerror's.
-bool starts_like_elf(const std::filesystem::path& file, std::string* first_bytes) {
-  std::ifstream in(file, std::ios::binary);
-  std::array<char, 4> magic{};
-  in.read(magic.data(), magic.size());
-  if (in.gcount() < 4) {
-    *first_bytes = "fewer than 4 bytes";
-    return false;
+const char* machine_name(unsigned machine) {
+  switch (machine) {
+    case EM_X86_64:
+      return "x86-64";
+    case EM_386:
+      return "i386";
+    case EM_AARCH64:
+      return "AArch64";
+    case EM_ARM:
+      return "ARM";
+    case EM_RISCV:
+      return "RISC-V";
+    case EM_PPC64:
+      return "PowerPC 64";
+    case EM_S390:
+      return "s390";
+    case EM_MIPS:
+      return "MIPS";
+    case EM_LOONGARCH:
+      return "LoongArch";
   }
-  if (magic[0] == 0x7f && magic[1] == 'E' && magic[2] == 'L' && magic[3] == 'F') return true;
-  char hex[32];
-  std::snprintf(hex, sizeof hex, "%02x %02x %02x %02x", static_cast<unsigned char>(magic[0]),
-                static_cast<unsigned char>(magic[1]), static_cast<unsigned char>(magic[2]),
-                static_cast<unsigned char>(magic[3]));
-  *first_bytes = hex;
-  return false;
+  return nullptr;
 }
 
-// dlopen maps a truncated library and then dies of SIGBUS touching the missing pages, so check
-// first that the headers and every loadable segment lie inside the file. "" when it does.
-std::string check_elf_complete(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  in.seekg(0, std::ios::end);
-  const auto size = static_cast<uint64_t>(in.tellg());
-  in.seekg(0);
-  Elf64_Ehdr eh{};
-  if (!in.read(reinterpret_cast<char*>(&eh), sizeof eh))
+std::string describe_machine(unsigned machine) {
+  const char* name = machine_name(machine);
+  return name ? name : "ELF machine " + std::to_string(machine);
+}
+
+// This process's own ELF identity: what a plugin must have been built for.
+struct ElfTarget {
+  unsigned char elf_class = 0, data = 0;
+  unsigned machine = 0;
+};
+const ElfTarget& host_target() {
+  static const ElfTarget target = [] {
+    ElfTarget t;
+    const int fd = open("/proc/self/exe", O_RDONLY | O_CLOEXEC);
+    ElfW(Ehdr) eh{};
+    if (fd >= 0 && pread(fd, &eh, sizeof eh, 0) == static_cast<ssize_t>(sizeof eh)) {
+      t.elf_class = eh.e_ident[EI_CLASS];
+      t.data = eh.e_ident[EI_DATA];
+      t.machine = eh.e_machine;
+    }
+    if (fd >= 0) close(fd);
+    return t;
+  }();
+  return target;
+}
+
+// Whether a loaded object already goes by `name` (glibc would hand back that one instead).
+bool loaded_under_name(const std::string& name) {
+  struct Query {
+    const std::string* name;
+    bool found;
+  } q{&name, false};
+  dl_iterate_phdr(
+      [](dl_phdr_info* info, size_t, void* data) {
+        auto* q = static_cast<Query*>(data);
+        if (info->dlpi_name && *q->name == info->dlpi_name) q->found = true;
+        return 0;
+      },
+      &q);
+  return q.found;
+}
+
+void replace_all(std::string& text, const std::string& from, const std::string& to) {
+  for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
+    text.replace(at, from.size(), to);
+}
+
+}  // namespace
+
+std::string check_elf_library(uint64_t size,
+                              const std::function<size_t(uint64_t, void*, size_t)>& read_at) {
+  unsigned char ident[EI_NIDENT] = {};
+  const size_t got = read_at(0, ident, sizeof ident);
+  if (got < 4 || std::memcmp(ident, ELFMAG, SELFMAG) != 0) {
+    char hex[32] = "fewer than 4 bytes";
+    if (got >= 4)
+      std::snprintf(hex, sizeof hex, "%02x %02x %02x %02x", ident[0], ident[1], ident[2],
+                    ident[3]);
+    return std::string("not an ELF shared library (expected bytes 7f 45 4c 46, found ") + hex +
+           ")";
+  }
+  const ElfTarget& host = host_target();
+  if (got < EI_NIDENT) return "truncated: " + std::to_string(size) + " bytes";
+  if (ident[EI_CLASS] != host.elf_class)
+    return std::string("built as a ") + (ident[EI_CLASS] == ELFCLASS32 ? "32" : "64") +
+           "-bit ELF library; this host is " + (host.elf_class == ELFCLASS32 ? "32" : "64") +
+           "-bit";
+  if (ident[EI_DATA] != host.data) return "built for the other byte order than this host's";
+  ElfW(Ehdr) eh{};
+  if (read_at(0, &eh, sizeof eh) != sizeof eh)
     return "truncated: " + std::to_string(size) + " bytes, shorter than an ELF header";
-  if (eh.e_ident[EI_CLASS] != ELFCLASS64 || eh.e_machine != EM_X86_64)
-    return "not a 64-bit x86-64 ELF library";
+  if (eh.e_machine != host.machine)
+    return "built for " + describe_machine(eh.e_machine) + "; this host is " +
+           describe_machine(host.machine);
   if (eh.e_type != ET_DYN)
     return "not a shared library (ELF type " + std::to_string(eh.e_type) + ")";
+  // dlopen maps a truncated library and then dies of SIGBUS touching the missing pages, so the
+  // headers and every loadable segment must lie inside the file.
   const uint64_t ph_end = eh.e_phoff + uint64_t{eh.e_phnum} * eh.e_phentsize;
   const uint64_t sh_end = eh.e_shoff + uint64_t{eh.e_shnum} * eh.e_shentsize;
-  if (eh.e_phentsize != sizeof(Elf64_Phdr) || ph_end > size || sh_end > size)
+  if (eh.e_phentsize != sizeof(ElfW(Phdr)) || ph_end > size || sh_end > size)
     return "truncated: " + std::to_string(size) + " bytes, but its headers end at byte " +
            std::to_string(std::max(ph_end, sh_end));
   for (unsigned i = 0; i < eh.e_phnum; ++i) {
-    Elf64_Phdr ph{};
-    in.seekg(static_cast<std::streamoff>(eh.e_phoff + uint64_t{i} * sizeof ph));
-    in.read(reinterpret_cast<char*>(&ph), sizeof ph);
+    ElfW(Phdr) ph{};
+    if (read_at(eh.e_phoff + uint64_t{i} * sizeof ph, &ph, sizeof ph) != sizeof ph)
+      return "truncated program header";
     if (ph.p_type == PT_LOAD && ph.p_offset + ph.p_filesz > size)
       return "truncated: " + std::to_string(size) + " bytes, but a loadable segment ends at byte " +
              std::to_string(ph.p_offset + ph.p_filesz);
@@ -67,41 +135,83 @@ std::string check_elf_complete(const std::filesystem::path& file) {
   return "";
 }
 
-}  // namespace
-
-std::shared_ptr<PluginLibrary> PluginLibrary::open(const std::filesystem::path& file,
+std::shared_ptr<PluginLibrary> PluginLibrary::open(int fd, const std::filesystem::path& file,
                                                    std::string* error) {
-  std::string first_bytes;
-  if (!starts_like_elf(file, &first_bytes)) {
-    *error = "not an ELF shared library (expected bytes 7f 45 4c 46, found " + first_bytes + ")";
+  struct stat st {};
+  if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+    *error = "not a regular file";
     return nullptr;
   }
-  if (std::string problem = check_elf_complete(file); !problem.empty()) {
-    *error = problem;
+  const int memfd = memfd_create("fractalis-plugin", MFD_CLOEXEC | MFD_ALLOW_SEALING);
+  if (memfd < 0) {
+    *error = std::string("cannot make a private copy (memfd_create): ") + std::strerror(errno);
     return nullptr;
   }
-  static std::atomic<unsigned> copy_counter{0};
-  std::error_code ec;
-  const auto dir = private_copy_dir();
-  std::filesystem::create_directories(dir, ec);
-  const auto copy = dir / (std::to_string(copy_counter++) + "-" + file.filename().string());
-  if (ec || !std::filesystem::copy_file(file, copy,
-                                        std::filesystem::copy_options::overwrite_existing, ec)) {
-    *error = "cannot make a private copy in " + dir.string() + ": " + ec.message();
+  auto fail = [&](std::string why) {
+    close(memfd);
+    *error = std::move(why);
     return nullptr;
+  };
+  // Copy, then seal: the bytes checked below are the bytes dlopen maps.
+  std::vector<char> buffer(1 << 16);
+  uint64_t size = 0;
+  for (;;) {
+    const ssize_t n = pread(fd, buffer.data(), buffer.size(), static_cast<off_t>(size));
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) return fail(std::string("cannot read: ") + std::strerror(errno));
+    if (n == 0) break;
+    for (ssize_t done = 0; done < n;) {
+      const ssize_t w = write(memfd, buffer.data() + done, static_cast<size_t>(n - done));
+      if (w < 0 && errno == EINTR) continue;
+      if (w < 0) return fail(std::string("cannot copy: ") + std::strerror(errno));
+      done += w;
+    }
+    size += static_cast<uint64_t>(n);
+    if (size > static_cast<uint64_t>(st.st_size) + (1 << 20))
+      return fail("the file grew while it was being read");
   }
-  void* handle = dlopen(copy.c_str(), RTLD_NOW | RTLD_LOCAL);
-  const char* dl_error = handle ? nullptr : dlerror();
-  std::filesystem::remove(copy, ec);  // the mapping stays valid without the file
+  fcntl(memfd, F_ADD_SEALS, F_SEAL_SHRINK | F_SEAL_GROW | F_SEAL_WRITE | F_SEAL_SEAL);
+  if (std::string problem = check_elf_library(size,
+                                              [&](uint64_t at, void* out, size_t n) -> size_t {
+                                                const ssize_t r = pread(memfd, out, n,
+                                                                        static_cast<off_t>(at));
+                                                return r < 0 ? 0 : static_cast<size_t>(r);
+                                              });
+      !problem.empty())
+    return fail(problem);
+
+  // glibc hands back an already loaded object that has the same name, so the fd number must not
+  // be one an earlier (still resident) plugin was loaded under.
+  int load_fd = memfd;
+  std::vector<int> spare;
+  while (loaded_under_name("/proc/self/fd/" + std::to_string(load_fd))) {
+    spare.push_back(load_fd);
+    load_fd = fcntl(memfd, F_DUPFD_CLOEXEC, load_fd + 1);
+    if (load_fd < 0) {
+      for (int f : spare)
+        if (f != memfd) close(f);
+      return fail("cannot find a free descriptor for the private copy");
+    }
+  }
+  for (int f : spare)
+    if (f != memfd) close(f);
+  if (load_fd != memfd) close(memfd);
+  const std::string copy_name = "/proc/self/fd/" + std::to_string(load_fd);
+  void* handle = dlopen(copy_name.c_str(), RTLD_NOW | RTLD_LOCAL);
   if (!handle) {
-    *error = std::string("dlopen failed: ") + (dl_error ? dl_error : "unknown error");
+    const char* dl_error = dlerror();
+    std::string message = std::string("dlopen failed: ") + (dl_error ? dl_error : "unknown error");
+    replace_all(message, copy_name, file.string());
+    close(load_fd);
+    *error = message;
     return nullptr;
   }
-  return std::shared_ptr<PluginLibrary>(new PluginLibrary(handle));
+  return std::shared_ptr<PluginLibrary>(new PluginLibrary(handle, load_fd));
 }
 
 PluginLibrary::~PluginLibrary() {
   dlclose(handle_);
+  close(memfd_);
 }
 
 const void* PluginLibrary::symbol(const char* name) const {

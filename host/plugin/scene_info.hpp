@@ -1,8 +1,7 @@
 // scene_info.hpp — the host's own copy of everything a scene plugin declared.
 //
 // Built by the loader from the plugin's fr_scene_desc; every string and table is copied, so a
-// SceneInfo never points into plugin memory. Only the callbacks do, which is why a LoadedScene
-// keeps its library mapped for as long as it lives.
+// SceneInfo never points into plugin memory, and it is plain data that can cross processes.
 #pragma once
 
 #include <fractalis/fractalis.h>
@@ -14,8 +13,6 @@
 #include <vector>
 
 namespace fr {
-
-class PluginLibrary;
 
 struct ParamInfo {
   std::string key;
@@ -60,15 +57,25 @@ struct SceneInfo {
   int find_param(const std::string& key) const;
 };
 
-// A scene whose library is loaded. The callbacks point into the library, which stays mapped
-// while any LoadedScene (or an instance made from it) holds it.
+// The host-owned state of a scene in use: what its update callback is lent each frame.
+struct SceneState {
+  std::vector<fr_value> params;  // one per SceneInfo::params, same order
+  fr_camera camera{};
+  std::vector<fr_light> lights;
+  double time_s = 0;
+  double dt_s = 0;
+  uint64_t frame_index = 0;
+  double bounding_radius = 0;
+};
+
+class SceneCode;
+
+// A scene that loaded: the host's copy of its descriptor, and what runs its callbacks (in a
+// scene-host process by default; see scene_code.hpp).
 struct LoadedScene {
   SceneInfo info;
   std::filesystem::path file;  // the plugin as found in the folder (not the private copy)
-  fr_create_fn create = nullptr;
-  fr_destroy_fn destroy = nullptr;
-  fr_update_fn update = nullptr;
-  std::shared_ptr<PluginLibrary> library;
+  std::shared_ptr<SceneCode> code;
 };
 
 }  // namespace fr

@@ -1,11 +1,51 @@
 #include "plugin/scene_instance.hpp"
 
+#include "plugin/plugin_text.hpp"
+#include "plugin/scene_checks.hpp"
+#include "plugin/scene_code.hpp"
+
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
 #include <cmath>
 
 namespace fr {
+namespace {
+
+// Passes on what a plugin logged, with its scene id and with control characters escaped.
+void forward_messages(const std::string& id, const std::vector<PluginMessage>& messages) {
+  for (const PluginMessage& m : messages) {
+    const std::string text = printable(m.text);
+    switch (m.level) {
+      case FR_LOG_DEBUG:
+        spdlog::debug("[{}] {}", id, text);
+        break;
+      case FR_LOG_INFO:
+        spdlog::info("[{}] {}", id, text);
+        break;
+      case FR_LOG_WARNING:
+        spdlog::warn("[{}] {}", id, text);
+        break;
+      default:  // errors become the failing call's reason
+        spdlog::debug("[{}] error: {}", id, text);
+        break;
+    }
+  }
+}
+
+// Why the state an update left cannot be rendered, or "".
+std::string check_updated_state(const SceneState& s) {
+  if (auto problem = check_camera(s.camera)) return "update left an invalid camera: " + *problem;
+  for (size_t i = 0; i < s.lights.size(); ++i)
+    if (auto problem = check_light(s.lights[i]))
+      return "update left light " + std::to_string(i) + " invalid: it " + *problem;
+  if (!(std::isfinite(s.bounding_radius) && s.bounding_radius > 0))
+    return "update set bounding_radius to " + std::to_string(s.bounding_radius) +
+           " (expected a finite value > 0)";
+  return "";
+}
+
+}  // namespace
 
 SceneState make_default_state(const SceneInfo& info) {
   SceneState s;
@@ -29,89 +69,50 @@ void clamp_params(const SceneInfo& info, std::vector<fr_value>& values) {
   }
 }
 
-void SceneInstance::log_from_plugin(void* host_data, fr_log_level level, const char* message) {
-  auto* self = static_cast<SceneInstance*>(host_data);
-  const std::string text = message ? message : "(null message)";
-  const std::string& id = self->scene_->info.id;
-  switch (level) {
-    case FR_LOG_DEBUG:
-      spdlog::debug("[{}] {}", id, text);
-      break;
-    case FR_LOG_INFO:
-      spdlog::info("[{}] {}", id, text);
-      break;
-    case FR_LOG_WARNING:
-      spdlog::warn("[{}] {}", id, text);
-      break;
-    default:
-      self->last_error_ = text;
-      spdlog::debug("[{}] error: {}", id, text);
-      break;
-  }
-}
-
-fr_host SceneInstance::host_api() {
-  fr_host host{};
-  host.struct_size = sizeof(fr_host);
-  host.host_data = this;
-  host.log = &SceneInstance::log_from_plugin;
-  return host;
-}
-
 std::unique_ptr<SceneInstance> SceneInstance::create(std::shared_ptr<const LoadedScene> scene,
                                                      std::string* error) {
   std::unique_ptr<SceneInstance> self(new SceneInstance(std::move(scene)));
-  if (self->scene_->create) {
-    fr_host host = self->host_api();
-    if (self->scene_->create(&host, &self->instance_) != FR_OK) {
-      *error = "scene '" + self->scene_->info.id + "': create failed: " +
-               (self->last_error_.empty() ? "no reason logged" : self->last_error_);
-      return nullptr;
-    }
+  const std::string& id = self->scene_->info.id;
+  if (!self->scene_->code) {
+    *error = "scene '" + id + "': has no code to run its callbacks";
+    return nullptr;
+  }
+  CallOutcome out = self->scene_->code->create(&self->handle_);
+  forward_messages(id, out.messages);
+  if (!out.ok) {
+    *error = "scene '" + id + "': " + out.error;
+    return nullptr;
   }
   self->created_ = true;
   return self;
 }
 
 SceneInstance::~SceneInstance() {
-  if (created_ && scene_->destroy) scene_->destroy(instance_);
+  if (created_) scene_->code->destroy(handle_);
 }
 
 bool SceneInstance::update(SceneState& state, double time_s, std::string* error) {
   const SceneInfo& info = scene_->info;
-  state.dt_s = state.frame_index == 0 ? 0.0 : time_s - state.time_s;
-  state.time_s = time_s;
-  clamp_params(info, state.params);  // the plugin only ever sees values within their limits
-  if (scene_->update) {
-    fr_frame_state fs{};
-    fs.struct_size = sizeof(fr_frame_state);
-    fs.param_count = static_cast<uint32_t>(state.params.size());
-    fs.time_s = state.time_s;
-    fs.dt_s = state.dt_s;
-    fs.frame_index = state.frame_index;
-    fs.params = state.params.data();
-    fs.camera = &state.camera;
-    fs.lights = state.lights.data();
-    fs.light_count = static_cast<uint32_t>(state.lights.size());
-    fs.bounding_radius = state.bounding_radius;
-    fr_host host = host_api();
-    last_error_.clear();
-    if (scene_->update(instance_, &host, &fs) != FR_OK) {
-      *error = "scene '" + info.id +
-               "': update failed: " + (last_error_.empty() ? "no reason logged" : last_error_);
-      return false;
-    }
-    state.camera.struct_size = sizeof(fr_camera);
-    if (std::isfinite(fs.bounding_radius) && fs.bounding_radius > 0)
-      state.bounding_radius = fs.bounding_radius;
-    else {
-      *error = "scene '" + info.id + "': update set bounding_radius to " +
-               std::to_string(fs.bounding_radius) + " (expected a finite value > 0)";
-      return false;
-    }
+  if (!failure_.empty()) {
+    *error = failure_;
+    return false;
   }
-  clamp_params(info, state.params);
-  ++state.frame_index;
+  SceneState next = state;
+  next.dt_s = next.frame_index == 0 ? 0.0 : time_s - next.time_s;
+  next.time_s = time_s;
+  clamp_params(info, next.params);  // the plugin only ever sees values within their limits
+  CallOutcome out = scene_->code->update(handle_, next);
+  forward_messages(info.id, out.messages);
+  std::string problem = out.ok ? check_updated_state(next) : out.error;
+  if (!problem.empty()) {
+    failure_ = "scene '" + info.id + "': " + problem +
+               " (its updates stop until the scene is reloaded)";
+    *error = failure_;
+    return false;
+  }
+  clamp_params(info, next.params);
+  ++next.frame_index;
+  state = std::move(next);
   return true;
 }
 

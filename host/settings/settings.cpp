@@ -83,6 +83,25 @@ const std::vector<Key>& known_keys() {
          s.plugin_folders = folders;
          return "";
        }},
+      {"plugins.isolation",
+       [](const toml::node& n, Settings& s) {
+         return set_choice(n, s.plugins.isolation,
+                           {{"process", PluginIsolation::Process}, {"none", PluginIsolation::None}});
+       }},
+      {"plugins.load_timeout_s",
+       [](const toml::node& n, Settings& s) {
+         return set_double(n, s.plugins.load_timeout_s, 0, 3600, true);
+       }},
+      {"plugins.call_timeout_s",
+       [](const toml::node& n, Settings& s) {
+         return set_double(n, s.plugins.call_timeout_s, 0, 3600, true);
+       }},
+      {"plugins.allow_writable",
+       [](const toml::node& n, Settings& s) {
+         if (!n.is_boolean()) return std::string("expected true or false");
+         s.plugins.allow_writable = *n.value<bool>();
+         return std::string();
+       }},
       {"device.select",
        [](const toml::node& n, Settings& s) -> std::string {
          if (!n.is_string())
@@ -356,7 +375,12 @@ std::string format_settings_toml(const Settings& s) {
   out << "[plugins]\nfolders = [";
   for (size_t i = 0; i < s.plugin_folders.size(); ++i)
     out << (i ? ", " : "") << toml::value<std::string>(s.plugin_folders[i].string());
-  out << "]\n\n[device]\nselect = " << toml::value<std::string>(s.device) << "\n\n";
+  out << "]\nisolation = "
+      << (s.plugins.isolation == PluginIsolation::None ? "\"none\"" : "\"process\"")
+      << "\nload_timeout_s = " << s.plugins.load_timeout_s
+      << "\ncall_timeout_s = " << s.plugins.call_timeout_s
+      << "\nallow_writable = " << (s.plugins.allow_writable ? "true" : "false");
+  out << "\n\n[device]\nselect = " << toml::value<std::string>(s.device) << "\n\n";
   const RenderSettings& r = s.render;
   out << "[render]\nlanes = " << r.lanes << "\nprecision = \"" << precision_name(r.precision)
       << "\""

@@ -4,6 +4,7 @@
 // error that names the nearest known one, so a typo never silently falls back to a default.
 #pragma once
 
+#include "plugin/plugin_policy.hpp"
 #include "render/render_settings.hpp"
 
 #include <filesystem>
@@ -29,6 +30,7 @@ struct ExplorerSettings {
 
 struct Settings {
   std::vector<std::filesystem::path> plugin_folders;  // searched before the built-in folders
+  PluginPolicy plugins;                               // isolation, time limits, permissions
   std::string device;                                 // selector, see select_device
   RenderSettings render;
   ExplorerSettings explorer;

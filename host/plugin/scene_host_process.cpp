@@ -1,0 +1,413 @@
+#include "plugin/scene_host_process.hpp"
+
+#include "plugin/plugin_text.hpp"
+#include "plugin/scene_checks.hpp"
+#include "plugin/wire_io.hpp"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/socket.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstdlib>
+#include <cstring>
+#include <sstream>
+#include <thread>
+
+namespace fr {
+namespace {
+
+constexpr int kExecFailedStatus = 127;
+constexpr int kWireMismatchStatus = 126;
+
+std::string describe_exit(int status) {
+  if (WIFSIGNALED(status)) {
+    const int sig = WTERMSIG(status);
+    const char* abbrev = sigabbrev_np(sig);
+    const char* text = strsignal(sig);
+    return std::string("crashed (SIG") + (abbrev ? abbrev : std::to_string(sig).c_str()) + ": " +
+           (text ? text : "signal") + ")";
+  }
+  if (WIFEXITED(status)) {
+    if (WEXITSTATUS(status) == kExecFailedStatus) return "could not be started (exec failed)";
+    if (WEXITSTATUS(status) == kWireMismatchStatus)
+      return "is from another build of fractalis (message format differs)";
+    return "exited with status " + std::to_string(WEXITSTATUS(status));
+  }
+  return "ended";
+}
+
+std::string seconds(double s) {
+  std::ostringstream out;
+  out << s << " s";
+  return out.str();
+}
+
+// Messages in a reply: ok flag, error, plugin messages.
+struct Reply {
+  bool ok = false;
+  std::string error;
+  std::vector<PluginMessage> messages;
+};
+bool read_reply_head(WireReader& r, Reply* reply) {
+  reply->ok = r.u32() != 0;
+  reply->error = r.str(kMaxMessageBytes);
+  return read_messages(r, &reply->messages) && !r.failed();
+}
+
+// Calls forwarded to a scene-host process, started on the first call that needs one.
+class IsolatedCode final : public SceneCode {
+ public:
+  IsolatedCode(std::filesystem::path file, FileIdentity identity, std::string descriptor,
+               uint32_t callbacks, const SceneInfo& info, PluginPolicy policy)
+      : file_(std::move(file)),
+        identity_(identity),
+        descriptor_(std::move(descriptor)),
+        callbacks_(callbacks),
+        param_count_(info.params.size()),
+        light_count_(info.lights.size()),
+        policy_(policy) {}
+
+  CallOutcome create(uint64_t* instance) override {
+    if (callbacks_ == 0) {  // nothing to run: no process needed
+      *instance = next_local_++;
+      return {true, "", {}};
+    }
+    std::string reply;
+    CallOutcome out = call(WireKind::Create, "", &reply);
+    if (out.ok) {
+      WireReader r(reply);
+      *instance = r.u64();
+      if (r.failed()) out = fail_process("sent a malformed reply to create");
+    }
+    return out;
+  }
+
+  CallOutcome update(uint64_t instance, SceneState& state) override {
+    if (callbacks_ == 0) return {true, "", {}};
+    WireWriter w;
+    w.u64(instance);
+    write_scene_state(w, state);
+    std::string reply;
+    CallOutcome out = call(WireKind::Update, w.bytes(), &reply);
+    if (out.ok) {
+      WireReader r(reply);
+      SceneState updated;
+      if (!read_scene_state(r, param_count_, light_count_, &updated))
+        return fail_process("sent a malformed reply to update");
+      // The host's counters stay the host's; the rest is what the plugin set.
+      updated.time_s = state.time_s;
+      updated.dt_s = state.dt_s;
+      updated.frame_index = state.frame_index;
+      state = std::move(updated);
+    }
+    return out;
+  }
+
+  void destroy(uint64_t instance) override {
+    if (callbacks_ == 0 || !process_ || !process_->alive()) return;
+    WireWriter w;
+    w.u64(instance);
+    std::string reply;
+    call(WireKind::Destroy, w.bytes(), &reply);
+  }
+
+ private:
+  CallOutcome fail_process(const std::string& why) {
+    failure_ = "the scene host for " + printable(file_.string()) + " " + why;
+    process_.reset();
+    return {false, failure_, {}};
+  }
+
+  bool ensure_started(std::string* error) {
+    if (process_) return true;
+    FileIdentity now;
+    const int fd = open_plugin_file(file_, policy_.allow_writable, error, &now);
+    if (fd < 0) return false;
+    if (!(now == identity_)) {
+      close(fd);
+      *error = printable(file_.string()) + " changed since it was loaded (it is reloaded once the "
+                                           "change settles)";
+      return false;
+    }
+    process_ = SceneHostProcess::start(fd, file_, error);
+    close(fd);
+    if (!process_) return false;
+    std::string loaded;
+    if (!process_->receive_loaded(policy_.load_timeout_s, &loaded, error)) {
+      process_.reset();
+      *error = "while loading " + printable(file_.string()) + ", its scene host " + *error;
+      return false;
+    }
+    if (loaded != descriptor_) {
+      process_.reset();
+      *error = printable(file_.string()) + " described itself differently when loaded again";
+      return false;
+    }
+    return true;
+  }
+
+  CallOutcome call(WireKind kind, const std::string& request, std::string* payload) {
+    if (!failure_.empty()) return {false, failure_, {}};
+    std::string error;
+    if (!ensure_started(&error)) {
+      failure_ = error;
+      return {false, failure_, {}};
+    }
+    std::string reply_bytes;
+    if (!process_->call(kind, request, policy_.call_timeout_s, &reply_bytes, &error)) {
+      failure_ = error;
+      process_.reset();
+      return {false, failure_, {}};
+    }
+    WireReader r(reply_bytes);
+    Reply head;
+    if (!read_reply_head(r, &head)) return fail_process("sent a malformed reply");
+    payload->assign(r.rest());
+    return {head.ok, head.error, std::move(head.messages)};
+  }
+
+  std::filesystem::path file_;
+  FileIdentity identity_;
+  std::string descriptor_;  // the Loaded message from the scan: a restarted host must match it
+  uint32_t callbacks_;
+  size_t param_count_, light_count_;
+  PluginPolicy policy_;
+  std::unique_ptr<SceneHostProcess> process_;
+  std::string failure_;  // once set, every call fails with it (until the scene is reloaded)
+  uint64_t next_local_ = 1;
+};
+
+
+// Reads a Loaded message: the outcome, and for a loaded scene its checked descriptor.
+LoadOutcome parse_loaded(const std::filesystem::path& file, const std::string& payload,
+                         uint32_t* callbacks) {
+  LoadOutcome out;
+  out.file = file;
+  WireReader r(payload);
+  const uint32_t result = r.u32();
+  std::string message = r.str(kMaxMessageBytes);
+  if (r.failed() || result > static_cast<uint32_t>(LoadResult::Crashed)) {
+    out.result = LoadResult::Crashed;
+    out.message = "its scene host sent a malformed description";
+    return out;
+  }
+  out.result = static_cast<LoadResult>(result);
+  out.message = printable(message);
+  if (out.result != LoadResult::Loaded) return out;
+  auto scene = std::make_shared<LoadedScene>();
+  *callbacks = r.u32();
+  if (!read_scene_info(r, &scene->info) || !r.at_end()) {
+    out.result = LoadResult::Crashed;
+    out.message = "its scene host sent a malformed description";
+    return out;
+  }
+  // The scene host ran plugin code, so its copy is checked again here.
+  if (auto problem = check_scene_info(scene->info)) {
+    out.result = LoadResult::InvalidScene;
+    out.message = *problem;
+    return out;
+  }
+  scene->file = file;
+  out.scene = std::move(scene);
+  return out;
+}
+
+}  // namespace
+
+std::filesystem::path scene_host_executable() {
+  if (const char* env = std::getenv("FRACTALIS_SCENE_HOST"); env && *env) return env;
+  std::error_code ec;
+  const auto self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  std::vector<std::filesystem::path> candidates;
+  if (!ec) {
+    candidates.push_back(self.parent_path() / "fractalis-scene-host");
+    candidates.push_back(self.parent_path().parent_path() / "libexec" / "fractalis" /
+                         "fractalis-scene-host");
+  }
+  candidates.emplace_back(FRACTALIS_SCENE_HOST_BUILD_PATH);
+  for (const auto& c : candidates)
+    if (access(c.c_str(), X_OK) == 0) return c;
+  return {};
+}
+
+std::unique_ptr<SceneHostProcess> SceneHostProcess::start(int plugin_fd,
+                                                          const std::filesystem::path& file,
+                                                          std::string* error) {
+  const std::filesystem::path exe = scene_host_executable();
+  if (exe.empty()) {
+    *error = "the scene-host executable fractalis-scene-host was not found (beside fractalis, in "
+             "../libexec/fractalis, or $FRACTALIS_SCENE_HOST)";
+    return nullptr;
+  }
+  int sv[2];
+  if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, sv) != 0) {
+    *error = std::string("cannot make a socket for the scene host: ") + std::strerror(errno);
+    return nullptr;
+  }
+  // Everything the child needs is prepared before fork: between fork and exec a multithreaded
+  // process may only make async-signal-safe calls.
+  const std::string exe_string = exe.string(), wire = std::to_string(kSceneWireVersion),
+                    file_string = file.string();
+  const char* argv[] = {exe_string.c_str(), "--wire", wire.c_str(), "--file", file_string.c_str(),
+                        nullptr};
+  const bool keep_stderr = std::getenv("FRACTALIS_SCENE_HOST_STDERR") != nullptr;
+  const pid_t parent = getpid();
+  const pid_t pid = fork();
+  if (pid < 0) {
+    close(sv[0]);
+    close(sv[1]);
+    *error = std::string("cannot start the scene host (fork): ") + std::strerror(errno);
+    return nullptr;
+  }
+  if (pid == 0) {
+    const int sock = fcntl(sv[1], F_DUPFD, 10), plugin = fcntl(plugin_fd, F_DUPFD, 10);
+    if (sock < 0 || plugin < 0 || dup2(sock, 3) < 0 || dup2(plugin, 4) < 0) _exit(kExecFailedStatus);
+    const int null_fd = open("/dev/null", O_RDWR);
+    if (null_fd >= 0) {
+      dup2(null_fd, 0);
+      dup2(null_fd, 1);
+      if (!keep_stderr) dup2(null_fd, 2);
+    }
+    close_range(5, ~0U, 0);
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (getppid() != parent) _exit(kExecFailedStatus);
+    sigset_t none;
+    sigemptyset(&none);
+    sigprocmask(SIG_SETMASK, &none, nullptr);
+    execv(argv[0], const_cast<char* const*>(argv));
+    _exit(kExecFailedStatus);
+  }
+  close(sv[1]);
+  return std::unique_ptr<SceneHostProcess>(new SceneHostProcess(pid, sv[0]));
+}
+
+SceneHostProcess::~SceneHostProcess() {
+  if (!gone_) {
+    write_frame(socket_, WireKind::Quit, "");
+    stop(false);
+  }
+}
+
+std::string SceneHostProcess::stop(bool kill_now) {
+  if (gone_) return failure_;
+  close(socket_);
+  gone_ = true;
+  int status = 0;
+  pid_t r = 0;
+  if (!kill_now) {
+    // A moment to exit by itself (after Quit, or when it crashed and its socket closed), so that
+    // the status says how it ended; then it is killed.
+    for (int i = 0; i < 50 && (r = waitpid(pid_, &status, WNOHANG)) == 0; ++i)
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  if (r == 0 || kill_now) {
+    kill(pid_, SIGKILL);
+    while ((r = waitpid(pid_, &status, 0)) < 0 && errno == EINTR) {
+    }
+    return "";
+  }
+  return r == pid_ ? describe_exit(status) : "";
+}
+
+bool SceneHostProcess::receive(double timeout_s, WireKind expected, std::string* payload,
+                               std::string* error) {
+  if (gone_) {
+    *error = failure_;
+    return false;
+  }
+  WireKind kind{};
+  const ReadStatus s = read_frame(socket_, timeout_s, &kind, payload);
+  if (s == ReadStatus::Ok && kind == expected) return true;
+  if (s == ReadStatus::TimedOut) {
+    stop(true);
+    failure_ = "did not answer within " + seconds(timeout_s) + "; it was stopped";
+  } else if (s == ReadStatus::Closed) {
+    const std::string how = stop(false);
+    failure_ = how.empty() ? "closed its connection" : how;
+  } else {
+    stop(true);
+    failure_ = "sent a malformed message; it was stopped";
+  }
+  *error = failure_;
+  return false;
+}
+
+bool SceneHostProcess::receive_loaded(double timeout_s, std::string* payload, std::string* error) {
+  return receive(timeout_s, WireKind::Loaded, payload, error);
+}
+
+bool SceneHostProcess::call(WireKind kind, const std::string& request, double timeout_s,
+                            std::string* reply, std::string* error) {
+  if (!gone_ && !write_frame(socket_, kind, request)) {
+    const std::string how = stop(false);
+    failure_ = how.empty() ? "closed its connection" : how;
+  }
+  if (receive(timeout_s, WireKind::Reply, reply, error)) return true;
+  const char* what = kind == WireKind::Create ? "create" : kind == WireKind::Update ? "update"
+                                                                                    : "destroy";
+  *error = std::string("its scene host ") + *error + " during " + what;
+  return false;
+}
+
+std::vector<LoadOutcome> load_isolated(const std::vector<std::filesystem::path>& files,
+                                       const PluginPolicy& policy) {
+  struct Pending {
+    LoadOutcome outcome;
+    FileIdentity identity;
+    std::unique_ptr<SceneHostProcess> process;
+    std::chrono::steady_clock::time_point started;
+  };
+  std::vector<LoadOutcome> outcomes;
+  constexpr size_t kInFlight = 8;  // scans at once: they wait on the dynamic loader and the disk
+  for (size_t first = 0; first < files.size(); first += kInFlight) {
+    std::vector<Pending> batch;
+    for (size_t i = first; i < std::min(files.size(), first + kInFlight); ++i) {
+      Pending p;
+      p.outcome.file = files[i];
+      std::string error;
+      const int fd = open_plugin_file(files[i], policy.allow_writable, &error, &p.identity);
+      if (fd < 0) {
+        p.outcome.result = LoadResult::Refused;
+        p.outcome.message = error;
+      } else {
+        p.process = SceneHostProcess::start(fd, files[i], &error);
+        close(fd);
+        if (!p.process) {
+          p.outcome.result = LoadResult::Crashed;
+          p.outcome.message = error;
+        }
+      }
+      p.started = std::chrono::steady_clock::now();
+      batch.push_back(std::move(p));
+    }
+    for (Pending& p : batch) {
+      if (p.process) {
+        const double waited_s =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - p.started).count();
+        std::string payload, error;
+        if (!p.process->receive_loaded(std::max(0.0, policy.load_timeout_s - waited_s), &payload,
+                                       &error)) {
+          p.outcome.result = LoadResult::Crashed;
+          p.outcome.message = "while loading, its scene host " + error;
+        } else {
+          uint32_t callbacks = 0;
+          p.outcome = parse_loaded(p.outcome.file, payload, &callbacks);
+          if (p.outcome.scene) {
+            auto scene = std::const_pointer_cast<LoadedScene>(p.outcome.scene);
+            scene->code = std::make_shared<IsolatedCode>(p.outcome.file, p.identity, payload,
+                                                         callbacks, scene->info, policy);
+          }
+        }
+      }
+      outcomes.push_back(std::move(p.outcome));
+    }
+  }
+  return outcomes;
+}
+
+}  // namespace fr

@@ -1,0 +1,81 @@
+// The scene-host side of scene_host_process.hpp: runs in fractalis-scene-host, never in the host.
+#include "plugin/descriptor_copy.hpp"
+#include "plugin/plugin_library.hpp"
+#include "plugin/scene_host_process.hpp"
+#include "plugin/wire_io.hpp"
+
+#include <unistd.h>
+
+namespace fr {
+namespace {
+
+std::string reply_bytes(const CallOutcome& out, const WireWriter& result) {
+  WireWriter w;
+  w.u32(out.ok ? 1 : 0);
+  w.str(out.error.substr(0, kMaxMessageBytes));
+  write_messages(w, out.messages);
+  return w.bytes() + result.bytes();
+}
+
+}  // namespace
+
+int run_scene_host(int socket_fd, int plugin_fd, const std::string& file) {
+  std::string error;
+  std::shared_ptr<PluginLibrary> library = PluginLibrary::open(plugin_fd, file, &error);
+  close(plugin_fd);
+  DescriptorCopy d;
+  if (!library) {
+    d.result = LoadResult::NotLoadable;
+    d.message = error;
+  } else {
+    d = copy_descriptor(
+        static_cast<const fr_scene_entry*>(library->symbol(FR_SCENE_ENTRY_SYMBOL)));
+  }
+  WireWriter loaded;
+  loaded.u32(static_cast<uint32_t>(d.result));
+  loaded.str(d.message.substr(0, kMaxMessageBytes));
+  if (d.result == LoadResult::Loaded) {
+    loaded.u32((d.create ? 1u : 0u) | (d.update ? 2u : 0u) | (d.destroy ? 4u : 0u));
+    write_scene_info(loaded, d.info);
+  }
+  if (!write_frame(socket_fd, WireKind::Loaded, loaded.bytes()) ||
+      d.result != LoadResult::Loaded)
+    return 0;
+
+  InProcessCode code(library, d.create, d.destroy, d.update);
+  for (;;) {
+    WireKind kind{};
+    std::string request;
+    if (read_frame(socket_fd, -1, &kind, &request) != ReadStatus::Ok) return 0;
+    WireReader r(request);
+    WireWriter result;
+    CallOutcome out;
+    switch (kind) {
+      case WireKind::Create: {
+        uint64_t instance = 0;
+        out = code.create(&instance);
+        result.u64(instance);
+        break;
+      }
+      case WireKind::Update: {
+        const uint64_t instance = r.u64();
+        SceneState state;
+        if (!read_scene_state(r, d.info.params.size(), d.info.lights.size(), &state)) return 2;
+        out = code.update(instance, state);
+        write_scene_state(result, state);
+        break;
+      }
+      case WireKind::Destroy:
+        code.destroy(r.u64());
+        out.ok = true;
+        break;
+      case WireKind::Quit:
+        return 0;
+      default:
+        return 2;
+    }
+    if (!write_frame(socket_fd, WireKind::Reply, reply_bytes(out, result))) return 0;
+  }
+}
+
+}  // namespace fr

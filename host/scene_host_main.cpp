@@ -1,0 +1,24 @@
+// fractalis-scene-host: runs one scene plugin's code on behalf of the fractalis host, which
+// starts it with the plugin open on descriptor 4 and a socket on descriptor 3 (see
+// plugin/scene_host_process.hpp). Not meant to be run by hand.
+#include "plugin/scene_host_process.hpp"
+#include "plugin/scene_wire.hpp"
+
+#include <cstdio>
+#include <cstring>
+#include <string>
+
+int main(int argc, char** argv) {
+  std::string wire, file;
+  for (int i = 1; i + 1 < argc; i += 2) {
+    if (std::strcmp(argv[i], "--wire") == 0) wire = argv[i + 1];
+    if (std::strcmp(argv[i], "--file") == 0) file = argv[i + 1];
+  }
+  if (wire.empty()) {
+    std::fprintf(stderr,
+                 "fractalis-scene-host runs scene plugins for fractalis; it is started by it.\n");
+    return 2;
+  }
+  if (wire != std::to_string(fr::kSceneWireVersion)) return 126;
+  return fr::run_scene_host(3, 4, file);
+}
