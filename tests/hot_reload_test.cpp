@@ -5,6 +5,7 @@
 // with the error kept; a removed one keeps running; and 50 reloads grow neither open files nor
 // threads, and leave one copy of the library mapped.
 #include "app/scene_library.hpp"
+#include "render/renderer.hpp"
 #include "test_support.hpp"
 
 #include <fstream>
@@ -63,7 +64,7 @@ size_t mapped_copies(const std::string& name_part) {
 TEST(HotReload, AddChangeBreakRemove) {
   const auto folder = test::fresh_dir("hot_reload");
   std::vector<std::string> messages;
-  SceneLibrary lib({folder}, test::runtime(), &messages);
+  SceneLibrary lib({folder}, PluginPolicy{}, test::runtime(), &messages);
   EXPECT_TRUE(lib.slots().empty());
   FrameClock clock;
   std::string m;
@@ -112,26 +113,124 @@ TEST(HotReload, AddChangeBreakRemove) {
   EXPECT_TRUE(lib.slots().empty());
 }
 
-TEST(HotReload, FiftyReloadsLeakNothing) {
+// Processes this process started and has not reaped, and how many of them are zombies.
+std::pair<size_t, size_t> children_and_zombies() {
+  size_t children = 0, zombies = 0;
+  for (const auto& task : std::filesystem::directory_iterator("/proc/self/task")) {
+    std::ifstream in(task.path() / "children");
+    std::string pid;
+    while (in >> pid) {
+      ++children;
+      std::ifstream stat("/proc/" + pid + "/stat");
+      std::string line;
+      std::getline(stat, line);
+      const size_t paren = line.rfind(')');
+      if (paren != std::string::npos && paren + 2 < line.size() && line[paren + 2] == 'Z')
+        ++zombies;
+    }
+  }
+  return {children, zombies};
+}
+
+size_t mapping_count() {
+  std::ifstream maps("/proc/self/maps");
+  std::string line;
+  size_t n = 0;
+  while (std::getline(maps, line)) ++n;
+  return n;
+}
+
+// 1000 hot reloads of a scene with an update callback, alternating two builds: no growth in
+// open files, threads, mappings or processes, no zombies, and the plugin never mapped here.
+TEST(HotReload, ThousandReloadsLeakNothing) {
   const auto folder = test::fresh_dir("hot_reload_soak");
   drop(reload_plugin("reload_a"), folder, "soak_probe.so");
   std::vector<std::string> messages;
-  SceneLibrary lib({folder}, test::runtime(), &messages);
+  SceneLibrary lib({folder}, PluginPolicy{}, test::runtime(), &messages);
   ASSERT_EQ(lib.slots().size(), 1u);
   FrameClock clock;
   std::string m;
-  // One reload first, so that the kernels of both versions are built and cached.
+  // One reload first, so that the kernels of both versions are built, cached and vetted.
   drop(reload_plugin("reload_b"), folder, "soak_probe.so");
-  ASSERT_GE(poll_until(lib, clock, "reloaded", &m), 0);
-  const size_t fds = count_entries("/proc/self/fd"), threads = count_entries("/proc/self/task");
-  for (int i = 0; i < 50; ++i) {
-    drop(reload_plugin(i % 2 ? "reload_b" : "reload_a"), folder, "soak_probe.so");
-    ASSERT_GE(poll_until(lib, clock, "reloaded", &m), 0) << "reload " << i;
+  ASSERT_GE(poll_until(lib, clock, "reloaded", &m), 0) << m;
+  drop(reload_plugin("reload_a"), folder, "soak_probe.so");
+  ASSERT_GE(poll_until(lib, clock, "reloaded", &m), 0) << m;
+  const size_t fds = count_entries("/proc/self/fd"), threads = count_entries("/proc/self/task"),
+               maps = mapping_count();
+  const auto [children, zombies] = children_and_zombies();
+  EXPECT_EQ(zombies, 0u);
+  for (int i = 0; i < 1000; ++i) {
+    drop(reload_plugin(i % 2 ? "reload_a" : "reload_b"), folder, "soak_probe.so");
+    ASSERT_GE(poll_until(lib, clock, "reloaded", &m), 0) << "reload " << i << ": " << m;
+    std::string error;
+    ASSERT_TRUE(lib.slots()[0].instance->update(lib.slots()[0].state, clock.now_s, &error))
+        << error;
   }
-  EXPECT_EQ(lib.slots()[0].scene->info.version, "2.0.0");
-  EXPECT_LE(count_entries("/proc/self/fd"), fds) << "open files grew over 50 reloads";
-  EXPECT_LE(count_entries("/proc/self/task"), threads) << "threads grew over 50 reloads";
-  EXPECT_EQ(mapped_copies("soak_probe.so"), 1u) << "old copies of the library are still mapped";
+  EXPECT_EQ(lib.slots()[0].scene->info.version, "1.0.0");
+  EXPECT_LE(count_entries("/proc/self/fd"), fds) << "open files grew over 1000 reloads";
+  EXPECT_LE(count_entries("/proc/self/task"), threads) << "threads grew over 1000 reloads";
+  EXPECT_LE(mapping_count(), maps + 4) << "mappings grew over 1000 reloads";
+  const auto [children_after, zombies_after] = children_and_zombies();
+  EXPECT_EQ(children_after, children) << "scene-host processes grew over 1000 reloads";
+  EXPECT_EQ(zombies_after, 0u);
+  EXPECT_EQ(mapped_copies("soak_probe.so"), 0u) << "plugin code was mapped into the host";
+  EXPECT_EQ(mapped_copies("fractalis-plugin"), 0u) << "plugin code was mapped into the host";
+}
+
+// Every hostile fixture dropped over a running scene: the old build keeps running, with the
+// reason kept, and it still updates and renders afterwards.
+TEST(HotReload, HostileBuildsNeverReplaceTheRunningScene) {
+  const auto folder = test::fresh_dir("hot_reload_hostile");
+  drop(reload_plugin("reload_a"), folder, "probe.so");
+  std::filesystem::copy_file(test::fixture_plugin("valid_scene"), folder / "other.so");
+  std::vector<std::string> messages;
+  PluginPolicy policy;
+  policy.load_timeout_s = 2;
+  policy.call_timeout_s = 0.5;
+  policy.vet_timeout_s = 8;
+  SceneLibrary lib({folder}, policy, test::runtime(), &messages);
+  ASSERT_EQ(lib.slots().size(), 2u);
+  FrameClock clock;
+  std::string m;
+  const std::pair<const char*, const char*> cases[] = {
+      {"ctor_abort", "crashed (SIGABRT"},
+      {"ctor_loop", "did not answer within 2 s"},
+      {"create_crash", "crashed (SIG"},
+      {"create_hang", "did not answer within 0.5 s"},
+      {"create_throw", "create threw a C++ exception"},
+      {"update_crash", "crashed (SIG"},
+      {"update_throw", "update threw a C++ exception"},
+      {"update_exit", "exited with status 0"},
+      {"update_bad_camera", "update left an invalid camera"},
+      {"absurd_counts", "param_count 2000000000 is more than 256"},
+      {"escape_name", "control character 0x1b"},
+      {"missing_dep", "libfixture_missing_dep_lib.so"},
+      {"de_loop", "did not finish within 8 s (plugins.vet_timeout_s)"},
+  };
+  for (const auto& [fixture, reason] : cases) {
+    SCOPED_TRACE(fixture);
+    drop(std::filesystem::path(HOSTILE_PLUGIN_DIR) / ("hostile_" + std::string(fixture) + ".so"),
+         folder, "probe.so");
+    ASSERT_GE(poll_until(lib, clock, "kept the running 'reload_probe'", &m, 30), 0);
+    EXPECT_NE(m.find(reason), std::string::npos) << m;
+    const int index = lib.find("reload_probe");
+    ASSERT_GE(index, 0);
+    EXPECT_EQ(lib.slots()[index].scene->info.version, "1.0.0");
+    std::string error;
+    EXPECT_TRUE(lib.slots()[index].instance->update(lib.slots()[index].state, 0, &error)) << error;
+  }
+  // A file that suddenly declares another file's scene id is refused, and both keep running.
+  drop(reload_plugin("reload_a"), folder, "other.so");
+  ASSERT_GE(poll_until(lib, clock, "kept the running 'fixture_valid'", &m), 0);
+  EXPECT_NE(m.find("declares scene id 'reload_probe', which probe.so provides"), std::string::npos)
+      << m;
+  ASSERT_EQ(lib.slots().size(), 2u);
+  EXPECT_EQ(lib.slots()[lib.find("reload_probe")].scene->file, folder / "probe.so");
+  Renderer renderer(test::runtime());
+  RenderSettings settings;
+  settings.width_px = settings.height_px = 8;
+  const SceneSlot& slot = lib.slots()[lib.find("reload_probe")];
+  EXPECT_EQ(renderer.render(slot.scene->info, slot.state, settings).rgba8.size(), 8u * 8u * 4u);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include "render/renderer.hpp"
 #include "test_support.hpp"
 
+#include <cstring>
 #include <fstream>
 #include <map>
 
@@ -23,7 +24,7 @@ void expect_failure(const std::string& fixture, LoadResult result,
   EXPECT_EQ(o.file, fixture_plugin(fixture));
 }
 
-// Address ranges /proc/self/maps shows for files whose name contains `name_part`.
+// Readable address ranges /proc/self/maps shows for files whose name contains `name_part`.
 std::vector<std::pair<uintptr_t, uintptr_t>> mapped_ranges(const std::string& name_part) {
   std::vector<std::pair<uintptr_t, uintptr_t>> ranges;
   std::ifstream maps("/proc/self/maps");
@@ -31,26 +32,33 @@ std::vector<std::pair<uintptr_t, uintptr_t>> mapped_ranges(const std::string& na
   while (std::getline(maps, line)) {
     if (line.find(name_part) == std::string::npos) continue;
     const size_t dash = line.find('-'), space = line.find(' ');
+    if (line[space + 1] != 'r') continue;
     ranges.emplace_back(std::stoull(line.substr(0, dash), nullptr, 16),
                         std::stoull(line.substr(dash + 1, space - dash - 1), nullptr, 16));
   }
   return ranges;
 }
 
-// The descriptor's strings are copied into host memory: no string of the SceneInfo lies inside
-// the plugin's mapped image (where the plugin's own string literals are), and the copied values
-// survive the library being unmapped. The entry symbol's address is checked to lie inside, so the
-// range test itself is shown to be able to fail.
+PluginPolicy in_process() {
+  PluginPolicy p;
+  p.isolation = PluginIsolation::None;
+  return p;
+}
+
+// In-process mode (plugins.isolation = "none"), where the plugin is mapped into this process:
+// the descriptor's strings are copied into host memory. No string of the SceneInfo lies inside
+// the plugin's mapped image (its private copy, a memfd named fractalis-plugin), and the copied
+// values survive the library being unmapped. The plugin's own literal of its id is found inside
+// that image, so the range test itself is shown to be able to fail.
 TEST(PluginLoader, ValidFixtureLoadsAndCopiesStrings) {
-  const auto dir = test::fresh_dir("strings_copied");
-  std::filesystem::copy_file(fixture_plugin("valid_scene"), dir / "strings_probe.so");
-  auto scene = test::load_or_fail(dir / "strings_probe.so");
-  ASSERT_TRUE(scene);
+  const LoadOutcome o = load_scene_plugin(fixture_plugin("valid_scene"), in_process());
+  ASSERT_EQ(o.result, LoadResult::Loaded) << o.message;
+  auto scene = o.scene;
   EXPECT_EQ(scene->info.id, "fixture_valid");
   EXPECT_EQ(scene->info.de_source_name, "fixture.cl");
   EXPECT_EQ(scene->info.bounding_radius, 2.0);
 
-  const auto ranges = mapped_ranges("strings_probe.so");
+  const auto ranges = mapped_ranges("fractalis-plugin");
   ASSERT_FALSE(ranges.empty());
   auto in_library = [&](const void* p) {
     const auto a = reinterpret_cast<uintptr_t>(p);
@@ -58,7 +66,11 @@ TEST(PluginLoader, ValidFixtureLoadsAndCopiesStrings) {
       if (a >= lo && a < hi) return true;
     return false;
   };
-  EXPECT_TRUE(in_library(scene->library->symbol("fractalis_scene_entry")));
+  bool literal_inside = false;
+  for (const auto& [lo, hi] : ranges)
+    literal_inside |= memmem(reinterpret_cast<const void*>(lo), hi - lo, "fixture_valid", 14) !=
+                      nullptr;
+  EXPECT_TRUE(literal_inside);
   const SceneInfo& info = scene->info;
   std::vector<const std::string*> strings = {
       &info.id,      &info.name,        &info.version,   &info.author,
@@ -71,7 +83,7 @@ TEST(PluginLoader, ValidFixtureLoadsAndCopiesStrings) {
   const SceneInfo kept = scene->info;
   const std::string de_source = kept.de_source;
   scene.reset();
-  EXPECT_TRUE(mapped_ranges("strings_probe.so").empty()) << "still mapped";
+  EXPECT_TRUE(mapped_ranges("fractalis-plugin").empty()) << "still mapped";
   EXPECT_EQ(kept.id, "fixture_valid");
   EXPECT_EQ(kept.de_source, de_source);
   EXPECT_NE(kept.de_source.find("scene_de"), std::string::npos);
@@ -183,22 +195,18 @@ TEST(PluginLoader, UpdateErrorCarriesPluginsReason) {
   EXPECT_EQ(error, "scene 'fixture_update_error': update failed: fixture refuses to update");
 }
 
-// The library is loaded from a private copy: the original can go away, and after the last
-// reference is dropped the copy is no longer mapped.
+// In-process mode loads from a private in-memory copy: the original can go away, nothing of
+// the file's name is mapped, and after the last reference is dropped the copy is unmapped.
 TEST(PluginLoader, PrivateCopyAndUnmap) {
   const auto dir = test::fresh_dir("private_copy");
   std::filesystem::copy_file(fixture_plugin("valid_scene"), dir / "private_probe.so");
-  auto scene = test::load_or_fail(dir / "private_probe.so");
-  ASSERT_TRUE(scene);
+  const LoadOutcome o = load_scene_plugin(dir / "private_probe.so", in_process());
+  auto scene = o.scene;
+  ASSERT_TRUE(scene) << o.message;
   std::filesystem::remove(dir / "private_probe.so");
   EXPECT_EQ(scene->info.id, "fixture_valid");
-  auto mapped = [] {
-    std::ifstream maps("/proc/self/maps");
-    std::string line;
-    while (std::getline(maps, line))
-      if (line.find("private_probe.so") != std::string::npos) return true;
-    return false;
-  };
+  EXPECT_TRUE(mapped_ranges("private_probe.so").empty()) << "the user's file itself is mapped";
+  auto mapped = [] { return !mapped_ranges("fractalis-plugin").empty(); };
   EXPECT_TRUE(mapped());
   scene.reset();
   EXPECT_FALSE(mapped()) << "the library is still mapped after its last reference went";

@@ -102,7 +102,9 @@ bool Explorer::update(const InputState& input, double dt_s, double now_s) {
           .moved)
     changed_ = true;
   std::string error;
-  if (!slot.instance->update(slot.state, now_s, &error)) {
+  // A failed update keeps the scene's last good state on screen (the camera still flies); it is
+  // said once, not every frame, and the scene stays failed until it is reloaded.
+  if (!slot.instance->update(slot.state, now_s, &error) && slot.error != error) {
     slot.error = error;
     add_message(error);
   }

@@ -1,6 +1,8 @@
 #include "app/scene_library.hpp"
 
+#include "app/scene_vetting.hpp"
 #include "plugin/plugin_loader.hpp"
+#include "plugin/plugin_text.hpp"
 #include "render/kernel_assembly.hpp"
 
 namespace fr {
@@ -41,18 +43,26 @@ int SceneLibrary::find(const std::string& id) const {
 std::string SceneLibrary::add_or_replace(const std::filesystem::path& file,
                                          const RenderSettings& settings) {
   LoadOutcome o = load_scene_plugin(file, policy_);
-  int index = -1;
-  for (size_t i = 0; i < slots_.size(); ++i)
-    if (slots_[i].scene->file == file || (o.scene && slots_[i].scene->info.id == o.scene->info.id))
-      index = static_cast<int>(i);
+  // The slot this file fills: its own, else (a new file) a removed scene's with the same id.
+  int by_file = -1, by_id = -1;
+  for (size_t i = 0; i < slots_.size(); ++i) {
+    if (slots_[i].scene->file == file) by_file = static_cast<int>(i);
+    if (o.scene && slots_[i].scene->info.id == o.scene->info.id) by_id = static_cast<int>(i);
+  }
+  const int index = by_file >= 0 ? by_file : by_id;
   auto keep_old = [&](const std::string& why) {
     if (index >= 0) {
       slots_[index].error = why;
       return "kept the running '" + slots_[index].scene->info.id + "': " + why;
     }
-    return "skipped " + file.string() + ": " + why;
+    return "skipped " + printable(file.string()) + ": " + why;
   };
   if (!o.scene) return keep_old(o.message);
+  // A file may not take over a scene another file provides.
+  if (by_id >= 0 && by_id != by_file && !slots_[by_id].removed)
+    return keep_old("refused " + printable(file.filename().string()) + ": it declares scene id '" +
+                    o.scene->info.id + "', which " +
+                    printable(slots_[by_id].scene->file.filename().string()) + " provides");
 
   SceneSlot fresh;
   std::string error;
@@ -73,13 +83,22 @@ std::string SceneLibrary::add_or_replace(const std::filesystem::path& file,
   } catch (const std::exception& e) {
     return keep_old(e.what());
   }
+  // A DE that never returns would hang the explorer's first frame: a test render in a child
+  // process with a time limit first (once per file content and kernel shape).
+  const uint64_t hash = VettedScenes::content_hash(file);
+  if (!vetted_.contains(hash, settings)) {
+    const VetResult vet =
+        vet_scene(file, settings, runtime_.device().name, policy_.vet_timeout_s);
+    if (!vet.ok) return keep_old(vet.error);
+    vetted_.insert(hash, settings);
+  }
   const std::string id = o.scene->info.id;
   if (index >= 0) {
     slots_[index] = std::move(fresh);
-    return "reloaded '" + id + "' from " + file.filename().string();
+    return "reloaded '" + id + "' from " + printable(file.filename().string());
   }
   slots_.push_back(std::move(fresh));
-  return "added '" + id + "' from " + file.filename().string();
+  return "added '" + id + "' from " + printable(file.filename().string());
 }
 
 std::vector<std::string> SceneLibrary::poll(double now_s, const RenderSettings& settings) {

@@ -1,12 +1,15 @@
 // scene_library.hpp — the scenes of a running explorer, kept in step with the plugin folders.
 //
-// New plugins are added; a changed plugin is loaded, its kernel built and its instance created
-// beside the old one, and only when all of that worked does it replace the old one (parameter
-// values carried over by key); otherwise the old one keeps running and the error is kept for the
-// overlay. A removed plugin keeps running until the user switches away from it.
+// New plugins are added; a changed plugin is loaded (in a scene-host process), its instance
+// created and updated, its kernel built and a test render of it run in a child process
+// (scene_vetting.hpp) beside the old one, and only when all of that worked does it replace the
+// old one (parameter values carried over by key); otherwise the old one keeps running and the
+// error is kept for the overlay. A file that declares the id of a scene another file provides is
+// refused. A removed plugin keeps running until the user switches away from it.
 #pragma once
 
 #include "app/scene_slot.hpp"
+#include "app/scene_vetting.hpp"
 #include "plugin/plugin_policy.hpp"
 #include "plugin/plugin_watcher.hpp"
 #include "render/cl_runtime.hpp"
@@ -38,6 +41,7 @@ class SceneLibrary {
   std::string add_or_replace(const std::filesystem::path& file, const RenderSettings& settings);
 
   PluginPolicy policy_;
+  VettedScenes vetted_;
   ClRuntime& runtime_;
   std::vector<SceneSlot> slots_;
   std::vector<std::unique_ptr<PluginWatcher>> watchers_;

@@ -49,6 +49,7 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
     if (command == "sweep") return command_sweep(rest, out, err);
     if (command == "list") return command_list(rest, out, err);
     if (command == "devices") return command_devices(rest, out, err);
+    if (command == "vet-scene") return command_vet_scene(rest, out, err);
     throw UsageError("unknown command '" + command +
                      "' (expected explore, render, bench, list or devices)");
   } catch (const UsageError& e) {

@@ -2,6 +2,7 @@
 #include "bench/explore_bench.hpp"
 #include "cli/commands.hpp"
 #include "cli/scene_setup.hpp"
+#include "cli/watchdog.hpp"
 #include "io/atomic_file.hpp"
 #include "render/kernel_assembly.hpp"
 #include "render/renderer.hpp"
@@ -86,9 +87,11 @@ int command_bench(const std::vector<std::string>& args, std::ostream& out, std::
   ClRuntime runtime(p.device);
   Renderer renderer(runtime);
   std::string error;
+  Watchdog watchdog(p.render.watchdog_s, "a frame of scene '" + p.scene->info.id + "'");
   auto frame = [&](double time_s) {
     if (!p.instance->update(p.state, time_s, &error)) throw std::runtime_error(error);
     renderer.render(p.scene->info, p.state, p.render);
+    watchdog.kick();
   };
   using clock = std::chrono::steady_clock;
   const auto origin = clock::now();

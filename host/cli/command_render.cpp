@@ -1,5 +1,6 @@
 #include "cli/commands.hpp"
 #include "cli/scene_setup.hpp"
+#include "cli/watchdog.hpp"
 #include "image/png_write.hpp"
 #include "render/camera.hpp"
 #include "render/precision.hpp"
@@ -83,12 +84,16 @@ int command_render(const std::vector<std::string>& args, std::ostream& out, std:
   auto ms_since = [](clock::time_point t) {
     return std::chrono::duration<double, std::milli>(clock::now() - t).count();
   };
+  // Preparing runs the DE too (choosing the precision probes it), so both are watched.
+  Watchdog watchdog(p.render.watchdog_s, "rendering scene '" + p.scene->info.id + "'");
   const auto build_start = clock::now();
   renderer.prepare(p.scene->info, p.state, p.render);
   const double build_ms = ms_since(build_start);
+  watchdog.kick();
   const auto render_start = clock::now();
   FrameImage image = renderer.render(p.scene->info, p.state, p.render, true);
   const double render_ms = ms_since(render_start);
+  watchdog.stop();
   if (!write_png_atomic(out_file, image.width_px, image.height_px, image.rgba8, &error)) {
     err << "fractalis: error: " << error << "\n";
     return 1;

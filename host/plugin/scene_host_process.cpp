@@ -138,7 +138,7 @@ class IsolatedCode final : public SceneCode {
     close(fd);
     if (!process_) return false;
     std::string loaded;
-    if (!process_->receive_loaded(policy_.load_timeout_s, &loaded, error)) {
+    if (!process_->receive_loaded(policy_.load_timeout_s, policy_.load_timeout_s, &loaded, error)) {
       process_.reset();
       *error = "while loading " + printable(file_.string()) + ", its scene host " + *error;
       return false;
@@ -314,8 +314,8 @@ std::string SceneHostProcess::stop(bool kill_now) {
   return r == pid_ ? describe_exit(status) : "";
 }
 
-bool SceneHostProcess::receive(double timeout_s, WireKind expected, std::string* payload,
-                               std::string* error) {
+bool SceneHostProcess::receive(double timeout_s, double limit_s, WireKind expected,
+                               std::string* payload, std::string* error) {
   if (gone_) {
     *error = failure_;
     return false;
@@ -325,7 +325,7 @@ bool SceneHostProcess::receive(double timeout_s, WireKind expected, std::string*
   if (s == ReadStatus::Ok && kind == expected) return true;
   if (s == ReadStatus::TimedOut) {
     stop(true);
-    failure_ = "did not answer within " + seconds(timeout_s) + "; it was stopped";
+    failure_ = "did not answer within " + seconds(limit_s) + "; it was stopped";
   } else if (s == ReadStatus::Closed) {
     const std::string how = stop(false);
     failure_ = how.empty() ? "closed its connection" : how;
@@ -337,8 +337,9 @@ bool SceneHostProcess::receive(double timeout_s, WireKind expected, std::string*
   return false;
 }
 
-bool SceneHostProcess::receive_loaded(double timeout_s, std::string* payload, std::string* error) {
-  return receive(timeout_s, WireKind::Loaded, payload, error);
+bool SceneHostProcess::receive_loaded(double timeout_s, double limit_s, std::string* payload,
+                                      std::string* error) {
+  return receive(timeout_s, limit_s, WireKind::Loaded, payload, error);
 }
 
 bool SceneHostProcess::call(WireKind kind, const std::string& request, double timeout_s,
@@ -347,7 +348,7 @@ bool SceneHostProcess::call(WireKind kind, const std::string& request, double ti
     const std::string how = stop(false);
     failure_ = how.empty() ? "closed its connection" : how;
   }
-  if (receive(timeout_s, WireKind::Reply, reply, error)) return true;
+  if (receive(timeout_s, timeout_s, WireKind::Reply, reply, error)) return true;
   const char* what = kind == WireKind::Create ? "create" : kind == WireKind::Update ? "update"
                                                                                     : "destroy";
   *error = std::string("its scene host ") + *error + " during " + what;
@@ -390,8 +391,8 @@ std::vector<LoadOutcome> load_isolated(const std::vector<std::filesystem::path>&
         const double waited_s =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - p.started).count();
         std::string payload, error;
-        if (!p.process->receive_loaded(std::max(0.0, policy.load_timeout_s - waited_s), &payload,
-                                       &error)) {
+        if (!p.process->receive_loaded(std::max(0.0, policy.load_timeout_s - waited_s),
+                                       policy.load_timeout_s, &payload, &error)) {
           p.outcome.result = LoadResult::Crashed;
           p.outcome.message = "while loading, its scene host " + error;
         } else {

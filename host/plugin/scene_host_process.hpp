@@ -44,15 +44,17 @@ class SceneHostProcess {
   // 2 s"); every later call fails the same way.
   bool call(WireKind kind, const std::string& request, double timeout_s, std::string* reply,
             std::string* error);
-  // Waits at most `timeout_s` for the first message, the load outcome.
-  bool receive_loaded(double timeout_s, std::string* payload, std::string* error);
+  // Waits at most `timeout_s` for the first message, the load outcome; `limit_s` is the limit
+  // the message names (the time the process has had in all).
+  bool receive_loaded(double timeout_s, double limit_s, std::string* payload, std::string* error);
 
   pid_t pid() const { return pid_; }
   bool alive() const { return !gone_; }
 
  private:
   SceneHostProcess(pid_t pid, int socket_fd) : pid_(pid), socket_(socket_fd) {}
-  bool receive(double timeout_s, WireKind expected, std::string* payload, std::string* error);
+  bool receive(double timeout_s, double limit_s, WireKind expected, std::string* payload,
+               std::string* error);
   std::string stop(bool kill_now);  // ends and reaps the process; returns how it ended
 
   pid_t pid_;

@@ -88,7 +88,7 @@ void write_messages(WireWriter& w, const std::vector<PluginMessage>& messages);
 bool read_messages(WireReader& r, std::vector<PluginMessage>* messages);
 
 // The most messages one call may log, and the longest message, kept; the rest are dropped.
-constexpr size_t kMaxMessagesPerCall = 64;
-constexpr size_t kMaxMessageBytes = 4096;
+constexpr size_t kMaxMessagesPerCall = 16;
+constexpr size_t kMaxMessageBytes = 1024;
 
 }  // namespace fr

@@ -30,8 +30,8 @@ ReadStatus read_exactly(int fd, char* out, size_t n, Clock::time_point deadline,
     if (!forever) {
       const double left_ms =
           std::chrono::duration<double, std::milli>(deadline - Clock::now()).count();
-      if (left_ms <= 0) return ReadStatus::TimedOut;
-      wait_ms = static_cast<int>(std::ceil(left_ms));
+      // Past the deadline there is still one look: an answer may already be waiting.
+      wait_ms = left_ms <= 0 ? 0 : static_cast<int>(std::ceil(left_ms));
     }
     pollfd p{fd, POLLIN, 0};
     const int ready = poll(&p, 1, wait_ms);

@@ -38,6 +38,9 @@ struct RenderSettings {
   FogMethod fog_method = FogMethod::Exponential;
 
   int max_steps = 160;
+  // `render` and `bench` end with an error when one image takes longer than this (a DE
+  // that never returns hangs the device); 0: no limit. Seconds.
+  double watchdog_s = 600;
   int refine_steps = 0;  // plain DE steps after a hit, towards the surface (0 to 8)
   // 32, not 64: the sweep found 64 dominated (same image error to 0.6%, 4-7% slower) on every
   // scene with shadows.

@@ -96,6 +96,10 @@ const std::vector<Key>& known_keys() {
        [](const toml::node& n, Settings& s) {
          return set_double(n, s.plugins.call_timeout_s, 0, 3600, true);
        }},
+      {"plugins.vet_timeout_s",
+       [](const toml::node& n, Settings& s) {
+         return set_double(n, s.plugins.vet_timeout_s, 0, 3600, true);
+       }},
       {"plugins.allow_writable",
        [](const toml::node& n, Settings& s) {
          if (!n.is_boolean()) return std::string("expected true or false");
@@ -147,6 +151,10 @@ const std::vector<Key>& known_keys() {
       {"render.shadow_max_steps",
        [](const toml::node& n, Settings& s) {
          return set_int(n, s.render.shadow_max_steps, 1, 10000);
+       }},
+      {"render.watchdog_s",
+       [](const toml::node& n, Settings& s) {
+         return set_double(n, s.render.watchdog_s, 0, 1e6);
        }},
       {"render.refine_steps",
        [](const toml::node& n, Settings& s) { return set_int(n, s.render.refine_steps, 0, 8); }},
@@ -379,6 +387,7 @@ std::string format_settings_toml(const Settings& s) {
       << (s.plugins.isolation == PluginIsolation::None ? "\"none\"" : "\"process\"")
       << "\nload_timeout_s = " << s.plugins.load_timeout_s
       << "\ncall_timeout_s = " << s.plugins.call_timeout_s
+      << "\nvet_timeout_s = " << s.plugins.vet_timeout_s
       << "\nallow_writable = " << (s.plugins.allow_writable ? "true" : "false");
   out << "\n\n[device]\nselect = " << toml::value<std::string>(s.device) << "\n\n";
   const RenderSettings& r = s.render;
@@ -389,7 +398,7 @@ std::string format_settings_toml(const Settings& s) {
       << "\nexposure = " << r.exposure << "\nao_strength = " << r.ao_strength
       << "\nao_reference_steps = " << r.ao_reference_steps << "\nrelaxation = " << r.relaxation
       << "\nfast_math = " << (r.fast_math ? "true" : "false")
-      << "\nrefine_steps = " << r.refine_steps << "\nshadow_max_steps = " << r.shadow_max_steps
+      << "\nwatchdog_s = " << r.watchdog_s << "\nrefine_steps = " << r.refine_steps << "\nshadow_max_steps = " << r.shadow_max_steps
       << "\nroughness = " << r.roughness << "\nreflectivity = " << r.reflectivity
       << "\naperture = " << r.aperture_radius << "\nfocus_distance = " << r.focus_distance
       << "\nshading_model = "

@@ -1,0 +1,150 @@
+#include "app/scene_vetting.hpp"
+
+#include "plugin/plugin_files.hpp"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <sstream>
+#include <vector>
+
+namespace fr {
+
+std::filesystem::path fractalis_executable() {
+  std::error_code ec;
+  const auto self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (!ec && self.filename() == "fractalis") return self;
+  return FRACTALIS_EXECUTABLE_BUILD_PATH;
+}
+
+VetResult vet_scene(const std::filesystem::path& file, const RenderSettings& settings,
+                    const std::string& device, double timeout_s) {
+  VetResult result;
+  const std::string exe = fractalis_executable().string();
+  std::vector<std::string> args = {exe,
+                                   "vet-scene",
+                                   "--file",
+                                   file.string(),
+                                   "--size",
+                                   "8x8",
+                                   "--lanes",
+                                   std::to_string(settings.lanes),
+                                   "--precision",
+                                   precision_name(settings.precision)};
+  if (!device.empty()) args.insert(args.end(), {"--device", device});
+  if (settings.lanes == 0) args.erase(args.begin() + 6, args.begin() + 8);
+  std::vector<const char*> argv;
+  for (const auto& a : args) argv.push_back(a.c_str());
+  argv.push_back(nullptr);
+
+  int pipe_fds[2];
+  if (pipe2(pipe_fds, O_CLOEXEC) != 0) {
+    result.error = std::string("cannot start the test render: ") + std::strerror(errno);
+    return result;
+  }
+  const pid_t parent = getpid();
+  const pid_t pid = fork();
+  if (pid < 0) {
+    close(pipe_fds[0]);
+    close(pipe_fds[1]);
+    result.error = std::string("cannot start the test render: ") + std::strerror(errno);
+    return result;
+  }
+  if (pid == 0) {  // async-signal-safe calls only, until exec
+    const int null_fd = open("/dev/null", O_RDWR);
+    if (null_fd >= 0) {
+      dup2(null_fd, 0);
+      dup2(null_fd, 1);
+    }
+    dup2(pipe_fds[1], 2);
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (getppid() != parent) _exit(127);
+    execv(argv[0], const_cast<char* const*>(argv.data()));
+    _exit(127);
+  }
+  close(pipe_fds[1]);
+  // Collect what it says (bounded) until it closes stderr or the time is up.
+  std::string said;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration_cast<
+                                                               std::chrono::steady_clock::duration>(
+                                                               std::chrono::duration<double>(timeout_s));
+  bool timed_out = false;
+  for (;;) {
+    const double left_ms = std::chrono::duration<double, std::milli>(
+                               deadline - std::chrono::steady_clock::now())
+                               .count();
+    if (left_ms <= 0) {
+      timed_out = true;
+      break;
+    }
+    pollfd p{pipe_fds[0], POLLIN, 0};
+    const int ready = poll(&p, 1, static_cast<int>(std::ceil(left_ms)));
+    if (ready < 0 && errno == EINTR) continue;
+    if (ready <= 0) continue;
+    char buffer[1024];
+    const ssize_t n = read(pipe_fds[0], buffer, sizeof buffer);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    if (said.size() < 4096) said.append(buffer, static_cast<size_t>(n));
+  }
+  close(pipe_fds[0]);
+  if (timed_out) kill(pid, SIGKILL);
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (timed_out) {
+    std::ostringstream why;
+    why << "a test render at 8x8 did not finish within " << timeout_s
+        << " s (plugins.vet_timeout_s): its DE may never return";
+    result.error = why.str();
+    return result;
+  }
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) {
+    result.ok = true;
+    return result;
+  }
+  // The child's last line is its error ("fractalis: error: ...").
+  while (!said.empty() && said.back() == '\n') said.pop_back();
+  const size_t line = said.rfind('\n');
+  std::string last = line == std::string::npos ? said : said.substr(line + 1);
+  if (last.rfind("fractalis: error: ", 0) == 0) last = last.substr(18);
+  if (WIFSIGNALED(status))
+    result.error = "the test render crashed (" + std::string(strsignal(WTERMSIG(status))) + ")";
+  else
+    result.error = "the test render failed: " + (last.empty() ? "no reason given" : last);
+  return result;
+}
+
+uint64_t VettedScenes::content_hash(const std::filesystem::path& file) {
+  std::string error;
+  const int fd = open_plugin_file(file, true, &error);  // never blocks, regular files only
+  if (fd < 0) return 0;
+  uint64_t h = 1469598103934665603ull;  // FNV-1a
+  char buffer[1 << 16];
+  ssize_t n;
+  while ((n = read(fd, buffer, sizeof buffer)) > 0)
+    for (ssize_t i = 0; i < n; ++i) {
+      h ^= static_cast<uint8_t>(buffer[i]);
+      h *= 1099511628211ull;
+    }
+  close(fd);
+  return n < 0 ? 0 : h;
+}
+
+bool VettedScenes::contains(uint64_t hash, const RenderSettings& s) const {
+  return hash != 0 && vetted_.count({hash, s.lanes, static_cast<int>(s.precision)}) > 0;
+}
+
+void VettedScenes::insert(uint64_t hash, const RenderSettings& s) {
+  if (hash != 0) vetted_.insert({hash, s.lanes, static_cast<int>(s.precision)});
+}
+
+}  // namespace fr

@@ -1,0 +1,47 @@
+// scene_vetting.hpp — a tiny test render of a new or rebuilt scene, in a child process.
+//
+// A DE that never returns hangs the OpenCL device, and nothing can cancel a running kernel. The
+// explorer must not find that out by freezing, so before a scene that arrived by hot reload
+// replaces anything, `fractalis vet-scene` renders it at 8x8 in a child process with a time
+// limit (plugins.vet_timeout_s). The child's kernel build also warms the OpenCL compiler's cache
+// for the explorer's own build of the same kernel.
+#pragma once
+
+#include "render/render_settings.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <set>
+#include <string>
+#include <tuple>
+
+namespace fr {
+
+struct VetResult {
+  bool ok = false;
+  std::string error;  // why not: the child's error, "crashed (SIGSEGV)", or the time limit
+};
+
+// Renders `file`'s scene at 8x8 with `settings`' lanes and precision on the device `device`
+// (a selector as for --device; "" for the default) in a `fractalis vet-scene` process.
+VetResult vet_scene(const std::filesystem::path& file, const RenderSettings& settings,
+                    const std::string& device, double timeout_s);
+
+// Scenes already vetted in this session, by the content of their file and the kernel shape: a
+// file that comes back with the same bytes (an undo, a rebuild that changed nothing) is not
+// vetted again.
+class VettedScenes {
+ public:
+  // The key of `file` as it is now; 0 when it cannot be read.
+  static uint64_t content_hash(const std::filesystem::path& file);
+  bool contains(uint64_t hash, const RenderSettings& s) const;
+  void insert(uint64_t hash, const RenderSettings& s);
+
+ private:
+  std::set<std::tuple<uint64_t, int, int>> vetted_;
+};
+
+// The fractalis executable: this process when it is fractalis, else the build tree's.
+std::filesystem::path fractalis_executable();
+
+}  // namespace fr

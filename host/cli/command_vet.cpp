@@ -1,0 +1,45 @@
+// `fractalis vet-scene --file FILE`: the explorer's test render of a new or rebuilt scene, run
+// in a child process so that a DE that never returns hangs only this process, which the explorer
+// then kills (app/scene_vetting.hpp). Loads the one file, creates, updates at time 0, renders.
+#include "cli/commands.hpp"
+#include "cli/scene_setup.hpp"
+#include "plugin/plugin_text.hpp"
+#include "render/renderer.hpp"
+
+#include <ostream>
+
+namespace fr {
+
+int command_vet_scene(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  auto specs = scene_option_specs();
+  specs.push_back({"file", "PLUGIN.so", false, "the scene plugin to test"});
+  specs.push_back({"help", nullptr, false, "show this help"});
+  auto options = parse_options("vet-scene", args, specs);
+  const auto file = options.get("file");
+  if (options.has("help") || !file) {
+    (file ? out : err) << "usage: fractalis vet-scene --file PLUGIN.so [--size WxH] [--lanes N] "
+                          "[--precision P]\n\nRenders one tiny frame of a scene plugin; the "
+                          "explorer runs it before a scene that arrived by hot reload is used.\n";
+    return file ? 0 : 2;
+  }
+  const Settings settings = load_settings(options);
+  const LoadOutcome o = load_scene_plugin(*file, settings.plugins);
+  if (!o.scene) {
+    err << "fractalis: error: " << printable(*file) << ": " << o.message << "\n";
+    return 1;
+  }
+  std::string error;
+  auto instance = SceneInstance::create(o.scene, &error);
+  SceneState state = make_default_state(o.scene->info);
+  if (!instance || !instance->update(state, 0, &error)) {
+    err << "fractalis: error: " << error << "\n";
+    return 1;
+  }
+  ClRuntime runtime(choose_device(settings, options));
+  Renderer renderer(runtime);
+  RenderSettings render = render_settings_from(settings, options);
+  renderer.render(o.scene->info, state, render);
+  return 0;
+}
+
+}  // namespace fr

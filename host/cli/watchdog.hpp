@@ -1,0 +1,43 @@
+// watchdog.hpp — ending a command that hangs, with a clear error instead of silence.
+//
+// A scene's DE runs on the OpenCL device, and a DE that never returns makes the kernel never
+// finish; no OpenCL call can cancel it. So `render` and `bench` run their rendering
+// under a watchdog (`sweep` is interrupted with Ctrl-C instead: its reference renders may
+// legitimately take long): when the guarded work has not finished after render.watchdog_s, it prints
+// what hung and ends the process (exit status 3). Nothing is half-written: output files are
+// written only after rendering, atomically.
+#pragma once
+
+#include <chrono>
+#include <condition_variable>
+#include <mutex>
+#include <string>
+#include <thread>
+
+namespace fr {
+
+constexpr int kWatchdogExitStatus = 3;
+
+class Watchdog {
+ public:
+  // Starts guarding; `limit_s` <= 0 guards nothing. `what` completes "... did not finish
+  // within N s" ("rendering scene 'menger' at 1920x1080").
+  Watchdog(double limit_s, std::string what);
+  ~Watchdog();  // the guarded work finished
+  // One image finished: the limit starts again for the next one.
+  void kick();
+  // The guarded work finished (as the destructor, earlier).
+  void stop();
+  Watchdog(const Watchdog&) = delete;
+  Watchdog& operator=(const Watchdog&) = delete;
+
+ private:
+  std::mutex mutex_;
+  std::condition_variable done_cv_;
+  bool done_ = false;
+  std::chrono::steady_clock::time_point deadline_;
+  std::chrono::steady_clock::duration limit_{};
+  std::thread thread_;
+};
+
+}  // namespace fr

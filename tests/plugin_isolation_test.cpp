@@ -1,0 +1,383 @@
+// Hostile plugins against the host: one fixture per failure mode (fixtures/plugins/README.md has
+// the table). For each, the host survives (this process goes on), the outcome names the file and
+// the reason, and a good scene beside them still loads, updates and renders.
+#include "plugin/plugin_files.hpp"
+#include "plugin/plugin_loader.hpp"
+#include "plugin/plugin_text.hpp"
+#include "plugin/scene_instance.hpp"
+#include "render/renderer.hpp"
+#include "test_support.hpp"
+
+#include <elf.h>
+#include <sys/socket.h>
+#include <sys/stat.h>
+#include <sys/un.h>
+#include <unistd.h>
+
+#include <cstring>
+#include <fstream>
+#include <map>
+
+namespace fr {
+namespace {
+
+std::filesystem::path hostile(const std::string& name) {
+  return std::filesystem::path(HOSTILE_PLUGIN_DIR) / ("hostile_" + name + ".so");
+}
+
+// Short limits, so that the hanging fixtures cost little.
+PluginPolicy quick_policy() {
+  PluginPolicy p;
+  p.load_timeout_s = 2;
+  p.call_timeout_s = 0.5;
+  return p;
+}
+
+// Processes this process has started and not yet reaped (zombies included).
+size_t child_processes() {
+  size_t n = 0;
+  for (const auto& task : std::filesystem::directory_iterator("/proc/self/task")) {
+    std::ifstream in(task.path() / "children");
+    std::string pid;
+    while (in >> pid) ++n;
+  }
+  return n;
+}
+
+size_t count_lines(const char* file, const std::string& part = "") {
+  std::ifstream in(file);
+  std::string line;
+  size_t n = 0;
+  while (std::getline(in, line))
+    if (part.empty() || line.find(part) != std::string::npos) ++n;
+  return n;
+}
+
+size_t open_files() {
+  return static_cast<size_t>(std::distance(std::filesystem::directory_iterator("/proc/self/fd"), {}));
+}
+
+// The good neighbour: loads, creates, updates and renders an 8x8 image.
+void expect_good_scene_works(const std::filesystem::path& file, const PluginPolicy& policy) {
+  const LoadOutcome o = load_scene_plugin(file, policy);
+  ASSERT_EQ(o.result, LoadResult::Loaded) << o.message;
+  std::string error;
+  auto instance = SceneInstance::create(o.scene, &error);
+  ASSERT_TRUE(instance) << error;
+  SceneState state = make_default_state(o.scene->info);
+  ASSERT_TRUE(instance->update(state, 0.5, &error)) << error;
+  Renderer renderer(test::runtime());
+  RenderSettings settings;
+  settings.width_px = settings.height_px = 8;
+  const FrameImage image = renderer.render(o.scene->info, state, settings);
+  EXPECT_EQ(image.rgba8.size(), 8u * 8u * 4u);
+}
+
+struct LoadExpectation {
+  LoadResult result;
+  std::string message_part;
+};
+
+// Every hostile fixture that must fail while loading, with its reason. Those that load (their
+// attack comes later, in create or update) are listed as Loaded.
+const std::map<std::string, LoadExpectation>& load_expectations() {
+  static const std::map<std::string, LoadExpectation> e = {
+      {"ctor_abort", {LoadResult::Crashed, "crashed (SIGABRT"}},
+      {"ctor_segv", {LoadResult::Crashed, "crashed (SIG"}},
+      {"ctor_loop", {LoadResult::Crashed, "did not answer within 2 s; it was stopped"}},
+      {"ctor_exit", {LoadResult::Crashed, "exited with status 0"}},
+      {"absurd_counts",
+       {LoadResult::InvalidScene, "param_count 2000000000 is more than 256"}},
+      {"too_many_lights",
+       {LoadResult::InvalidScene, "light_count 9 is more than FR_MAX_SCENE_LIGHTS (8)"}},
+      {"escape_name",
+       {LoadResult::InvalidScene, "name is not clean text: control character 0x1b at byte 4"}},
+      {"invalid_utf8",
+       {LoadResult::InvalidScene, "description is not clean text: invalid UTF-8 at byte 3"}},
+      {"reserved_nonzero", {LoadResult::InvalidScene, "fr_scene_desc.reserved is not zero"}},
+      {"missing_dep",
+       {LoadResult::NotLoadable, "libfixture_missing_dep_lib.so: cannot open shared object"}},
+      {"create_crash", {LoadResult::Loaded, ""}},
+      {"create_hang", {LoadResult::Loaded, ""}},
+      {"create_throw", {LoadResult::Loaded, ""}},
+      {"update_crash", {LoadResult::Loaded, ""}},
+      {"update_throw", {LoadResult::Loaded, ""}},
+      {"update_hang_later", {LoadResult::Loaded, ""}},
+      {"update_exit", {LoadResult::Loaded, ""}},
+      {"update_bad_camera", {LoadResult::Loaded, ""}},
+      {"log_flood", {LoadResult::Loaded, ""}},
+      {"de_loop", {LoadResult::Loaded, ""}},
+  };
+  return e;
+}
+
+// The whole hostile folder at once (loaded in parallel scene hosts), with a good scene among
+// them: each outcome is the expected one, the good scene loads, and no process is left over.
+TEST(PluginIsolation, HostileFolderLoadsWithEachFailureNamed) {
+  const auto dir = test::fresh_dir("hostile_folder");
+  for (const auto& [name, expected] : load_expectations())
+    std::filesystem::copy_file(hostile(name), dir / (name + ".so"));
+  std::filesystem::copy_file(test::fixture_plugin("valid_scene"), dir / "valid.so");
+  const size_t children_before = child_processes();
+  const auto outcomes = load_scene_folder({dir}, quick_policy());
+  ASSERT_EQ(outcomes.size(), load_expectations().size() + 1);
+  for (const LoadOutcome& o : outcomes) {
+    const std::string name = o.file.stem().string();
+    EXPECT_EQ(o.file.parent_path(), dir) << "the outcome names the user's file";
+    if (name == "valid") {
+      EXPECT_EQ(o.result, LoadResult::Loaded) << o.message;
+      continue;
+    }
+    const LoadExpectation& e = load_expectations().at(name);
+    EXPECT_EQ(o.result, e.result) << name << ": " << load_result_name(o.result) << ": " << o.message;
+    EXPECT_NE(o.message.find(e.message_part), std::string::npos) << name << " said: " << o.message;
+    EXPECT_EQ(o.message.find("/proc/self/fd"), std::string::npos) << o.message;
+    EXPECT_EQ(o.message.find("memfd"), std::string::npos) << o.message;
+  }
+  EXPECT_EQ(child_processes(), children_before) << "a scene host was left running or unreaped";
+  expect_good_scene_works(dir / "valid.so", quick_policy());
+}
+
+// Attacks from create and update: each call fails with its reason, a failed update is not run
+// again, and the process that ran it is gone.
+struct CallExpectation {
+  const char* fixture;
+  bool create_fails;
+  double update_time_s;  // the update that fails (earlier times must work)
+  const char* message_part;
+};
+
+TEST(PluginIsolation, CallbacksThatCrashHangThrowOrLie) {
+  const CallExpectation cases[] = {
+      {"create_crash", true, 0, "its scene host crashed (SIG"},
+      {"create_hang", true, 0, "did not answer within 0.5 s; it was stopped during create"},
+      {"create_throw", true, 0,
+       "create threw a C++ exception: fixture create threw (exceptions must not cross the C ABI)"},
+      {"update_crash", false, 0, "its scene host crashed (SIG"},
+      {"update_throw", false, 0, "update threw a C++ exception: fixture update threw"},
+      {"update_exit", false, 0, "its scene host exited with status 0 during update"},
+      {"update_bad_camera", false, 0, "update left an invalid camera: target equals eye"},
+      {"update_hang_later", false, 1.5, "did not answer within 0.5 s; it was stopped during update"},
+  };
+  const size_t children_before = child_processes();
+  for (const CallExpectation& c : cases) {
+    SCOPED_TRACE(c.fixture);
+    const LoadOutcome o = load_scene_plugin(hostile(c.fixture), quick_policy());
+    ASSERT_EQ(o.result, LoadResult::Loaded) << o.message;
+    std::string error;
+    auto instance = SceneInstance::create(o.scene, &error);
+    if (c.create_fails) {
+      EXPECT_FALSE(instance);
+      EXPECT_NE(error.find("scene '" + o.scene->info.id + "': "), std::string::npos) << error;
+      EXPECT_NE(error.find(c.message_part), std::string::npos) << error;
+      continue;
+    }
+    ASSERT_TRUE(instance) << error;
+    SceneState state = make_default_state(o.scene->info);
+    for (double t = 0; t < c.update_time_s; t += 0.5)
+      ASSERT_TRUE(instance->update(state, t, &error)) << "t = " << t << ": " << error;
+    const SceneState before = state;
+    EXPECT_FALSE(instance->update(state, c.update_time_s, &error));
+    EXPECT_NE(error.find(c.message_part), std::string::npos) << error;
+    EXPECT_NE(error.find("its updates stop until the scene is reloaded"), std::string::npos);
+    EXPECT_TRUE(instance->failed());
+    EXPECT_EQ(state.camera.eye[2], before.camera.eye[2]) << "a failed update changed the state";
+    // Not called again: the same reason comes back at once, even at a time that worked before.
+    std::string again;
+    EXPECT_FALSE(instance->update(state, 0, &again));
+    EXPECT_EQ(again, error);
+  }
+  EXPECT_EQ(child_processes(), children_before);
+  expect_good_scene_works(test::fixture_plugin("valid_scene"), quick_policy());
+}
+
+// A plugin that logs 10000 messages of 20 kB with escape sequences: the call still works, and
+// what reaches the log is bounded and escaped.
+TEST(PluginIsolation, LogFloodIsBoundedAndEscaped) {
+  const LoadOutcome o = load_scene_plugin(hostile("log_flood"), quick_policy());
+  ASSERT_EQ(o.result, LoadResult::Loaded) << o.message;
+  std::string error;
+  auto instance = SceneInstance::create(o.scene, &error);
+  ASSERT_TRUE(instance) << error;
+  SceneState state = make_default_state(o.scene->info);
+  EXPECT_TRUE(instance->update(state, 0, &error)) << error;
+  EXPECT_EQ(printable("\x1b[2J\xff ok"), "\\x1b[2J\\xff ok");
+  EXPECT_EQ(printable("caf\xc3\xa9"), "caf\xc3\xa9");  // valid UTF-8 passes unchanged
+}
+
+// What a plugin folder may hold besides plugins: each is skipped with its reason, without
+// opening it (a FIFO would block a reader forever), and the good plugin beside them loads.
+TEST(PluginIsolation, FolderEntriesThatAreNotPlugins) {
+  const auto dir = test::fresh_dir("odd_entries");
+  std::filesystem::copy_file(test::fixture_plugin("valid_scene"), dir / "valid.so");
+  std::filesystem::create_symlink("loop_b.so", dir / "loop_a.so");
+  std::filesystem::create_symlink("loop_a.so", dir / "loop_b.so");
+  std::filesystem::create_symlink("gone.so.1", dir / "dangling.so");
+  ASSERT_EQ(mkfifo((dir / "fifo.so").c_str(), 0600), 0);
+  std::filesystem::create_directory(dir / "folder.so");
+  const int sock = socket(AF_UNIX, SOCK_STREAM, 0);
+  sockaddr_un addr{};
+  addr.sun_family = AF_UNIX;
+  const std::string sock_path = (dir / "socket.so").string();
+  ASSERT_LT(sock_path.size(), sizeof addr.sun_path);
+  std::strcpy(addr.sun_path, sock_path.c_str());
+  ASSERT_EQ(bind(sock, reinterpret_cast<sockaddr*>(&addr), sizeof addr), 0);
+  // A symlink to a plugin is followed (and here gives a second copy of the same id).
+  std::filesystem::create_symlink(dir / "valid.so", dir / "zz_link.so");
+  // An ELF library built for another machine: the valid fixture with its e_machine changed.
+  {
+    std::ifstream in(test::fixture_plugin("valid_scene"), std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), {});
+    Elf64_Ehdr eh;
+    std::memcpy(&eh, bytes.data(), sizeof eh);
+    eh.e_machine = eh.e_machine == EM_AARCH64 ? EM_X86_64 : EM_AARCH64;
+    std::memcpy(bytes.data(), &eh, sizeof eh);
+    std::ofstream(dir / "foreign.so", std::ios::binary) << bytes;
+  }
+  std::ofstream(dir / "notes.txt") << "not a plugin: ignored without a word";
+
+  const std::map<std::string, std::pair<LoadResult, std::string>> expected = {
+      {"loop_a", {LoadResult::Refused, "a symlink loop"}},
+      {"loop_b", {LoadResult::Refused, "a symlink loop"}},
+      {"dangling", {LoadResult::Refused, "a dangling symlink"}},
+      {"fifo", {LoadResult::Refused, "a FIFO, not a shared library"}},
+      {"folder", {LoadResult::Refused, "a directory, not a shared library"}},
+      {"socket", {LoadResult::Refused, "a socket, not a shared library"}},
+      {"foreign", {LoadResult::NotLoadable, "; this host is "}},
+      {"zz_link", {LoadResult::DuplicateId, "duplicate scene id 'fixture_valid'"}},
+      {"valid", {LoadResult::Loaded, ""}},
+  };
+  const auto outcomes = load_scene_folder({dir}, quick_policy());
+  close(sock);
+  EXPECT_EQ(outcomes.size(), expected.size());
+  for (const LoadOutcome& o : outcomes) {
+    const auto it = expected.find(o.file.stem().string());
+    ASSERT_NE(it, expected.end()) << o.file;
+    EXPECT_EQ(o.result, it->second.first) << o.file << ": " << o.message;
+    EXPECT_NE(o.message.find(it->second.second), std::string::npos) << o.file << ": " << o.message;
+  }
+}
+
+// Folders and files that another user could write to are refused, naming them, unless the
+// settings allow it.
+TEST(PluginIsolation, WritableByOthersIsRefusedUnlessAllowed) {
+  const auto dir = test::fresh_dir("world_writable");
+  std::filesystem::copy_file(test::fixture_plugin("valid_scene"), dir / "valid.so");
+  ASSERT_EQ(chmod(dir.c_str(), 0777), 0);
+  auto outcomes = load_scene_folder({dir}, quick_policy());
+  ASSERT_EQ(outcomes.size(), 1u);
+  EXPECT_EQ(outcomes[0].result, LoadResult::Refused);
+  EXPECT_EQ(outcomes[0].file, dir);
+  EXPECT_NE(outcomes[0].message.find(dir.string() + " is writable by every user"),
+            std::string::npos)
+      << outcomes[0].message;
+  EXPECT_NE(outcomes[0].message.find("plugins.allow_writable"), std::string::npos);
+  PluginPolicy allow = quick_policy();
+  allow.allow_writable = true;
+  outcomes = load_scene_folder({dir}, allow);
+  ASSERT_EQ(outcomes.size(), 1u);
+  EXPECT_EQ(outcomes[0].result, LoadResult::Loaded) << outcomes[0].message;
+
+  ASSERT_EQ(chmod(dir.c_str(), 0755), 0);
+  ASSERT_EQ(chmod((dir / "valid.so").c_str(), 0666), 0);
+  const LoadOutcome file = load_scene_plugin(dir / "valid.so", quick_policy());
+  EXPECT_EQ(file.result, LoadResult::Refused);
+  EXPECT_NE(file.message.find("the file is writable by every user"), std::string::npos)
+      << file.message;
+}
+
+// The old private copy went to $TMPDIR/fractalis-<uid>-<pid>/<n>-<name>, reusing a folder
+// another user could plant. Here that folder is planted, with a symlink where the copy would go
+// pointing at a file of the user's: loading, creating, updating and unloading (in a scene host
+// and in-process) must leave that file alone and put nothing at all in the temp folder.
+TEST(PluginIsolation, PlantedTempFolderIsNeverUsed) {
+  const auto tmp = test::fresh_dir("planted_tmp");
+  const auto victim = test::fresh_dir("planted_victim") / "precious.txt";
+  std::ofstream(victim) << "mine";
+  const auto planted = tmp / ("fractalis-" + std::to_string(getuid()) + "-" + std::to_string(getpid()));
+  std::filesystem::create_directory(planted);
+  for (int n = 0; n < 4; ++n)
+    std::filesystem::create_symlink(victim, planted / (std::to_string(n) + "-fixture_valid_scene.so"));
+  const char* old_tmp = std::getenv("TMPDIR");
+  const std::string saved = old_tmp ? old_tmp : "";
+  setenv("TMPDIR", tmp.c_str(), 1);
+  for (PluginIsolation mode : {PluginIsolation::Process, PluginIsolation::None}) {
+    PluginPolicy policy = quick_policy();
+    policy.isolation = mode;
+    const LoadOutcome o = load_scene_plugin(test::fixture_plugin("valid_scene"), policy);
+    ASSERT_EQ(o.result, LoadResult::Loaded) << o.message;
+    std::string error;
+    auto instance = SceneInstance::create(o.scene, &error);
+    ASSERT_TRUE(instance) << error;
+    SceneState state = make_default_state(o.scene->info);
+    EXPECT_TRUE(instance->update(state, 0, &error)) << error;
+  }
+  if (old_tmp)
+    setenv("TMPDIR", saved.c_str(), 1);
+  else
+    unsetenv("TMPDIR");
+  std::ifstream in(victim);
+  std::string content((std::istreambuf_iterator<char>(in)), {});
+  EXPECT_EQ(content, "mine");
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(tmp), {}), 1) << "left something";
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(planted), {}), 4);
+}
+
+// By default no plugin code is mapped into the host: neither the file nor a private copy.
+TEST(PluginIsolation, NoPluginCodeInTheHostByDefault) {
+  const auto dir = test::fresh_dir("no_code_in_host");
+  std::filesystem::copy_file(test::fixture_plugin("valid_scene"), dir / "isolation_probe.so");
+  // Mandelbulb: a scene with an update callback (a scene without callbacks needs no process).
+  std::filesystem::copy_file(std::filesystem::path(SCENE_PLUGIN_DIR) / "mandelbulb.so",
+                             dir / "isolation_probe.so", std::filesystem::copy_options::overwrite_existing);
+  const LoadOutcome o = load_scene_plugin(dir / "isolation_probe.so");
+  ASSERT_EQ(o.result, LoadResult::Loaded) << o.message;
+  std::string error;
+  auto instance = SceneInstance::create(o.scene, &error);
+  ASSERT_TRUE(instance) << error;
+  SceneState state = make_default_state(o.scene->info);
+  EXPECT_TRUE(instance->update(state, 0, &error)) << error;
+  EXPECT_EQ(count_lines("/proc/self/maps", "isolation_probe"), 0u);
+  EXPECT_EQ(count_lines("/proc/self/maps", "fractalis-plugin"), 0u);
+  EXPECT_GE(child_processes(), 1u) << "the update ran somewhere else";
+  instance.reset();
+  // In-process mode does map it: the check above can fail.
+  PluginPolicy none;
+  none.isolation = PluginIsolation::None;
+  const LoadOutcome in_host = load_scene_plugin(dir / "isolation_probe.so", none);
+  ASSERT_EQ(in_host.result, LoadResult::Loaded) << in_host.message;
+  EXPECT_GT(count_lines("/proc/self/maps", "fractalis-plugin"), 0u);
+}
+
+// Loading, creating, updating and dropping a scene 200 times, isolated and in-process: no growth
+// in open files, threads, mappings or child processes.
+TEST(PluginIsolation, RepeatedLoadsLeakNothing) {
+  for (PluginIsolation mode : {PluginIsolation::Process, PluginIsolation::None}) {
+    PluginPolicy policy = quick_policy();
+    policy.isolation = mode;
+    auto cycle = [&] {
+      const LoadOutcome o = load_scene_plugin(test::fixture_plugin("update_error"), policy);
+      ASSERT_EQ(o.result, LoadResult::Loaded) << o.message;
+      std::string error;
+      auto instance = SceneInstance::create(o.scene, &error);
+      ASSERT_TRUE(instance) << error;
+      SceneState state = make_default_state(o.scene->info);
+      EXPECT_FALSE(instance->update(state, 0, &error));
+    };
+    cycle();
+    const size_t files = open_files(), maps = count_lines("/proc/self/maps");
+    const auto thread_count = [] {
+      return static_cast<size_t>(
+          std::distance(std::filesystem::directory_iterator("/proc/self/task"), {}));
+    };
+    const size_t tasks = thread_count(), children = child_processes();
+    for (int i = 0; i < 200; ++i) cycle();
+    EXPECT_EQ(open_files(), files);
+    EXPECT_EQ(thread_count(), tasks);
+    EXPECT_EQ(child_processes(), children);
+    EXPECT_LE(count_lines("/proc/self/maps"), maps + 2);  // the allocator may map an arena
+  }
+}
+
+}  // namespace
+}  // namespace fr
