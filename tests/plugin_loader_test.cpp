@@ -51,9 +51,9 @@ PluginPolicy in_process() {
 // values survive the library being unmapped. The plugin's own literal of its id is found inside
 // that image, so the range test itself is shown to be able to fail.
 TEST(PluginLoader, ValidFixtureLoadsAndCopiesStrings) {
-  const LoadOutcome o = load_scene_plugin(fixture_plugin("valid_scene"), in_process());
+  LoadOutcome o = load_scene_plugin(fixture_plugin("valid_scene"), in_process());
   ASSERT_EQ(o.result, LoadResult::Loaded) << o.message;
-  auto scene = o.scene;
+  auto scene = std::move(o.scene);
   EXPECT_EQ(scene->info.id, "fixture_valid");
   EXPECT_EQ(scene->info.de_source_name, "fixture.cl");
   EXPECT_EQ(scene->info.bounding_radius, 2.0);
@@ -192,7 +192,9 @@ TEST(PluginLoader, UpdateErrorCarriesPluginsReason) {
   ASSERT_TRUE(instance) << error;
   SceneState state = make_default_state(scene->info);
   EXPECT_FALSE(instance->update(state, 0.0, &error));
-  EXPECT_EQ(error, "scene 'fixture_update_error': update failed: fixture refuses to update");
+  EXPECT_EQ(error,
+            "scene 'fixture_update_error': update failed: fixture refuses to update (its updates "
+            "stop until the scene is reloaded)");
 }
 
 // In-process mode loads from a private in-memory copy: the original can go away, nothing of
@@ -200,8 +202,8 @@ TEST(PluginLoader, UpdateErrorCarriesPluginsReason) {
 TEST(PluginLoader, PrivateCopyAndUnmap) {
   const auto dir = test::fresh_dir("private_copy");
   std::filesystem::copy_file(fixture_plugin("valid_scene"), dir / "private_probe.so");
-  const LoadOutcome o = load_scene_plugin(dir / "private_probe.so", in_process());
-  auto scene = o.scene;
+  LoadOutcome o = load_scene_plugin(dir / "private_probe.so", in_process());
+  auto scene = std::move(o.scene);
   ASSERT_TRUE(scene) << o.message;
   std::filesystem::remove(dir / "private_probe.so");
   EXPECT_EQ(scene->info.id, "fixture_valid");
