@@ -4,6 +4,7 @@
 #include "plugin/plugin_files.hpp"
 #include "plugin/plugin_loader.hpp"
 #include "plugin/plugin_text.hpp"
+#include "plugin/scan_cache.hpp"
 #include "plugin/scene_instance.hpp"
 #include "render/renderer.hpp"
 #include "test_support.hpp"
@@ -12,6 +13,7 @@
 #include <sys/socket.h>
 #include <sys/stat.h>
 #include <sys/un.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cstring>
@@ -377,6 +379,74 @@ TEST(PluginIsolation, RepeatedLoadsLeakNothing) {
     EXPECT_EQ(child_processes(), children);
     EXPECT_LE(count_lines("/proc/self/maps"), maps + 2);  // the allocator may map an arena
   }
+}
+
+// A DE that never returns: `fractalis render` ends after render.watchdog_s with exit status 3
+// and an error naming the scene, and writes nothing.
+TEST(PluginIsolation, RenderWatchdogEndsADeThatNeverReturns) {
+  const auto dir = test::fresh_dir("de_loop_render");
+  std::filesystem::copy_file(hostile("de_loop"), dir / "de_loop.so");
+  const auto out = dir / "never.png", log = dir / "stderr.txt";
+  const std::string command = std::string(FRACTALIS_EXECUTABLE) + " render --plugins " +
+                              dir.string() + " --scene fixture_de_loop --size 16x16 " +
+                              "--set render.watchdog_s=2 --out " + out.string() + " 2> " +
+                              log.string();
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 3);
+  std::ifstream in(log);
+  const std::string said((std::istreambuf_iterator<char>(in)), {});
+  EXPECT_NE(said.find("rendering scene 'fixture_de_loop' did not finish within 2 s "
+                      "(render.watchdog_s)"),
+            std::string::npos)
+      << said;
+  EXPECT_FALSE(std::filesystem::exists(out));
+  size_t entries = 0;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) entries += e.path() != log;
+  EXPECT_EQ(entries, 1u) << "a temporary file was left behind";
+}
+
+// A scan is kept by the file's identity: the second load of an unchanged file reads it back and
+// starts no process, its callbacks still run (in a process started on first use), and a changed
+// file is scanned again.
+TEST(PluginIsolation, ScanIsCachedByFileIdentity) {
+  const auto cache = test::fresh_dir("scan_cache_home");
+  const char* old = std::getenv("XDG_CACHE_HOME");
+  const std::string saved = old ? old : "";
+  setenv("XDG_CACHE_HOME", cache.c_str(), 1);
+  const auto dir = test::fresh_dir("scan_cache_plugins");
+  std::filesystem::copy_file(std::filesystem::path(RELOAD_PLUGIN_DIR) / "reload_a.so",
+                             dir / "cached.so");
+  FileIdentity identity;
+  std::string error;
+  const int fd = open_plugin_file(dir / "cached.so", false, &error, &identity);
+  ASSERT_GE(fd, 0) << error;
+  close(fd);
+  EXPECT_FALSE(find_scan(identity));
+  const LoadOutcome first = load_scene_plugin(dir / "cached.so", quick_policy());
+  ASSERT_EQ(first.result, LoadResult::Loaded) << first.message;
+  ASSERT_TRUE(find_scan(identity)) << "nothing kept in " << cache;
+  const LoadOutcome second = load_scene_plugin(dir / "cached.so", quick_policy());
+  ASSERT_EQ(second.result, LoadResult::Loaded) << second.message;
+  EXPECT_EQ(second.scene->info.de_source, first.scene->info.de_source);
+  auto instance = SceneInstance::create(second.scene, &error);
+  ASSERT_TRUE(instance) << error;
+  SceneState state = make_default_state(second.scene->info);
+  EXPECT_TRUE(instance->update(state, 0, &error)) << error;
+  // Rewritten in place with another build: another identity, scanned afresh.
+  std::filesystem::copy_file(std::filesystem::path(RELOAD_PLUGIN_DIR) / "reload_b.so",
+                             dir / "cached.so", std::filesystem::copy_options::overwrite_existing);
+  const LoadOutcome third = load_scene_plugin(dir / "cached.so", quick_policy());
+  ASSERT_EQ(third.result, LoadResult::Loaded) << third.message;
+  EXPECT_EQ(third.scene->info.version, "2.0.0");
+  // The first scene's file changed under it: its process refuses to start on the new bytes.
+  auto stale = SceneInstance::create(first.scene, &error);
+  EXPECT_FALSE(stale);
+  EXPECT_NE(error.find("changed since it was loaded"), std::string::npos) << error;
+  if (old)
+    setenv("XDG_CACHE_HOME", saved.c_str(), 1);
+  else
+    unsetenv("XDG_CACHE_HOME");
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "plugin/scene_host_process.hpp"
 
 #include "plugin/plugin_text.hpp"
+#include "plugin/scan_cache.hpp"
 #include "plugin/scene_checks.hpp"
 #include "plugin/wire_io.hpp"
 
@@ -217,6 +218,15 @@ LoadOutcome parse_loaded(const std::filesystem::path& file, const std::string& p
   return out;
 }
 
+// A loaded scene's callbacks run in a scene-host process of their own, started on first use.
+void attach_code(LoadOutcome& outcome, const FileIdentity& identity, const std::string& loaded,
+                 uint32_t callbacks, const PluginPolicy& policy) {
+  if (!outcome.scene) return;
+  auto scene = std::const_pointer_cast<LoadedScene>(outcome.scene);
+  scene->code = std::make_shared<IsolatedCode>(outcome.file, identity, loaded, callbacks,
+                                               scene->info, policy);
+}
+
 }  // namespace
 
 std::filesystem::path scene_host_executable() {
@@ -372,6 +382,18 @@ std::vector<LoadOutcome> load_isolated(const std::vector<std::filesystem::path>&
       p.outcome.file = files[i];
       std::string error;
       const int fd = open_plugin_file(files[i], policy.allow_writable, &error, &p.identity);
+      std::optional<std::string> kept;
+      if (fd >= 0 && (kept = find_scan(p.identity))) {
+        uint32_t callbacks = 0;
+        LoadOutcome cached = parse_loaded(files[i], *kept, &callbacks);
+        if (cached.result != LoadResult::Crashed) {  // a damaged entry is scanned again
+          close(fd);
+          attach_code(cached, p.identity, *kept, callbacks, policy);
+          p.outcome = std::move(cached);
+          batch.push_back(std::move(p));
+          continue;
+        }
+      }
       if (fd < 0) {
         p.outcome.result = LoadResult::Refused;
         p.outcome.message = error;
@@ -398,11 +420,8 @@ std::vector<LoadOutcome> load_isolated(const std::vector<std::filesystem::path>&
         } else {
           uint32_t callbacks = 0;
           p.outcome = parse_loaded(p.outcome.file, payload, &callbacks);
-          if (p.outcome.scene) {
-            auto scene = std::const_pointer_cast<LoadedScene>(p.outcome.scene);
-            scene->code = std::make_shared<IsolatedCode>(p.outcome.file, p.identity, payload,
-                                                         callbacks, scene->info, policy);
-          }
+          attach_code(p.outcome, p.identity, payload, callbacks, policy);
+          if (p.outcome.result != LoadResult::Crashed) keep_scan(p.identity, payload);
         }
       }
       outcomes.push_back(std::move(p.outcome));
