@@ -26,5 +26,7 @@ int main(int argc, char** argv) {
 #if defined(__SANITIZE_ADDRESS__)
 // The scene host runs plugin code, whose crashes are findings for the host to report ("crashed
 // (SIGSEGV)"), not reports for AddressSanitizer to turn into exit status 1.
-extern "C" const char* __asan_default_options() { return "handle_segv=0:handle_abort=0:handle_sigbus=0:detect_leaks=0"; }
+extern "C" const char* __asan_default_options() {
+  return "handle_segv=0:handle_abort=0:handle_sigbus=0:detect_leaks=0";
+}
 #endif

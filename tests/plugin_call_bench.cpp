@@ -51,7 +51,11 @@ void BM_LoadCreateUpdate(benchmark::State& state) {
   }
   state.SetLabel(state.range(0) ? "scene-host process" : "in-process");
 }
-BENCHMARK(BM_LoadCreateUpdate)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond)->Repetitions(5)
+BENCHMARK(BM_LoadCreateUpdate)
+    ->Arg(1)
+    ->Arg(0)
+    ->Unit(benchmark::kMillisecond)
+    ->Repetitions(5)
     ->ReportAggregatesOnly(true);
 
 }  // namespace

@@ -56,7 +56,8 @@ size_t count_lines(const char* file, const std::string& part = "") {
 }
 
 size_t open_files() {
-  return static_cast<size_t>(std::distance(std::filesystem::directory_iterator("/proc/self/fd"), {}));
+  return static_cast<size_t>(
+      std::distance(std::filesystem::directory_iterator("/proc/self/fd"), {}));
 }
 
 // The good neighbour: loads, creates, updates and renders an 8x8 image.
@@ -88,8 +89,7 @@ const std::map<std::string, LoadExpectation>& load_expectations() {
       {"ctor_segv", {LoadResult::Crashed, "crashed (SIG"}},
       {"ctor_loop", {LoadResult::Crashed, "did not answer within 2 s; it was stopped"}},
       {"ctor_exit", {LoadResult::Crashed, "exited with status 0"}},
-      {"absurd_counts",
-       {LoadResult::InvalidScene, "param_count 2000000000 is more than 256"}},
+      {"absurd_counts", {LoadResult::InvalidScene, "param_count 2000000000 is more than 256"}},
       {"too_many_lights",
        {LoadResult::InvalidScene, "light_count 9 is more than FR_MAX_SCENE_LIGHTS (8)"}},
       {"escape_name",
@@ -131,7 +131,8 @@ TEST(PluginIsolation, HostileFolderLoadsWithEachFailureNamed) {
       continue;
     }
     const LoadExpectation& e = load_expectations().at(name);
-    EXPECT_EQ(o.result, e.result) << name << ": " << load_result_name(o.result) << ": " << o.message;
+    EXPECT_EQ(o.result, e.result) << name << ": " << load_result_name(o.result) << ": "
+                                  << o.message;
     EXPECT_NE(o.message.find(e.message_part), std::string::npos) << name << " said: " << o.message;
     EXPECT_EQ(o.message.find("/proc/self/fd"), std::string::npos) << o.message;
     EXPECT_EQ(o.message.find("memfd"), std::string::npos) << o.message;
@@ -159,7 +160,8 @@ TEST(PluginIsolation, CallbacksThatCrashHangThrowOrLie) {
       {"update_throw", false, 0, "update threw a C++ exception: fixture update threw"},
       {"update_exit", false, 0, "its scene host exited with status 0 during update"},
       {"update_bad_camera", false, 0, "update left an invalid camera: target equals eye"},
-      {"update_hang_later", false, 1.5, "did not answer within 0.5 s; it was stopped during update"},
+      {"update_hang_later", false, 1.5,
+       "did not answer within 0.5 s; it was stopped during update"},
   };
   const size_t children_before = child_processes();
   for (const CallExpectation& c : cases) {
@@ -296,10 +298,12 @@ TEST(PluginIsolation, PlantedTempFolderIsNeverUsed) {
   const auto tmp = test::fresh_dir("planted_tmp");
   const auto victim = test::fresh_dir("planted_victim") / "precious.txt";
   std::ofstream(victim) << "mine";
-  const auto planted = tmp / ("fractalis-" + std::to_string(getuid()) + "-" + std::to_string(getpid()));
+  const auto planted =
+      tmp / ("fractalis-" + std::to_string(getuid()) + "-" + std::to_string(getpid()));
   std::filesystem::create_directory(planted);
   for (int n = 0; n < 4; ++n)
-    std::filesystem::create_symlink(victim, planted / (std::to_string(n) + "-fixture_valid_scene.so"));
+    std::filesystem::create_symlink(victim,
+                                    planted / (std::to_string(n) + "-fixture_valid_scene.so"));
   const char* old_tmp = std::getenv("TMPDIR");
   const std::string saved = old_tmp ? old_tmp : "";
   setenv("TMPDIR", tmp.c_str(), 1);
@@ -331,7 +335,8 @@ TEST(PluginIsolation, NoPluginCodeInTheHostByDefault) {
   std::filesystem::copy_file(test::fixture_plugin("valid_scene"), dir / "isolation_probe.so");
   // Mandelbulb: a scene with an update callback (a scene without callbacks needs no process).
   std::filesystem::copy_file(std::filesystem::path(SCENE_PLUGIN_DIR) / "mandelbulb.so",
-                             dir / "isolation_probe.so", std::filesystem::copy_options::overwrite_existing);
+                             dir / "isolation_probe.so",
+                             std::filesystem::copy_options::overwrite_existing);
   const LoadOutcome o = load_scene_plugin(dir / "isolation_probe.so");
   ASSERT_EQ(o.result, LoadResult::Loaded) << o.message;
   std::string error;

@@ -68,8 +68,8 @@ TEST(PluginLoader, ValidFixtureLoadsAndCopiesStrings) {
   };
   bool literal_inside = false;
   for (const auto& [lo, hi] : ranges)
-    literal_inside |= memmem(reinterpret_cast<const void*>(lo), hi - lo, "fixture_valid", 14) !=
-                      nullptr;
+    literal_inside |=
+        memmem(reinterpret_cast<const void*>(lo), hi - lo, "fixture_valid", 14) != nullptr;
   EXPECT_TRUE(literal_inside);
   const SceneInfo& info = scene->info;
   std::vector<const std::string*> strings = {

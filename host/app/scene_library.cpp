@@ -87,8 +87,7 @@ std::string SceneLibrary::add_or_replace(const std::filesystem::path& file,
   // process with a time limit first (once per file content and kernel shape).
   const uint64_t hash = VettedScenes::content_hash(file);
   if (!vetted_.contains(hash, settings)) {
-    const VetResult vet =
-        vet_scene(file, settings, runtime_.device().name, policy_.vet_timeout_s);
+    const VetResult vet = vet_scene(file, settings, runtime_.device().name, policy_.vet_timeout_s);
     if (!vet.ok) return keep_old(vet.error);
     vetted_.insert(hash, settings);
   }

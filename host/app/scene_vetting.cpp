@@ -29,16 +29,11 @@ VetResult vet_scene(const std::filesystem::path& file, const RenderSettings& set
                     const std::string& device, double timeout_s) {
   VetResult result;
   const std::string exe = fractalis_executable().string();
-  std::vector<std::string> args = {exe,
-                                   "vet-scene",
-                                   "--file",
-                                   file.string(),
-                                   "--size",
-                                   "8x8",
-                                   "--lanes",
-                                   std::to_string(settings.lanes),
-                                   "--precision",
-                                   precision_name(settings.precision)};
+  std::vector<std::string> args = {exe,           "vet-scene",
+                                   "--file",      file.string(),
+                                   "--size",      "8x8",
+                                   "--lanes",     std::to_string(settings.lanes),
+                                   "--precision", precision_name(settings.precision)};
   if (!device.empty()) args.insert(args.end(), {"--device", device});
   if (settings.lanes == 0) args.erase(args.begin() + 6, args.begin() + 8);
   std::vector<const char*> argv;
@@ -73,14 +68,14 @@ VetResult vet_scene(const std::filesystem::path& file, const RenderSettings& set
   close(pipe_fds[1]);
   // Collect what it says (bounded) until it closes stderr or the time is up.
   std::string said;
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration_cast<
-                                                               std::chrono::steady_clock::duration>(
-                                                               std::chrono::duration<double>(timeout_s));
+  const auto deadline = std::chrono::steady_clock::now() +
+                        std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                            std::chrono::duration<double>(timeout_s));
   bool timed_out = false;
   for (;;) {
-    const double left_ms = std::chrono::duration<double, std::milli>(
-                               deadline - std::chrono::steady_clock::now())
-                               .count();
+    const double left_ms =
+        std::chrono::duration<double, std::milli>(deadline - std::chrono::steady_clock::now())
+            .count();
     if (left_ms <= 0) {
       timed_out = true;
       break;

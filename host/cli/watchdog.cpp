@@ -41,7 +41,9 @@ void Watchdog::kick() {
   done_cv_.notify_all();
 }
 
-Watchdog::~Watchdog() { stop(); }
+Watchdog::~Watchdog() {
+  stop();
+}
 
 void Watchdog::stop() {
   if (!thread_.joinable()) return;

@@ -3,8 +3,8 @@
 // A scene's DE runs on the OpenCL device, and a DE that never returns makes the kernel never
 // finish; no OpenCL call can cancel it. So `render` and `bench` run their rendering
 // under a watchdog (`sweep` is interrupted with Ctrl-C instead: its reference renders may
-// legitimately take long): when the guarded work has not finished after render.watchdog_s, it prints
-// what hung and ends the process (exit status 3). Nothing is half-written: output files are
+// legitimately take long): when the guarded work has not finished after render.watchdog_s, it
+// prints what hung and ends the process (exit status 3). Nothing is half-written: output files are
 // written only after rendering, atomically.
 #pragma once
 

@@ -94,16 +94,16 @@ DescriptorCopy copy_descriptor(const fr_scene_entry* entry) {
     const char* from;
     std::string* to;
     size_t cap;
-  } strings[] = {{"name", d.name, &info.name, kMaxLabelBytes},
-                 {"version", d.version, &info.version, kMaxLabelBytes},
-                 {"author", d.author, &info.author, kMaxLabelBytes},
-                 {"license", d.license, &info.license, kMaxLabelBytes},
-                 {"description", d.description, &info.description, kMaxDescriptionBytes},
-                 {"de_source", d.de_source, &info.de_source, kMaxSourceBytes},
-                 {"de_source_name", d.de_source_name, &info.de_source_name, kMaxLabelBytes},
-                 {"surface_source", d.surface_source, &info.surface_source, kMaxSourceBytes},
-                 {"surface_source_name", d.surface_source_name, &info.surface_source_name,
-                  kMaxLabelBytes}};
+  } strings[] = {
+      {"name", d.name, &info.name, kMaxLabelBytes},
+      {"version", d.version, &info.version, kMaxLabelBytes},
+      {"author", d.author, &info.author, kMaxLabelBytes},
+      {"license", d.license, &info.license, kMaxLabelBytes},
+      {"description", d.description, &info.description, kMaxDescriptionBytes},
+      {"de_source", d.de_source, &info.de_source, kMaxSourceBytes},
+      {"de_source_name", d.de_source_name, &info.de_source_name, kMaxLabelBytes},
+      {"surface_source", d.surface_source, &info.surface_source, kMaxSourceBytes},
+      {"surface_source_name", d.surface_source_name, &info.surface_source_name, kMaxLabelBytes}};
   for (const auto& s : strings)
     if (!copy_string(s.from, s.cap, s.to))
       return invalid(scene + s.field + " is longer than " + std::to_string(s.cap) + " bytes");
@@ -161,9 +161,8 @@ DescriptorCopy copy_descriptor(const fr_scene_entry* entry) {
     const fr_light* l = d.lights[i];
     if (!l) return invalid(scene + "light " + std::to_string(i) + " is null");
     if (l->struct_size < kLightSizeV1_0)
-      return fail(LoadResult::StructTooSmall,
-                  too_small(scene + "fr_light " + std::to_string(i), l->struct_size,
-                            kLightSizeV1_0));
+      return fail(LoadResult::StructTooSmall, too_small(scene + "fr_light " + std::to_string(i),
+                                                        l->struct_size, kLightSizeV1_0));
     info.lights.push_back(copy_struct(l));
   }
   if (auto problem = check_scene_info(info)) return invalid(*problem);

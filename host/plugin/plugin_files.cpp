@@ -35,7 +35,9 @@ std::string foreign_writer(const struct stat& st, bool is_folder) {
   return "";
 }
 
-int64_t nanoseconds(const struct timespec& t) { return int64_t{t.tv_sec} * 1000000000 + t.tv_nsec; }
+int64_t nanoseconds(const struct timespec& t) {
+  return int64_t{t.tv_sec} * 1000000000 + t.tv_nsec;
+}
 
 }  // namespace
 
@@ -61,13 +63,15 @@ std::vector<PluginFile> list_plugin_files(const std::filesystem::path& folder,
                            " (set plugins.allow_writable = true to load from it anyway)"}};
   }
   DIR* dir = opendir(folder.c_str());
-  if (!dir) return {{folder, std::string("cannot read the plugin folder: ") + std::strerror(errno)}};
+  if (!dir)
+    return {{folder, std::string("cannot read the plugin folder: ") + std::strerror(errno)}};
   std::vector<PluginFile> files;
   while (const dirent* e = readdir(dir)) {
     const std::string name = e->d_name;
     if (name.size() < 4 || name.compare(name.size() - 3, 3, ".so") != 0) continue;
     PluginFile f{folder / name, ""};
-    struct stat own {}, target {};
+    struct stat own {
+    }, target{};
     // fstatat never opens anything, so FIFOs and devices cannot block the scan.
     if (fstatat(dirfd(dir), e->d_name, &own, AT_SYMLINK_NOFOLLOW) != 0) {
       f.skip_reason = std::string("cannot stat: ") + std::strerror(errno);
@@ -126,7 +130,8 @@ int open_plugin_file(const std::filesystem::path& file, bool allow_writable, std
     return -1;
   }
   if (identity)
-    *identity = {st.st_dev, st.st_ino, st.st_size, nanoseconds(st.st_mtim), nanoseconds(st.st_ctim)};
+    *identity = {st.st_dev, st.st_ino, st.st_size, nanoseconds(st.st_mtim),
+                 nanoseconds(st.st_ctim)};
   return fd;
 }
 

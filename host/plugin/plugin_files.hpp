@@ -23,8 +23,7 @@ struct PluginFile {
 // Every entry named `*.so` in `folder`, sorted by name, each either loadable or with the reason
 // it is skipped. When the folder itself is refused (writable by others, missing) the result is
 // one entry for the folder with the reason.
-std::vector<PluginFile> list_plugin_files(const std::filesystem::path& folder,
-                                          bool allow_writable);
+std::vector<PluginFile> list_plugin_files(const std::filesystem::path& folder, bool allow_writable);
 
 // Why `folder` (or one of its parents) could be changed by another user, or "" when it cannot.
 std::string writable_by_others(const std::filesystem::path& folder);

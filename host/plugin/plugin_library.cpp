@@ -97,10 +97,8 @@ std::string check_elf_library(uint64_t size,
   if (got < 4 || std::memcmp(ident, ELFMAG, SELFMAG) != 0) {
     char hex[32] = "fewer than 4 bytes";
     if (got >= 4)
-      std::snprintf(hex, sizeof hex, "%02x %02x %02x %02x", ident[0], ident[1], ident[2],
-                    ident[3]);
-    return std::string("not an ELF shared library (expected bytes 7f 45 4c 46, found ") + hex +
-           ")";
+      std::snprintf(hex, sizeof hex, "%02x %02x %02x %02x", ident[0], ident[1], ident[2], ident[3]);
+    return std::string("not an ELF shared library (expected bytes 7f 45 4c 46, found ") + hex + ")";
   }
   const ElfTarget& host = host_target();
   if (got < EI_NIDENT) return "truncated: " + std::to_string(size) + " bytes";
@@ -173,8 +171,8 @@ std::shared_ptr<PluginLibrary> PluginLibrary::open(int fd, const std::filesystem
   fcntl(memfd, F_ADD_SEALS, F_SEAL_SHRINK | F_SEAL_GROW | F_SEAL_WRITE | F_SEAL_SEAL);
   if (std::string problem = check_elf_library(size,
                                               [&](uint64_t at, void* out, size_t n) -> size_t {
-                                                const ssize_t r = pread(memfd, out, n,
-                                                                        static_cast<off_t>(at));
+                                                const ssize_t r =
+                                                    pread(memfd, out, n, static_cast<off_t>(at));
                                                 return r < 0 ? 0 : static_cast<size_t>(r);
                                               });
       !problem.empty())

@@ -11,11 +11,10 @@ enum class PluginIsolation {
 
 struct PluginPolicy {
   PluginIsolation isolation = PluginIsolation::Process;
-  double load_timeout_s = 10;  // loading the library (its constructors) and copying its descriptor
-  double call_timeout_s = 2;   // one create, update or destroy call
-  bool allow_writable = false; // load from folders and files that other users can write to
-  double vet_timeout_s = 60;   // the explorer's test render of a new or rebuilt scene
-
+  double load_timeout_s = 10;   // loading the library (its constructors) and copying its descriptor
+  double call_timeout_s = 2;    // one create, update or destroy call
+  bool allow_writable = false;  // load from folders and files that other users can write to
+  double vet_timeout_s = 60;    // the explorer's test render of a new or rebuilt scene
 };
 
 }  // namespace fr

@@ -32,7 +32,9 @@ size_t utf8_sequence_length(std::string_view text, size_t i) {
   return n;
 }
 
-bool is_control(uint32_t c) { return c < 0x20 || c == 0x7F; }
+bool is_control(uint32_t c) {
+  return c < 0x20 || c == 0x7F;
+}
 
 }  // namespace
 

@@ -19,11 +19,11 @@ constexpr size_t kMaxKeptScans = 256;
 
 std::filesystem::path entry_path(const FileIdentity& id) {
   char name[160];
-  std::snprintf(name, sizeof name, "%llx-%llx-%llx-%llx-%llx-w%u.scan",
-                static_cast<unsigned long long>(id.device), static_cast<unsigned long long>(id.inode),
-                static_cast<unsigned long long>(id.size_bytes),
-                static_cast<unsigned long long>(id.mtime_ns),
-                static_cast<unsigned long long>(id.ctime_ns), kSceneWireVersion);
+  std::snprintf(
+      name, sizeof name, "%llx-%llx-%llx-%llx-%llx-w%u.scan",
+      static_cast<unsigned long long>(id.device), static_cast<unsigned long long>(id.inode),
+      static_cast<unsigned long long>(id.size_bytes), static_cast<unsigned long long>(id.mtime_ns),
+      static_cast<unsigned long long>(id.ctime_ns), kSceneWireVersion);
   return scan_cache_dir() / name;
 }
 

@@ -11,8 +11,7 @@ namespace {
 bool is_identifier(const std::string& s, bool allow_dash) {
   if (s.empty() || s.size() > kMaxIdBytes || !(s[0] >= 'a' && s[0] <= 'z')) return false;
   for (char c : s)
-    if (!((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' ||
-          (allow_dash && c == '-')))
+    if (!((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || (allow_dash && c == '-')))
       return false;
   return true;
 }
@@ -55,8 +54,8 @@ std::optional<std::string> check_light(const fr_light& light) {
 }
 
 std::optional<std::string> check_param_info(const ParamInfo& p, size_t index) {
-  const std::string where = "parameter " + std::to_string(index) +
-                            (p.key.empty() ? "" : " '" + printable(p.key) + "'");
+  const std::string where =
+      "parameter " + std::to_string(index) + (p.key.empty() ? "" : " '" + printable(p.key) + "'");
   if (!is_identifier(p.key, false))
     return where + ": key must match [a-z][a-z0-9_]* (at most 63 bytes)";
   if (p.name.empty()) return where + ": name is empty";
@@ -135,7 +134,8 @@ std::optional<std::string> check_scene_info(const SceneInfo& info) {
     return scene + std::to_string(info.lights.size()) + " lights, more than FR_MAX_SCENE_LIGHTS (" +
            std::to_string(FR_MAX_SCENE_LIGHTS) + ")";
   for (size_t i = 0; i < info.lights.size(); ++i)
-    if (auto e = check_light(info.lights[i])) return scene + "light " + std::to_string(i) + " " + *e;
+    if (auto e = check_light(info.lights[i]))
+      return scene + "light " + std::to_string(i) + " " + *e;
   return std::nullopt;
 }
 

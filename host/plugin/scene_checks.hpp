@@ -14,10 +14,10 @@
 namespace fr {
 
 // Caps on what a descriptor may hold; the header (scene.h, param.h) promises these.
-constexpr size_t kMaxIdBytes = 63;            // scene ids and parameter keys
-constexpr size_t kMaxLabelBytes = 256;        // names, versions, authors, licences, groups
-constexpr size_t kMaxDescriptionBytes = 4096; // descriptions
-constexpr size_t kMaxSourceBytes = 1 << 20;   // OpenCL sources
+constexpr size_t kMaxIdBytes = 63;             // scene ids and parameter keys
+constexpr size_t kMaxLabelBytes = 256;         // names, versions, authors, licences, groups
+constexpr size_t kMaxDescriptionBytes = 4096;  // descriptions
+constexpr size_t kMaxSourceBytes = 1 << 20;    // OpenCL sources
 constexpr uint32_t kMaxSceneParams = 256;
 
 // Why `info` breaks a rule ("parameter 2 'scale': needs finite min <= default <= max ..."), or

@@ -36,8 +36,8 @@ CallOutcome guarded(const char* what, CallLog& log, Call&& call) {
     const fr_result r = call();
     out.ok = r == FR_OK;
     if (!out.ok)
-      out.error = std::string(what) + " failed: " +
-                  (log.last_error.empty() ? "no reason logged" : log.last_error) +
+      out.error = std::string(what) +
+                  " failed: " + (log.last_error.empty() ? "no reason logged" : log.last_error) +
                   (r == FR_ERROR ? "" : " (returned " + std::to_string(r) + ")");
   } catch (const std::exception& e) {
     out.error = std::string(what) + " threw a C++ exception: " + e.what() +

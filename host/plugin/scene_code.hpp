@@ -41,8 +41,8 @@ class SceneCode {
 // The plugin's callbacks, called in this process. Every call catches everything the plugin throws.
 class InProcessCode final : public SceneCode {
  public:
-  InProcessCode(std::shared_ptr<PluginLibrary> library, fr_create_fn create,
-                fr_destroy_fn destroy, fr_update_fn update)
+  InProcessCode(std::shared_ptr<PluginLibrary> library, fr_create_fn create, fr_destroy_fn destroy,
+                fr_update_fn update)
       : library_(std::move(library)), create_(create), destroy_(destroy), update_(update) {}
   ~InProcessCode() override;
 

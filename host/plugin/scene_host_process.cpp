@@ -131,8 +131,9 @@ class IsolatedCode final : public SceneCode {
     if (fd < 0) return false;
     if (!(now == identity_)) {
       close(fd);
-      *error = printable(file_.string()) + " changed since it was loaded (it is reloaded once the "
-                                           "change settles)";
+      *error = printable(file_.string()) +
+               " changed since it was loaded (it is reloaded once the "
+               "change settles)";
       return false;
     }
     process_ = SceneHostProcess::start(fd, file_, error);
@@ -182,7 +183,6 @@ class IsolatedCode final : public SceneCode {
   std::string failure_;  // once set, every call fails with it (until the scene is reloaded)
   uint64_t next_local_ = 1;
 };
-
 
 // Reads a Loaded message: the outcome, and for a loaded scene its checked descriptor.
 LoadOutcome parse_loaded(const std::filesystem::path& file, const std::string& payload,
@@ -250,8 +250,9 @@ std::unique_ptr<SceneHostProcess> SceneHostProcess::start(int plugin_fd,
                                                           std::string* error) {
   const std::filesystem::path exe = scene_host_executable();
   if (exe.empty()) {
-    *error = "the scene-host executable fractalis-scene-host was not found (beside fractalis, in "
-             "../libexec/fractalis, or $FRACTALIS_SCENE_HOST)";
+    *error =
+        "the scene-host executable fractalis-scene-host was not found (beside fractalis, in "
+        "../libexec/fractalis, or $FRACTALIS_SCENE_HOST)";
     return nullptr;
   }
   int sv[2];
@@ -263,8 +264,8 @@ std::unique_ptr<SceneHostProcess> SceneHostProcess::start(int plugin_fd,
   // process may only make async-signal-safe calls.
   const std::string exe_string = exe.string(), wire = std::to_string(kSceneWireVersion),
                     file_string = file.string();
-  const char* argv[] = {exe_string.c_str(), "--wire", wire.c_str(), "--file", file_string.c_str(),
-                        nullptr};
+  const char* argv[] = {exe_string.c_str(),  "--wire", wire.c_str(), "--file",
+                        file_string.c_str(), nullptr};
   const bool keep_stderr = std::getenv("FRACTALIS_SCENE_HOST_STDERR") != nullptr;
   const pid_t parent = getpid();
   const pid_t pid = fork();
@@ -276,7 +277,8 @@ std::unique_ptr<SceneHostProcess> SceneHostProcess::start(int plugin_fd,
   }
   if (pid == 0) {
     const int sock = fcntl(sv[1], F_DUPFD, 10), plugin = fcntl(plugin_fd, F_DUPFD, 10);
-    if (sock < 0 || plugin < 0 || dup2(sock, 3) < 0 || dup2(plugin, 4) < 0) _exit(kExecFailedStatus);
+    if (sock < 0 || plugin < 0 || dup2(sock, 3) < 0 || dup2(plugin, 4) < 0)
+      _exit(kExecFailedStatus);
     const int null_fd = open("/dev/null", O_RDWR);
     if (null_fd >= 0) {
       dup2(null_fd, 0);
@@ -359,8 +361,9 @@ bool SceneHostProcess::call(WireKind kind, const std::string& request, double ti
     failure_ = how.empty() ? "closed its connection" : how;
   }
   if (receive(timeout_s, timeout_s, WireKind::Reply, reply, error)) return true;
-  const char* what = kind == WireKind::Create ? "create" : kind == WireKind::Update ? "update"
-                                                                                    : "destroy";
+  const char* what = kind == WireKind::Create   ? "create"
+                     : kind == WireKind::Update ? "update"
+                                                : "destroy";
   *error = std::string("its scene host ") + *error + " during " + what;
   return false;
 }

@@ -28,8 +28,7 @@ int run_scene_host(int socket_fd, int plugin_fd, const std::string& file) {
     d.result = LoadResult::NotLoadable;
     d.message = error;
   } else {
-    d = copy_descriptor(
-        static_cast<const fr_scene_entry*>(library->symbol(FR_SCENE_ENTRY_SYMBOL)));
+    d = copy_descriptor(static_cast<const fr_scene_entry*>(library->symbol(FR_SCENE_ENTRY_SYMBOL)));
   }
   WireWriter loaded;
   loaded.u32(static_cast<uint32_t>(d.result));
@@ -38,8 +37,7 @@ int run_scene_host(int socket_fd, int plugin_fd, const std::string& file) {
     loaded.u32((d.create ? 1u : 0u) | (d.update ? 2u : 0u) | (d.destroy ? 4u : 0u));
     write_scene_info(loaded, d.info);
   }
-  if (!write_frame(socket_fd, WireKind::Loaded, loaded.bytes()) ||
-      d.result != LoadResult::Loaded)
+  if (!write_frame(socket_fd, WireKind::Loaded, loaded.bytes()) || d.result != LoadResult::Loaded)
     return 0;
 
   InProcessCode code(library, d.create, d.destroy, d.update);

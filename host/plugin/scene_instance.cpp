@@ -105,8 +105,8 @@ bool SceneInstance::update(SceneState& state, double time_s, std::string* error)
   forward_messages(info.id, out.messages);
   std::string problem = out.ok ? check_updated_state(next) : out.error;
   if (!problem.empty()) {
-    failure_ = "scene '" + info.id + "': " + problem +
-               " (its updates stop until the scene is reloaded)";
+    failure_ =
+        "scene '" + info.id + "': " + problem + " (its updates stop until the scene is reloaded)";
     *error = failure_;
     return false;
   }

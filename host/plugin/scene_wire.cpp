@@ -83,9 +83,9 @@ fr_light read_light(WireReader& r) {
 }  // namespace
 
 void write_scene_info(WireWriter& w, const SceneInfo& info) {
-  for (const std::string* s : {&info.id, &info.name, &info.version, &info.author, &info.license,
-                               &info.description, &info.de_source, &info.de_source_name,
-                               &info.surface_source, &info.surface_source_name})
+  for (const std::string* s :
+       {&info.id, &info.name, &info.version, &info.author, &info.license, &info.description,
+        &info.de_source, &info.de_source_name, &info.surface_source, &info.surface_source_name})
     w.str(*s);
   w.u32(static_cast<uint32_t>(info.params.size()));
   for (const ParamInfo& p : info.params) {

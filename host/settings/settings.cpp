@@ -85,8 +85,9 @@ const std::vector<Key>& known_keys() {
        }},
       {"plugins.isolation",
        [](const toml::node& n, Settings& s) {
-         return set_choice(n, s.plugins.isolation,
-                           {{"process", PluginIsolation::Process}, {"none", PluginIsolation::None}});
+         return set_choice(
+             n, s.plugins.isolation,
+             {{"process", PluginIsolation::Process}, {"none", PluginIsolation::None}});
        }},
       {"plugins.load_timeout_s",
        [](const toml::node& n, Settings& s) {
@@ -153,9 +154,7 @@ const std::vector<Key>& known_keys() {
          return set_int(n, s.render.shadow_max_steps, 1, 10000);
        }},
       {"render.watchdog_s",
-       [](const toml::node& n, Settings& s) {
-         return set_double(n, s.render.watchdog_s, 0, 1e6);
-       }},
+       [](const toml::node& n, Settings& s) { return set_double(n, s.render.watchdog_s, 0, 1e6); }},
       {"render.refine_steps",
        [](const toml::node& n, Settings& s) { return set_int(n, s.render.refine_steps, 0, 8); }},
       {"render.fast_math",
@@ -397,8 +396,8 @@ std::string format_settings_toml(const Settings& s) {
       << "\nmax_bounces = " << r.max_bounces << "\nhit_threshold_k = " << r.hit_threshold_k
       << "\nexposure = " << r.exposure << "\nao_strength = " << r.ao_strength
       << "\nao_reference_steps = " << r.ao_reference_steps << "\nrelaxation = " << r.relaxation
-      << "\nfast_math = " << (r.fast_math ? "true" : "false")
-      << "\nwatchdog_s = " << r.watchdog_s << "\nrefine_steps = " << r.refine_steps << "\nshadow_max_steps = " << r.shadow_max_steps
+      << "\nfast_math = " << (r.fast_math ? "true" : "false") << "\nwatchdog_s = " << r.watchdog_s
+      << "\nrefine_steps = " << r.refine_steps << "\nshadow_max_steps = " << r.shadow_max_steps
       << "\nroughness = " << r.roughness << "\nreflectivity = " << r.reflectivity
       << "\naperture = " << r.aperture_radius << "\nfocus_distance = " << r.focus_distance
       << "\nshading_model = "

@@ -13,6 +13,19 @@
  *                  The host copies every string and table it reads, so nothing dangles after
  *                  unload.
  *
+ * Where plugin code runs: the host loads each plugin in a scene-host process of its own
+ * (fractalis-scene-host), never in itself unless the user asks for that to debug a plugin
+ * (plugins.isolation = "none"). The library's constructors and its callbacks run there; a crash,
+ * hang or exit fails that scene alone. Each callback has a time limit (plugins.call_timeout_s,
+ * 2 s by default); one that fails, crashes, hangs or leaves an invalid camera or light is not
+ * called again until the scene is reloaded. C++ exceptions must not cross this ABI: catch
+ * everything inside each callback (the host reports one that escapes as the callback's failure).
+ *
+ * Checked at load, before any value is used: every reserved field is zero; strings are valid
+ * UTF-8 without control characters (sources may hold newlines and tabs), at most 63 bytes for
+ * ids and keys, 256 for names, versions, authors, licences and groups, 4096 for descriptions and
+ * 1 MiB for OpenCL sources; at most 256 parameters and FR_MAX_SCENE_LIGHTS lights.
+ *
  * Versioning: a plugin records the ABI major it was built for and the lowest host minor it needs.
  * The host loads it when the majors are equal and the host's minor is at least the plugin's.
  * Structs only grow at the end; each starts with its size so an older host can tell what a
