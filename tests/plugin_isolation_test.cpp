@@ -19,6 +19,7 @@
 #include <cstring>
 #include <fstream>
 #include <map>
+#include <optional>
 
 namespace fr {
 namespace {
@@ -59,6 +60,25 @@ size_t open_files() {
   return static_cast<size_t>(
       std::distance(std::filesystem::directory_iterator("/proc/self/fd"), {}));
 }
+
+// Sets an environment variable for one scope, then puts back what was there.
+class ScopedEnv {
+ public:
+  ScopedEnv(const char* name, const std::string& value) : name_(name) {
+    if (const char* old = std::getenv(name)) old_ = old;
+    setenv(name, value.c_str(), 1);
+  }
+  ~ScopedEnv() {
+    if (old_)
+      setenv(name_, old_->c_str(), 1);
+    else
+      unsetenv(name_);
+  }
+
+ private:
+  const char* name_;
+  std::optional<std::string> old_;
+};
 
 // The good neighbour: loads, creates, updates and renders an 8x8 image.
 void expect_good_scene_works(const std::filesystem::path& file, const PluginPolicy& policy) {
@@ -304,24 +324,20 @@ TEST(PluginIsolation, PlantedTempFolderIsNeverUsed) {
   for (int n = 0; n < 4; ++n)
     std::filesystem::create_symlink(victim,
                                     planted / (std::to_string(n) + "-fixture_valid_scene.so"));
-  const char* old_tmp = std::getenv("TMPDIR");
-  const std::string saved = old_tmp ? old_tmp : "";
-  setenv("TMPDIR", tmp.c_str(), 1);
-  for (PluginIsolation mode : {PluginIsolation::Process, PluginIsolation::None}) {
-    PluginPolicy policy = quick_policy();
-    policy.isolation = mode;
-    const LoadOutcome o = load_scene_plugin(test::fixture_plugin("valid_scene"), policy);
-    ASSERT_EQ(o.result, LoadResult::Loaded) << o.message;
-    std::string error;
-    auto instance = SceneInstance::create(o.scene, &error);
-    ASSERT_TRUE(instance) << error;
-    SceneState state = make_default_state(o.scene->info);
-    EXPECT_TRUE(instance->update(state, 0, &error)) << error;
+  {
+    ScopedEnv tmpdir("TMPDIR", tmp.string());
+    for (PluginIsolation mode : {PluginIsolation::Process, PluginIsolation::None}) {
+      PluginPolicy policy = quick_policy();
+      policy.isolation = mode;
+      const LoadOutcome o = load_scene_plugin(test::fixture_plugin("valid_scene"), policy);
+      ASSERT_EQ(o.result, LoadResult::Loaded) << o.message;
+      std::string error;
+      auto instance = SceneInstance::create(o.scene, &error);
+      ASSERT_TRUE(instance) << error;
+      SceneState state = make_default_state(o.scene->info);
+      EXPECT_TRUE(instance->update(state, 0, &error)) << error;
+    }
   }
-  if (old_tmp)
-    setenv("TMPDIR", saved.c_str(), 1);
-  else
-    unsetenv("TMPDIR");
   std::ifstream in(victim);
   std::string content((std::istreambuf_iterator<char>(in)), {});
   EXPECT_EQ(content, "mine");
@@ -416,9 +432,7 @@ TEST(PluginIsolation, RenderWatchdogEndsADeThatNeverReturns) {
 // file is scanned again.
 TEST(PluginIsolation, ScanIsCachedByFileIdentity) {
   const auto cache = test::fresh_dir("scan_cache_home");
-  const char* old = std::getenv("XDG_CACHE_HOME");
-  const std::string saved = old ? old : "";
-  setenv("XDG_CACHE_HOME", cache.c_str(), 1);
+  ScopedEnv cache_home("XDG_CACHE_HOME", cache.string());
   const auto dir = test::fresh_dir("scan_cache_plugins");
   std::filesystem::copy_file(std::filesystem::path(RELOAD_PLUGIN_DIR) / "reload_a.so",
                              dir / "cached.so");
@@ -448,10 +462,6 @@ TEST(PluginIsolation, ScanIsCachedByFileIdentity) {
   auto stale = SceneInstance::create(first.scene, &error);
   EXPECT_FALSE(stale);
   EXPECT_NE(error.find("changed since it was loaded"), std::string::npos) << error;
-  if (old)
-    setenv("XDG_CACHE_HOME", saved.c_str(), 1);
-  else
-    unsetenv("XDG_CACHE_HOME");
 }
 
 }  // namespace
