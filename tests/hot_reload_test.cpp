@@ -169,7 +169,9 @@ TEST(HotReload, ThousandReloadsLeakNothing) {
   EXPECT_EQ(lib.slots()[0].scene->info.version, "1.0.0");
   EXPECT_LE(count_entries("/proc/self/fd"), fds) << "open files grew over 1000 reloads";
   EXPECT_LE(count_entries("/proc/self/task"), threads) << "threads grew over 1000 reloads";
-  EXPECT_LE(mapping_count(), maps + 4) << "mappings grew over 1000 reloads";
+  // The allocator (and ASan's quarantine, in the sanitizer build) may map a few more regions; a
+  // mapping kept per reload would be a thousand.
+  EXPECT_LE(mapping_count(), maps + 16) << "mappings grew over 1000 reloads";
   const auto [children_after, zombies_after] = children_and_zombies();
   EXPECT_EQ(children_after, children) << "scene-host processes grew over 1000 reloads";
   EXPECT_EQ(zombies_after, 0u);
