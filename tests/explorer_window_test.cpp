@@ -35,7 +35,8 @@ class ExplorerWindow : public ::testing::Test {
     ASSERT_TRUE(display_available()) << "run under xvfb-run";
     window = std::make_unique<Window>("Fractalis test", kW, kH, false);
     library = std::make_unique<SceneLibrary>(std::vector<std::filesystem::path>{SCENE_PLUGIN_DIR},
-                                             PluginPolicy{}, test::runtime(), &messages);
+                                             PluginPolicy{}, RenderSettings{},
+                                             test::runtime(), &messages);
     explorer = std::make_unique<Explorer>(Settings{}, test::runtime(), *library, "mandelbulb");
   }
   // One frame of the loop: poll, update (scene time fixed at 0), render, present.

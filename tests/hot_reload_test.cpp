@@ -64,7 +64,7 @@ size_t mapped_copies(const std::string& name_part) {
 TEST(HotReload, AddChangeBreakRemove) {
   const auto folder = test::fresh_dir("hot_reload");
   std::vector<std::string> messages;
-  SceneLibrary lib({folder}, PluginPolicy{}, test::runtime(), &messages);
+  SceneLibrary lib({folder}, PluginPolicy{}, RenderSettings{}, test::runtime(), &messages);
   EXPECT_TRUE(lib.slots().empty());
   FrameClock clock;
   std::string m;
@@ -146,7 +146,7 @@ TEST(HotReload, ThousandReloadsLeakNothing) {
   const auto folder = test::fresh_dir("hot_reload_soak");
   drop(reload_plugin("reload_a"), folder, "soak_probe.so");
   std::vector<std::string> messages;
-  SceneLibrary lib({folder}, PluginPolicy{}, test::runtime(), &messages);
+  SceneLibrary lib({folder}, PluginPolicy{}, RenderSettings{}, test::runtime(), &messages);
   ASSERT_EQ(lib.slots().size(), 1u);
   FrameClock clock;
   std::string m;
@@ -179,6 +179,25 @@ TEST(HotReload, ThousandReloadsLeakNothing) {
   EXPECT_EQ(mapped_copies("fractalis-plugin"), 0u) << "plugin code was mapped into the host";
 }
 
+// Scenes found at start are vetted too: a DE that never returns is skipped with the reason, and
+// the scene beside it is there.
+TEST(HotReload, StartupVetsEveryScene) {
+  const auto folder = test::fresh_dir("startup_vet");
+  drop(reload_plugin("reload_a"), folder, "good.so");
+  drop(std::filesystem::path(HOSTILE_PLUGIN_DIR) / "hostile_de_loop.so", folder, "loops.so");
+  PluginPolicy policy;
+  policy.vet_timeout_s = 8;
+  std::vector<std::string> messages;
+  SceneLibrary lib({folder}, policy, RenderSettings{}, test::runtime(), &messages);
+  ASSERT_EQ(lib.slots().size(), 1u);
+  EXPECT_EQ(lib.slots()[0].scene->info.id, "reload_probe");
+  ASSERT_EQ(messages.size(), 1u);
+  EXPECT_NE(messages[0].find("skipped " + (folder / "loops.so").string() +
+                             ": a test render at 8x8 did not finish within 8 s"),
+            std::string::npos)
+      << messages[0];
+}
+
 // Every hostile fixture dropped over a running scene: the old build keeps running, with the
 // reason kept, and it still updates and renders afterwards.
 TEST(HotReload, HostileBuildsNeverReplaceTheRunningScene) {
@@ -190,7 +209,7 @@ TEST(HotReload, HostileBuildsNeverReplaceTheRunningScene) {
   policy.load_timeout_s = 2;
   policy.call_timeout_s = 0.5;
   policy.vet_timeout_s = 8;
-  SceneLibrary lib({folder}, policy, test::runtime(), &messages);
+  SceneLibrary lib({folder}, policy, RenderSettings{}, test::runtime(), &messages);
   ASSERT_EQ(lib.slots().size(), 2u);
   FrameClock clock;
   std::string m;

@@ -5,6 +5,8 @@
 #include "plugin/plugin_text.hpp"
 #include "render/kernel_assembly.hpp"
 
+#include <future>
+
 namespace fr {
 
 bool make_slot(std::shared_ptr<const LoadedScene> scene, SceneSlot* slot, std::string* error) {
@@ -17,19 +19,41 @@ bool make_slot(std::shared_ptr<const LoadedScene> scene, SceneSlot* slot, std::s
 }
 
 SceneLibrary::SceneLibrary(std::vector<std::filesystem::path> folders, const PluginPolicy& policy,
-                           ClRuntime& runtime, std::vector<std::string>* messages)
+                           const RenderSettings& settings, ClRuntime& runtime,
+                           std::vector<std::string>* messages)
     : policy_(policy), runtime_(runtime) {
-  for (const auto& o : load_scene_folder(folders, policy_)) {
+  std::vector<LoadOutcome> outcomes = load_scene_folder(folders, policy_);
+  // Test renders of the scenes not vetted before, at once (each waits on its own process).
+  std::vector<uint64_t> hashes(outcomes.size());
+  std::vector<std::future<VetResult>> vets(outcomes.size());
+  for (size_t i = 0; i < outcomes.size(); ++i) {
+    if (!outcomes[i].scene) continue;
+    hashes[i] = VettedScenes::content_hash(outcomes[i].file);
+    if (vetted_.contains(hashes[i], settings)) continue;
+    vets[i] = std::async(std::launch::async, vet_scene, outcomes[i].file, settings,
+                         runtime_.device().name, policy_.vet_timeout_s);
+  }
+  for (size_t i = 0; i < outcomes.size(); ++i) {
+    const LoadOutcome& o = outcomes[i];
+    const std::string file = printable(o.file.string());
     if (!o.scene) {
-      messages->push_back("skipped " + o.file.string() + ": " + o.message);
+      messages->push_back("skipped " + file + ": " + o.message);
       continue;
+    }
+    if (vets[i].valid()) {
+      const VetResult vet = vets[i].get();
+      if (!vet.ok) {
+        messages->push_back("skipped " + file + ": " + vet.error);
+        continue;
+      }
+      vetted_.insert(hashes[i], settings);
     }
     SceneSlot slot;
     std::string error;
     if (make_slot(o.scene, &slot, &error))
       slots_.push_back(std::move(slot));
     else
-      messages->push_back("skipped " + o.file.string() + ": " + error);
+      messages->push_back("skipped " + file + ": " + error);
   }
   for (const auto& f : folders) watchers_.push_back(std::make_unique<PluginWatcher>(f));
 }

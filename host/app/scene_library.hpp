@@ -24,8 +24,11 @@ namespace fr {
 class SceneLibrary {
  public:
   // Loads the folders (failures go to `messages`) and starts watching them.
+  // Each scene is vetted (scene_vetting.hpp) before it is added, once per file content; the
+  // test renders run in parallel.
   SceneLibrary(std::vector<std::filesystem::path> folders, const PluginPolicy& policy,
-               ClRuntime& runtime, std::vector<std::string>* messages);
+               const RenderSettings& settings, ClRuntime& runtime,
+               std::vector<std::string>* messages);
 
   std::vector<SceneSlot>& slots() { return slots_; }
   int find(const std::string& id) const;  // slot index or -1

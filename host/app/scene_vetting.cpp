@@ -1,6 +1,7 @@
 #include "app/scene_vetting.hpp"
 
 #include "plugin/plugin_files.hpp"
+#include "plugin/scan_cache.hpp"
 
 #include <fcntl.h>
 #include <poll.h>
@@ -12,6 +13,7 @@
 #include <cerrno>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <sstream>
 #include <vector>
@@ -134,12 +136,35 @@ uint64_t VettedScenes::content_hash(const std::filesystem::path& file) {
   return n < 0 ? 0 : h;
 }
 
+namespace {
+std::filesystem::path marker(uint64_t hash, const RenderSettings& s) {
+  const auto scans = scan_cache_dir();
+  if (scans.empty()) return {};
+  char name[96];
+  std::snprintf(name, sizeof name, "%016llx-lanes%d-%s", static_cast<unsigned long long>(hash),
+                s.lanes, precision_name(s.precision));
+  return scans.parent_path() / "vetted" / name;
+}
+}  // namespace
+
 bool VettedScenes::contains(uint64_t hash, const RenderSettings& s) const {
-  return hash != 0 && vetted_.count({hash, s.lanes, static_cast<int>(s.precision)}) > 0;
+  if (hash == 0) return false;
+  if (vetted_.count({hash, s.lanes, static_cast<int>(s.precision)}) > 0) return true;
+  const auto file = marker(hash, s);
+  std::error_code ec;
+  return !file.empty() && std::filesystem::is_regular_file(file, ec);
 }
 
 void VettedScenes::insert(uint64_t hash, const RenderSettings& s) {
-  if (hash != 0) vetted_.insert({hash, s.lanes, static_cast<int>(s.precision)});
+  if (hash == 0) return;
+  vetted_.insert({hash, s.lanes, static_cast<int>(s.precision)});
+  const auto file = marker(hash, s);
+  if (file.empty()) return;
+  std::error_code ec;
+  std::filesystem::create_directories(file.parent_path(), ec);
+  std::filesystem::permissions(file.parent_path(), std::filesystem::perms::owner_all, ec);
+  const int fd = open(file.c_str(), O_WRONLY | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0600);
+  if (fd >= 0) close(fd);
 }
 
 }  // namespace fr

@@ -1,9 +1,9 @@
 // scene_vetting.hpp — a tiny test render of a new or rebuilt scene, in a child process.
 //
 // A DE that never returns hangs the OpenCL device, and nothing can cancel a running kernel. The
-// explorer must not find that out by freezing, so before a scene that arrived by hot reload
-// replaces anything, `fractalis vet-scene` renders it at 8x8 in a child process with a time
-// limit (plugins.vet_timeout_s). The child's kernel build also warms the OpenCL compiler's cache
+// explorer must not find that out by freezing, so before it first uses a scene (found at start
+// or arriving by hot reload), `fractalis vet-scene` renders it at 8x8 in a child process with a
+// time limit (plugins.vet_timeout_s). The child's kernel build also warms the OpenCL compiler's cache
 // for the explorer's own build of the same kernel.
 #pragma once
 
@@ -27,9 +27,10 @@ struct VetResult {
 VetResult vet_scene(const std::filesystem::path& file, const RenderSettings& settings,
                     const std::string& device, double timeout_s);
 
-// Scenes already vetted in this session, by the content of their file and the kernel shape: a
-// file that comes back with the same bytes (an undo, a rebuild that changed nothing) is not
-// vetted again.
+// Scenes already vetted, by the content of their file and the kernel shape: a file that comes
+// back with the same bytes (an undo, a rebuild that changed nothing, the next start of the
+// explorer) is not vetted again. Kept in memory and, as empty marker files, in
+// $XDG_CACHE_HOME/fractalis/vetted/.
 class VettedScenes {
  public:
   // The key of `file` as it is now; 0 when it cannot be read.

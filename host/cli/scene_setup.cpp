@@ -264,7 +264,8 @@ ExplorerSetup prepare_explorer(ParsedOptions options, std::ostream& err) {
     throw std::runtime_error("no plugin folder found (build the plugins, or pass --plugins DIR)");
   x.runtime = std::make_unique<ClRuntime>(choose_device(x.settings, options));
   std::vector<std::string> messages;
-  x.library = std::make_unique<SceneLibrary>(folders, x.settings.plugins, *x.runtime, &messages);
+  x.library = std::make_unique<SceneLibrary>(folders, x.settings.plugins, x.settings.render,
+                                             *x.runtime, &messages);
   for (const auto& m : messages) err << "fractalis: warning: " << m << "\n";
   const std::string scene_id = options.get("scene").value_or("mandelbulb");
   if (x.library->find(scene_id) < 0) {
