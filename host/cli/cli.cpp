@@ -24,6 +24,7 @@ const char* kUsage =
     "  sweep     measure image error against frame time over the quality knobs\n"
     "  list      list scene plugins, their parameters, or why they failed to load\n"
     "  devices   list OpenCL platforms and devices\n"
+    "  check     run the conformance checks on a scene plugin (for scene authors)\n"
     "\n"
     "  fractalis <command> --help   options of a command\n"
     "  fractalis --version          versions of fractalis and its scene ABI\n";
@@ -49,9 +50,10 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
     if (command == "sweep") return command_sweep(rest, out, err);
     if (command == "list") return command_list(rest, out, err);
     if (command == "devices") return command_devices(rest, out, err);
+    if (command == "check") return command_check(rest, out, err);
     if (command == "vet-scene") return command_vet_scene(rest, out, err);
     throw UsageError("unknown command '" + command +
-                     "' (expected explore, render, bench, list or devices)");
+                     "' (expected explore, render, bench, sweep, list, devices or check)");
   } catch (const UsageError& e) {
     err << "fractalis: error: " << e.what() << "\n";
     return 2;

@@ -51,14 +51,10 @@ CallOutcome guarded(const char* what, CallLog& log, Call&& call) {
 
 }  // namespace
 
-InProcessCode::~InProcessCode() {
-  for (const auto& [handle, instance] : instances_)
-    if (destroy_) {
-      try {
-        destroy_(instance);
-      } catch (...) {
-      }
-    }
+InProcessCode::~InProcessCode() { destroy_all(); }
+
+void InProcessCode::destroy_all() {
+  while (!instances_.empty()) destroy(instances_.begin()->first);
 }
 
 CallOutcome InProcessCode::create(uint64_t* handle) {

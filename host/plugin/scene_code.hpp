@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,14 @@ class SceneCode {
   virtual CallOutcome update(uint64_t instance, SceneState& state) = 0;
   // Destroys an instance; failures are logged, not returned (there is nothing left to do).
   virtual void destroy(uint64_t instance) = 0;
+  // For `fractalis check`: the scene-host process's heap, threads and plugin mappings, now or
+  // (unload) after every instance is destroyed and the library closed. Null where there is no
+  // such process to ask (in-process code, or a scene without callbacks).
+  virtual std::optional<HostStats> host_stats(bool unload, std::string* error) {
+    (void)unload;
+    (void)error;
+    return std::nullopt;
+  }
 };
 
 // The plugin's callbacks, called in this process. Every call catches everything the plugin throws.
@@ -49,6 +58,8 @@ class InProcessCode final : public SceneCode {
   CallOutcome create(uint64_t* instance) override;
   CallOutcome update(uint64_t instance, SceneState& state) override;
   void destroy(uint64_t instance) override;
+  // Destroys every instance (the library itself is closed by whoever holds the last reference).
+  void destroy_all();
 
  private:
   std::shared_ptr<PluginLibrary> library_;  // keeps the callbacks mapped

@@ -109,6 +109,25 @@ class IsolatedCode final : public SceneCode {
     return out;
   }
 
+  std::optional<HostStats> host_stats(bool unload, std::string* error) override {
+    std::string reply;
+    const CallOutcome out = call(unload ? WireKind::Unload : WireKind::Stats, "", &reply);
+    if (!out.ok) {
+      *error = out.error;
+      return std::nullopt;
+    }
+    WireReader r(reply);
+    HostStats s;
+    s.heap_bytes = r.u64();
+    s.threads = r.u32();
+    s.plugin_mappings = r.u32();
+    if (r.failed()) {
+      *error = fail_process("sent a malformed reply to stats").error;
+      return std::nullopt;
+    }
+    return s;
+  }
+
   void destroy(uint64_t instance) override {
     if (callbacks_ == 0 || !process_ || !process_->alive()) return;
     WireWriter w;
@@ -361,9 +380,11 @@ bool SceneHostProcess::call(WireKind kind, const std::string& request, double ti
     failure_ = how.empty() ? "closed its connection" : how;
   }
   if (receive(timeout_s, timeout_s, WireKind::Reply, reply, error)) return true;
-  const char* what = kind == WireKind::Create   ? "create"
-                     : kind == WireKind::Update ? "update"
-                                                : "destroy";
+  const char* what = kind == WireKind::Create    ? "create"
+                     : kind == WireKind::Update  ? "update"
+                     : kind == WireKind::Destroy ? "destroy"
+                     : kind == WireKind::Unload  ? "unload"
+                                                 : "a status request";
   *error = std::string("its scene host ") + *error + " during " + what;
   return false;
 }

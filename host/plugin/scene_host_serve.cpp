@@ -4,7 +4,12 @@
 #include "plugin/scene_host_process.hpp"
 #include "plugin/wire_io.hpp"
 
+#include <dirent.h>
+#include <malloc.h>
 #include <unistd.h>
+
+#include <cstdio>
+#include <cstring>
 
 namespace fr {
 namespace {
@@ -15,6 +20,31 @@ std::string reply_bytes(const CallOutcome& out, const WireWriter& result) {
   w.str(out.error.substr(0, kMaxMessageBytes));
   write_messages(w, out.messages);
   return w.bytes() + result.bytes();
+}
+
+size_t count_lines(const char* file, const char* part) {
+  FILE* f = std::fopen(file, "r");
+  if (!f) return 0;
+  char line[4096];
+  size_t n = 0;
+  while (std::fgets(line, sizeof line, f))
+    if (!part || std::strstr(line, part)) ++n;
+  std::fclose(f);
+  return n;
+}
+
+HostStats own_stats() {
+  HostStats s;
+  s.heap_bytes = mallinfo2().uordblks;
+  size_t threads = 0;
+  if (DIR* d = opendir("/proc/self/task")) {
+    while (const dirent* e = readdir(d))
+      if (e->d_name[0] != '.') ++threads;
+    closedir(d);
+  }
+  s.threads = static_cast<uint32_t>(threads);
+  s.plugin_mappings = static_cast<uint32_t>(count_lines("/proc/self/maps", "fractalis-plugin"));
+  return s;
 }
 
 }  // namespace
@@ -40,7 +70,7 @@ int run_scene_host(int socket_fd, int plugin_fd, const std::string& file) {
   if (!write_frame(socket_fd, WireKind::Loaded, loaded.bytes()) || d.result != LoadResult::Loaded)
     return 0;
 
-  InProcessCode code(library, d.create, d.destroy, d.update);
+  auto code = std::make_unique<InProcessCode>(library, d.create, d.destroy, d.update);
   for (;;) {
     WireKind kind{};
     std::string request;
@@ -51,7 +81,7 @@ int run_scene_host(int socket_fd, int plugin_fd, const std::string& file) {
     switch (kind) {
       case WireKind::Create: {
         uint64_t instance = 0;
-        out = code.create(&instance);
+        out = code->create(&instance);
         result.u64(instance);
         break;
       }
@@ -59,14 +89,42 @@ int run_scene_host(int socket_fd, int plugin_fd, const std::string& file) {
         const uint64_t instance = r.u64();
         SceneState state;
         if (!read_scene_state(r, d.info.params.size(), d.info.lights.size(), &state)) return 2;
-        out = code.update(instance, state);
+        out = code->update(instance, state);
         write_scene_state(result, state);
         break;
       }
       case WireKind::Destroy:
-        code.destroy(r.u64());
+        code->destroy(r.u64());
         out.ok = true;
         break;
+      case WireKind::Unload:
+        code->destroy_all();
+        code.reset();
+        library.reset();  // the last reference: dlclose
+        [[fallthrough]];
+      case WireKind::Stats: {
+        const HostStats stats = own_stats();
+        result.u64(stats.heap_bytes);
+        result.u32(stats.threads);
+        result.u32(stats.plugin_mappings);
+        out.ok = true;
+        if (!code && kind == WireKind::Unload) {
+          if (!write_frame(socket_fd, WireKind::Reply, reply_bytes(out, result))) return 0;
+          // Nothing is loaded any more: answer Stats until told to quit.
+          for (;;) {
+            if (read_frame(socket_fd, -1, &kind, &request) != ReadStatus::Ok ||
+                kind != WireKind::Stats)
+              return 0;
+            WireWriter again;
+            const HostStats s = own_stats();
+            again.u64(s.heap_bytes);
+            again.u32(s.threads);
+            again.u32(s.plugin_mappings);
+            if (!write_frame(socket_fd, WireKind::Reply, reply_bytes(out, again))) return 0;
+          }
+        }
+        break;
+      }
       case WireKind::Quit:
         return 0;
       default:

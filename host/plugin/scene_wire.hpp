@@ -28,6 +28,16 @@ enum class WireKind : uint32_t {
   Destroy = 4,  // host -> scene host: u64 instance
   Quit = 5,     // host -> scene host: exit now
   Reply = 6,    // scene host -> host: CallReply, then the call's result
+  Stats = 7,    // host -> scene host: (nothing); reply: HostStats (fractalis check)
+  Unload = 8,   // host -> scene host: destroy every instance, dlclose; reply: HostStats after
+};
+
+// What a scene-host process reports about itself (for `fractalis check`): heap in use, threads,
+// and mappings of the plugin's private copy.
+struct HostStats {
+  uint64_t heap_bytes = 0;
+  uint32_t threads = 0;
+  uint32_t plugin_mappings = 0;
 };
 
 class WireWriter {

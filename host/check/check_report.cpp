@@ -1,0 +1,90 @@
+#include "check/check_report.hpp"
+
+#include <cstdio>
+#include <ostream>
+
+namespace fr {
+namespace {
+
+std::string json_string(const std::string& s) {
+  std::string out = "\"";
+  for (unsigned char c : s) {
+    switch (c) {
+      case '"':
+        out += "\\\"";
+        break;
+      case '\\':
+        out += "\\\\";
+        break;
+      case '\n':
+        out += "\\n";
+        break;
+      case '\t':
+        out += "\\t";
+        break;
+      default:
+        if (c < 0x20) {
+          char hex[8];
+          std::snprintf(hex, sizeof hex, "\\u%04x", c);
+          out += hex;
+        } else {
+          out += static_cast<char>(c);
+        }
+    }
+  }
+  return out + "\"";
+}
+
+}  // namespace
+
+const char* check_status_name(CheckStatus status) {
+  switch (status) {
+    case CheckStatus::Pass:
+      return "pass";
+    case CheckStatus::Warn:
+      return "warn";
+    case CheckStatus::Fail:
+      return "fail";
+  }
+  return "fail";
+}
+
+bool CheckReport::failed() const {
+  for (const CheckRow& r : rows)
+    if (r.status == CheckStatus::Fail) return true;
+  return false;
+}
+
+void write_check_table(const CheckReport& report, std::ostream& out) {
+  out << "fractalis check " << report.file
+      << (report.scene_id.empty() ? "" : " (scene '" + report.scene_id + "')") << "\n\n";
+  size_t width = 5;
+  for (const CheckRow& r : report.rows) width = std::max(width, r.check.size());
+  int counts[3] = {0, 0, 0};
+  for (const CheckRow& r : report.rows) {
+    ++counts[static_cast<int>(r.status)];
+    const char* tag = r.status == CheckStatus::Pass   ? "PASS"
+                      : r.status == CheckStatus::Warn ? "WARN"
+                                                      : "FAIL";
+    out << "  " << r.check << std::string(width - r.check.size() + 2, ' ') << tag << "  "
+        << r.detail << "\n";
+  }
+  out << "\n"
+      << counts[0] << " passed, " << counts[1] << " warned, " << counts[2] << " failed: "
+      << (report.failed() ? "FAIL" : "PASS") << "\n";
+}
+
+std::string check_report_json(const CheckReport& report) {
+  std::string out = "{\n  \"file\": " + json_string(report.file) +
+                    ",\n  \"scene\": " + json_string(report.scene_id) + ",\n  \"result\": " +
+                    json_string(report.failed() ? "fail" : "pass") + ",\n  \"checks\": [";
+  for (size_t i = 0; i < report.rows.size(); ++i) {
+    const CheckRow& r = report.rows[i];
+    out += std::string(i ? "," : "") + "\n    {\"check\": " + json_string(r.check) +
+           ", \"status\": " + json_string(check_status_name(r.status)) +
+           ", \"detail\": " + json_string(r.detail) + "}";
+  }
+  return out + "\n  ]\n}\n";
+}
+
+}  // namespace fr

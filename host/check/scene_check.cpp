@@ -1,0 +1,481 @@
+#include "check/scene_check.hpp"
+
+#include "app/scene_vetting.hpp"
+#include "plugin/plugin_loader.hpp"
+#include "plugin/plugin_text.hpp"
+#include "plugin/scene_code.hpp"
+#include "plugin/scene_instance.hpp"
+#include "render/de_probe.hpp"
+#include "render/kernel_assembly.hpp"
+#include "render/renderer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <random>
+#include <sstream>
+
+namespace fr {
+namespace {
+
+using Point = std::array<float, 3>;
+
+std::string fmt(double v) {
+  std::ostringstream out;
+  out.precision(4);
+  out << v;
+  return out.str();
+}
+std::string fmt(const Point& p) {
+  // (A stream, not "(" + ...: GCC 12 warns falsely (-Wrestrict) about that concatenation.)
+  std::ostringstream out;
+  out.precision(4);
+  out << "(" << p[0] << ", " << p[1] << ", " << p[2] << ")";
+  return out.str();
+}
+
+// Points uniform in the ball of radius r (fixed seed: the same points every run).
+std::vector<Point> ball_points(int n, double r, uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<Point> points;
+  while (static_cast<int>(points.size()) < n) {
+    const double x = u(rng), y = u(rng), z = u(rng);
+    if (x * x + y * y + z * z > 1) continue;
+    points.push_back({float(x * r), float(y * r), float(z * r)});
+  }
+  return points;
+}
+
+// Points on shells between r0 and r1, uniform in direction.
+std::vector<Point> shell_points(int n, double r0, double r1, uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> g;
+  std::uniform_real_distribution<double> u(r0, r1);
+  std::vector<Point> points;
+  for (int i = 0; i < n; ++i) {
+    double x = g(rng), y = g(rng), z = g(rng);
+    const double len = std::sqrt(x * x + y * y + z * z), r = u(rng);
+    if (!(len > 0)) continue;
+    points.push_back({float(x / len * r), float(y / len * r), float(z / len * r)});
+  }
+  return points;
+}
+
+bool same_state(const SceneState& a, const SceneState& b) {
+  auto same_bytes = [](const auto& x, const auto& y) {
+    return x.size() == y.size() &&
+           (x.empty() || std::memcmp(x.data(), y.data(), x.size() * sizeof(x[0])) == 0);
+  };
+  return same_bytes(a.params, b.params) && same_bytes(a.lights, b.lights) &&
+         std::memcmp(&a.camera, &b.camera, sizeof a.camera) == 0 &&
+         a.bounding_radius == b.bounding_radius;
+}
+
+class Checker {
+ public:
+  Checker(const std::filesystem::path& file, const CheckOptions& options, ClRuntime& runtime)
+      : file_(file), options_(options), runtime_(runtime) {
+    report_.file = printable(file.string());
+  }
+
+  CheckReport run() {
+    if (!check_descriptor()) return report_;
+    const bool compiles = check_compiles() && check_returns();
+    if (compiles) check_de();
+    const bool updates = check_update();
+    check_create_destroy();
+    if (compiles && updates) check_render();
+    check_unload();
+    return report_;
+  }
+
+ private:
+  void add(const char* check, CheckStatus status, std::string detail) {
+    report_.rows.push_back({check, status, std::move(detail)});
+  }
+
+  bool check_descriptor() {
+    PluginPolicy policy = options_.policy;
+    policy.isolation = PluginIsolation::Process;
+    LoadOutcome o = load_scene_plugin(file_, policy);
+    if (!o.scene) {
+      add("descriptor", CheckStatus::Fail,
+          std::string(load_result_name(o.result)) + ": " + o.message);
+      return false;
+    }
+    scene_ = o.scene;
+    const SceneInfo& info = scene_->info;
+    report_.scene_id = info.id;
+    add("descriptor", CheckStatus::Pass,
+        "'" + info.id + "' " + info.version + ": " + std::to_string(info.params.size()) +
+            " parameters, " + std::to_string(info.lights.size()) + " lights; every rule kept");
+    defaults_ = make_default_state(info);
+    return true;
+  }
+
+  bool check_compiles() {
+    const SceneInfo& info = scene_->info;
+    std::vector<std::string> built, failed;
+    for (Precision precision : {Precision::Float, Precision::Double}) {
+      if (precision == Precision::Double && !runtime_.device().has_fp64) continue;
+      for (int lanes : {1, 16}) {
+        const std::string shape =
+            std::string(precision_name(precision)) + " x" + std::to_string(lanes);
+        try {
+          // Build only: running the DE waits for check_returns.
+          const AssembledKernel k =
+              assemble_probe_kernel(info, defaults_.params, KernelConfig{lanes, precision});
+          runtime_.program(k.source, k.build_options, k.description);
+          built.push_back(shape);
+        } catch (const std::exception& e) {
+          failed.push_back(shape + ": " + e.what());
+        }
+      }
+    }
+    if (failed.empty()) {
+      try {
+        Renderer renderer(runtime_);
+        RenderSettings s = options_.render;
+        s.width_px = s.height_px = 8;
+        // Float, not Auto: choosing Auto's precision runs the DE, which may not return.
+        if (s.precision == Precision::Auto) s.precision = Precision::Float;
+        renderer.prepare(info, defaults_, s);
+        built.push_back("the render kernel");
+      } catch (const std::exception& e) {
+        failed.push_back(std::string("the render kernel: ") + e.what());
+      }
+    }
+    if (!failed.empty()) {
+      std::string detail = failed.front();
+      if (info.de_source.find("scene_de") == std::string::npos)
+        detail = "the DE source defines no `real_t scene_de(vec3_t p, __constant const "
+                 "scene_params_t* params)` (the entry point's name is scene_de); " +
+                 detail;
+      add("de-compiles", CheckStatus::Fail, detail);
+      return false;
+    }
+    std::string list;
+    for (const auto& b : built) list += (list.empty() ? "" : ", ") + b;
+    add("de-compiles", runtime_.device().has_fp64 ? CheckStatus::Pass : CheckStatus::Warn,
+        "built " + list + (runtime_.device().has_fp64 ? "" : "; the device has no double"));
+    return true;
+  }
+
+  // A DE that never returns would hang this process in the checks below; a test render in a
+  // child process with a time limit finds it first.
+  bool check_returns() {
+    const VetResult vet = vet_scene(file_, options_.render, runtime_.device().name,
+                                    options_.policy.vet_timeout_s);
+    if (vet.ok) {
+      add("de-returns", CheckStatus::Pass, "a test render at 8x8 finished in a child process");
+      return true;
+    }
+    if (vet.error.find("did not finish") != std::string::npos) {
+      add("de-returns", CheckStatus::Fail, vet.error);
+      return false;
+    }
+    add("de-returns", CheckStatus::Warn,
+        "the test render failed for another reason (see the checks below): " + vet.error);
+    return true;
+  }
+
+  void check_de() {
+    const SceneInfo& info = scene_->info;
+    const double r = defaults_.bounding_radius;
+    const auto points = ball_points(options_.de_samples, r, 1);
+    const bool fp64 = runtime_.device().has_fp64;
+    std::vector<float> v16, v1, vd;
+    try {
+      v16 = probe_de(runtime_, info, defaults_.params, points, 16, Precision::Float);
+      v1 = probe_de(runtime_, info, defaults_.params, points, 1, Precision::Float);
+      if (fp64) vd = probe_de(runtime_, info, defaults_.params, points, 16, Precision::Double);
+    } catch (const std::exception& e) {
+      add("de-finite", CheckStatus::Fail, std::string("evaluating the DE failed: ") + e.what());
+      return;
+    }
+
+    // Finite everywhere.
+    for (const auto* values : {&v16, &v1, &vd}) {
+      for (size_t i = 0; i < values->size(); ++i)
+        if (!std::isfinite((*values)[i])) {
+          add("de-finite", CheckStatus::Fail,
+              "DE is " + fmt((*values)[i]) + " at " + fmt(points[i]) + " (" +
+                  (values == &vd ? "double" : values == &v1 ? "float x1" : "float x16") + ")");
+          return;
+        }
+    }
+    add("de-finite", CheckStatus::Pass,
+        "finite at " + std::to_string(points.size()) + " points in the bounding sphere (radius " +
+            fmt(r) + ")");
+
+    // Lipschitz bound by finite differences, in the best precision there is.
+    {
+      const Precision precision = fp64 ? Precision::Double : Precision::Float;
+      const double step = 1e-3 * r;
+      std::mt19937 rng(2);
+      std::normal_distribution<double> g;
+      std::vector<Point> near;
+      for (const Point& p : points) {
+        double x = g(rng), y = g(rng), z = g(rng);
+        const double len = std::sqrt(x * x + y * y + z * z);
+        near.push_back({float(p[0] + x / len * step), float(p[1] + y / len * step),
+                        float(p[2] + z / len * step)});
+      }
+      const std::vector<float>& base = fp64 ? vd : v16;
+      const auto moved = probe_de(runtime_, info, defaults_.params, near, 16, precision);
+      // Outside the surface only: inside the solid a DE need not be a distance at all (an
+      // escape-time DE is meaningless there), and the marcher never steps by it.
+      const double tol = options_.lipschitz_tolerance;
+      double worst = 0;
+      size_t where = 0, pairs = 0, over = 0;
+      for (size_t i = 0; i < points.size(); ++i) {
+        const double dx = double(near[i][0]) - points[i][0], dy = double(near[i][1]) - points[i][1],
+                     dz = double(near[i][2]) - points[i][2];
+        const double dist = std::sqrt(dx * dx + dy * dy + dz * dz);
+        if (!(dist > 0) || !(base[i] > step) || !(moved[i] > step)) continue;
+        ++pairs;
+        const double ratio = std::abs(double(moved[i]) - base[i]) / dist;
+        over += ratio > 1 + tol;
+        if (ratio > worst) worst = ratio, where = i;
+      }
+      // Escape-time DEs jump where the escape iteration changes, so a few pairs straddling such
+      // a seam exceed any bound; a DE that is too large everywhere (3x, say) exceeds it at most
+      // pairs. The share of pairs over the limit decides; the worst pair is reported.
+      const double percent = 100.0 * double(over) / double(std::max<size_t>(pairs, 1));
+      const std::string detail =
+          fmt(percent) + "% of " + std::to_string(pairs) + " nearby pairs outside the surface " +
+          "have |dDE| / |dp| > " + fmt(1 + tol) + "; worst " + fmt(worst) + " at " +
+          fmt(points[where]) + (percent > 5 ? " (the DE oversteps: the picture is wrong)" : "");
+      add("de-lipschitz",
+          percent <= 1   ? CheckStatus::Pass
+          : percent <= 5 ? CheckStatus::Warn
+                         : CheckStatus::Fail,
+          detail);
+    }
+
+    // No surface outside the bounding sphere.
+    {
+      const auto shell = shell_points(options_.de_samples / 2, r * 1.0001, 2 * r, 3);
+      const auto values = probe_de(runtime_, info, defaults_.params, shell, 16, Precision::Float);
+      for (size_t i = 0; i < shell.size(); ++i)
+        if (!(values[i] > 0)) {
+          const double len = std::sqrt(double(shell[i][0]) * shell[i][0] +
+                                       double(shell[i][1]) * shell[i][1] +
+                                       double(shell[i][2]) * shell[i][2]);
+          add("de-bounded", CheckStatus::Fail,
+              "DE is " + fmt(values[i]) + " at " + fmt(shell[i]) + ", |p| = " + fmt(len) +
+                  ", outside the bounding radius " + fmt(r) +
+                  ": the host never marches there, so that surface is cut off");
+          return add_agreement(points, v16, v1, vd, r);
+        }
+      add("de-bounded", CheckStatus::Pass,
+          "DE > 0 at " + std::to_string(shell.size()) + " points between R and 2R");
+    }
+    add_agreement(points, v16, v1, vd, r);
+  }
+
+  void add_agreement(const std::vector<Point>& points, const std::vector<float>& v16,
+                     const std::vector<float>& v1, const std::vector<float>& vd, double r) {
+    double worst = 0;
+    size_t where = 0;
+    for (size_t i = 0; i < points.size(); ++i) {
+      const double d = std::abs(double(v16[i]) - v1[i]) / (1e-6 * r + 1e-5 * std::abs(v1[i]));
+      if (d > worst) worst = d, where = i;
+    }
+    add("lanes-agree", worst <= 1 ? CheckStatus::Pass : CheckStatus::Fail,
+        worst <= 1 ? "widths 1 and 16 agree at every point"
+                   : "widths 1 and 16 differ at " + fmt(points[where]) + ": " + fmt(v1[where]) +
+                         " vs " + fmt(v16[where]));
+    if (vd.empty()) {
+      add("precisions-agree", CheckStatus::Warn, "the device has no double precision");
+      return;
+    }
+    size_t disagree = 0;
+    double worst_gap = 0;
+    size_t worst_at = 0;
+    for (size_t i = 0; i < points.size(); ++i) {
+      const double gap = std::abs(double(v16[i]) - vd[i]);
+      if (gap > 1e-4 * r + 1e-3 * std::abs(vd[i])) ++disagree;
+      if (gap > worst_gap) worst_gap = gap, worst_at = i;
+    }
+    const double percent = 100.0 * double(disagree) / double(points.size());
+    add("precisions-agree",
+        percent <= 1   ? CheckStatus::Pass
+        : percent <= 5 ? CheckStatus::Warn
+                       : CheckStatus::Fail,
+        fmt(percent) + "% of points differ between float and double by more than 1e-4 R + " +
+            "1e-3 |DE|; largest gap " + fmt(worst_gap) + " at " + fmt(points[worst_at]));
+  }
+
+  bool check_update() {
+    const SceneInfo& info = scene_->info;
+    std::string error;
+    auto a = SceneInstance::create(scene_, &error);
+    auto b = a ? SceneInstance::create(scene_, &error) : nullptr;
+    if (!a || !b) {
+      add("update", CheckStatus::Fail, error);
+      return false;
+    }
+    // The same time and inputs give the same state: twice on one instance, once on another.
+    for (double t : {0.0, 0.5, 1.25, 7.5, 60.0}) {
+      SceneState first = defaults_, second = defaults_, other = defaults_;
+      if (!a->update(first, t, &error) || !a->update(second, t, &error) ||
+          !b->update(other, t, &error)) {
+        add("update", CheckStatus::Fail, "at time " + fmt(t) + " s: " + error);
+        return false;
+      }
+      if (!same_state(first, second) || !same_state(first, other)) {
+        add("update", CheckStatus::Fail,
+            "not deterministic: two updates at time " + fmt(t) +
+                " s from the same state gave different states (keep no hidden state; derive "
+                "everything from time_s and the parameters)");
+        return false;
+      }
+    }
+    // Every parameter at its minimum, maximum and default.
+    for (size_t i = 0; i < info.params.size(); ++i) {
+      const ParamInfo& p = info.params[i];
+      for (const fr_value* v : {&p.min_value, &p.max_value, &p.default_value}) {
+        auto fresh = SceneInstance::create(scene_, &error);
+        SceneState s = defaults_;
+        s.params[i] = *v;
+        if (!fresh || !fresh->update(s, 0.5, &error)) {
+          add("update", CheckStatus::Fail,
+              "with " + p.key + " at its " +
+                  (v == &p.min_value ? "minimum" : v == &p.max_value ? "maximum" : "default") +
+                  ": " + error);
+          return false;
+        }
+      }
+    }
+    add("update", CheckStatus::Pass,
+        "deterministic at 5 times; valid camera and lights with each of " +
+            std::to_string(info.params.size()) + " parameters at its minimum, maximum, default");
+    return true;
+  }
+
+  void check_create_destroy() {
+    std::string error;
+    auto cycle = [&]() -> bool {
+      auto instance = SceneInstance::create(scene_, &error);
+      return instance != nullptr;
+    };
+    for (int i = 0; i < 5; ++i)
+      if (!cycle()) {
+        add("create-destroy", CheckStatus::Fail, error);
+        return;
+      }
+    const auto before = scene_->code->host_stats(false, &error);
+    if (!before) {
+      add("create-destroy", CheckStatus::Pass,
+          "the scene has no callbacks" + (error.empty() ? std::string() : ": " + error));
+      return;
+    }
+    constexpr int kCycles = 200;
+    for (int i = 0; i < kCycles; ++i)
+      if (!cycle()) {
+        add("create-destroy", CheckStatus::Fail, "cycle " + std::to_string(i) + ": " + error);
+        return;
+      }
+    const auto after = scene_->code->host_stats(false, &error);
+    if (!after) {
+      add("create-destroy", CheckStatus::Fail, error);
+      return;
+    }
+    const double per_cycle =
+        (double(after->heap_bytes) - double(before->heap_bytes)) / double(kCycles);
+    if (after->threads > before->threads)
+      add("create-destroy", CheckStatus::Fail,
+          "threads grew from " + std::to_string(before->threads) + " to " +
+              std::to_string(after->threads) + " over " + std::to_string(kCycles) + " cycles");
+    else if (per_cycle > 64)
+      add("create-destroy", CheckStatus::Fail,
+          "the heap grows by about " + fmt(per_cycle) + " bytes per create/destroy (" +
+              std::to_string(kCycles) + " cycles): destroy does not free what create made");
+    else
+      add("create-destroy", CheckStatus::Pass,
+          std::to_string(kCycles) + " cycles: heap " + fmt(per_cycle) +
+              " bytes per cycle, threads unchanged");
+  }
+
+  void check_render() {
+    std::string error;
+    auto instance = SceneInstance::create(scene_, &error);
+    SceneState state = defaults_;
+    if (!instance || !instance->update(state, 0, &error)) {
+      add("render", CheckStatus::Fail, error);
+      return;
+    }
+    RenderSettings s = options_.render;
+    s.width_px = 96;
+    s.height_px = 54;
+    s.samples = 1;
+    FrameImage image;
+    try {
+      Renderer renderer(runtime_);
+      image = renderer.render(scene_->info, state, s, true);
+    } catch (const std::exception& e) {
+      add("render", CheckStatus::Fail, e.what());
+      return;
+    }
+    size_t nan = 0;
+    for (float v : image.linear_rgba) nan += !std::isfinite(v);
+    const RayCounts rays = count_rays(image);
+    const double total = double(image.ray_status.size());
+    const double out_percent = 100.0 * double(rays.out_of_steps) / std::max(1.0, total);
+    const std::string counts = std::to_string(rays.hit) + " of " +
+                               std::to_string(image.ray_status.size()) + " rays hit, " +
+                               fmt(out_percent) + "% out of steps";
+    if (nan > 0)
+      add("render", CheckStatus::Fail, std::to_string(nan) + " non-finite pixel values; " + counts);
+    else if (rays.hit == 0)
+      add("render", CheckStatus::Fail,
+          "nothing visible from the default camera (every ray missed or started inside)");
+    else if (out_percent > 5)
+      add("render", CheckStatus::Fail, counts + " (more than 5%: the DE steps too short)");
+    else if (out_percent > kOutOfStepsWarnPercent)
+      add("render", CheckStatus::Warn, counts);
+    else
+      add("render", CheckStatus::Pass, "96x54, no NaN; " + counts);
+  }
+
+  void check_unload() {
+    std::string error;
+    const auto stats = scene_->code->host_stats(true, &error);
+    if (!stats) {
+      if (error.empty())
+        add("unload", CheckStatus::Pass, "no code to unload");
+      else
+        add("unload", CheckStatus::Fail, error);
+      return;
+    }
+    if (stats->threads > 1)
+      add("unload", CheckStatus::Fail,
+          std::to_string(stats->threads - 1) +
+              " thread(s) of the plugin still run after every instance was destroyed and the "
+              "library closed");
+    else if (stats->plugin_mappings > 0)
+      add("unload", CheckStatus::Fail,
+          "the library stays mapped after dlclose (" + std::to_string(stats->plugin_mappings) +
+              " mappings): something pins it (a thread, a TLS destructor, RTLD_NODELETE)");
+    else
+      add("unload", CheckStatus::Pass, "no thread and no mapping left after dlclose");
+  }
+
+  std::filesystem::path file_;
+  CheckOptions options_;
+  ClRuntime& runtime_;
+  CheckReport report_;
+  std::shared_ptr<const LoadedScene> scene_;
+  SceneState defaults_;
+};
+
+}  // namespace
+
+CheckReport check_scene_plugin(const std::filesystem::path& file, const CheckOptions& options,
+                               ClRuntime& runtime) {
+  return Checker(file, options, runtime).run();
+}
+
+}  // namespace fr

@@ -1,0 +1,60 @@
+// `fractalis check PLUGIN.so [--json FILE]`: the conformance checks of check/scene_check.hpp on
+// one scene plugin, as a table (and JSON). Exit 0 when nothing failed (warnings allowed), 1 when
+// a check failed, 2 for usage errors.
+#include "check/scene_check.hpp"
+#include "cli/commands.hpp"
+#include "cli/scene_setup.hpp"
+#include "io/atomic_file.hpp"
+
+#include <optional>
+#include <ostream>
+
+namespace fr {
+
+int command_check(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  std::vector<OptionSpec> specs = {
+      {"json", "FILE", false, "also write the findings as JSON (atomically)"},
+      {"config", "FILE", false, "settings file (default: $XDG_CONFIG_HOME/fractalis/config.toml)"},
+      {"set", "KEY=VALUE", true, "any setting, as in config/default.toml (repeatable)"},
+      {"device", "SEL", false, "OpenCL device: gpu, cpu, P:D or part of its name"},
+      {"help", nullptr, false, "show this help"},
+  };
+  // The plugin file comes first; the options after it.
+  std::vector<std::string> rest = args;
+  std::optional<std::filesystem::path> file;
+  if (!rest.empty() && rest[0].rfind("--", 0) != 0) {
+    file = rest[0];
+    rest.erase(rest.begin());
+  }
+  auto options = parse_options("check", rest, specs);
+  if (options.has("help")) {
+    out << "usage: fractalis check PLUGIN.so [--json FILE] [--device SEL]\n\n"
+           "Runs the conformance checks on a scene plugin (in a scene-host process, so a crash "
+           "is a\nfinding): descriptor rules, DE builds, DE values (finite, Lipschitz, bounded, "
+           "the same\nat every lane width and precision), update determinism and parameter "
+           "ranges,\ncreate/destroy leaks, a sanity render, and unloading. Exit 0 when nothing "
+           "failed.\n\n"
+        << format_options(specs);
+    return 0;
+  }
+  if (!file) throw UsageError("expected a plugin file first (fractalis check PLUGIN.so)");
+  const auto json_file = options.get("json");
+  if (json_file && json_file->empty()) throw UsageError("--json: empty file name");
+  const Settings settings = load_settings(options);
+  CheckOptions check;
+  check.policy = settings.plugins;
+  check.render = render_settings_from(settings, options);
+  ClRuntime runtime(choose_device(settings, options));
+  const CheckReport report = check_scene_plugin(*file, check, runtime);
+  write_check_table(report, out);
+  if (json_file) {
+    std::string error;
+    if (!write_file_atomic(*json_file, check_report_json(report), &error)) {
+      err << "fractalis: error: " << error << "\n";
+      return 1;
+    }
+  }
+  return report.failed() ? 1 : 0;
+}
+
+}  // namespace fr
