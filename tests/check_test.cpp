@@ -50,11 +50,12 @@ std::string status_of(const std::string& table, const std::string& check) {
 TEST(Check, EveryInTreeScenePasses) {
   for (const char* scene : {"mandelbulb", "menger", "sierpinski", "julia", "benchmark"}) {
     SCOPED_TRACE(scene);
-    const CheckRun r = run_check(std::filesystem::path(SCENE_PLUGIN_DIR) / (std::string(scene) + ".so"));
+    const CheckRun r =
+        run_check(std::filesystem::path(SCENE_PLUGIN_DIR) / (std::string(scene) + ".so"));
     EXPECT_EQ(r.exit_code, 0) << r.out;
-    for (const char* check : {"descriptor", "de-compiles", "de-returns", "de-finite",
-                              "de-lipschitz", "de-bounded", "lanes-agree", "update",
-                              "create-destroy", "render", "unload"})
+    for (const char* check :
+         {"descriptor", "de-compiles", "de-returns", "de-finite", "de-lipschitz", "de-bounded",
+          "lanes-agree", "update", "create-destroy", "render", "unload"})
       EXPECT_EQ(status_of(r.out, check), "PASS") << check << "\n" << r.out;
     EXPECT_NE(r.json.find("\"result\": \"pass\""), std::string::npos) << r.json;
     EXPECT_NE(r.json.find("\"scene\": \"" + std::string(scene) + "\""), std::string::npos);
@@ -93,13 +94,13 @@ TEST(Check, EachBrokenFixtureFailsItsCheck) {
 }
 
 TEST(Check, UsageErrors) {
-  EXPECT_EQ(std::system((std::string(FRACTALIS_EXECUTABLE) + " check > /dev/null 2>&1").c_str()) >> 8,
-            2);
-  EXPECT_EQ(std::system((std::string(FRACTALIS_EXECUTABLE) +
-                         " check x.so --frobnicate > /dev/null 2>&1")
-                            .c_str()) >>
-                8,
-            2);
+  EXPECT_EQ(
+      std::system((std::string(FRACTALIS_EXECUTABLE) + " check > /dev/null 2>&1").c_str()) >> 8, 2);
+  EXPECT_EQ(
+      std::system((std::string(FRACTALIS_EXECUTABLE) + " check x.so --frobnicate > /dev/null 2>&1")
+                      .c_str()) >>
+          8,
+      2);
 }
 
 }  // namespace

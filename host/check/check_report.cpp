@@ -70,14 +70,15 @@ void write_check_table(const CheckReport& report, std::ostream& out) {
         << r.detail << "\n";
   }
   out << "\n"
-      << counts[0] << " passed, " << counts[1] << " warned, " << counts[2] << " failed: "
-      << (report.failed() ? "FAIL" : "PASS") << "\n";
+      << counts[0] << " passed, " << counts[1] << " warned, " << counts[2]
+      << " failed: " << (report.failed() ? "FAIL" : "PASS") << "\n";
 }
 
 std::string check_report_json(const CheckReport& report) {
   std::string out = "{\n  \"file\": " + json_string(report.file) +
-                    ",\n  \"scene\": " + json_string(report.scene_id) + ",\n  \"result\": " +
-                    json_string(report.failed() ? "fail" : "pass") + ",\n  \"checks\": [";
+                    ",\n  \"scene\": " + json_string(report.scene_id) +
+                    ",\n  \"result\": " + json_string(report.failed() ? "fail" : "pass") +
+                    ",\n  \"checks\": [";
   for (size_t i = 0; i < report.rows.size(); ++i) {
     const CheckRow& r = report.rows[i];
     out += std::string(i ? "," : "") + "\n    {\"check\": " + json_string(r.check) +

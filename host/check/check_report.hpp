@@ -11,7 +11,7 @@ enum class CheckStatus { Pass, Warn, Fail };
 const char* check_status_name(CheckStatus status);
 
 struct CheckRow {
-  std::string check;   // "descriptor", "de-compiles", "de-lipschitz", ...
+  std::string check;  // "descriptor", "de-compiles", "de-lipschitz", ...
   CheckStatus status = CheckStatus::Pass;
   std::string detail;  // the reason, with the numbers and the place ("worst 3.01 at (0.2, ...)")
 };

@@ -149,9 +149,10 @@ class Checker {
     if (!failed.empty()) {
       std::string detail = failed.front();
       if (info.de_source.find("scene_de") == std::string::npos)
-        detail = "the DE source defines no `real_t scene_de(vec3_t p, __constant const "
-                 "scene_params_t* params)` (the entry point's name is scene_de); " +
-                 detail;
+        detail =
+            "the DE source defines no `real_t scene_de(vec3_t p, __constant const "
+            "scene_params_t* params)` (the entry point's name is scene_de); " +
+            detail;
       add("de-compiles", CheckStatus::Fail, detail);
       return false;
     }
@@ -165,8 +166,8 @@ class Checker {
   // A DE that never returns would hang this process in the checks below; a test render in a
   // child process with a time limit finds it first.
   bool check_returns() {
-    const VetResult vet = vet_scene(file_, options_.render, runtime_.device().name,
-                                    options_.policy.vet_timeout_s);
+    const VetResult vet =
+        vet_scene(file_, options_.render, runtime_.device().name, options_.policy.vet_timeout_s);
     if (vet.ok) {
       add("de-returns", CheckStatus::Pass, "a test render at 8x8 finished in a child process");
       return true;
@@ -201,7 +202,10 @@ class Checker {
         if (!std::isfinite((*values)[i])) {
           add("de-finite", CheckStatus::Fail,
               "DE is " + fmt((*values)[i]) + " at " + fmt(points[i]) + " (" +
-                  (values == &vd ? "double" : values == &v1 ? "float x1" : "float x16") + ")");
+                  (values == &vd   ? "double"
+                   : values == &v1 ? "float x1"
+                                   : "float x16") +
+                  ")");
           return;
         }
     }
@@ -260,9 +264,9 @@ class Checker {
       const auto values = probe_de(runtime_, info, defaults_.params, shell, 16, Precision::Float);
       for (size_t i = 0; i < shell.size(); ++i)
         if (!(values[i] > 0)) {
-          const double len = std::sqrt(double(shell[i][0]) * shell[i][0] +
-                                       double(shell[i][1]) * shell[i][1] +
-                                       double(shell[i][2]) * shell[i][2]);
+          const double len =
+              std::sqrt(double(shell[i][0]) * shell[i][0] + double(shell[i][1]) * shell[i][1] +
+                        double(shell[i][2]) * shell[i][2]);
           add("de-bounded", CheckStatus::Fail,
               "DE is " + fmt(values[i]) + " at " + fmt(shell[i]) + ", |p| = " + fmt(len) +
                   ", outside the bounding radius " + fmt(r) +
@@ -343,7 +347,9 @@ class Checker {
         if (!fresh || !fresh->update(s, 0.5, &error)) {
           add("update", CheckStatus::Fail,
               "with " + p.key + " at its " +
-                  (v == &p.min_value ? "minimum" : v == &p.max_value ? "maximum" : "default") +
+                  (v == &p.min_value   ? "minimum"
+                   : v == &p.max_value ? "maximum"
+                                       : "default") +
                   ": " + error);
           return false;
         }

@@ -31,9 +31,9 @@
 namespace fr {
 
 struct CheckOptions {
-  PluginPolicy policy;     // isolation is always Process here
-  RenderSettings render;   // the base settings of the sanity render
-  int de_samples = 2048;   // points sampled over the bounding sphere
+  PluginPolicy policy;    // isolation is always Process here
+  RenderSettings render;  // the base settings of the sanity render
+  int de_samples = 2048;  // points sampled over the bounding sphere
   // |dDE| <= (1 + tol) |dp|: pass when at most 1% of the sampled pairs exceed it, fail above 5%.
   double lipschitz_tolerance = 0.1;
 };

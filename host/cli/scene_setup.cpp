@@ -3,6 +3,7 @@
 #include "plugin/plugin_text.hpp"
 #include "render/camera.hpp"
 
+#include <cstdlib>
 #include <ostream>
 
 namespace fr {
@@ -76,11 +77,30 @@ std::vector<std::filesystem::path> plugin_folders(const Settings& settings,
   }
   if (!settings.plugin_folders.empty()) return settings.plugin_folders;
   std::vector<std::filesystem::path> folders;
-  for (const char* dir : {FRACTALIS_PLUGIN_BUILD_DIR, FRACTALIS_PLUGIN_INSTALL_DIR}) {
+  auto add = [&](const std::filesystem::path& dir) {
     std::error_code ec;
-    if (std::filesystem::is_directory(dir, ec)) folders.emplace_back(dir);
-  }
+    if (std::filesystem::is_directory(dir, ec)) folders.push_back(dir);
+  };
+  // The scenes built with this executable: the build tree's when it runs from the build tree,
+  // else the installed ones, found from the executable (<prefix>/bin/fractalis ->
+  // <prefix>/lib/fractalis/plugins), so that any install prefix works.
+  std::error_code ec;
+  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  const std::string build_root = std::string(FRACTALIS_BUILD_ROOT) + "/";
+  if (ec || exe.string().rfind(build_root, 0) == 0)
+    add(FRACTALIS_PLUGIN_BUILD_DIR);
+  else
+    add(exe.parent_path().parent_path() / FRACTALIS_PLUGIN_INSTALL_DIR);
+  add(user_scene_folder());
   return folders;
+}
+
+std::filesystem::path user_scene_folder() {
+  if (const char* xdg = std::getenv("XDG_DATA_HOME"); xdg && *xdg)
+    return std::filesystem::path(xdg) / "fractalis" / "scenes";
+  if (const char* home = std::getenv("HOME"); home && *home)
+    return std::filesystem::path(home) / ".local" / "share" / "fractalis" / "scenes";
+  return {};
 }
 
 std::vector<LoadOutcome> load_plugins(const std::vector<std::filesystem::path>& folders,

@@ -26,9 +26,14 @@ std::vector<OptionSpec> plugin_option_specs();
 Settings load_settings(const ParsedOptions& options,
                        std::vector<SettingsProblem>* problems = nullptr);
 
-// --plugins DIR, else plugins.folders from settings, else the build tree's and installed folders.
+// --plugins DIR (only that folder), else plugins.folders from settings (only those), else the
+// scenes built with this executable (the build tree's, or the installed ones) and then the
+// user's folder (user_scene_folder), each when it exists.
 std::vector<std::filesystem::path> plugin_folders(const Settings& settings,
                                                   const ParsedOptions& options);
+
+// Where a user drops scenes: $XDG_DATA_HOME/fractalis/scenes (~/.local/share/fractalis/scenes).
+std::filesystem::path user_scene_folder();
 
 // Loads the folders, reports each plugin that failed on `err` (one line each), and returns the
 // outcomes.

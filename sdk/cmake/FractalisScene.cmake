@@ -3,7 +3,7 @@
 #
 # Builds a Fractalis scene plugin: a MODULE library named <target>.so whose only exported symbol
 # is fractalis_scene_entry, linked with -z defs so a missing symbol fails at build time, not at
-# load time. The OpenCL files are embedded as
+# load time (libm is linked for you). The OpenCL files are embedded as
 #   extern const char fr_de_source[];       (DE_SOURCE)
 #   extern const char fr_surface_source[];  (SURFACE_SOURCE, if given)
 # for the scene descriptor's de_source and surface_source fields.
@@ -46,4 +46,8 @@ function(fractalis_add_scene target)
   endif()
   target_link_options(${target} PRIVATE
     "LINKER:--version-script=${FRACTALIS_SDK_CMAKE_DIR}/scene.map" "LINKER:-z,defs")
+  # -z defs makes every undefined symbol an error, libm's (sin, pow, ...) included: link it.
+  if(UNIX AND NOT APPLE)
+    target_link_libraries(${target} PRIVATE m)
+  endif()
 endfunction()

@@ -1,0 +1,18 @@
+# find_package(FractalisSDK <version>) check: the same major version, and at least the minor
+# asked for. Works from an installed SDK and from the source tree alike.
+include("${CMAKE_CURRENT_LIST_DIR}/FractalisSDKVersion.cmake")
+set(PACKAGE_VERSION "${FRACTALIS_SDK_VERSION}")
+string(REGEX MATCH "^[0-9]+" _fractalis_sdk_major "${PACKAGE_VERSION}")
+if(NOT PACKAGE_FIND_VERSION)
+  set(PACKAGE_VERSION_COMPATIBLE TRUE)
+elseif(NOT PACKAGE_FIND_VERSION_MAJOR EQUAL _fractalis_sdk_major)
+  set(PACKAGE_VERSION_COMPATIBLE FALSE)
+elseif(PACKAGE_FIND_VERSION VERSION_GREATER PACKAGE_VERSION)
+  set(PACKAGE_VERSION_COMPATIBLE FALSE)
+else()
+  set(PACKAGE_VERSION_COMPATIBLE TRUE)
+  if(PACKAGE_FIND_VERSION VERSION_EQUAL PACKAGE_VERSION)
+    set(PACKAGE_VERSION_EXACT TRUE)
+  endif()
+endif()
+unset(_fractalis_sdk_major)
