@@ -10,6 +10,10 @@
  *     a loop exit tests any_lane(mask) or all_lanes(mask).
  *   - math built-ins (sqrt, log, pow, atan2, ...) take real_t; pass to_real(x) for constants. */
 
+/* The DE helper library's version (kernels/de/, #include "fr/..."): 10000 major + 100 minor +
+ * patch. A scene may test it: #if FR_DE_LIBRARY_VERSION < 10000 ... #endif. */
+#define FR_DE_LIBRARY_VERSION 10000
+
 #if FR_DOUBLE
 #pragma OPENCL EXTENSION cl_khr_fp64 : enable
 typedef double scalar_t;

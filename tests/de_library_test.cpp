@@ -5,6 +5,9 @@
 #include "test_support.hpp"
 
 #include <cmath>
+#include <fstream>
+#include <regex>
+#include <set>
 #include <sstream>
 
 namespace fr {
@@ -146,4 +149,35 @@ TEST(DeLibrary, Folds) {
 }
 
 }  // namespace
+// The scene guide lists every public function of the DE library with its exact signature: the
+// signatures are read from kernels/de/*.cl here, so a function added or changed there without the
+// guide fails this test.
+TEST(DeLibrary, GuideListsEverySignature) {
+  std::ifstream guide_file(std::string(SOURCE_DIR) + "/sdk/docs/writing-a-scene.md");
+  const std::string guide((std::istreambuf_iterator<char>(guide_file)), {});
+  ASSERT_FALSE(guide.empty());
+  // Helpers the library uses internally, not meant for scenes.
+  const std::set<std::string> internal = {"pow_int", "unit_complex_pow_int", "mandelbulb_pow_int",
+                                          "mandelbulb_pow_real"};
+  const std::regex definition(
+      R"(^(?:inline )?((?:real_t|vec3_t|surface_t|void)\s+([a-z_0-9]+)\(([^)]*)\))\s*\{)");
+  size_t found = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(std::string(SOURCE_DIR) + "/kernels/de")) {
+    std::ifstream in(entry.path());
+    const std::string text((std::istreambuf_iterator<char>(in)), {});
+    // Definitions may span lines: join each one's lines up to its opening brace.
+    std::string joined = std::regex_replace(text, std::regex(R"(,\n\s+)"), ", ");
+    std::istringstream lines(joined);
+    std::string line;
+    while (std::getline(lines, line)) {
+      std::smatch m;
+      if (!std::regex_search(line, m, definition) || internal.count(m[2])) continue;
+      ++found;
+      EXPECT_NE(guide.find("`" + m[1].str() + "`"), std::string::npos)
+          << entry.path().filename() << ": " << m[1] << " is not in the guide";
+    }
+  }
+  EXPECT_GE(found, 30u);
+}
+
 }  // namespace fr

@@ -65,7 +65,8 @@ int command_list(const std::vector<std::string>& args, std::ostream& out, std::o
   auto options = parse_options("list", args, specs);
   if (options.has("help")) {
     out << "usage: fractalis list [--plugins DIR] [--verbose]\n\nLists every scene plugin found: "
-           "id, version, parameters with their ranges, or why it failed to load.\n\n"
+           "id, version, parameters with their ranges, or why it failed to load. Exits 1 when\n"
+           "a plugin failed to load.\n\n"
         << format_options(specs);
     return 0;
   }
@@ -76,8 +77,10 @@ int command_list(const std::vector<std::string>& args, std::ostream& out, std::o
     return 1;
   }
   for (const auto& f : folders) out << "plugin folder: " << f.string() << "\n";
+  bool any_failed = false;
   for (const auto& o : load_scene_folder(folders, settings.plugins)) {
     if (!o.scene) {
+      any_failed = true;
       out << "\n"
           << printable(o.file.filename().string()) << ": FAILED (" << load_result_name(o.result)
           << "): " << o.message << "\n";
@@ -99,7 +102,9 @@ int command_list(const std::vector<std::string>& args, std::ostream& out, std::o
     }
     if (options.has("verbose")) describe_kernel(s, settings.render, out);
   }
-  return 0;
+  // A plugin that did not load is a failure a script should see (the listing still shows the
+  // rest).
+  return any_failed ? 1 : 0;
 }
 
 }  // namespace fr
