@@ -10,7 +10,12 @@
 extern "C" size_t fr_test_c_layout(int what);
 
 static_assert(sizeof(void*) == 8, "the frozen layout below is for LP64");
-static_assert(sizeof(fr_scene_entry) == 24);
+// ABI 1.1 grew three structs at their ends; every 1.0 offset below is unchanged (a 1.0 plugin's
+// struct is the 1.1 struct's prefix, which is what struct_size and FR_STRUCT_HAS rely on).
+static_assert(sizeof(fr_scene_entry) == 48);
+static_assert(offsetof(fr_scene_entry, init) == 24);
+static_assert(offsetof(fr_scene_entry, deinit) == 32);
+static_assert(offsetof(fr_scene_entry, get_extension) == 40);
 static_assert(offsetof(fr_scene_entry, abi_major) == 0);
 static_assert(offsetof(fr_scene_entry, abi_minor) == 4);
 static_assert(offsetof(fr_scene_entry, struct_size) == 8);
@@ -28,10 +33,14 @@ static_assert(offsetof(fr_camera, fov_deg) == 80);
 static_assert(sizeof(fr_light) == 80);
 static_assert(offsetof(fr_light, falloff) == 72);
 
-static_assert(sizeof(fr_host) == 24);
+static_assert(sizeof(fr_host) == 48);
+static_assert(offsetof(fr_host, host_name) == 24);
+static_assert(offsetof(fr_host, get_extension) == 40);
+static_assert(sizeof(fr_thread_log) == 16);
 static_assert(offsetof(fr_host, log) == 16);
 
-static_assert(sizeof(fr_frame_state) == 72);
+static_assert(sizeof(fr_frame_state) == 80);
+static_assert(offsetof(fr_frame_state, light_stride) == 72);
 static_assert(offsetof(fr_frame_state, params) == 32);
 static_assert(offsetof(fr_frame_state, bounding_radius) == 64);
 
@@ -69,5 +78,6 @@ TEST(AbiLayout, CAndCppAgree) {
 
 TEST(AbiLayout, VersionMacros) {
   EXPECT_EQ(FR_ABI_VERSION_MAJOR, 1u);
+  EXPECT_EQ(FR_ABI_VERSION_MINOR, 1u);
   EXPECT_STREQ(FR_SCENE_ENTRY_SYMBOL, "fractalis_scene_entry");
 }

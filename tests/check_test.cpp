@@ -62,6 +62,13 @@ TEST(Check, EveryInTreeScenePasses) {
   }
 }
 
+// The compatibility scene, built against the frozen ABI 1.0 headers, passes on this 1.1 host.
+TEST(Check, SceneBuiltAgainstAbi10Passes) {
+  const CheckRun r = run_check(std::filesystem::path(COMPAT_PLUGIN_DIR) / "abi10_scene.so");
+  EXPECT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_EQ(status_of(r.out, "render"), "PASS") << r.out;
+}
+
 // Each broken plugin fails the check named after its fault; the checks before it pass.
 TEST(Check, EachBrokenFixtureFailsItsCheck) {
   const std::filesystem::path check_dir = CHECK_PLUGIN_DIR, hostile = HOSTILE_PLUGIN_DIR;

@@ -81,7 +81,7 @@ TEST(Cli, HelpAndVersion) {
   }
   const CliRun v = run({"--version"});
   EXPECT_EQ(v.code, 0);
-  EXPECT_NE(v.out.find("scene ABI 1.0"), std::string::npos);
+  EXPECT_NE(v.out.find("scene ABI 1.1"), std::string::npos);
   EXPECT_EQ(run({}).code, 2);
 }
 

@@ -2,10 +2,13 @@
 // the message (what was wrong, what was expected) for each, and the good plugins still load.
 #include "plugin/plugin_loader.hpp"
 #include "plugin/plugin_library.hpp"
+#include "plugin/scene_code.hpp"
 #include "plugin/scene_instance.hpp"
 #include "render/renderer.hpp"
 #include "test_support.hpp"
 
+#include <dlfcn.h>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <map>
@@ -100,7 +103,7 @@ TEST(PluginLoader, WrongAbiMajor) {
   expect_failure("wrong_major", LoadResult::WrongAbiMajor, "wrong ABI major: plugin 2, host 1");
 }
 TEST(PluginLoader, AbiMinorTooNew) {
-  expect_failure("too_new_minor", LoadResult::AbiTooNew, "plugin needs ABI 1.99, host has 1.0");
+  expect_failure("too_new_minor", LoadResult::AbiTooNew, "plugin needs ABI 1.99, host has 1.1");
 }
 TEST(PluginLoader, StructTooSmall) {
   expect_failure("small_struct", LoadResult::StructTooSmall,
@@ -225,6 +228,78 @@ TEST(SceneInstance, ClampsParamsAfterUpdate) {
   auto instance = SceneInstance::create(scene, &error);
   ASSERT_TRUE(instance->update(state, 0.0, &error)) << error;
   EXPECT_EQ(state.params[power].v[0], 16.0);
+}
+
+// ABI compatibility. A scene built against the frozen 1.0 headers (tests/abi_1_0/) loads, updates
+// (reading its light as 1.0 lays it out) and renders on this 1.1 host.
+TEST(AbiCompatibility, SceneBuiltAgainst10HeadersRuns) {
+  const auto file = std::filesystem::path(COMPAT_PLUGIN_DIR) / "abi10_scene.so";
+  for (PluginIsolation mode : {PluginIsolation::Process, PluginIsolation::None}) {
+    PluginPolicy policy;
+    policy.isolation = mode;
+    const LoadOutcome o = load_scene_plugin(file, policy);
+    ASSERT_EQ(o.result, LoadResult::Loaded) << o.message;
+    std::string error;
+    auto instance = SceneInstance::create(o.scene, &error);
+    ASSERT_TRUE(instance) << error;
+    SceneState state = make_default_state(o.scene->info);
+    ASSERT_TRUE(instance->update(state, 2.0, &error)) << error;
+    EXPECT_NEAR(state.camera.eye[0], 3.5 * std::sin(0.4), 1e-12);
+    Renderer renderer(test::runtime());
+    RenderSettings settings;
+    settings.width_px = settings.height_px = 16;
+    const FrameImage image = renderer.render(o.scene->info, state, settings, true);
+    EXPECT_GT(count_rays(image).hit, 0u);
+  }
+}
+
+// A plugin built with this (1.1) SDK that uses nothing new declares minor 0, so a 1.0 host —
+// which accepts minor <= 0 and any struct at least 1.0's size — loads it; one that uses 1.1's
+// entry fields declares minor 1.
+TEST(AbiCompatibility, MinorIsWhatThePluginNeedsNotTheSdks) {
+  auto entry_of = [](const std::filesystem::path& file) {
+    void* handle = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
+    EXPECT_TRUE(handle) << dlerror();
+    const auto* entry = static_cast<const fr_scene_entry*>(dlsym(handle, FR_SCENE_ENTRY_SYMBOL));
+    const fr_scene_entry copy = *entry;
+    return std::make_pair(copy, handle);
+  };
+  auto [plain, plain_handle] = entry_of(fixture_plugin("valid_scene"));
+  EXPECT_EQ(plain.abi_minor, 0u);
+  EXPECT_GE(plain.struct_size, 24u);
+  EXPECT_GE(plain.scene->struct_size, 160u);
+  auto [v11, v11_handle] = entry_of(std::filesystem::path(COMPAT_PLUGIN_DIR) / "abi11_features.so");
+  EXPECT_EQ(v11.abi_minor, 1u);
+  // The plugin's side of the extension mechanism: an id it knows, and NULL for one it does not.
+  ASSERT_TRUE(v11.get_extension);
+  EXPECT_EQ(*static_cast<const int*>(v11.get_extension("fixture.answer/1")), 42);
+  EXPECT_EQ(v11.get_extension("fixture.unknown/1"), nullptr);
+  dlclose(plain_handle);
+  dlclose(v11_handle);
+}
+
+// ABI 1.1's host side: init gets the plugin's path as the user named it and the host's name and
+// version, the host's extension lookup gives the thread-safe log (and NULL for an unknown id),
+// a message logged from another thread arrives with the update's answer, and lights are found
+// through FR_FRAME_LIGHT.
+TEST(AbiCompatibility, Abi11InitExtensionsAndThreadLog) {
+  const auto file = std::filesystem::path(COMPAT_PLUGIN_DIR) / "abi11_features.so";
+  for (PluginIsolation mode : {PluginIsolation::Process, PluginIsolation::None}) {
+    PluginPolicy policy;
+    policy.isolation = mode;
+    const LoadOutcome o = load_scene_plugin(file, policy);
+    ASSERT_EQ(o.result, LoadResult::Loaded) << o.message;
+    uint64_t handle = 0;
+    ASSERT_TRUE(o.scene->code->create(&handle).ok);
+    SceneState state = make_default_state(o.scene->info);
+    const CallOutcome out = o.scene->code->update(handle, state);
+    ASSERT_TRUE(out.ok) << out.error;
+    bool found = false;
+    for (const PluginMessage& m : out.messages)
+      found |= m.text == "init by fractalis " FRACTALIS_VERSION " for " + file.string();
+    EXPECT_TRUE(found) << "the worker thread's message did not arrive";
+    o.scene->code->destroy(handle);
+  }
 }
 
 }  // namespace

@@ -4,16 +4,18 @@
 
 #include <algorithm>
 #include <cstring>
+#include <functional>
 
 namespace fr {
 namespace {
 
-// Sizes of the ABI 1.0 structs: a plugin's struct may be larger (a newer minor), never smaller.
-constexpr uint32_t kEntrySizeV1_0 = sizeof(fr_scene_entry);
-constexpr uint32_t kSceneSizeV1_0 = sizeof(fr_scene_desc);
-constexpr uint32_t kParamSizeV1_0 = sizeof(fr_param_desc);
-constexpr uint32_t kCameraSizeV1_0 = sizeof(fr_camera);
-constexpr uint32_t kLightSizeV1_0 = sizeof(fr_light);
+// Sizes of the ABI 1.0 structs (frozen: tests/abi_layout_test.cpp): a plugin's struct may be
+// larger (a newer minor) or as large as 1.0's, never smaller.
+constexpr uint32_t kEntrySizeV1_0 = 24;
+constexpr uint32_t kSceneSizeV1_0 = 160;
+constexpr uint32_t kParamSizeV1_0 = 120;
+constexpr uint32_t kCameraSizeV1_0 = 88;
+constexpr uint32_t kLightSizeV1_0 = 80;
 
 // Copies the part of a plugin struct this host knows; fields beyond the plugin's size stay zero.
 template <typename T>
@@ -48,7 +50,8 @@ bool copy_string(const char* s, size_t cap, std::string* out) {
 
 }  // namespace
 
-DescriptorCopy copy_descriptor(const fr_scene_entry* entry) {
+DescriptorCopy copy_descriptor(const fr_scene_entry* entry,
+                               const std::function<std::string(const fr_scene_entry&)>& init) {
   DescriptorCopy out;
   auto fail = [&](LoadResult r, std::string m) {
     out.result = r;
@@ -73,7 +76,13 @@ DescriptorCopy copy_descriptor(const fr_scene_entry* entry) {
     return fail(LoadResult::StructTooSmall,
                 too_small("fr_scene_entry", entry->struct_size, kEntrySizeV1_0));
   if (entry->reserved != 0) return invalid("fr_scene_entry.reserved is not zero");
-  const fr_scene_desc* desc_ptr = entry->scene;
+  // Fields past the plugin's struct_size (a 1.0 plugin's init, ...) read as null.
+  const fr_scene_entry e = copy_struct(entry);
+  if (init) {
+    if (std::string error = init(e); !error.empty()) return invalid(error);
+  }
+  out.deinit = e.deinit;
+  const fr_scene_desc* desc_ptr = e.scene;
   if (!desc_ptr) return invalid("entry's scene pointer is null");
   if (desc_ptr->struct_size < kSceneSizeV1_0)
     return fail(LoadResult::StructTooSmall,

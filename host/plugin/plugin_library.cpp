@@ -208,6 +208,13 @@ std::shared_ptr<PluginLibrary> PluginLibrary::open(int fd, const std::filesystem
 }
 
 PluginLibrary::~PluginLibrary() {
+  if (deinit_) {
+    try {
+      deinit_();
+    } catch (...) {
+      // Nothing to recover: the library goes either way.
+    }
+  }
   dlclose(handle_);
   close(memfd_);
 }

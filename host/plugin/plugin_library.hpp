@@ -31,10 +31,14 @@ class PluginLibrary {
   // The address of an exported symbol, or null.
   const void* symbol(const char* name) const;
 
+  // The plugin's deinit (ABI 1.1), called just before the library is closed.
+  void set_deinit(void (*deinit)(void)) { deinit_ = deinit; }
+
  private:
   PluginLibrary(void* handle, int memfd) : handle_(handle), memfd_(memfd) {}
   void* handle_;
   int memfd_;  // kept open while mapped: its /proc/self/fd name must not be reused meanwhile
+  void (*deinit_)(void) = nullptr;
 };
 
 // "" when `bytes` starts a complete ELF shared library of this process's own class, byte order

@@ -33,7 +33,9 @@ LoadOutcome load_in_process(const std::filesystem::path& file, const PluginPolic
     return out;
   }
   DescriptorCopy d =
-      copy_descriptor(static_cast<const fr_scene_entry*>(library->symbol(FR_SCENE_ENTRY_SYMBOL)));
+      copy_descriptor(static_cast<const fr_scene_entry*>(library->symbol(FR_SCENE_ENTRY_SYMBOL)),
+                      [&](const fr_scene_entry& e) { return init_error(e, file.string()); });
+  library->set_deinit(d.deinit);
   out.result = d.result;
   out.message = d.message;
   if (d.result != LoadResult::Loaded) return out;

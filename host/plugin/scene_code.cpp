@@ -2,10 +2,36 @@
 
 #include "plugin/plugin_library.hpp"
 
+#include <cstring>
 #include <exception>
+#include <mutex>
 
 namespace fr {
 namespace {
+
+// FR_EXT_THREAD_LOG: messages from any plugin thread, at any time, passed on with the next
+// call's answer (bounded like a call's own messages).
+std::mutex g_thread_log_mutex;
+std::vector<PluginMessage> g_thread_log;
+size_t g_thread_log_dropped = 0;
+
+void thread_log(fr_log_level level, const char* message) {
+  std::string text = message ? message : "(null message)";
+  if (text.size() > kMaxMessageBytes) text.resize(kMaxMessageBytes);
+  std::lock_guard lock(g_thread_log_mutex);
+  if (g_thread_log.size() < kMaxMessagesPerCall)
+    g_thread_log.push_back({level, std::move(text)});
+  else
+    ++g_thread_log_dropped;
+}
+
+const fr_thread_log kThreadLog = {sizeof(fr_thread_log), 0, &thread_log};
+
+const void* host_extension(const fr_host* host, const char* id) {
+  (void)host;
+  if (id && std::strcmp(id, FR_EXT_THREAD_LOG) == 0) return &kThreadLog;
+  return nullptr;
+}
 
 // Collects what the plugin logs during one call; fr_host.host_data points at it.
 struct CallLog {
@@ -24,7 +50,18 @@ struct CallLog {
     h.struct_size = sizeof h;
     h.host_data = this;
     h.log = &CallLog::log;
+    h.host_name = "fractalis";
+    h.host_version = FRACTALIS_VERSION;
+    h.get_extension = &host_extension;
     return h;
+  }
+  // What other threads logged meanwhile comes after the call's own messages.
+  void take_thread_log() {
+    std::lock_guard lock(g_thread_log_mutex);
+    for (PluginMessage& m : g_thread_log)
+      if (messages.size() < kMaxMessagesPerCall) messages.push_back(std::move(m));
+    g_thread_log.clear();
+    g_thread_log_dropped = 0;
   }
 };
 
@@ -45,13 +82,25 @@ CallOutcome guarded(const char* what, CallLog& log, Call&& call) {
   } catch (...) {
     out.error = std::string(what) + " threw an exception (exceptions must not cross the C ABI)";
   }
+  log.take_thread_log();
   out.messages = std::move(log.messages);
   return out;
 }
 
 }  // namespace
 
-InProcessCode::~InProcessCode() { destroy_all(); }
+CallOutcome run_entry_init(const fr_scene_entry& entry, const std::string& plugin_path) {
+  CallLog log;
+  return guarded("init", log, [&] {
+    if (!entry.init) return FR_OK;
+    fr_host host = log.host();
+    return entry.init(&host, plugin_path.c_str());
+  });
+}
+
+InProcessCode::~InProcessCode() {
+  destroy_all();
+}
 
 void InProcessCode::destroy_all() {
   while (!instances_.empty()) destroy(instances_.begin()->first);
@@ -93,6 +142,7 @@ CallOutcome InProcessCode::update(uint64_t handle, SceneState& state) {
     fs.lights = state.lights.data();
     fs.light_count = static_cast<uint32_t>(state.lights.size());
     fs.bounding_radius = state.bounding_radius;
+    fs.light_stride = sizeof(fr_light);
     fr_host host = log.host();
     const fr_result r = update_(it->second, &host, &fs);
     camera.struct_size = sizeof camera;

@@ -47,6 +47,9 @@ class SceneCode {
   }
 };
 
+// Calls an ABI 1.1 entry's init (if it has one) with the plugin's path as the user named it.
+CallOutcome run_entry_init(const fr_scene_entry& entry, const std::string& plugin_path);
+
 // The plugin's callbacks, called in this process. Every call catches everything the plugin throws.
 class InProcessCode final : public SceneCode {
  public:

@@ -49,6 +49,11 @@ HostStats own_stats() {
 
 }  // namespace
 
+std::string init_error(const fr_scene_entry& entry, const std::string& file) {
+  const CallOutcome out = run_entry_init(entry, file);
+  return out.ok ? "" : out.error;
+}
+
 int run_scene_host(int socket_fd, int plugin_fd, const std::string& file) {
   std::string error;
   std::shared_ptr<PluginLibrary> library = PluginLibrary::open(plugin_fd, file, &error);
@@ -58,7 +63,9 @@ int run_scene_host(int socket_fd, int plugin_fd, const std::string& file) {
     d.result = LoadResult::NotLoadable;
     d.message = error;
   } else {
-    d = copy_descriptor(static_cast<const fr_scene_entry*>(library->symbol(FR_SCENE_ENTRY_SYMBOL)));
+    d = copy_descriptor(static_cast<const fr_scene_entry*>(library->symbol(FR_SCENE_ENTRY_SYMBOL)),
+                        [&](const fr_scene_entry& e) { return init_error(e, file); });
+    library->set_deinit(d.deinit);
   }
   WireWriter loaded;
   loaded.u32(static_cast<uint32_t>(d.result));

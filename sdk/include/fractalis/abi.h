@@ -26,10 +26,17 @@
  * ids and keys, 256 for names, versions, authors, licences and groups, 4096 for descriptions and
  * 1 MiB for OpenCL sources; at most 256 parameters and FR_MAX_SCENE_LIGHTS lights.
  *
- * Versioning: a plugin records the ABI major it was built for and the lowest host minor it needs.
- * The host loads it when the majors are equal and the host's minor is at least the plugin's.
- * Structs only grow at the end; each starts with its size so an older host can tell what a
- * newer plugin filled in, and the other way round.
+ * Versioning: a plugin records the ABI major it was built for and the lowest host minor it needs
+ * — not the SDK's minor: FR_SCENE_ENTRY records 0 unless the plugin asks for more (entry.h), so a
+ * plugin built with SDK 1.1 that uses nothing new loads on a 1.0 host. The host loads it when the
+ * majors are equal and the host's minor is at least the plugin's. Structs only grow at the end;
+ * each starts with its size so an older host can tell what a newer plugin filled in, and the
+ * other way round (FR_STRUCT_HAS). New features are found by extension ids rather than by
+ * version numbers: fr_host.get_extension (the host's, 1.1) and fr_scene_entry.get_extension (the
+ * plugin's, 1.1) return NULL for an id they do not know.
+ *
+ * ABI 1.1 added: fr_host.host_name, host_version and get_extension; the host extension
+ * FR_EXT_THREAD_LOG; fr_scene_entry.init, deinit and get_extension; fr_frame_state.light_stride.
  */
 #ifndef FRACTALIS_ABI_H
 #define FRACTALIS_ABI_H
@@ -42,7 +49,13 @@ extern "C" {
 #endif
 
 #define FR_ABI_VERSION_MAJOR 1u
-#define FR_ABI_VERSION_MINOR 0u
+#define FR_ABI_VERSION_MINOR 1u
+
+/* Whether a struct that starts with struct_size, as the other side built it, has `field`:
+ * a 1.1 plugin on a 1.0 host must not read fields the host does not have, e.g.
+ *   if (FR_STRUCT_HAS(host, fr_host, get_extension) && host->get_extension) ... */
+#define FR_STRUCT_HAS(ptr, type, field) \
+  ((ptr)->struct_size >= offsetof(type, field) + sizeof(((type*)0)->field))
 
 /* Result of a plugin callback. Fixed-size integer, not an enum, so its size never changes. */
 typedef int32_t fr_result;
@@ -56,7 +69,8 @@ typedef int32_t fr_log_level;
 #define FR_LOG_WARNING 2
 #define FR_LOG_ERROR 3
 
-/* What the host offers a plugin during a callback. [host-owned], valid during that call only. */
+/* What the host offers a plugin during a callback. [host-owned], valid during that call only
+ * (what get_extension returns lives longer; see there). */
 typedef struct fr_host {
   uint32_t struct_size; /* sizeof(fr_host) as the host was built */
   uint32_t reserved;    /* zero */
@@ -69,7 +83,25 @@ typedef struct fr_host {
    * logged by a callback that then returns FR_ERROR becomes that error's reason in the host.
    * [main-thread] (from inside a callback). Never null. */
   void (*log)(void* host_data, fr_log_level level, const char* message);
+
+  /* ABI 1.1 (check with FR_STRUCT_HAS before reading on an older host): */
+  const char* host_name;    /* "fractalis" */
+  const char* host_version; /* the host's version, e.g. "0.2.0" */
+  /* A host extension by id, or NULL when this host does not have it. The pointer stays valid
+   * until the library is unloaded. [any thread] */
+  const void* (*get_extension)(const struct fr_host* host, const char* id);
 } fr_host;
+
+/* Host extension: a log that any thread of the plugin may call at any time between
+ * fr_scene_entry.init and deinit (for example from a worker thread). Messages are passed on with
+ * the next callback's answer. */
+#define FR_EXT_THREAD_LOG "fractalis.host.thread-log/1"
+typedef struct fr_thread_log {
+  uint32_t struct_size; /* sizeof(fr_thread_log) as the host was built */
+  uint32_t reserved;    /* zero */
+  /* NUL-terminated UTF-8, copied before it returns. [any thread] */
+  void (*log)(fr_log_level level, const char* message);
+} fr_thread_log;
 
 #ifdef __cplusplus
 }

@@ -23,11 +23,23 @@ extern "C" {
 
 /* [plugin-owned], static. Field order of the first three fields is frozen for all majors. */
 typedef struct fr_scene_entry {
-  uint32_t abi_major;   /* FR_ABI_VERSION_MAJOR the plugin was built with */
-  uint32_t abi_minor;   /* lowest host minor the plugin needs */
-  uint32_t struct_size; /* sizeof(fr_scene_entry) as the plugin was built */
-  uint32_t reserved;    /* zero */
-  const fr_scene_desc* scene; /* never null */
+  uint32_t abi_major;         /* FR_ABI_VERSION_MAJOR the plugin was built with */
+  uint32_t abi_minor;         /* lowest host minor the plugin needs (not the SDK's: see abi.h) */
+  uint32_t struct_size;       /* sizeof(fr_scene_entry) as the plugin was built */
+  uint32_t reserved;          /* zero */
+  const fr_scene_desc* scene; /* never null; read after init returns */
+
+  /* ABI 1.1, all optional (null). A 1.0 host ignores them, so a plugin that cannot work
+   * without init must declare minor 1 (FR_SCENE_ENTRY_V1_1). */
+  /* Once per load of the library, before the descriptor is read or any other call: `host` is
+   * valid during the call only (host_name, host_version, get_extension); `plugin_path` is the
+   * plugin's file as the user named it (for finding data files beside it). Returns FR_OK, or
+   * FR_ERROR after logging why: the plugin is then reported as failed and not used. */
+  fr_result (*init)(const fr_host* host, const char* plugin_path);
+  /* Once, after the last callback, before the library is unloaded. Stop threads here. */
+  void (*deinit)(void);
+  /* A plugin extension by id, or NULL. Called after init, from the host's main thread. */
+  const void* (*get_extension)(const char* id);
 } fr_scene_entry;
 
 #if defined(_WIN32)
@@ -36,17 +48,23 @@ typedef struct fr_scene_entry {
 #define FR_EXPORT __attribute__((visibility("default")))
 #endif
 
+/* FR_SCENE_ENTRY(&scene): needs host minor 0 (loads on every 1.x host).
+ * FR_SCENE_ENTRY_V1_1(&scene, init, deinit, get_extension): uses 1.1's entry fields (any may be
+ * NULL) and needs a 1.1 host. */
 #ifdef __cplusplus
-#define FR_SCENE_ENTRY(scene_ptr)                                                        \
-  extern "C" FR_EXPORT const fr_scene_entry fractalis_scene_entry;                      \
-  extern "C" FR_EXPORT const fr_scene_entry fractalis_scene_entry = {                   \
-      FR_ABI_VERSION_MAJOR, FR_ABI_VERSION_MINOR, sizeof(fr_scene_entry), 0, (scene_ptr)}
+#define FR_ENTRY_DECL_ extern "C" FR_EXPORT const fr_scene_entry fractalis_scene_entry
 #else
-#define FR_SCENE_ENTRY(scene_ptr)                                 \
-  FR_EXPORT extern const fr_scene_entry fractalis_scene_entry;   \
-  FR_EXPORT const fr_scene_entry fractalis_scene_entry = {       \
-      FR_ABI_VERSION_MAJOR, FR_ABI_VERSION_MINOR, sizeof(fr_scene_entry), 0, (scene_ptr)}
+#define FR_ENTRY_DECL_ FR_EXPORT const fr_scene_entry fractalis_scene_entry
 #endif
+#define FR_SCENE_ENTRY(scene_ptr) \
+  FR_ENTRY_DECL_;                 \
+  FR_ENTRY_DECL_ = {              \
+      FR_ABI_VERSION_MAJOR, 0, sizeof(fr_scene_entry), 0, (scene_ptr), NULL, NULL, NULL}
+#define FR_SCENE_ENTRY_V1_1(scene_ptr, init_fn, deinit_fn, extension_fn)                       \
+  FR_ENTRY_DECL_;                                                                              \
+  FR_ENTRY_DECL_ = {                                                                           \
+      FR_ABI_VERSION_MAJOR, 1, sizeof(fr_scene_entry), 0, (scene_ptr), (init_fn), (deinit_fn), \
+      (extension_fn)}
 
 #ifdef __cplusplus
 }

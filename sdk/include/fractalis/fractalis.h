@@ -3,9 +3,9 @@
 #define FRACTALIS_FRACTALIS_H
 
 #include "fractalis/abi.h"
-#include "fractalis/param.h"
-#include "fractalis/scene.h"
 #include "fractalis/entry.h"
 #include "fractalis/helpers.h"
+#include "fractalis/param.h"
+#include "fractalis/scene.h"
 
 #endif /* FRACTALIS_FRACTALIS_H */

@@ -13,12 +13,13 @@
 #include "fractalis/param.h"
 
 #define FR_PARAM_DESC_(type_, key_, name_, group_, desc_, flags_, d0, d1, d2, l0, l1, l2, h0, h1, \
-                       h2)                                                                      \
-  {                                                                                             \
-    .struct_size = sizeof(fr_param_desc), .type = (type_), .flags = (flags_), .reserved = 0,    \
-    .key = (key_), .name = (name_), .group = (group_), .description = (desc_),                  \
-    .default_value = {{(d0), (d1), (d2)}}, .min_value = {{(l0), (l1), (l2)}},                   \
-    .max_value = {{(h0), (h1), (h2)}}                                                           \
+                       h2)                                                                        \
+  {                                                                                               \
+    .struct_size = sizeof(fr_param_desc), .type = (type_), .flags = (flags_), .reserved = 0,      \
+    .key = (key_), .name = (name_), .group = (group_), .description = (desc_),                    \
+    .default_value = {{(d0), (d1), (d2)}}, .min_value = {{(l0), (l1), (l2)}}, .max_value = {      \
+      {(h0), (h1), (h2)}                                                                          \
+    }                                                                                             \
   }
 
 #define FR_FLOAT_PARAM(key, name, group, desc, def, min, max, flags) \
@@ -28,7 +29,7 @@
 #define FR_BOOL_PARAM(key, name, group, desc, def, flags) \
   FR_PARAM_DESC_(FR_PARAM_BOOL, key, name, group, desc, flags, def, 0, 0, 0, 0, 0, 1, 0, 0)
 /* Each component of a vec3 lies in [min, max]. */
-#define FR_VEC3_PARAM(key, name, group, desc, x, y, z, min, max, flags)                        \
+#define FR_VEC3_PARAM(key, name, group, desc, x, y, z, min, max, flags)                          \
   FR_PARAM_DESC_(FR_PARAM_VEC3, key, name, group, desc, flags, x, y, z, min, min, min, max, max, \
                  max)
 #define FR_COLOR_PARAM(key, name, group, desc, r, g, b) \
@@ -38,24 +39,25 @@
  * count can never disagree with its table. */
 #define FR_ARRAY_COUNT(array) ((uint32_t)(sizeof(array) / sizeof((array)[0])))
 
-#define FR_CAMERA(eye_x, eye_y, eye_z, target_x, target_y, target_z, up_x, up_y, up_z, fov)        \
-  {                                                                                                \
-    .struct_size = sizeof(fr_camera), .reserved = 0, .eye = {(eye_x), (eye_y), (eye_z)},           \
-    .target = {(target_x), (target_y), (target_z)}, .up = {(up_x), (up_y), (up_z)}, .fov_deg = (fov) \
+#define FR_CAMERA(eye_x, eye_y, eye_z, target_x, target_y, target_z, up_x, up_y, up_z, fov) \
+  {                                                                                         \
+    .struct_size = sizeof(fr_camera), .reserved = 0, .eye = {(eye_x), (eye_y), (eye_z)},    \
+    .target = {(target_x), (target_y), (target_z)}, .up = {(up_x), (up_y), (up_z)},         \
+    .fov_deg = (fov)                                                                        \
   }
 
-#define FR_DIRECTIONAL_LIGHT(dx, dy, dz, r, g, b, intensity_)                                  \
-  {                                                                                            \
+#define FR_DIRECTIONAL_LIGHT(dx, dy, dz, r, g, b, intensity_)                                    \
+  {                                                                                              \
     .struct_size = sizeof(fr_light), .kind = FR_LIGHT_DIRECTIONAL, .vector = {(dx), (dy), (dz)}, \
-    .color = {(r), (g), (b)}, .intensity = (intensity_), .attenuation = 0, .falloff = 2        \
+    .color = {(r), (g), (b)}, .intensity = (intensity_), .attenuation = 0, .falloff = 2          \
   }
 
 /* k / (1 + a d^e) with k = intensity, a = attenuation, e = falloff. */
-#define FR_POINT_LIGHT(px, py, pz, r, g, b, intensity_, attenuation_, falloff_)           \
-  {                                                                                       \
+#define FR_POINT_LIGHT(px, py, pz, r, g, b, intensity_, attenuation_, falloff_)            \
+  {                                                                                        \
     .struct_size = sizeof(fr_light), .kind = FR_LIGHT_POINT, .vector = {(px), (py), (pz)}, \
-    .color = {(r), (g), (b)}, .intensity = (intensity_), .attenuation = (attenuation_),   \
-    .falloff = (falloff_)                                                                 \
+    .color = {(r), (g), (b)}, .intensity = (intensity_), .attenuation = (attenuation_),    \
+    .falloff = (falloff_)                                                                  \
   }
 
 #endif /* FRACTALIS_HELPERS_H */

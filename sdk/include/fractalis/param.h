@@ -31,9 +31,10 @@ typedef uint32_t fr_param_type;
 /* Parameter flags, OR-ed together. */
 typedef uint32_t fr_param_flags;
 #define FR_PARAM_ANIMATABLE (1u << 0) /* the update callback may change it every frame */
-#define FR_PARAM_SPECIALIZE (1u << 1) /* baked into the kernel as a constant: faster, but each  \
-                                         new value builds a new program. Not with ANIMATABLE. */
-#define FR_PARAM_LOG_SCALE (1u << 2)  /* a UI shows it on a logarithmic slider (min > 0) */
+#define FR_PARAM_SPECIALIZE                                                                   \
+  (1u << 1)                          /* baked into the kernel as a constant: faster, but each \
+                                        new value builds a new program. Not with ANIMATABLE. */
+#define FR_PARAM_LOG_SCALE (1u << 2) /* a UI shows it on a logarithmic slider (min > 0) */
 
 /* One value of any parameter type: float, int and bool use v[0] (int and bool hold whole
  * numbers; bool is 0 or 1); vec3 and color use v[0..2]. Double so that every int32 is exact. */

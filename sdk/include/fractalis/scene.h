@@ -47,11 +47,11 @@ typedef uint32_t fr_light_kind;
 typedef struct fr_light {
   uint32_t struct_size; /* sizeof(fr_light) */
   fr_light_kind kind;
-  double vector[3];    /* direction or position, see fr_light_kind */
-  double color[3];     /* linear RGB */
-  double intensity;    /* k: multiplies color */
-  double attenuation;  /* a >= 0; 0: no falloff */
-  double falloff;      /* e > 0; 2 is physical */
+  double vector[3];   /* direction or position, see fr_light_kind */
+  double color[3];    /* linear RGB */
+  double intensity;   /* k: multiplies color */
+  double attenuation; /* a >= 0; 0: no falloff */
+  double falloff;     /* e > 0; 2 is physical */
 } fr_light;
 
 /* What the update callback receives each frame. [host-owned]: the callback may change the
@@ -74,7 +74,20 @@ typedef struct fr_frame_state {
    * marches only inside it, which is what keeps over-estimating DEs honest. Starts at
    * fr_scene_desc.bounding_radius; an update callback may tighten it from the parameters. */
   double bounding_radius;
+
+  /* ABI 1.1: bytes from one light to the next in `lights` (sizeof(fr_light) as the host built
+   * it), so fr_light can grow; index lights with FR_FRAME_LIGHT. */
+  uint32_t light_stride;
+  uint32_t reserved2; /* zero */
 } fr_frame_state;
+
+/* Light i of a frame state, on any 1.x host (1.0 hosts pass 1.0-sized lights). */
+#define FR_FRAME_LIGHT(state, i)                                                                \
+  ((fr_light*)((char*)(state)->lights +                                                         \
+               (size_t)(i) *                                                                    \
+                   (FR_STRUCT_HAS(state, fr_frame_state, light_stride) && (state)->light_stride \
+                        ? (state)->light_stride                                                 \
+                        : sizeof(fr_light))))
 
 /* Creates one instance of the scene's private state (for example caches). Optional: may be null,
  * and then the instance pointer is null. Returns FR_OK and sets *out_instance, or FR_ERROR after
@@ -121,10 +134,10 @@ typedef struct fr_scene_desc {
   uint32_t param_count;
   uint32_t light_count; /* number of default lights, at most FR_MAX_SCENE_LIGHTS */
 
-  fr_features features;         /* what the scene needs from the renderer */
-  const fr_camera* camera;      /* default camera; null: the host's default view */
+  fr_features features;          /* what the scene needs from the renderer */
+  const fr_camera* camera;       /* default camera; null: the host's default view */
   const fr_light* const* lights; /* light_count pointers to default lights; may be null if 0 */
-  double bounding_radius;       /* see fr_frame_state.bounding_radius; must be > 0 */
+  double bounding_radius;        /* see fr_frame_state.bounding_radius; must be > 0 */
 
   fr_create_fn create;   /* optional */
   fr_destroy_fn destroy; /* optional */
