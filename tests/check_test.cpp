@@ -69,10 +69,44 @@ TEST(Check, SceneBuiltAgainstAbi10Passes) {
   EXPECT_EQ(status_of(r.out, "render"), "PASS") << r.out;
 }
 
-// Each broken plugin fails the check named after its fault; the checks before it pass.
-TEST(Check, EachBrokenFixtureFailsItsCheck) {
-  const std::filesystem::path check_dir = CHECK_PLUGIN_DIR, hostile = HOSTILE_PLUGIN_DIR;
+// Every broken fixture (the loader's, the hostile ones and the check-only ones) fails the check
+// named after its fault, and the checks before that one pass. Short time limits keep the hanging
+// ones quick.
+TEST(Check, EveryBrokenFixtureFailsItsCheck) {
+  const std::filesystem::path check_dir = CHECK_PLUGIN_DIR, hostile_dir = HOSTILE_PLUGIN_DIR;
+  auto hostile = [&](const char* name) { return hostile_dir / ("hostile_" + std::string(name) + ".so"); };
   const std::map<std::filesystem::path, std::pair<std::string, std::string>> cases = {
+      // fixtures/plugins, as the loader sees them
+      {test::fixture_plugin("not_elf"), {"descriptor", "not an ELF shared library"}},
+      {test::fixture_plugin("no_entry"), {"descriptor", "no exported symbol"}},
+      {test::fixture_plugin("wrong_major"), {"descriptor", "wrong ABI major: plugin 2, host 1"}},
+      {test::fixture_plugin("too_new_minor"), {"descriptor", "plugin needs ABI 1.99"}},
+      {test::fixture_plugin("small_struct"), {"descriptor", "struct_size 8"}},
+      {test::fixture_plugin("null_id"), {"descriptor", "scene id is null"}},
+      {test::fixture_plugin("null_de"), {"descriptor", "de_source is null"}},
+      {test::fixture_plugin("bad_de"), {"de-compiles", "fixture.cl:3:"}},
+      {test::fixture_plugin("update_error"), {"update", "fixture refuses to update"}},
+      // hostile plugins
+      {hostile("ctor_abort"), {"descriptor", "crashed (SIGABRT"}},
+      {hostile("ctor_segv"), {"descriptor", "crashed (SIG"}},
+      {hostile("ctor_loop"), {"descriptor", "did not answer within 2 s"}},
+      {hostile("ctor_exit"), {"descriptor", "exited with status 0"}},
+      {hostile("absurd_counts"), {"descriptor", "param_count 2000000000 is more than 256"}},
+      {hostile("too_many_lights"), {"descriptor", "light_count 9"}},
+      {hostile("escape_name"), {"descriptor", "control character 0x1b"}},
+      {hostile("invalid_utf8"), {"descriptor", "invalid UTF-8 at byte 3"}},
+      {hostile("reserved_nonzero"), {"descriptor", "reserved is not zero"}},
+      {hostile("missing_dep"), {"descriptor", "libfixture_missing_dep_lib.so"}},
+      {hostile("create_crash"), {"update", "crashed (SIG"}},
+      {hostile("create_hang"), {"update", "did not answer within 0.5 s"}},
+      {hostile("create_throw"), {"update", "create threw a C++ exception"}},
+      {hostile("update_crash"), {"update", "crashed (SIG"}},
+      {hostile("update_throw"), {"update", "update threw a C++ exception"}},
+      {hostile("update_exit"), {"update", "exited with status 0"}},
+      {hostile("update_hang_later"), {"update", "did not answer within 0.5 s"}},
+      {hostile("update_bad_camera"), {"update", "invalid camera"}},
+      {hostile("de_loop"), {"de-returns", "did not finish within 8 s"}},
+      // faults only `check` looks for
       {check_dir / "check_de_nan.so", {"de-finite", "DE is nan"}},
       {check_dir / "check_de_overstep.so", {"de-lipschitz", "the DE oversteps"}},
       {check_dir / "check_surface_outside.so", {"de-bounded", "outside the bounding radius 0.8"}},
@@ -80,16 +114,14 @@ TEST(Check, EachBrokenFixtureFailsItsCheck) {
       {check_dir / "check_create_leak.so", {"create-destroy", "bytes per create/destroy"}},
       {check_dir / "check_thread_leak.so", {"unload", "thread(s) of the plugin still run"}},
       {check_dir / "check_blank.so", {"render", "nothing visible from the default camera"}},
-      {test::fixture_plugin("bad_de"), {"de-compiles", "fixture.cl:3:"}},
-      {test::fixture_plugin("wrong_major"), {"descriptor", "wrong ABI major: plugin 2, host 1"}},
-      {test::fixture_plugin("update_error"), {"update", "fixture refuses to update"}},
-      {hostile / "hostile_update_crash.so", {"update", "crashed (SIG"}},
-      {hostile / "hostile_ctor_abort.so", {"descriptor", "crashed (SIGABRT"}},
-      {hostile / "hostile_de_loop.so", {"de-returns", "did not finish within 8 s"}},
+      {check_dir / "check_wrong_entry.so", {"de-compiles", "defines no `real_t scene_de("}},
   };
+  const std::string limits =
+      "--set plugins.load_timeout_s=2 --set plugins.call_timeout_s=0.5 "
+      "--set plugins.vet_timeout_s=8";
   for (const auto& [plugin, expected] : cases) {
     SCOPED_TRACE(plugin.filename().string());
-    const CheckRun r = run_check(plugin, "--set plugins.vet_timeout_s=8");
+    const CheckRun r = run_check(plugin, limits);
     EXPECT_EQ(r.exit_code, 1) << r.out;
     EXPECT_EQ(status_of(r.out, expected.first), "FAIL") << r.out;
     EXPECT_NE(r.out.find(expected.second), std::string::npos) << r.out;
@@ -98,6 +130,9 @@ TEST(Check, EachBrokenFixtureFailsItsCheck) {
       EXPECT_EQ(status_of(r.out, "descriptor"), "PASS") << r.out;
     }
   }
+  // A plugin that floods the log, but does nothing wrong, passes.
+  const CheckRun flood = run_check(hostile("log_flood"), limits);
+  EXPECT_EQ(flood.exit_code, 0) << flood.out;
 }
 
 TEST(Check, UsageErrors) {

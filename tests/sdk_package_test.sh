@@ -48,8 +48,12 @@ CMAKE
   [[ $found == "$expected" ]] || { echo "find_package(FractalisSDK $want): found=$found"; cat "$work/version/log-$want"; exit 1; }
 done
 
-echo "== the whole project's sdk component honours --prefix without building anything"
-cmake --install "$(dirname "$fractalis")/.." --component sdk --prefix "$work/prefix2" > /dev/null
+echo "== the whole project, configured and not built: its sdk component installs, under --prefix"
+cmake -S "$source_dir" -B "$work/whole" -DFRACTALIS_TESTS=OFF > /dev/null
+cmake --install "$work/whole" --component sdk --prefix "$work/prefix2" > /dev/null
+if find "$work/whole" -name '*.o' -o -name 'fractalis' -type f | grep -q .; then
+  echo "the whole project built something"; exit 1
+fi
 [[ -f "$work/prefix2/include/fractalis/abi.h" ]] || { echo "component install missed the headers"; exit 1; }
 if find "$work/prefix2" -path '*plugins*' | grep -q .; then echo "scenes escaped the sdk component"; exit 1; fi
 echo "sdk package: ok"
