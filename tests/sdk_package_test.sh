@@ -56,4 +56,9 @@ if find "$work/whole" -name '*.o' -o -name 'fractalis' -type f | grep -q .; then
 fi
 [[ -f "$work/prefix2/include/fractalis/abi.h" ]] || { echo "component install missed the headers"; exit 1; }
 if find "$work/prefix2" -path '*plugins*' | grep -q .; then echo "scenes escaped the sdk component"; exit 1; fi
+echo "== the template against that prefix (plain lib/ layout)"
+cmake -S "$source_dir/sdk/template" -B "$work/template-lib" -DCMAKE_PREFIX_PATH="$work/prefix2" \
+  -DFRACTALIS_EXECUTABLE="$fractalis" > /dev/null
+cmake --build "$work/template-lib" > /dev/null
+[[ -f "$work/template-lib/scenes/my_scene.so" ]] || { echo "no scene built against prefix2"; exit 1; }
 echo "sdk package: ok"
