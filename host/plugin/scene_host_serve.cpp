@@ -7,7 +7,8 @@
 #include <dirent.h>
 #include <malloc.h>
 #if defined(__SANITIZE_ADDRESS__)
-#include <sanitizer/allocator_interface.h>
+// From the sanitizer runtime (sanitizer/allocator_interface.h, which Debian's GCC does not ship).
+extern "C" size_t __sanitizer_get_current_allocated_bytes(void);
 #endif
 #include <unistd.h>
 
