@@ -1,5 +1,7 @@
 #include "sweep/sweep_report.hpp"
 
+#include "io/json_text.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -17,19 +19,6 @@ std::string fmt(const char* format, double v) {
 // JSON has no infinity: an identical image's PSNR is written as null.
 std::string json_number(double v) {
   return std::isfinite(v) ? fmt("%.6g", v) : "null";
-}
-
-std::string json_string(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    if (static_cast<unsigned char>(c) < 0x20) {
-      out += fmt("\\u%04x", c);
-      continue;
-    }
-    out += c;
-  }
-  return out + "\"";
 }
 
 std::string label(const SweepRow& r) {
