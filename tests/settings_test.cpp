@@ -41,6 +41,32 @@ TEST(Settings, BadTomlNamesFileAndLine) {
       << problems[0].to_string();
 }
 
+// Deep nesting overflows the TOML parser's recursion: refused before parsing, with the line, for
+// a file and for --set alike (both would crash the process otherwise).
+TEST(Settings, DeeplyNestedTomlIsRefusedNotParsed) {
+  const auto dir = test::fresh_dir("deep_toml");
+  const auto file = dir / "deep.toml";
+  std::ofstream(file) << "[render]\nsamples = 2\nx = " << std::string(100000, '[') << "\n";
+  Settings s;
+  auto problems = load_settings_file(file, s);
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_EQ(problems[0].line, 3);
+  EXPECT_NE(problems[0].message.find("nested more than 64 levels deep"), std::string::npos)
+      << problems[0].message;
+  std::string dotted = "render";
+  for (int i = 0; i < 50000; ++i) dotted += ".a";
+  problems = apply_setting_override(dotted + "=1", s);
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_NE(problems[0].message.find("nested more than 64 levels deep"), std::string::npos);
+  // Dots in numbers and strings do not count.
+  EXPECT_TRUE(apply_setting_override("render.exposure=1.25", s).empty());
+  EXPECT_TRUE(apply_setting_override(
+                  "device.select=\"a.b.c.d.e.f.g.h.i.j.k.l.m.n.o.p.q.r.s.t.u.v.w.x.y.z.a.b.c.d.e.f."
+                  "g.h.i.j.k.l.m.n.o.p.q.r.s.t.u.v.w.x.y.z.a.b.c.d.e.f.g.h\"",
+                  s)
+                  .empty());
+}
+
 TEST(Settings, WrongTypeAndRangeKeepDefaults) {
   Settings s;
   auto file = write_file("wrong_type.toml",

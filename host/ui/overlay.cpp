@@ -139,7 +139,8 @@ void draw_overlay(Explorer& explorer, OverlayState& overlay) {
     changed |= choice("Shading", s.shading, {"Lambert", "Blinn-Phong", "Oren-Nayar"});
     changed |= choice("Normals", s.normals, {"tetrahedron", "central differences"});
     changed |= choice("AO method", s.ao_method, {"step count", "sampled"});
-    changed |= choice("Shadows", s.shadow_method, {"hard", "soft"});
+    // Not "Shadows": that label (and so ImGui's id) is the effect toggle's above.
+    changed |= choice("Shadow edges", s.shadow_method, {"hard", "soft"});
     changed |= ImGui::SliderFloat("Exposure", &s.exposure, 0.1f, 4.0f, "%.2f",
                                   ImGuiSliderFlags_Logarithmic);
     changed |= ImGui::SliderFloat("Detail (k)", &s.hit_threshold_k, 0.05f, 4.0f, "%.2f",
