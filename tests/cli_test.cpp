@@ -34,6 +34,11 @@ TEST(Cli, UsageErrors) {
   expect_usage_error({"frobnicate"}, "unknown command 'frobnicate'");
   expect_usage_error({"render", "--bogus"}, "unknown option '--bogus'");
   expect_usage_error({"render", "--out"}, "option '--out' needs a value");
+  // Output paths are refused before any work: the benchmark would otherwise run first.
+  expect_usage_error({"bench", "--json", "/no/such/folder/b.json"},
+                     "--json: folder '/no/such/folder' does not exist");
+  expect_usage_error({"bench", "--json", TEST_OUTPUT_DIR}, "is a folder, not a file");
+  expect_usage_error({"render", "--out", TEST_OUTPUT_DIR}, "is a folder, not a file");
   expect_usage_error(
       {"render", "--scene", "nope"},
       "unknown scene 'nope' (available: benchmark, julia, mandelbulb, menger, sierpinski)");

@@ -71,7 +71,11 @@ int command_bench(const std::vector<std::string>& args, std::ostream& out, std::
         << "  fractalis bench --explore --scene mandelbulb --size 1280x720\n";
     return 0;
   }
-  if (options.has("explore")) return bench_explore(options, out, err);
+  if (options.has("explore")) {
+    // Its figures go to the terminal only; a --json that would silently not be written is refused.
+    if (options.has("json")) throw UsageError("--json: not written by bench --explore");
+    return bench_explore(options, out, err);
+  }
   const int frames =
       static_cast<int>(parse_integer("--frames", options.get("frames").value_or("30"), 1, 100000));
   const int runs =
@@ -81,7 +85,8 @@ int command_bench(const std::vector<std::string>& args, std::ostream& out, std::
     throw UsageError("--duration: expected seconds >= 0, got " + *options.get("duration"));
   if (!options.has("scene")) options.values["scene"] = {"benchmark"};
   const auto json_file = options.get("json");
-  if (json_file && json_file->empty()) throw UsageError("--json: empty file name");
+  // Checked before the benchmark runs, not after.
+  if (json_file) check_output_file("--json", *json_file);
 
   PreparedScene p = prepare_scene(options, err);
   ClRuntime runtime(p.device);

@@ -39,7 +39,7 @@ int command_check(const std::vector<std::string>& args, std::ostream& out, std::
   }
   if (!file) throw UsageError("expected a plugin file first (fractalis check PLUGIN.so)");
   const auto json_file = options.get("json");
-  if (json_file && json_file->empty()) throw UsageError("--json: empty file name");
+  if (json_file) check_output_file("--json", *json_file);
   const Settings settings = load_settings(options);
   CheckOptions check;
   check.policy = settings.plugins;

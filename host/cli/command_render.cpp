@@ -65,12 +65,8 @@ int command_render(const std::vector<std::string>& args, std::ostream& out, std:
     return 0;
   }
   const std::string out_file = options.get("out").value_or("fractalis.png");
-  if (out_file.empty()) throw UsageError("--out: empty file name");
   // Checked before rendering, so a typo in the folder costs nothing.
-  const std::filesystem::path out_dir = std::filesystem::path(out_file).parent_path();
-  std::error_code ec;
-  if (!out_dir.empty() && !std::filesystem::is_directory(out_dir, ec))
-    throw UsageError("--out: folder '" + out_dir.string() + "' does not exist");
+  check_output_file("--out", out_file);
   PreparedScene p = prepare_scene(options, err);
 
   std::string error;

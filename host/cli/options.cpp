@@ -1,5 +1,7 @@
 #include "cli/options.hpp"
 
+#include <filesystem>
+
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -113,6 +115,17 @@ std::array<double, 3> parse_vec3(const std::string& what, const std::string& tex
     start = comma + 1;
   }
   return v;
+}
+
+void check_output_file(const std::string& what, const std::string& path) {
+  if (path.empty()) throw UsageError(what + ": empty file name");
+  std::error_code ec;
+  const std::filesystem::path file(path);
+  const std::filesystem::path folder = file.parent_path();
+  if (!folder.empty() && !std::filesystem::is_directory(folder, ec))
+    throw UsageError(what + ": folder '" + folder.string() + "' does not exist");
+  if (std::filesystem::is_directory(file, ec))
+    throw UsageError(what + ": '" + path + "' is a folder, not a file");
 }
 
 }  // namespace fr

@@ -45,6 +45,10 @@ double parse_finite(const std::string& what, const std::string& text);
 long long parse_integer(const std::string& what, const std::string& text, long long lo,
                         long long hi);
 
+// A file an option will write at the end of the command, checked before any work: its folder
+// exists and the path is not a folder. A UsageError names the option and the path otherwise.
+void check_output_file(const std::string& what, const std::string& path);
+
 // Largest accepted image side, in pixels (a 16384 x 16384 float image is already 4 GiB).
 constexpr int kMaxImageSide = 16384;
 
