@@ -15,9 +15,15 @@ std::mutex g_thread_log_mutex;
 std::vector<PluginMessage> g_thread_log;
 size_t g_thread_log_dropped = 0;
 
+// A plugin's message, at most kMaxMessageBytes of it: never reads further (a flood of huge
+// messages costs the cap, not their length).
+std::string bounded_text(const char* message) {
+  if (!message) return "(null message)";
+  return std::string(message, strnlen(message, kMaxMessageBytes));
+}
+
 void thread_log(fr_log_level level, const char* message) {
-  std::string text = message ? message : "(null message)";
-  if (text.size() > kMaxMessageBytes) text.resize(kMaxMessageBytes);
+  std::string text = bounded_text(message);
   std::lock_guard lock(g_thread_log_mutex);
   if (g_thread_log.size() < kMaxMessagesPerCall)
     g_thread_log.push_back({level, std::move(text)});
@@ -40,10 +46,11 @@ struct CallLog {
 
   static void log(void* host_data, fr_log_level level, const char* message) {
     auto* self = static_cast<CallLog*>(host_data);
-    std::string text = message ? message : "(null message)";
-    if (text.size() > kMaxMessageBytes) text.resize(kMaxMessageBytes);
+    const bool keep = self->messages.size() < kMaxMessagesPerCall;
+    if (!keep && level < FR_LOG_ERROR) return;  // past the cap: not even copied
+    std::string text = bounded_text(message);
     if (level >= FR_LOG_ERROR) self->last_error = text;
-    if (self->messages.size() < kMaxMessagesPerCall) self->messages.push_back({level, text});
+    if (keep) self->messages.push_back({level, std::move(text)});
   }
   fr_host host() {
     fr_host h{};
