@@ -18,12 +18,15 @@ namespace {
 constexpr size_t kMaxKeptScans = 256;
 
 std::filesystem::path entry_path(const FileIdentity& id) {
-  char name[160];
+  // The answer depends on the host's build too (its ABI minor and its checks), not only on the
+  // file: an upgraded fractalis scans again.
+  char name[200];
   std::snprintf(
-      name, sizeof name, "%llx-%llx-%llx-%llx-%llx-w%u.scan",
+      name, sizeof name, "%llx-%llx-%llx-%llx-%llx-w%u-abi%u.%u-%s.scan",
       static_cast<unsigned long long>(id.device), static_cast<unsigned long long>(id.inode),
       static_cast<unsigned long long>(id.size_bytes), static_cast<unsigned long long>(id.mtime_ns),
-      static_cast<unsigned long long>(id.ctime_ns), kSceneWireVersion);
+      static_cast<unsigned long long>(id.ctime_ns), kSceneWireVersion, FR_ABI_VERSION_MAJOR,
+      FR_ABI_VERSION_MINOR, FRACTALIS_VERSION);
   return scan_cache_dir() / name;
 }
 
