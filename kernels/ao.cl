@@ -1,13 +1,13 @@
-/* ao.cl — ambient occlusion, in [0, 1] (1: open). FR_AO_MODE:
- *   0  step count: rays that needed many march steps passed close to a lot of surface. Free,
- *      since the march counts steps anyway; ao_reference_steps steps is full occlusion. The
+/* ao.cl — ambient occlusion, in [0, 1] (1: open). FR_AO picks:
+ *   FR_AO_STEP_COUNT  step count: rays that needed many march steps passed close to a lot of
+ *      surface. Free, since the march counts steps anyway; ao_reference_steps steps is full occlusion. The
  *      count stops once the ray is within a pixel footprint of the surface (march.cl), so a
  *      finer hit threshold does not darken the picture.
- *   1  sampled: ao_samples DE evaluations along the normal up to ao_distance; where the DE is
+ *   FR_AO_SAMPLED  sampled: ao_samples DE evaluations along the normal up to ao_distance; where the DE is
  *      smaller than the distance from the surface, something is near (nearer samples weigh
  *      more). */
 
-#if FR_AO_MODE == 1
+#if FR_AO == FR_AO_SAMPLED
 real_t sampled_ao(vec3_t p, vec3_t n, __constant const fr_frame_constants* fc,
                   __constant const scene_params_t* params) {
   real_t occlusion = (real_t)0;

@@ -1,10 +1,10 @@
 /* normals.cl — surface normal from the DE's gradient, with a step h that follows the hit
  * threshold (so it grows with distance like the detail a pixel can resolve). FR_NORMALS picks:
- *   0  tetrahedron: four DE evaluations at p + h k_i, k_i the corners of a tetrahedron
- *   1  central differences: six evaluations, p +- h along each axis (seed report 9.4) */
+ *   FR_NORMALS_TETRAHEDRON  tetrahedron: four DE evaluations at p + h k_i, k_i the corners of a tetrahedron
+ *   FR_NORMALS_CENTRAL      central differences: six evaluations, p +- h along each axis (seed report 9.4) */
 
 vec3_t calc_normal(vec3_t p, real_t h, __constant const scene_params_t* params) {
-#if FR_NORMALS == 1
+#if FR_NORMALS == FR_NORMALS_CENTRAL
   vec3_t n = v3(scene_de(v3(p.x + h, p.y, p.z), params) - scene_de(v3(p.x - h, p.y, p.z), params),
                 scene_de(v3(p.x, p.y + h, p.z), params) - scene_de(v3(p.x, p.y - h, p.z), params),
                 scene_de(v3(p.x, p.y, p.z + h), params) - scene_de(v3(p.x, p.y, p.z - h), params));

@@ -1,8 +1,8 @@
 /* shade.cl — sky and surface colour. The surface sums every light through the shading model
  * FR_SHADING picks, plus ambient light scaled by occlusion:
- *   0  Lambert: albedo * cos(theta_i)
- *   1  Blinn-Phong: Lambert + specular_strength * (n.h)^specular_power
- *   2  Oren-Nayar: rough diffuse, albedo * cos(theta_i) * (A + B max(0, cos(phi_i - phi_r))
+ *   FR_SHADING_LAMBERT      Lambert: albedo * cos(theta_i)
+ *   FR_SHADING_BLINN_PHONG  Blinn-Phong: Lambert + specular_strength * (n.h)^specular_power
+ *   FR_SHADING_OREN_NAYAR   Oren-Nayar: rough diffuse, albedo * cos(theta_i) * (A + B max(0, cos(phi_i - phi_r))
  *      sin(alpha) tan(beta)) with A = 1 - 0.5 s^2/(s^2 + 0.33), B = 0.45 s^2/(s^2 + 0.09),
  *      alpha = max(theta_i, theta_r), beta = min(...), s = roughness; plus Blinn-Phong specular
  *      weighted by Schlick's Fresnel term F = f0 + (1 - f0)(1 - h.v)^5, the diffuse by 1 - F.
@@ -23,14 +23,14 @@ vec3_t sky_color(vec3_t dir, __constant const fr_frame_constants* fc) {
 vec3_t brdf_cos(vec3_t n, vec3_t to_light, vec3_t to_eye, vec3_t albedo, real_t n_dot_l,
                 __constant const fr_frame_constants* fc) {
   real_t lambert = fmax(n_dot_l, (real_t)0);
-#if FR_SHADING == 0
+#if FR_SHADING == FR_SHADING_LAMBERT
   return v3_scale(albedo, lambert);
 #else
   vec3_t half_vec = v3_normalize(v3_add(to_light, to_eye));
   real_t spec = (real_t)fc->specular_strength *
                 pow_nonneg(fmax(v3_dot(n, half_vec), (real_t)0), (real_t)fc->specular_power);
   spec = lane_select(lambert > 0, spec * lambert, 0);
-#if FR_SHADING == 1
+#if FR_SHADING == FR_SHADING_BLINN_PHONG
   return v3_add(v3_scale(albedo, lambert), v3(spec, spec, spec));
 #else
   const real_t s2 = (real_t)(fc->roughness * fc->roughness);

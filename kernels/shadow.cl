@@ -1,7 +1,7 @@
 /* shadow.cl — how much of a light reaches a surface point: march from just off the surface
- * towards the light (up to the light's distance, and out of the bounding sphere). FR_SHADOW_MODE:
- *   0  hard: 0 as soon as the ray reaches the surface, else 1
- *   1  soft: the penumbra estimate, the smallest k * d / t along the ray (k = shadow_softness)
+ * towards the light (up to the light's distance, and out of the bounding sphere). FR_SHADOW picks:
+ *   FR_SHADOW_HARD  hard: 0 as soon as the ray reaches the surface, else 1
+ *   FR_SHADOW_SOFT  soft: the penumbra estimate, the smallest k * d / t along the ray (k = shadow_softness)
  * The result is clamped to [0, 1]: 1 is fully lit. */
 
 real_t shadow_factor(vec3_t origin, vec3_t to_light, real_t t_start, real_t light_distance,
@@ -19,7 +19,7 @@ real_t shadow_factor(vec3_t origin, vec3_t to_light, real_t t_start, real_t ligh
   for (int i = 0; i < fc->shadow_max_steps && any_lane(active); ++i) {
     vec3_t p = v3_mad(origin, to_light, t);
     real_t dist = scene_de(p, params);
-#if FR_SHADOW_MODE == 1
+#if FR_SHADOW == FR_SHADOW_SOFT
     lit = lane_select(active, fmin(lit, (real_t)fc->shadow_softness * dist / t), lit);
 #else
     lit = lane_select(active & (dist < t_start * (real_t)0.5), 0, lit);

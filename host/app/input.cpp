@@ -3,49 +3,6 @@
 #include <algorithm>
 
 namespace fr {
-namespace {
-
-struct NamedAction {
-  Action action;
-  const char* name;
-  bool held;  // true: lasts while the key is down; false: triggers once per press
-};
-const NamedAction kActions[] = {
-    {Action::MoveForward, "move_forward", true},
-    {Action::MoveBack, "move_back", true},
-    {Action::MoveLeft, "move_left", true},
-    {Action::MoveRight, "move_right", true},
-    {Action::MoveUp, "move_up", true},
-    {Action::MoveDown, "move_down", true},
-    {Action::SpeedUp, "speed_up", true},
-    {Action::ToggleMouseLook, "mouse_look", false},
-    {Action::ToggleCameraMode, "camera_mode", false},
-    {Action::ToggleOverlay, "overlay", false},
-    {Action::ToggleFullscreen, "fullscreen", false},
-    {Action::NextScene, "next_scene", false},
-    {Action::PreviousScene, "previous_scene", false},
-    {Action::Screenshot, "screenshot", false},
-    {Action::Quit, "quit", false},
-};
-
-const NamedAction& info(Action a) {
-  for (const auto& n : kActions)
-    if (n.action == a) return n;
-  return kActions[0];
-}
-
-}  // namespace
-
-const char* action_name(Action action) {
-  return info(action).name;
-}
-
-std::optional<Action> action_from_name(const std::string& name) {
-  for (const auto& n : kActions)
-    if (name == n.name) return n.action;
-  return std::nullopt;
-}
-
 KeyBindings KeyBindings::defaults() {
   KeyBindings b;
   b.keys = {
@@ -107,7 +64,7 @@ void apply_input_event(const KeyBindings& bindings, const InputEvent& e, InputSt
       auto it = bindings.keys.find(e.key);
       if (it == bindings.keys.end()) return;
       const bool down = e.type == InputEvent::Type::KeyDown;
-      if (info(it->second).held) {
+      if (action_is_held(it->second)) {
         if (down)
           s.held.insert(it->second);
         else

@@ -2,6 +2,8 @@
 // InputEvents (so tests can inject them), and key bindings map key names to actions.
 #pragma once
 
+#include "io/enum_names.hpp"
+
 #include <map>
 #include <optional>
 #include <set>
@@ -28,8 +30,38 @@ enum class Action {
   Quit,
 };
 
-const char* action_name(Action action);
-std::optional<Action> action_from_name(const std::string& name);
+// The names key bindings use in settings files ([controls.keys] action = "key name").
+inline constexpr EnumName<Action> kActionNames[] = {
+    {Action::MoveForward, "move_forward", "move forward", nullptr},
+    {Action::MoveBack, "move_back", "move back", nullptr},
+    {Action::MoveLeft, "move_left", "move left", nullptr},
+    {Action::MoveRight, "move_right", "move right", nullptr},
+    {Action::MoveUp, "move_up", "move up", nullptr},
+    {Action::MoveDown, "move_down", "move down", nullptr},
+    {Action::SpeedUp, "speed_up", "faster (held)", nullptr},
+    {Action::ToggleMouseLook, "mouse_look", "mouse look", nullptr},
+    {Action::ToggleCameraMode, "camera_mode", "fly / orbit", nullptr},
+    {Action::ToggleOverlay, "overlay", "overlay", nullptr},
+    {Action::ToggleFullscreen, "fullscreen", "fullscreen", nullptr},
+    {Action::NextScene, "next_scene", "next scene", nullptr},
+    {Action::PreviousScene, "previous_scene", "previous scene", nullptr},
+    {Action::Screenshot, "screenshot", "screenshot", nullptr},
+    {Action::Quit, "quit", "quit", nullptr},
+};
+constexpr std::span<const EnumName<Action>> enum_names(Action) {
+  return kActionNames;
+}
+
+inline const char* action_name(Action action) {
+  return enum_name(action);
+}
+inline std::optional<Action> action_from_name(const std::string& name) {
+  return enum_from_name<Action>(name);
+}
+// Held actions last while their key is down; the others trigger once per press.
+constexpr bool action_is_held(Action a) {
+  return a <= Action::SpeedUp;
+}
 
 struct InputEvent {
   enum class Type { KeyDown, KeyUp, MouseMotion, MouseWheel, WindowResized, Quit };

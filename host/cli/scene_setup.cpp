@@ -217,14 +217,11 @@ RenderSettings render_settings_from(const Settings& settings, const ParsedOption
   if (auto samples = options.get("samples"))
     r.samples = static_cast<int>(parse_integer("--samples", *samples, 1, 4096));
   if (auto precision = options.get("precision")) {
-    if (*precision == "float")
-      r.precision = Precision::Float;
-    else if (*precision == "double")
-      r.precision = Precision::Double;
-    else if (*precision == "auto")
-      r.precision = Precision::Auto;
-    else
-      throw UsageError("--precision: expected auto, float or double, got '" + *precision + "'");
+    const auto p = enum_from_name<Precision>(*precision);
+    if (!p)
+      throw UsageError("--precision: expected " + enum_name_list<Precision>() + ", got '" +
+                       *precision + "'");
+    r.precision = *p;
   }
   return r;
 }

@@ -2,12 +2,21 @@
 // their calls may take, and which files it agrees to load. From the [plugins] settings.
 #pragma once
 
+#include "io/enum_names.hpp"
+
 namespace fr {
 
 enum class PluginIsolation {
   Process,  // default: plugin code runs only in scene-host processes (scene_host_process.hpp)
   None,     // dlopen in the host itself: for debugging a plugin under gdb; a crash ends the host
 };
+inline constexpr EnumName<PluginIsolation> kPluginIsolationNames[] = {
+    {PluginIsolation::Process, "process", "own process", nullptr},
+    {PluginIsolation::None, "none", "none (in fractalis)", nullptr},
+};
+constexpr std::span<const EnumName<PluginIsolation>> enum_names(PluginIsolation) {
+  return kPluginIsolationNames;
+}
 
 struct PluginPolicy {
   PluginIsolation isolation = PluginIsolation::Process;

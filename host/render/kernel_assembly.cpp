@@ -10,21 +10,53 @@
 namespace fr {
 namespace {
 
-struct StageFile {
+// The optional renderer stages: the name users see and the define that switches the stage's
+// code in kernels/render.cl.
+struct OptionalStage {
   fr_features feature;
   const char* name;
-  const char* file;
   const char* define;
 };
-// Optional renderer stages, in the order their files are pasted (see kernels/render.cl).
-const StageFile kOptionalStages[] = {
-    {kStageDepthOfField, "dof", "lens.cl", "FR_STAGE_DOF"},
-    {FR_FEATURE_GLOW, "glow", "glow.cl", "FR_STAGE_GLOW"},
-    {FR_FEATURE_AO, "ao", "ao.cl", "FR_STAGE_AO"},
-    {FR_FEATURE_SHADOWS, "shadows", "shadow.cl", "FR_STAGE_SHADOWS"},
-    {FR_FEATURE_FOG, "fog", "fog.cl", "FR_STAGE_FOG"},
-    {FR_FEATURE_REFLECTIONS, "reflections", "reflect.cl", "FR_STAGE_REFLECTIONS"},
+const OptionalStage kOptionalStages[] = {
+    {kStageDepthOfField, "dof", "FR_STAGE_DOF"},
+    {FR_FEATURE_GLOW, "glow", "FR_STAGE_GLOW"},
+    {FR_FEATURE_AO, "ao", "FR_STAGE_AO"},
+    {FR_FEATURE_SHADOWS, "shadows", "FR_STAGE_SHADOWS"},
+    {FR_FEATURE_FOG, "fog", "FR_STAGE_FOG"},
+    {FR_FEATURE_REFLECTIONS, "reflections", "FR_STAGE_REFLECTIONS"},
 };
+
+// The render kernel's files in the order they are pasted (each uses only what comes before it);
+// a file with a stage is left out when that stage is off. The one place this order is kept.
+struct PipelineFile {
+  fr_features stage;  // 0: always
+  const char* file;
+};
+const PipelineFile kRenderPipeline[] = {
+    {0, "rays.cl"},
+    {kStageDepthOfField, "lens.cl"},
+    {FR_FEATURE_GLOW, "glow.cl"},
+    {0, "march.cl"},
+    {0, "normals.cl"},
+    {FR_FEATURE_AO, "ao.cl"},
+    {0, "lights.cl"},
+    {FR_FEATURE_SHADOWS, "shadow.cl"},
+    {0, "shade.cl"},
+    {FR_FEATURE_FOG, "fog.cl"},
+    {FR_FEATURE_REFLECTIONS, "reflect.cl"},
+    {0, "render.cl"},
+};
+
+// `#define FAMILY_VALUE n` for every value of the enum (numbered by its row in the enum's name
+// table), then `#define FAMILY FAMILY_CHOSEN`: kernels compare names, never numbers.
+template <typename Enum>
+void define_choice(std::ostringstream& out, const char* family, Enum chosen) {
+  int number = 0;
+  for (const auto& row : enum_names(chosen))
+    out << "#define " << row.kernel_define << " " << number++ << "\n";
+  out << "#define " << family << " " << enum_row(chosen).kernel_define << "\n";
+}
+
 const fr_features kSceneStages =
     FR_FEATURE_SHADOWS | FR_FEATURE_AO | FR_FEATURE_GLOW | FR_FEATURE_FOG | FR_FEATURE_REFLECTIONS;
 
@@ -150,11 +182,11 @@ void append_scene_prefix(std::ostringstream& out, const SceneInfo& info,
   out << "#define FR_DOUBLE " << (config.precision == Precision::Double ? 1 : 0) << "\n";
   for (const auto& s : kOptionalStages)
     out << "#define " << s.define << " " << ((config.stages & s.feature) ? 1 : 0) << "\n";
-  out << "#define FR_SHADING " << static_cast<int>(config.shading) << "\n";
-  out << "#define FR_NORMALS " << static_cast<int>(config.normals) << "\n";
-  out << "#define FR_AO_MODE " << static_cast<int>(config.ao_method) << "\n";
-  out << "#define FR_SHADOW_MODE " << static_cast<int>(config.shadow_method) << "\n";
-  out << "#define FR_FOG_MODE " << static_cast<int>(config.fog_method) << "\n";
+  define_choice(out, "FR_SHADING", config.shading);
+  define_choice(out, "FR_NORMALS", config.normals);
+  define_choice(out, "FR_AO", config.ao_method);
+  define_choice(out, "FR_SHADOW", config.shadow_method);
+  define_choice(out, "FR_FOG", config.fog_method);
   out << "#define FR_HAS_SURFACE " << (has_surface ? 1 : 0) << "\n";
   append_file(out, "frame_constants.h", kernel_source("frame_constants.h"));
   append_file(out, "prelude.cl", kernel_source("prelude.cl"));
@@ -229,21 +261,8 @@ AssembledKernel assemble_render_kernel(const SceneInfo& info, const std::vector<
                                        const KernelConfig& config) {
   std::ostringstream out;
   append_scene_prefix(out, info, values, config, "render", true);
-  auto stage = [&](fr_features feature, const char* file) {
-    if (config.stages & feature) append_file(out, file, kernel_source(file));
-  };
-  append_file(out, "rays.cl", kernel_source("rays.cl"));
-  stage(kStageDepthOfField, "lens.cl");
-  stage(FR_FEATURE_GLOW, "glow.cl");
-  append_file(out, "march.cl", kernel_source("march.cl"));
-  append_file(out, "normals.cl", kernel_source("normals.cl"));
-  stage(FR_FEATURE_AO, "ao.cl");
-  append_file(out, "lights.cl", kernel_source("lights.cl"));
-  stage(FR_FEATURE_SHADOWS, "shadow.cl");
-  append_file(out, "shade.cl", kernel_source("shade.cl"));
-  stage(FR_FEATURE_FOG, "fog.cl");
-  stage(FR_FEATURE_REFLECTIONS, "reflect.cl");
-  append_file(out, "render.cl", kernel_source("render.cl"));
+  for (const PipelineFile& f : kRenderPipeline)
+    if (f.stage == 0 || (config.stages & f.stage)) append_file(out, f.file, kernel_source(f.file));
   return finish(out, info, config, "render");
 }
 

@@ -5,21 +5,74 @@
 
 #include <fractalis/scene.h>
 
+#include "io/enum_names.hpp"
+
 #include <array>
+#include <span>
 
 namespace fr {
 
 // Auto: float, unless the pixel footprint at the surface comes near float's resolution there
 // (resolve_precision in render/precision.hpp), then double.
 enum class Precision { Float, Double, Auto };
-inline const char* precision_name(Precision p) {
-  return p == Precision::Float ? "float" : p == Precision::Double ? "double" : "auto";
+inline constexpr EnumName<Precision> kPrecisionNames[] = {
+    {Precision::Auto, "auto", "auto", nullptr},
+    {Precision::Float, "float", "float", nullptr},
+    {Precision::Double, "double", "double", nullptr},
+};
+constexpr std::span<const EnumName<Precision>> enum_names(Precision) {
+  return kPrecisionNames;
 }
+
 enum class ShadingModel { Lambert, BlinnPhong, OrenNayar };
+inline constexpr EnumName<ShadingModel> kShadingModelNames[] = {
+    {ShadingModel::Lambert, "lambert", "Lambert", "FR_SHADING_LAMBERT"},
+    {ShadingModel::BlinnPhong, "blinn-phong", "Blinn-Phong", "FR_SHADING_BLINN_PHONG"},
+    {ShadingModel::OrenNayar, "oren-nayar", "Oren-Nayar", "FR_SHADING_OREN_NAYAR"},
+};
+constexpr std::span<const EnumName<ShadingModel>> enum_names(ShadingModel) {
+  return kShadingModelNames;
+}
+
 enum class NormalMethod { Tetrahedron, CentralDifferences };
+inline constexpr EnumName<NormalMethod> kNormalMethodNames[] = {
+    {NormalMethod::CentralDifferences, "central", "central differences", "FR_NORMALS_CENTRAL"},
+    {NormalMethod::Tetrahedron, "tetrahedron", "tetrahedron", "FR_NORMALS_TETRAHEDRON"},
+};
+constexpr std::span<const EnumName<NormalMethod>> enum_names(NormalMethod) {
+  return kNormalMethodNames;
+}
+
 enum class AoMethod { StepCount, Sampled };
+inline constexpr EnumName<AoMethod> kAoMethodNames[] = {
+    {AoMethod::StepCount, "step-count", "step count", "FR_AO_STEP_COUNT"},
+    {AoMethod::Sampled, "sampled", "sampled", "FR_AO_SAMPLED"},
+};
+constexpr std::span<const EnumName<AoMethod>> enum_names(AoMethod) {
+  return kAoMethodNames;
+}
+
 enum class ShadowMethod { Hard, Soft };
+inline constexpr EnumName<ShadowMethod> kShadowMethodNames[] = {
+    {ShadowMethod::Soft, "soft", "soft", "FR_SHADOW_SOFT"},
+    {ShadowMethod::Hard, "hard", "hard", "FR_SHADOW_HARD"},
+};
+constexpr std::span<const EnumName<ShadowMethod>> enum_names(ShadowMethod) {
+  return kShadowMethodNames;
+}
+
 enum class FogMethod { PowerLaw, Exponential };
+inline constexpr EnumName<FogMethod> kFogMethodNames[] = {
+    {FogMethod::Exponential, "exponential", "exponential", "FR_FOG_EXPONENTIAL"},
+    {FogMethod::PowerLaw, "power", "power law", "FR_FOG_POWER"},
+};
+constexpr std::span<const EnumName<FogMethod>> enum_names(FogMethod) {
+  return kFogMethodNames;
+}
+
+inline const char* precision_name(Precision p) {
+  return enum_name(p);
+}
 
 struct RenderSettings {
   int width_px = 1280;
@@ -49,9 +102,8 @@ struct RenderSettings {
   int ao_samples = 5;
   float hit_threshold_k = 0.5f;  // epsilon = k * t * pixel angle
   float step_scale = 1.0f;
-  float relaxation = 1.3f;
-  bool fast_math = false;  // build with -cl-fast-relaxed-math (finite-math-only, relaxed trig)  //
-                           // over-relaxed sphere tracing's omega; 1 is plain sphere tracing
+  float relaxation = 1.3f;  // over-relaxed sphere tracing's omega; 1 is plain sphere tracing
+  bool fast_math = false;   // build with -cl-fast-relaxed-math (finite-math-only, relaxed trig)
   float ao_strength = 2.5f;
   int ao_reference_steps = 160;  // step-count AO: this many march steps is full occlusion
   float ao_distance = 0.1f;      // x bounding radius

@@ -1,6 +1,7 @@
 #include "settings/settings.hpp"
 
-#include "render/kernel_assembly.hpp"
+#include "app/input.hpp"
+#include "settings/settings_table.hpp"
 
 #include <toml++/toml.h>
 
@@ -8,257 +9,62 @@
 #include <cctype>
 #include <cstdlib>
 #include <fstream>
-#include <functional>
 #include <sstream>
 
 namespace fr {
 namespace {
 
-// One settings key: how to apply its value, or why the value is wrong ("" when it applied).
-struct Key {
-  const char* name;
-  std::function<std::string(const toml::node&, Settings&)> apply;
-};
+const char* const kDefaultFileHeader =
+    "Fractalis settings — the built-in defaults, written out.\n"
+    "\n"
+    "Copy this file to $XDG_CONFIG_HOME/fractalis/config.toml (usually ~/.config/fractalis/) "
+    "and\n"
+    "change what you need, or pass one with `--config FILE`; `--set KEY=VALUE` overrides a "
+    "single\n"
+    "key on the command line (for example --set render.effects.fog=false). Every key is checked: "
+    "a\n"
+    "typo is reported with its file, line and the nearest known key, and a wrong value names "
+    "what\n"
+    "was expected. Generated from host/settings/settings_table.cpp; tests/settings_test.cpp "
+    "checks\n"
+    "that this file is what the table writes.";
 
-std::string set_int(const toml::node& n, int& out, long long lo, long long hi) {
-  auto v = n.value<int64_t>();
-  if (!n.is_integer() || !v || *v < lo || *v > hi)
-    return "expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
-  out = static_cast<int>(*v);
-  return "";
-}
-
-std::string set_float(const toml::node& n, float& out, double lo, double hi, bool lo_open = false) {
-  auto v = n.value<double>();
-  std::ostringstream range;
-  range << (lo_open ? "(" : "[") << lo << ", " << hi << "]";
-  if (!n.is_number() || !v || !(lo_open ? *v > lo : *v >= lo) || !(*v <= hi))
-    return "expected a number in " + range.str();
-  out = static_cast<float>(*v);
-  return "";
-}
-
-std::string set_double(const toml::node& n, double& out, double lo, double hi,
-                       bool lo_open = false) {
-  float v = static_cast<float>(out);
-  std::string error = set_float(n, v, lo, hi, lo_open);
-  if (error.empty()) out = *n.value<double>();
-  return error;
-}
-
-template <typename Enum>
-std::string set_choice(const toml::node& n, Enum& out,
-                       std::initializer_list<std::pair<const char*, Enum>> choices) {
-  auto v = n.value<std::string>();
-  std::string names;
-  for (const auto& [name, value] : choices) {
-    names += (names.empty() ? "\"" : ", \"") + std::string(name) + "\"";
-    if (v && *v == name) {
-      out = value;
-      return "";
-    }
+// The comment above [controls.keys], with the action names from their table (app/input.hpp).
+std::string key_bindings_comment() {
+  std::string text =
+      "Extra key bindings over the defaults, action = \"key name\" (SDL's names: \"W\", \"Left "
+      "Shift\", \"Up\", \"F5\", ...). Actions:";
+  for (const auto& row : kActionNames) text += std::string(" ") + row.name + ",";
+  text.back() = '.';
+  text +=
+      " Defaults: W/S/A/D move, E or Space up, Q or Left Ctrl down, Left Shift faster, M mouse "
+      "look, O fly/orbit, Tab/Backspace next/previous scene, F1 overlay, F11 fullscreen, F12 "
+      "screenshot, Escape quit.";
+  // Wrapped to 96 columns.
+  std::string wrapped, line;
+  std::istringstream words(text);
+  for (std::string word; words >> word;) {
+    if (!line.empty() && line.size() + 1 + word.size() > 96) wrapped += line + "\n", line.clear();
+    line += (line.empty() ? "" : " ") + word;
   }
-  return "expected one of " + names;
+  return wrapped + line;
 }
 
-std::string set_effect(const toml::node& n, Settings& s, fr_features feature) {
-  if (!n.is_boolean()) return "expected true or false";
-  if (*n.value<bool>())
-    s.render.disabled_stages &= ~feature;
-  else
-    s.render.disabled_stages |= feature;
-  return "";
-}
-
-const std::vector<Key>& known_keys() {
-  static const std::vector<Key> keys = {
-      {"plugins.folders",
-       [](const toml::node& n, Settings& s) -> std::string {
-         const auto* arr = n.as_array();
-         if (!arr) return "expected an array of folder paths";
-         std::vector<std::filesystem::path> folders;
-         for (const auto& item : *arr) {
-           if (!item.is_string()) return "expected strings (folder paths)";
-           folders.emplace_back(item.as_string()->get());
-         }
-         s.plugin_folders = folders;
-         return "";
-       }},
-      {"plugins.isolation",
-       [](const toml::node& n, Settings& s) {
-         return set_choice(
-             n, s.plugins.isolation,
-             {{"process", PluginIsolation::Process}, {"none", PluginIsolation::None}});
-       }},
-      {"plugins.load_timeout_s",
-       [](const toml::node& n, Settings& s) {
-         return set_double(n, s.plugins.load_timeout_s, 0, 3600, true);
-       }},
-      {"plugins.call_timeout_s",
-       [](const toml::node& n, Settings& s) {
-         return set_double(n, s.plugins.call_timeout_s, 0, 3600, true);
-       }},
-      {"plugins.vet_timeout_s",
-       [](const toml::node& n, Settings& s) {
-         return set_double(n, s.plugins.vet_timeout_s, 0, 3600, true);
-       }},
-      {"plugins.allow_writable",
-       [](const toml::node& n, Settings& s) {
-         if (!n.is_boolean()) return std::string("expected true or false");
-         s.plugins.allow_writable = *n.value<bool>();
-         return std::string();
-       }},
-      {"device.select",
-       [](const toml::node& n, Settings& s) -> std::string {
-         if (!n.is_string())
-           return "expected a string: \"\", \"gpu\", \"cpu\", \"P:D\" or part of a name";
-         s.device = n.as_string()->get();
-         return "";
-       }},
-      {"render.lanes",
-       [](const toml::node& n, Settings& s) -> std::string {
-         auto v = n.value<int64_t>();
-         if (!n.is_integer() || !v || (*v != 0 && *v != 1 && *v != 4 && *v != 8 && *v != 16))
-           return "expected one of 0 (device's choice), 1, 4, 8, 16";
-         s.render.lanes = static_cast<int>(*v);
-         return "";
-       }},
-      {"render.precision",
-       [](const toml::node& n, Settings& s) {
-         return set_choice(n, s.render.precision,
-                           {{"auto", Precision::Auto},
-                            {"float", Precision::Float},
-                            {"double", Precision::Double}});
-       }},
-      {"render.samples",
-       [](const toml::node& n, Settings& s) { return set_int(n, s.render.samples, 1, 4096); }},
-      {"render.max_steps",
-       [](const toml::node& n, Settings& s) { return set_int(n, s.render.max_steps, 1, 10000); }},
-      {"render.max_bounces",
-       [](const toml::node& n, Settings& s) { return set_int(n, s.render.max_bounces, 0, 8); }},
-      {"render.hit_threshold_k",
-       [](const toml::node& n, Settings& s) {
-         return set_float(n, s.render.hit_threshold_k, 0, 100, true);
-       }},
-      {"render.exposure",
-       [](const toml::node& n, Settings& s) {
-         return set_float(n, s.render.exposure, 0, 100, true);
-       }},
-      {"render.ao_strength",
-       [](const toml::node& n, Settings& s) {
-         return set_float(n, s.render.ao_strength, 0, 100, true);
-       }},
-      {"render.relaxation",
-       [](const toml::node& n, Settings& s) { return set_float(n, s.render.relaxation, 1, 1.95); }},
-      {"render.shadow_max_steps",
-       [](const toml::node& n, Settings& s) {
-         return set_int(n, s.render.shadow_max_steps, 1, 10000);
-       }},
-      {"render.watchdog_s",
-       [](const toml::node& n, Settings& s) { return set_double(n, s.render.watchdog_s, 0, 1e6); }},
-      {"render.refine_steps",
-       [](const toml::node& n, Settings& s) { return set_int(n, s.render.refine_steps, 0, 8); }},
-      {"render.fast_math",
-       [](const toml::node& n, Settings& s) {
-         if (!n.is_boolean()) return std::string("expected true or false");
-         s.render.fast_math = *n.value<bool>();
-         return std::string();
-       }},
-      {"render.ao_reference_steps",
-       [](const toml::node& n, Settings& s) {
-         return set_int(n, s.render.ao_reference_steps, 1, 100000);
-       }},
-      {"render.roughness",
-       [](const toml::node& n, Settings& s) { return set_float(n, s.render.roughness, 0, 1.5); }},
-      {"render.reflectivity",
-       [](const toml::node& n, Settings& s) { return set_float(n, s.render.reflectivity, 0, 1); }},
-      {"render.aperture",
-       [](const toml::node& n, Settings& s) {
-         return set_float(n, s.render.aperture_radius, 0, 10);
-       }},
-      {"render.focus_distance",
-       [](const toml::node& n, Settings& s) {
-         return set_float(n, s.render.focus_distance, 0, 1000);
-       }},
-      {"render.shading_model",
-       [](const toml::node& n, Settings& s) {
-         return set_choice(n, s.render.shading,
-                           {{"lambert", ShadingModel::Lambert},
-                            {"blinn-phong", ShadingModel::BlinnPhong},
-                            {"oren-nayar", ShadingModel::OrenNayar}});
-       }},
-      {"render.normal_method",
-       [](const toml::node& n, Settings& s) {
-         return set_choice(n, s.render.normals,
-                           {{"tetrahedron", NormalMethod::Tetrahedron},
-                            {"central", NormalMethod::CentralDifferences}});
-       }},
-      {"render.ao_method",
-       [](const toml::node& n, Settings& s) {
-         return set_choice(n, s.render.ao_method,
-                           {{"step-count", AoMethod::StepCount}, {"sampled", AoMethod::Sampled}});
-       }},
-      {"render.shadow_method",
-       [](const toml::node& n, Settings& s) {
-         return set_choice(n, s.render.shadow_method,
-                           {{"hard", ShadowMethod::Hard}, {"soft", ShadowMethod::Soft}});
-       }},
-      {"render.fog_method",
-       [](const toml::node& n, Settings& s) {
-         return set_choice(
-             n, s.render.fog_method,
-             {{"power", FogMethod::PowerLaw}, {"exponential", FogMethod::Exponential}});
-       }},
-      {"render.effects.shadows",
-       [](const toml::node& n, Settings& s) { return set_effect(n, s, FR_FEATURE_SHADOWS); }},
-      {"render.effects.ao",
-       [](const toml::node& n, Settings& s) { return set_effect(n, s, FR_FEATURE_AO); }},
-      {"render.effects.glow",
-       [](const toml::node& n, Settings& s) { return set_effect(n, s, FR_FEATURE_GLOW); }},
-      {"render.effects.fog",
-       [](const toml::node& n, Settings& s) { return set_effect(n, s, FR_FEATURE_FOG); }},
-      {"render.effects.reflections",
-       [](const toml::node& n, Settings& s) { return set_effect(n, s, FR_FEATURE_REFLECTIONS); }},
-      {"render.effects.dof",
-       [](const toml::node& n, Settings& s) { return set_effect(n, s, kStageDepthOfField); }},
-      {"window.width",
-       [](const toml::node& n, Settings& s) {
-         return set_int(n, s.explorer.window_width_px, 64, 16384);
-       }},
-      {"window.height",
-       [](const toml::node& n, Settings& s) {
-         return set_int(n, s.explorer.window_height_px, 64, 16384);
-       }},
-      {"window.fullscreen",
-       [](const toml::node& n, Settings& s) -> std::string {
-         if (!n.is_boolean()) return "expected true or false";
-         s.explorer.fullscreen = *n.value<bool>();
-         return "";
-       }},
-      {"explorer.target_fps",
-       [](const toml::node& n, Settings& s) {
-         return set_double(n, s.explorer.target_fps, 1, 240);
-       }},
-      {"explorer.quality",
-       [](const toml::node& n, Settings& s) {
-         return set_choice(n, s.explorer.full_quality_samples,
-                           {{"fast", 2}, {"balanced", 8}, {"high", 32}});
-       }},
-      {"controls.mouse_sensitivity",
-       [](const toml::node& n, Settings& s) {
-         return set_double(n, s.explorer.mouse_sensitivity_deg_per_px, 0, 10, true);
-       }},
-      {"controls.invert_y",
-       [](const toml::node& n, Settings& s) -> std::string {
-         if (!n.is_boolean()) return "expected true or false";
-         s.explorer.invert_y = *n.value<bool>();
-         return "";
-       }},
-      {"controls.speed", [](const toml::node& n,
-                            Settings& s) { return set_double(n, s.explorer.speed, 0, 100, true); }},
-      // controls.keys is a table of action = "key name"; apply_key_bindings checks it.
-  };
-  return keys;
+// The node's value as a setting takes it; monostate for types no setting takes.
+SettingValue node_value(const toml::node& n) {
+  if (auto v = n.value_exact<bool>()) return *v;
+  if (auto v = n.value_exact<int64_t>()) return static_cast<long long>(*v);
+  if (auto v = n.value_exact<double>()) return *v;
+  if (auto v = n.value_exact<std::string>()) return *v;
+  if (const auto* arr = n.as_array()) {
+    std::vector<std::string> items;
+    for (const auto& item : *arr) {
+      if (!item.is_string()) return std::monostate{};
+      items.push_back(item.as_string()->get());
+    }
+    return items;
+  }
+  return std::monostate{};
 }
 
 size_t edit_distance(const std::string& a, const std::string& b) {
@@ -273,12 +79,6 @@ size_t edit_distance(const std::string& a, const std::string& b) {
   return prev[b.size()];
 }
 
-// The explorer's actions that keys can be bound to (app/input.cpp implements them).
-const char* const kActionNames[] = {"move_forward",   "move_back",  "move_left",  "move_right",
-                                    "move_up",        "move_down",  "speed_up",   "mouse_look",
-                                    "camera_mode",    "overlay",    "fullscreen", "next_scene",
-                                    "previous_scene", "screenshot", "quit"};
-
 void apply_key_bindings(const toml::node& node, const std::string& file, Settings& s,
                         std::vector<SettingsProblem>& problems) {
   const auto* table = node.as_table();
@@ -290,12 +90,9 @@ void apply_key_bindings(const toml::node& node, const std::string& file, Setting
   for (const auto& [action, value] : *table) {
     const std::string key = "controls.keys." + std::string(action.str());
     const int line = static_cast<int>(value.source().begin.line);
-    const bool known = std::any_of(std::begin(kActionNames), std::end(kActionNames),
-                                   [&](const char* a) { return action.str() == a; });
-    if (!known) {
-      std::string names;
-      for (const char* a : kActionNames) names += (names.empty() ? "" : ", ") + std::string(a);
-      problems.push_back({file, line, key, "unknown action (expected one of " + names + ")"});
+    if (!action_from_name(std::string(action.str()))) {
+      problems.push_back(
+          {file, line, key, "unknown action (expected one of " + enum_name_list<Action>() + ")"});
     } else if (!value.is_string() || value.as_string()->get().empty()) {
       problems.push_back({file, line, key, "expected a key name such as \"W\" or \"Left Shift\""});
     } else {
@@ -306,8 +103,9 @@ void apply_key_bindings(const toml::node& node, const std::string& file, Setting
 
 bool is_key_prefix(const std::string& prefix) {
   if (prefix == "controls") return true;
-  return std::any_of(known_keys().begin(), known_keys().end(),
-                     [&](const Key& k) { return std::string(k.name).rfind(prefix + ".", 0) == 0; });
+  return std::any_of(settings_table().begin(), settings_table().end(), [&](const SettingSpec& k) {
+    return std::string(k.key).rfind(prefix + ".", 0) == 0;
+  });
 }
 
 // Applies every leaf of `table`, reporting unknown keys and bad values.
@@ -325,15 +123,17 @@ void apply_table(const toml::table& table, const std::string& prefix, const std:
       apply_table(*sub, key, file, s, problems);
       continue;
     }
-    const auto it = std::find_if(known_keys().begin(), known_keys().end(),
-                                 [&](const Key& known) { return key == known.name; });
-    if (it == known_keys().end()) {
+    const SettingSpec* spec = find_setting(key);
+    if (!spec) {
       problems.push_back(
           {file, line, key, "unknown key (did you mean '" + nearest_known_key(key) + "'?)"});
       continue;
     }
-    if (std::string error = it->apply(node, s); !error.empty())
+    const SettingValue value = node_value(node);
+    if (std::string error = check_setting(*spec, value); !error.empty())
       problems.push_back({file, line, key, error});
+    else
+      spec->set(s, value);
   }
 }
 
@@ -418,73 +218,48 @@ std::string SettingsProblem::to_string() const {
 std::string nearest_known_key(const std::string& key) {
   std::string best;
   size_t best_d = ~size_t{0};
-  for (const Key& known : known_keys()) {
-    size_t d = edit_distance(key, known.name);
-    if (d < best_d) best_d = d, best = known.name;
+  for (const SettingSpec& known : settings_table()) {
+    size_t d = edit_distance(key, known.key);
+    if (d < best_d) best_d = d, best = known.key;
   }
   return best;
 }
 
-std::string format_settings_toml(const Settings& s) {
-  auto choice = [](int v, std::initializer_list<const char*> names) {
-    return "\"" + std::string(*(names.begin() + v)) + "\"";
-  };
-  auto on = [&](fr_features f) { return (s.render.disabled_stages & f) ? "false" : "true"; };
+std::string format_settings_toml(const Settings& s, const std::string& header) {
   std::ostringstream out;
-  out << "# Fractalis settings, written by the explorer. See config/default.toml for every "
-         "key.\n\n";
-  out << "[plugins]\nfolders = [";
-  for (size_t i = 0; i < s.plugin_folders.size(); ++i)
-    out << (i ? ", " : "") << toml::value<std::string>(s.plugin_folders[i].string());
-  out << "]\nisolation = "
-      << (s.plugins.isolation == PluginIsolation::None ? "\"none\"" : "\"process\"")
-      << "\nload_timeout_s = " << s.plugins.load_timeout_s
-      << "\ncall_timeout_s = " << s.plugins.call_timeout_s
-      << "\nvet_timeout_s = " << s.plugins.vet_timeout_s
-      << "\nallow_writable = " << (s.plugins.allow_writable ? "true" : "false");
-  out << "\n\n[device]\nselect = " << toml::value<std::string>(s.device) << "\n\n";
-  const RenderSettings& r = s.render;
-  out << "[render]\nlanes = " << r.lanes << "\nprecision = \"" << precision_name(r.precision)
-      << "\""
-      << "\nsamples = " << r.samples << "\nmax_steps = " << r.max_steps
-      << "\nmax_bounces = " << r.max_bounces << "\nhit_threshold_k = " << r.hit_threshold_k
-      << "\nexposure = " << r.exposure << "\nao_strength = " << r.ao_strength
-      << "\nao_reference_steps = " << r.ao_reference_steps << "\nrelaxation = " << r.relaxation
-      << "\nfast_math = " << (r.fast_math ? "true" : "false") << "\nwatchdog_s = " << r.watchdog_s
-      << "\nrefine_steps = " << r.refine_steps << "\nshadow_max_steps = " << r.shadow_max_steps
-      << "\nroughness = " << r.roughness << "\nreflectivity = " << r.reflectivity
-      << "\naperture = " << r.aperture_radius << "\nfocus_distance = " << r.focus_distance
-      << "\nshading_model = "
-      << choice(static_cast<int>(r.shading), {"lambert", "blinn-phong", "oren-nayar"})
-      << "\nnormal_method = " << choice(static_cast<int>(r.normals), {"tetrahedron", "central"})
-      << "\nao_method = " << choice(static_cast<int>(r.ao_method), {"step-count", "sampled"})
-      << "\nshadow_method = " << choice(static_cast<int>(r.shadow_method), {"hard", "soft"})
-      << "\nfog_method = " << choice(static_cast<int>(r.fog_method), {"power", "exponential"})
-      << "\n\n";
-  out << "[render.effects]\nshadows = " << on(FR_FEATURE_SHADOWS) << "\nao = " << on(FR_FEATURE_AO)
-      << "\nglow = " << on(FR_FEATURE_GLOW) << "\nfog = " << on(FR_FEATURE_FOG)
-      << "\nreflections = " << on(FR_FEATURE_REFLECTIONS) << "\ndof = " << on(kStageDepthOfField)
-      << "\n\n";
-  const ExplorerSettings& e = s.explorer;
-  out << "[window]\nwidth = " << e.window_width_px << "\nheight = " << e.window_height_px
-      << "\nfullscreen = " << (e.fullscreen ? "true" : "false") << "\n\n";
-  const char* quality = e.full_quality_samples <= 2   ? "fast"
-                        : e.full_quality_samples <= 8 ? "balanced"
-                                                      : "high";
-  out << "[explorer]\ntarget_fps = " << e.target_fps << "\nquality = \"" << quality << "\"\n\n";
-  out << "[controls]\nmouse_sensitivity = " << e.mouse_sensitivity_deg_per_px
-      << "\ninvert_y = " << (e.invert_y ? "true" : "false") << "\nspeed = " << e.speed << "\n";
-  if (!e.key_bindings.empty()) {
-    out << "\n[controls.keys]\n";
-    for (const auto& [key, action] : e.key_bindings)
-      out << action << " = " << toml::value<std::string>(key) << "\n";
+  auto comment = [&](const char* text) {
+    std::istringstream lines(text ? text : "");
+    for (std::string line; std::getline(lines, line);)
+      out << (line.empty() ? "#" : "# " + line) << "\n";
+  };
+  comment(header.c_str());
+  for (const SettingsSection& section : settings_sections()) {
+    out << "\n";
+    comment(section.comment);
+    out << "[" << section.table << "]\n";
+    for (const SettingSpec& spec : settings_table()) {
+      const std::string key = spec.key;
+      if (key.substr(0, key.rfind('.')) != section.table) continue;
+      comment(spec.comment);
+      out << key.substr(key.rfind('.') + 1) << " = " << setting_value_toml(spec, spec.get(s))
+          << "\n";
+    }
   }
+  out << "\n";
+  comment(key_bindings_comment().c_str());
+  out << "[controls.keys]\n";
+  for (const auto& [key, action] : s.explorer.key_bindings)
+    out << action << " = " << toml_basic_string(key) << "\n";
   return out.str();
+}
+
+std::string default_settings_toml() {
+  return format_settings_toml(Settings{}, kDefaultFileHeader);
 }
 
 std::vector<std::string> known_setting_keys() {
   std::vector<std::string> names;
-  for (const Key& k : known_keys()) names.emplace_back(k.name);
+  for (const SettingSpec& k : settings_table()) names.emplace_back(k.key);
   return names;
 }
 

@@ -1,7 +1,7 @@
 // settings.hpp — settings from built-in defaults, then a TOML file, then the command line.
 //
-// Every key a file may hold is listed in settings.cpp (known_setting_keys); any other key is an
-// error that names the nearest known one, so a typo never silently falls back to a default.
+// Every key a file may hold is listed in settings_table.cpp (known_setting_keys); any other key is
+// an error that names the nearest known one, so a typo never silently falls back to a default.
 #pragma once
 
 #include "plugin/plugin_policy.hpp"
@@ -59,9 +59,12 @@ std::vector<SettingsProblem> load_settings_file(const std::filesystem::path& fil
 std::vector<SettingsProblem> apply_setting_override(const std::string& assignment,
                                                     Settings& settings);
 
-// The settings as a TOML file that load_settings_file reads back to the same values (the
-// explorer writes the user's file with it, atomically).
-std::string format_settings_toml(const Settings& settings);
+// The settings as a TOML file that load_settings_file reads back to the same values, every key
+// with its comment, `header` as the file's opening comment (the explorer writes the user's file
+// with it, atomically).
+std::string format_settings_toml(const Settings& settings, const std::string& header);
+// config/default.toml: the built-in defaults, written out.
+std::string default_settings_toml();
 
 // The known key closest to `key` by edit distance (for "did you mean").
 std::string nearest_known_key(const std::string& key);

@@ -43,10 +43,9 @@ std::vector<KnobValue> knob_values(const std::string& knob, const RenderSettings
     for (float w : {1.0f, 1.3f, 1.6f, 1.9f})
       v.push_back({number(w), [w](RenderSettings& s) { s.relaxation = w; }});
   } else if (knob == "normals") {
-    *default_value = d.normals == NormalMethod::Tetrahedron ? "tetrahedron" : "central";
-    v.push_back({"tetrahedron", [](RenderSettings& s) { s.normals = NormalMethod::Tetrahedron; }});
-    v.push_back(
-        {"central", [](RenderSettings& s) { s.normals = NormalMethod::CentralDifferences; }});
+    *default_value = enum_name(d.normals);
+    for (NormalMethod m : {NormalMethod::Tetrahedron, NormalMethod::CentralDifferences})
+      v.push_back({enum_name(m), [m](RenderSettings& s) { s.normals = m; }});
   } else if (knob == "samples") {
     *default_value = number(d.samples);
     for (int n : {1, 2, 4, 8, 16})
@@ -55,11 +54,13 @@ std::vector<KnobValue> knob_values(const std::string& knob, const RenderSettings
     *default_value = number(d.lanes);
     for (int n : {1, 16}) v.push_back({number(n), [n](RenderSettings& s) { s.lanes = n; }});
   } else if (knob == "ao") {
-    *default_value =
-        d.ao_method == AoMethod::StepCount ? "step-count" : "sampled-" + number(d.ao_samples);
-    v.push_back({"step-count", [](RenderSettings& s) { s.ao_method = AoMethod::StepCount; }});
+    *default_value = d.ao_method == AoMethod::StepCount
+                         ? std::string(enum_name(AoMethod::StepCount))
+                         : enum_name(AoMethod::Sampled) + ("-" + number(d.ao_samples));
+    v.push_back({enum_name(AoMethod::StepCount),
+                 [](RenderSettings& s) { s.ao_method = AoMethod::StepCount; }});
     for (int n : {3, 5, 8})
-      v.push_back({"sampled-" + number(n), [n](RenderSettings& s) {
+      v.push_back({enum_name(AoMethod::Sampled) + ("-" + number(n)), [n](RenderSettings& s) {
                      s.ao_method = AoMethod::Sampled;
                      s.ao_samples = n;
                    }});

@@ -2,6 +2,7 @@
 
 #include "io/atomic_file.hpp"
 #include "render/kernel_assembly.hpp"
+#include "settings/settings_table.hpp"
 
 #include <imgui.h>
 
@@ -10,6 +11,10 @@
 
 namespace fr {
 namespace {
+
+const char* const kSavedFileHeader =
+    "Fractalis settings, written by the explorer's \"Save settings\". config/default.toml has "
+    "the defaults.";
 
 // One widget per parameter, by type; true when the value changed.
 bool edit_param(const ParamInfo& p, fr_value& v) {
@@ -59,22 +64,49 @@ bool edit_param(const ParamInfo& p, fr_value& v) {
   return changed;
 }
 
-bool effect_toggle(const char* label, fr_features feature, RenderSettings& s) {
-  bool on = !(s.disabled_stages & feature);
-  if (!ImGui::Checkbox(label, &on)) return false;
-  if (on)
-    s.disabled_stages &= ~feature;
-  else
-    s.disabled_stages |= feature;
-  return true;
-}
-
-template <typename Enum>
-bool choice(const char* label, Enum& value, std::initializer_list<const char*> names) {
-  int i = static_cast<int>(value);
-  std::vector<const char*> items(names);
-  if (!ImGui::Combo(label, &i, items.data(), static_cast<int>(items.size()))) return false;
-  value = static_cast<Enum>(i);
+// The widget a settings key declares in its table row; true when the value changed.
+bool edit_setting(const SettingSpec& spec, Settings& settings) {
+  const SettingValue value = spec.get(settings);
+  SettingValue edited = value;
+  bool changed = false;
+  switch (spec.kind) {
+    case SettingKind::Bool: {
+      bool b = std::get<bool>(value);
+      if ((changed = ImGui::Checkbox(spec.label, &b))) edited = b;
+      break;
+    }
+    case SettingKind::Int: {
+      int i = static_cast<int>(std::get<long long>(value));
+      changed = ImGui::SliderInt(spec.label, &i, static_cast<int>(spec.ui_min),
+                                 static_cast<int>(spec.ui_max));
+      if (changed) edited = static_cast<long long>(i);
+      break;
+    }
+    case SettingKind::Number: {
+      float f = static_cast<float>(std::get<double>(value));
+      changed = ImGui::SliderFloat(spec.label, &f, static_cast<float>(spec.ui_min),
+                                   static_cast<float>(spec.ui_max), "%.3g",
+                                   spec.ui_log ? ImGuiSliderFlags_Logarithmic : 0);
+      if (changed) edited = static_cast<double>(f);
+      break;
+    }
+    case SettingKind::Choice: {
+      std::vector<const char*> labels;
+      int current = 0;
+      for (const SettingChoice& c : spec.choices) {
+        if (std::get<std::string>(value) == c.name) current = static_cast<int>(labels.size());
+        labels.push_back(c.label);
+      }
+      changed = ImGui::Combo(spec.label, &current, labels.data(), static_cast<int>(labels.size()));
+      if (changed) edited = std::string(spec.choices[current].name);
+      break;
+    }
+    default:
+      return false;  // text settings are not in the overlay
+  }
+  // A slider can be typed into (Ctrl+click) past its range: keep only what a file could hold.
+  if (!changed || !check_setting(spec, edited).empty()) return false;
+  spec.set(settings, edited);
   return true;
 }
 
@@ -128,35 +160,18 @@ void draw_overlay(Explorer& explorer, OverlayState& overlay) {
   }
 
   if (ImGui::CollapsingHeader("Rendering")) {
-    RenderSettings& s = explorer.render_settings();
     bool changed = false;
     ImGui::TextDisabled("this scene uses: %s", stage_names(info.features).c_str());
-    changed |= effect_toggle("Shadows", FR_FEATURE_SHADOWS, s);
-    changed |= effect_toggle("Ambient occlusion", FR_FEATURE_AO, s);
-    changed |= effect_toggle("Glow", FR_FEATURE_GLOW, s);
-    changed |= effect_toggle("Fog", FR_FEATURE_FOG, s);
-    changed |= effect_toggle("Reflections", FR_FEATURE_REFLECTIONS, s);
-    changed |= choice("Shading", s.shading, {"Lambert", "Blinn-Phong", "Oren-Nayar"});
-    changed |= choice("Normals", s.normals, {"tetrahedron", "central differences"});
-    changed |= choice("AO method", s.ao_method, {"step count", "sampled"});
-    // Not "Shadows": that label (and so ImGui's id) is the effect toggle's above.
-    changed |= choice("Shadow edges", s.shadow_method, {"hard", "soft"});
-    changed |= ImGui::SliderFloat("Exposure", &s.exposure, 0.1f, 4.0f, "%.2f",
-                                  ImGuiSliderFlags_Logarithmic);
-    changed |= ImGui::SliderFloat("Detail (k)", &s.hit_threshold_k, 0.05f, 4.0f, "%.2f",
-                                  ImGuiSliderFlags_Logarithmic);
-    changed |= ImGui::SliderInt("Max steps", &s.max_steps, 16, 1000);
-    changed |= choice("Precision", s.precision, {"float", "double", "auto"});
-    changed |= ImGui::SliderInt("Refine steps", &s.refine_steps, 0, 8);
-    changed |= ImGui::SliderFloat("Aperture", &s.aperture_radius, 0.0f, 0.5f, "%.3f");
+    for (const SettingSpec& spec : settings_table())
+      if (spec.label) changed |= edit_setting(spec, explorer.settings());
     if (changed) explorer.mark_changed();
     // Written atomically (temporary file, then rename): a crash never leaves half a file.
     if (!overlay.settings_file.empty() && ImGui::Button("Save settings")) {
       std::error_code ec;
       std::filesystem::create_directories(overlay.settings_file.parent_path(), ec);
       std::string error;
-      if (write_file_atomic(overlay.settings_file, format_settings_toml(explorer.settings()),
-                            &error))
+      if (write_file_atomic(overlay.settings_file,
+                            format_settings_toml(explorer.settings(), kSavedFileHeader), &error))
         explorer.add_message("saved settings to " + overlay.settings_file.string());
       else
         explorer.add_message(error);

@@ -1,0 +1,468 @@
+#include "settings/settings_table.hpp"
+
+#include "render/kernel_assembly.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace fr {
+namespace {
+
+SettingSpec spec_of(const char* key, SettingKind kind, const char* comment, double lo = 0,
+                    double hi = 0, bool lo_open = false) {
+  SettingSpec spec;
+  spec.key = key;
+  spec.kind = kind;
+  spec.comment = comment;
+  spec.min = lo;
+  spec.max = hi;
+  spec.min_open = lo_open;
+  return spec;
+}
+
+// The member a chain of member pointers names: member<&Settings::render, &RenderSettings::lanes>.
+template <auto... Path>
+auto& member(Settings& s) {
+  return (s.*....*Path);
+}
+template <auto... Path>
+const auto& member(const Settings& s) {
+  return (s.*....*Path);
+}
+
+template <auto... Path>
+SettingSpec bool_setting(const char* key, const char* comment) {
+  SettingSpec spec = spec_of(key, SettingKind::Bool, comment);
+  spec.get = [](const Settings& s) -> SettingValue { return member<Path...>(s); };
+  spec.set = [](Settings& s, const SettingValue& v) { member<Path...>(s) = std::get<bool>(v); };
+  return spec;
+}
+
+template <auto... Path>
+SettingSpec int_setting(const char* key, long long lo, long long hi, const char* comment) {
+  SettingSpec spec =
+      spec_of(key, SettingKind::Int, comment, static_cast<double>(lo), static_cast<double>(hi));
+  spec.get = [](const Settings& s) -> SettingValue {
+    return static_cast<long long>(member<Path...>(s));
+  };
+  spec.set = [](Settings& s, const SettingValue& v) {
+    member<Path...>(s) = static_cast<int>(std::get<long long>(v));
+  };
+  return spec;
+}
+
+// A float or double member; `lo_open`: the range excludes lo.
+template <auto... Path>
+SettingSpec number_setting(const char* key, double lo, double hi, bool lo_open,
+                           const char* comment) {
+  using T = std::remove_cvref_t<decltype(member<Path...>(std::declval<Settings&>()))>;
+  SettingSpec spec = spec_of(key, SettingKind::Number, comment, lo, hi, lo_open);
+  spec.single_precision = std::is_same_v<T, float>;
+  spec.get = [](const Settings& s) -> SettingValue {
+    return static_cast<double>(member<Path...>(s));
+  };
+  spec.set = [](Settings& s, const SettingValue& v) {
+    // An integer is a number too ("--set render.watchdog_s=2").
+    const auto* i = std::get_if<long long>(&v);
+    member<Path...>(s) = static_cast<T>(i ? static_cast<double>(*i) : std::get<double>(v));
+  };
+  return spec;
+}
+
+// An enum member, by the names in its table (io/enum_names.hpp).
+template <auto... Path>
+SettingSpec choice_setting(const char* key, const char* comment) {
+  using Enum = std::remove_cvref_t<decltype(member<Path...>(std::declval<Settings&>()))>;
+  SettingSpec spec = spec_of(key, SettingKind::Choice, comment);
+  for (const auto& row : enum_names(Enum{})) spec.choices.push_back({row.name, row.label});
+  spec.get = [](const Settings& s) -> SettingValue {
+    return std::string(enum_name(member<Path...>(s)));
+  };
+  spec.set = [](Settings& s, const SettingValue& v) {
+    member<Path...>(s) = *enum_from_name<Enum>(std::get<std::string>(v));
+  };
+  return spec;
+}
+
+// render.effects.NAME: on unless the user disabled the stage.
+template <fr_features Stage>
+SettingSpec effect_setting(const char* key) {
+  SettingSpec spec = spec_of(key, SettingKind::Bool, "");
+  spec.get = [](const Settings& s) -> SettingValue {
+    return (s.render.disabled_stages & Stage) == 0;
+  };
+  spec.set = [](Settings& s, const SettingValue& v) {
+    if (std::get<bool>(v))
+      s.render.disabled_stages &= ~Stage;
+    else
+      s.render.disabled_stages |= Stage;
+  };
+  return spec;
+}
+
+SettingSpec in_overlay(SettingSpec spec, const char* label, double ui_min = 0, double ui_max = 0,
+                       bool ui_log = false) {
+  spec.label = label;
+  spec.ui_min = ui_min;
+  spec.ui_max = ui_max;
+  spec.ui_log = ui_log;
+  return spec;
+}
+
+// The explorer's still-image quality presets, as samples.
+struct QualityPreset {
+  const char* name;
+  int samples;
+};
+const QualityPreset kQualityPresets[] = {{"fast", 2}, {"balanced", 8}, {"high", 32}};
+
+std::vector<SettingSpec> make_table() {
+  using S = Settings;
+  using R = RenderSettings;
+  using E = ExplorerSettings;
+  using P = PluginPolicy;
+  std::vector<SettingSpec> t;
+
+  SettingSpec folders = spec_of(
+      "plugins.folders", SettingKind::TextList,
+      "Folders searched for scene plugins (*.so), in order. Empty: the scenes built with "
+      "fractalis\n(the build tree's scenes/ folder, or the installed <prefix>/lib/fractalis/"
+      "plugins), then your\nown folder $XDG_DATA_HOME/fractalis/scenes "
+      "(~/.local/share/fractalis/scenes) when it exists.\n`--plugins DIR` replaces this list (and "
+      "the defaults) with that one folder.");
+  folders.get = [](const Settings& s) -> SettingValue {
+    std::vector<std::string> out;
+    for (const auto& f : s.plugin_folders) out.push_back(f.string());
+    return out;
+  };
+  folders.set = [](Settings& s, const SettingValue& v) {
+    s.plugin_folders.assign(std::get<std::vector<std::string>>(v).begin(),
+                            std::get<std::vector<std::string>>(v).end());
+  };
+  t.push_back(folders);
+  t.push_back(choice_setting<&S::plugins, &P::isolation>(
+      "plugins.isolation",
+      "Where plugin code runs: \"process\" (each scene in a fractalis-scene-host process of its "
+      "own, so\na plugin that crashes, hangs or throws fails alone) or \"none\" (in fractalis "
+      "itself: only for\ndebugging a plugin in gdb; a crash in the plugin ends fractalis)."));
+  t.push_back(number_setting<&S::plugins, &P::load_timeout_s>(
+      "plugins.load_timeout_s", 0, 3600, true,
+      "Seconds a plugin may take to load (its constructors and descriptor), and to answer one "
+      "create,\nupdate or destroy call. A plugin over its limit is stopped and reported."));
+  t.push_back(
+      number_setting<&S::plugins, &P::call_timeout_s>("plugins.call_timeout_s", 0, 3600, true, ""));
+  t.push_back(number_setting<&S::plugins, &P::vet_timeout_s>(
+      "plugins.vet_timeout_s", 0, 3600, true,
+      "Seconds the explorer's 8x8 test render of a scene (before its first use; once per file "
+      "content)\nmay take, kernel build included, before the scene is refused as one whose DE may "
+      "never return."));
+  t.push_back(bool_setting<&S::plugins, &P::allow_writable>(
+      "plugins.allow_writable",
+      "Load plugins from folders or files that users other than you (and root) can write to. "
+      "Off: such\nplugins are refused with a message naming the folder or file, since another "
+      "user could swap\nthe code fractalis runs."));
+
+  SettingSpec device =
+      spec_of("device.select", SettingKind::Text,
+              "OpenCL device: \"\" picks the first GPU, else the first CPU device (PoCL); "
+              "or \"gpu\", \"cpu\",\n\"P:D\" (platform:device, as `fractalis devices` lists "
+              "them), or part of the device's name.");
+  device.get = [](const Settings& s) -> SettingValue { return s.device; };
+  device.set = [](Settings& s, const SettingValue& v) { s.device = std::get<std::string>(v); };
+  t.push_back(device);
+
+  SettingSpec lanes = int_setting<&S::render, &R::lanes>(
+      "render.lanes", 0, 16,
+      "Rays per work-item: 0 lets the device decide (16 on CPUs, as float16 packets; 1 on GPUs).");
+  lanes.only_ints = {0, 1, 4, 8, 16};
+  lanes.only_ints_text = "one of 0 (device's choice), 1, 4, 8, 16";
+  t.push_back(lanes);
+  t.push_back(in_overlay(
+      choice_setting<&S::render, &R::precision>(
+          "render.precision",
+          "Arithmetic precision of the render kernel: \"auto\" (float, or double where the pixel "
+          "footprint at\nthe surface comes near float's resolution), \"float\", or \"double\" (the "
+          "accuracy reference)."),
+      "Precision"));
+  t.push_back(int_setting<&S::render, &R::samples>(
+      "render.samples", 1, 4096,
+      "Jittered samples accumulated per image: 1 is no anti-aliasing; depth of field needs "
+      "several."));
+  t.push_back(
+      in_overlay(int_setting<&S::render, &R::max_steps>(
+                     "render.max_steps", 1, 10000, "Sphere-tracing iterations per primary ray."),
+                 "Max steps", 16, 1000));
+  t.push_back(number_setting<&S::render, &R::watchdog_s>(
+      "render.watchdog_s", 0, 1e6, false,
+      "Seconds one image of `render` or `bench` may take before it ends with an error naming\nthe "
+      "scene (a DE that never returns would otherwise hang it forever); 0: no limit."));
+  t.push_back(in_overlay(
+      int_setting<&S::render, &R::refine_steps>(
+          "render.refine_steps", 0, 8,
+          "Plain DE steps after a hit, towards the surface (0 to 8): closes the gap the hit "
+          "threshold\nleaves (the silhouette bias), at one DE evaluation each."),
+      "Refine steps", 0, 8));
+  t.push_back(int_setting<&S::render, &R::max_bounces>(
+      "render.max_bounces", 0, 8,
+      "Mirror bounces after the primary hit, when reflections are on (0 to 8)."));
+  t.push_back(in_overlay(
+      number_setting<&S::render, &R::hit_threshold_k>(
+          "render.hit_threshold_k", 0, 100, true,
+          "Hit threshold factor k: a ray has hit when the DE < k * distance * pixel angle."),
+      "Detail (k)", 0.05, 4, true));
+  t.push_back(in_overlay(
+      number_setting<&S::render, &R::relaxation>(
+          "render.relaxation", 1, 1.95, false,
+          "Over-relaxation of the march (Keinert et al. 2014), in [1, 1.95]: steps are this times "
+          "the DE,\nwith a fallback to plain steps where that overshoots; 1 is plain sphere "
+          "tracing."),
+      "Relaxation", 1, 1.95));
+  t.push_back(bool_setting<&S::render, &R::fast_math>(
+      "render.fast_math",
+      "Build the kernels with -cl-fast-relaxed-math (finite-math-only, relaxed trigonometry): "
+      "measured\nno faster on PoCL; off."));
+  t.push_back(in_overlay(
+      number_setting<&S::render, &R::exposure>("render.exposure", 0, 100, true,
+                                               "Linear exposure applied before tonemapping."),
+      "Exposure", 0.1, 4, true));
+  t.push_back(
+      in_overlay(number_setting<&S::render, &R::ao_strength>(
+                     "render.ao_strength", 0, 100, true,
+                     "Ambient occlusion strength, in (0, 100]: larger is darker in crevices."),
+                 "AO strength", 0.1, 10, true));
+  t.push_back(int_setting<&S::render, &R::ao_reference_steps>(
+      "render.ao_reference_steps", 1, 100000,
+      "Step-count ambient occlusion: this many march steps is full occlusion. A fixed count, so "
+      "that\nraising max_steps does not darken converged pixels."));
+  t.push_back(in_overlay(number_setting<&S::render, &R::roughness>(
+                             "render.roughness", 0, 1.5, false,
+                             "Surface roughness of the Oren-Nayar model, radians (0 is Lambert)."),
+                         "Roughness", 0, 1.5));
+  t.push_back(in_overlay(
+      number_setting<&S::render, &R::reflectivity>(
+          "render.reflectivity", 0, 1, false,
+          "Reflectivity of the default material, for scenes without their own materials (0 to "
+          "1)."),
+      "Reflectivity", 0, 1));
+  t.push_back(in_overlay(number_setting<&S::render, &R::aperture_radius>(
+                             "render.aperture", 0, 10, false,
+                             "Thin-lens aperture radius in world units; 0 is a pinhole (no depth "
+                             "of field)."),
+                         "Aperture", 0, 0.5));
+  t.push_back(number_setting<&S::render, &R::focus_distance>(
+      "render.focus_distance", 0, 1000, false,
+      "Distance that stays sharp with an aperture; 0 means the distance from the eye to the "
+      "target."));
+  t.push_back(
+      in_overlay(choice_setting<&S::render, &R::shading>(
+                     "render.shading_model",
+                     "Shading model: \"lambert\", \"blinn-phong\", or \"oren-nayar\" (with a "
+                     "Fresnel-weighted highlight)."),
+                 "Shading"));
+  t.push_back(in_overlay(
+      choice_setting<&S::render, &R::normals>(
+          "render.normal_method",
+          "Surface normals: \"central\" (6 DE evaluations, central differences; on the sweep's "
+          "Pareto front\nfor every scene) or \"tetrahedron\" (4)."),
+      "Normals"));
+  t.push_back(in_overlay(choice_setting<&S::render, &R::ao_method>(
+                             "render.ao_method",
+                             "Ambient occlusion: \"step-count\" (free, from the march) or "
+                             "\"sampled\" (DE samples along the normal)."),
+                         "AO method"));
+  // "Shadow edges", not "Shadows": that label (and so ImGui's id) is the effect's checkbox.
+  t.push_back(in_overlay(choice_setting<&S::render, &R::shadow_method>(
+                             "render.shadow_method", "Shadows: \"soft\" (penumbra) or \"hard\"."),
+                         "Shadow edges"));
+  t.push_back(int_setting<&S::render, &R::shadow_max_steps>(
+      "render.shadow_max_steps", 1, 10000,
+      "Sphere-tracing iterations per shadow ray (32: the sweep found 64 no more accurate, and "
+      "slower)."));
+  t.push_back(in_overlay(
+      choice_setting<&S::render, &R::fog_method>(
+          "render.fog_method",
+          "Fog: \"exponential\" (1 - exp(-density t)) or \"power\" (the seed slides' fogScale * "
+          "t^0.75)."),
+      "Fog curve"));
+
+  t.push_back(in_overlay(effect_setting<FR_FEATURE_SHADOWS>("render.effects.shadows"), "Shadows"));
+  t.push_back(in_overlay(effect_setting<FR_FEATURE_AO>("render.effects.ao"), "Ambient occlusion"));
+  t.push_back(in_overlay(effect_setting<FR_FEATURE_GLOW>("render.effects.glow"), "Glow"));
+  t.push_back(in_overlay(effect_setting<FR_FEATURE_FOG>("render.effects.fog"), "Fog"));
+  t.push_back(in_overlay(effect_setting<FR_FEATURE_REFLECTIONS>("render.effects.reflections"),
+                         "Reflections"));
+  t.push_back(
+      in_overlay(effect_setting<kStageDepthOfField>("render.effects.dof"), "Depth of field"));
+
+  t.push_back(int_setting<&S::explorer, &E::window_width_px>(
+      "window.width", 64, 16384,
+      "Window size in pixels (--size overrides), and whether to start fullscreen (F11 "
+      "toggles)."));
+  t.push_back(int_setting<&S::explorer, &E::window_height_px>("window.height", 64, 16384, ""));
+  t.push_back(bool_setting<&S::explorer, &E::fullscreen>("window.fullscreen", ""));
+
+  t.push_back(number_setting<&S::explorer, &E::target_fps>(
+      "explorer.target_fps", 1, 240, false,
+      "Frame rate held while the camera moves, by lowering the resolution."));
+  SettingSpec quality =
+      spec_of("explorer.quality", SettingKind::Choice,
+              "Anti-aliasing once the camera stops: \"fast\" (2 samples), \"balanced\" "
+              "(8) or \"high\" (32).");
+  for (const auto& q : kQualityPresets) quality.choices.push_back({q.name, q.name});
+  quality.get = [](const Settings& s) -> SettingValue {
+    for (const auto& q : kQualityPresets)  // the preset at or above the samples in use
+      if (s.explorer.full_quality_samples <= q.samples) return std::string(q.name);
+    return std::string(std::end(kQualityPresets)[-1].name);
+  };
+  quality.set = [](Settings& s, const SettingValue& v) {
+    for (const auto& q : kQualityPresets)
+      if (std::get<std::string>(v) == q.name) s.explorer.full_quality_samples = q.samples;
+  };
+  t.push_back(quality);
+
+  t.push_back(number_setting<&S::explorer, &E::mouse_sensitivity_deg_per_px>(
+      "controls.mouse_sensitivity", 0, 10, true,
+      "Mouse look, degrees per pixel of mouse movement; invert_y flips up and down."));
+  t.push_back(bool_setting<&S::explorer, &E::invert_y>("controls.invert_y", ""));
+  t.push_back(number_setting<&S::explorer, &E::speed>(
+      "controls.speed", 0, 100, true,
+      "Flying speed, in distances-to-the-nearest-surface per second (Shift is 4x faster)."));
+  // controls.keys is a table of action = "key name", read and written by settings.cpp.
+  return t;
+}
+
+std::string number_text(double v, bool single_precision) {
+  char buf[64];
+  // Shortest text that reads back to the same value, at the precision it is stored in.
+  const auto end = single_precision
+                       ? std::to_chars(buf, buf + sizeof buf, static_cast<float>(v)).ptr
+                       : std::to_chars(buf, buf + sizeof buf, v).ptr;
+  std::string text(buf, end);
+  if (text.find_first_of(".eEn") == std::string::npos) text += ".0";  // a TOML float, not an int
+  return text;
+}
+
+// A TOML basic string: quoted, with backslash, quote and control characters escaped.
+std::string toml_string(const std::string& s) {
+  std::string out = "\"";
+  for (const char c : s) {
+    const auto u = static_cast<unsigned char>(c);
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if (u < 0x20 || u == 0x7f) {
+      char esc[8];
+      std::snprintf(esc, sizeof esc, "\\u%04X", u);
+      out += esc;
+    } else {
+      out += c;
+    }
+  }
+  return out + "\"";
+}
+
+}  // namespace
+
+std::span<const SettingSpec> settings_table() {
+  static const std::vector<SettingSpec> table = make_table();
+  return table;
+}
+
+const SettingSpec* find_setting(const std::string& key) {
+  for (const SettingSpec& spec : settings_table())
+    if (key == spec.key) return &spec;
+  return nullptr;
+}
+
+std::span<const SettingsSection> settings_sections() {
+  static const SettingsSection sections[] = {
+      {"plugins", ""},
+      {"device", ""},
+      {"render", ""},
+      {"render.effects",
+       "Effects a scene may ask for; false switches one off, and its code is then not compiled."},
+      {"window",
+       "The explorer (`fractalis explore`, or ./scripts/run.sh on a machine with a "
+       "display)."},
+      {"explorer", ""},
+      {"controls", ""},
+  };
+  return sections;
+}
+
+std::string check_setting(const SettingSpec& spec, const SettingValue& value) {
+  std::ostringstream range;
+  range << spec.min << ", " << spec.max << "]";
+  switch (spec.kind) {
+    case SettingKind::Bool:
+      return std::holds_alternative<bool>(value) ? "" : "expected true or false";
+    case SettingKind::Int: {
+      const auto* v = std::get_if<long long>(&value);
+      if (!spec.only_ints.empty()) {
+        bool listed = v && std::find(spec.only_ints.begin(), spec.only_ints.end(), *v) !=
+                               spec.only_ints.end();
+        return listed ? "" : std::string("expected ") + spec.only_ints_text;
+      }
+      if (!v || *v < spec.min || *v > spec.max) return "expected an integer in [" + range.str();
+      return "";
+    }
+    case SettingKind::Number: {
+      const double* d = std::get_if<double>(&value);
+      std::optional<double> v;
+      if (d) v = *d;
+      if (const auto* i = std::get_if<long long>(&value)) v = static_cast<double>(*i);
+      const bool above_min = v && (spec.min_open ? *v > spec.min : *v >= spec.min);
+      if (!v || !std::isfinite(*v) || !above_min || !(*v <= spec.max))
+        return std::string("expected a number in ") + (spec.min_open ? "(" : "[") + range.str();
+      return "";
+    }
+    case SettingKind::Choice: {
+      const auto* v = std::get_if<std::string>(&value);
+      std::string names;
+      for (const SettingChoice& c : spec.choices) {
+        if (v && *v == c.name) return "";
+        names += (names.empty() ? "\"" : ", \"") + std::string(c.name) + "\"";
+      }
+      return "expected one of " + names;
+    }
+    case SettingKind::Text:
+      return std::holds_alternative<std::string>(value) ? "" : "expected a string";
+    case SettingKind::TextList:
+      return std::holds_alternative<std::vector<std::string>>(value)
+                 ? ""
+                 : "expected an array of strings (folder paths)";
+  }
+  return "unknown setting kind";
+}
+
+std::string toml_basic_string(const std::string& text) {
+  return toml_string(text);
+}
+
+std::string setting_value_toml(const SettingSpec& spec, const SettingValue& value) {
+  return std::visit(
+      [&](const auto& v) -> std::string {
+        using T = std::decay_t<decltype(v)>;
+        if constexpr (std::is_same_v<T, std::monostate>)
+          return "\"\"";
+        else if constexpr (std::is_same_v<T, bool>)
+          return v ? "true" : "false";
+        else if constexpr (std::is_same_v<T, long long>)
+          return std::to_string(v);
+        else if constexpr (std::is_same_v<T, double>)
+          return number_text(v, spec.single_precision);
+        else if constexpr (std::is_same_v<T, std::string>)
+          return toml_string(v);
+        else {
+          std::string out = "[";
+          for (size_t i = 0; i < v.size(); ++i) out += (i ? ", " : "") + toml_string(v[i]);
+          return out + "]";
+        }
+      },
+      value);
+}
+
+}  // namespace fr
