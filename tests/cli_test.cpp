@@ -4,6 +4,8 @@
 #include "render/renderer.hpp"
 #include "test_support.hpp"
 
+#include <filesystem>
+#include <fstream>
 #include <sstream>
 
 namespace fr {
@@ -76,6 +78,32 @@ TEST(Cli, UsageErrors) {
                      "--out: folder '/no/such/folder' does not exist");
   expect_usage_error({"bench", "--runs", "0"}, "--runs: 0 is outside");
   expect_usage_error({"bench", "--explore", "--scene", "nope"}, "unknown scene 'nope'");
+  // --config names what it got when that is not a file.
+  expect_usage_error({"render", "--config", TEST_OUTPUT_DIR}, "is a folder, not a settings file");
+  expect_usage_error({"render", "--config", "/dev/null"}, "'/dev/null' is a device");
+}
+
+// Values are quoted back cut short, with their length, and with control characters escaped.
+TEST(Cli, LongAndHostileValuesAreEchoedShort) {
+  const std::string huge(100000, 'k');
+  for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
+           {"render", "--scene", huge},
+           {"render", "--set", huge + "=1"},
+           {"render", "--set", "render." + huge + "=1"},
+           {"render", "--param", huge},
+           {"render", "--size", huge},
+           {"render", "--out", "/no/such/" + huge + "/x.png"},
+           {huge},
+       }) {
+    const CliRun r = run(args);
+    EXPECT_EQ(r.code, 2);
+    EXPECT_LT(r.err.size(), 400u) << r.err.substr(0, 400);
+    EXPECT_NE(r.err.find(" bytes)"), std::string::npos) << r.err.substr(0, 400);
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err.substr(0, 400);
+  }
+  const CliRun escape = run({"render", "--scene", "\x1b]0;owned\x07"});
+  EXPECT_EQ(escape.code, 2);
+  EXPECT_NE(escape.err.find("unknown scene '\\x1b]0;owned\\x07'"), std::string::npos) << escape.err;
 }
 
 TEST(Cli, HelpAndVersion) {
@@ -122,6 +150,42 @@ TEST(Cli, RenderWritesThePng) {
       << "the PNG is not the headless render of the same view";
   EXPECT_GT(test::pixels_differing(power6.rgba8, power8.rgba8, 8), 48 * 32 / 20)
       << "power 6 and 8 should look different";
+}
+
+// One channel: a warning reaches the error stream as "fractalis: warning: ...", -q hides it,
+// --log-file gets it time-stamped whatever the verbosity, and -v with -q is refused.
+TEST(Cli, WarningsGoThroughTheLogChannel) {
+  const std::string png = std::string(TEST_OUTPUT_DIR) + "/log_channel.png";
+  const std::vector<std::string> starved = {
+      "render", "--scene", "menger", "--size", "16x16", "--set", "render.max_steps=2",
+      "--out",  png};
+  const CliRun normal = run(starved);
+  ASSERT_EQ(normal.code, 0) << normal.err;
+  EXPECT_NE(normal.err.find("fractalis: warning: "), std::string::npos) << normal.err;
+  EXPECT_NE(normal.err.find("of rays ran out of steps (render.max_steps = 2)"), std::string::npos)
+      << normal.err;
+
+  const std::string log = std::string(TEST_OUTPUT_DIR) + "/log_channel.log";
+  std::filesystem::remove(log);
+  std::vector<std::string> quiet = starved;
+  quiet.insert(quiet.begin(), {"-q", "--log-file", log});
+  const CliRun q = run(quiet);
+  ASSERT_EQ(q.code, 0) << q.err;
+  EXPECT_EQ(q.err, "") << "-q says errors only";
+  std::ifstream in(log);
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_NE(text.str().find("] [warning] "), std::string::npos) << text.str();
+  EXPECT_NE(text.str().find("ran out of steps"), std::string::npos) << text.str();
+
+  // Errors still show under -q, once.
+  const CliRun bad = run({"render", "--quiet", "--scene", "nope"});
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_EQ(bad.err.rfind("fractalis: error: unknown scene 'nope'", 0), 0u) << bad.err;
+  expect_usage_error({"-v", "render", "-q"}, "--verbose and --quiet: choose one");
+  expect_usage_error({"render", "--log-file"}, "--log-file: expected a file name");
+  expect_usage_error({"render", "--log-file", "/no/such/folder/x.log"},
+                     "--log-file: folder '/no/such/folder' does not exist");
 }
 
 TEST(Cli, ListShowsParametersAndFailures) {

@@ -34,9 +34,9 @@ class ExplorerWindow : public ::testing::Test {
   void SetUp() override {
     ASSERT_TRUE(display_available()) << "run under xvfb-run";
     window = std::make_unique<Window>("Fractalis test", kW, kH, false);
-    library = std::make_unique<SceneLibrary>(std::vector<std::filesystem::path>{SCENE_PLUGIN_DIR},
-                                             PluginPolicy{}, RenderSettings{},
-                                             test::runtime(), &messages);
+    library =
+        std::make_unique<SceneLibrary>(std::vector<std::filesystem::path>{SCENE_PLUGIN_DIR},
+                                       PluginPolicy{}, RenderSettings{}, test::runtime(), &events);
     explorer = std::make_unique<Explorer>(Settings{}, test::runtime(), *library, "mandelbulb");
   }
   // One frame of the loop: poll, update (scene time fixed at 0), render, present.
@@ -56,7 +56,7 @@ class ExplorerWindow : public ::testing::Test {
     int w = 0, h = 0;
     return window->captured(&w, &h);
   }
-  std::vector<std::string> messages;
+  std::vector<SceneEvent> events;
   std::unique_ptr<Window> window;
   std::unique_ptr<SceneLibrary> library;
   std::unique_ptr<Explorer> explorer;

@@ -5,11 +5,14 @@
 // with the error kept; a removed one keeps running; and 50 reloads grow neither open files nor
 // threads, and leave one copy of the library mapped.
 #include "app/scene_library.hpp"
+#include "io/log.hpp"
 #include "render/renderer.hpp"
 #include "test_support.hpp"
 
 #include <fstream>
+#include <optional>
 #include <set>
+#include <sstream>
 
 namespace fr {
 namespace {
@@ -33,18 +36,20 @@ struct FrameClock {
   double now_s = 1000;
 };
 
-// Polls once per frame until a message starting with `prefix` or `timeout_s` of frames; returns
-// the frame time it took, or -1.
-double poll_until(SceneLibrary& lib, FrameClock& clock, const std::string& prefix,
-                  std::string* message, double timeout_s = 5) {
+// Polls once per frame until an event of `kind` or `timeout_s` of frames; returns the frame time
+// it took, or -1. *message is the event's line.
+double poll_until(SceneLibrary& lib, FrameClock& clock, SceneEvent::Kind kind, std::string* message,
+                  double timeout_s = 5) {
   const double start = clock.now_s;
   RenderSettings settings;
   for (; clock.now_s - start <= timeout_s; clock.now_s += 0.02)
-    for (const auto& m : lib.poll(clock.now_s, settings))
-      if (m.rfind(prefix, 0) == 0) {
-        *message = m;
+    for (const SceneEvent& e : lib.poll(clock.now_s, settings)) {
+      log_scene_event(e);  // as the explorer does
+      if (e.kind == kind) {
+        *message = e.to_string();
         return clock.now_s - start;
       }
+    }
   return -1;
 }
 
@@ -62,16 +67,19 @@ size_t mapped_copies(const std::string& name_part) {
 }
 
 TEST(HotReload, AddChangeBreakRemove) {
+  std::ostringstream log;  // the explorer's stderr
+  std::optional<LogSession> session(std::in_place, log, LogOptions{});
   const auto folder = test::fresh_dir("hot_reload");
-  std::vector<std::string> messages;
-  SceneLibrary lib({folder}, PluginPolicy{}, RenderSettings{}, test::runtime(), &messages);
+  std::vector<SceneEvent> events;
+  SceneLibrary lib({folder}, PluginPolicy{}, RenderSettings{}, test::runtime(), &events);
   EXPECT_TRUE(lib.slots().empty());
   FrameClock clock;
   std::string m;
 
   drop(reload_plugin("reload_a"), folder, "probe.so");
-  const double appeared_s = poll_until(lib, clock, "added 'reload_probe'", &m);
+  const double appeared_s = poll_until(lib, clock, SceneEvent::Kind::Added, &m);
   ASSERT_GE(appeared_s, 0) << "the new scene never appeared";
+  EXPECT_EQ(m, "added 'reload_probe' from probe.so");
   // Not before the file has been stable for the debounce time (0.3 s), and within 2 s.
   EXPECT_GE(appeared_s, 0.3 - 1e-9);
   EXPECT_LT(appeared_s, 2.0);
@@ -83,7 +91,8 @@ TEST(HotReload, AddChangeBreakRemove) {
   slot.state.camera.eye[0] = 0.25;
 
   drop(reload_plugin("reload_b"), folder, "probe.so");
-  ASSERT_GE(poll_until(lib, clock, "reloaded 'reload_probe'", &m), 0);
+  ASSERT_GE(poll_until(lib, clock, SceneEvent::Kind::Reloaded, &m), 0);
+  EXPECT_EQ(m, "reloaded 'reload_probe' from probe.so");
   {
     SceneSlot& b = lib.slots()[0];
     EXPECT_EQ(b.scene->info.version, "2.0.0");
@@ -95,22 +104,36 @@ TEST(HotReload, AddChangeBreakRemove) {
   }
 
   drop(reload_plugin("reload_broken"), folder, "probe.so");
-  ASSERT_GE(poll_until(lib, clock, "kept the running 'reload_probe'", &m), 0);
+  ASSERT_GE(poll_until(lib, clock, SceneEvent::Kind::Kept, &m), 0);
+  EXPECT_EQ(m.rfind("kept the running 'reload_probe': ", 0), 0u) << m;
   EXPECT_NE(m.find("missing_radius"), std::string::npos) << m;
   EXPECT_EQ(lib.slots()[0].scene->info.version, "2.0.0") << "the old build keeps running";
   EXPECT_NE(lib.slots()[0].error.find("reload_broken.cl:2:"), std::string::npos)
       << lib.slots()[0].error;
 
   std::ofstream(folder / "junk.so") << "not a plugin";
-  ASSERT_GE(poll_until(lib, clock, "skipped", &m), 0);
+  ASSERT_GE(poll_until(lib, clock, SceneEvent::Kind::Skipped, &m), 0);
   EXPECT_NE(m.find("not an ELF"), std::string::npos) << m;
 
   std::filesystem::remove(folder / "probe.so");
-  ASSERT_GE(poll_until(lib, clock, "'reload_probe' was removed", &m), 0);
+  ASSERT_GE(poll_until(lib, clock, SceneEvent::Kind::Removed, &m), 0);
+  EXPECT_EQ(m.rfind("'reload_probe' was removed", 0), 0u) << m;
   ASSERT_EQ(lib.slots().size(), 1u) << "a removed scene keeps running";
   EXPECT_TRUE(lib.slots()[0].removed);
   lib.drop_if_removed(0);
   EXPECT_TRUE(lib.slots().empty());
+  // Each event was said as it happened, failures as warnings, and the overlay has the same.
+  const auto recent = recent_log_messages(64);
+  ASSERT_FALSE(recent.empty());
+  EXPECT_EQ(recent.back().rfind("'reload_probe' was removed", 0), 0u) << recent.back();
+  session.reset();
+  const std::string said = log.str();
+  EXPECT_NE(said.find("fractalis: added 'reload_probe' from probe.so\n"), std::string::npos)
+      << said;
+  EXPECT_NE(said.find("fractalis: reloaded 'reload_probe' from probe.so\n"), std::string::npos);
+  EXPECT_NE(said.find("fractalis: warning: kept the running 'reload_probe': "), std::string::npos);
+  EXPECT_NE(said.find("fractalis: warning: skipped "), std::string::npos);
+  EXPECT_NE(said.find("fractalis: 'reload_probe' was removed"), std::string::npos);
 }
 
 // Processes this process started and has not reaped, and how many of them are zombies.
@@ -145,23 +168,24 @@ size_t mapping_count() {
 TEST(HotReload, ThousandReloadsLeakNothing) {
   const auto folder = test::fresh_dir("hot_reload_soak");
   drop(reload_plugin("reload_a"), folder, "soak_probe.so");
-  std::vector<std::string> messages;
-  SceneLibrary lib({folder}, PluginPolicy{}, RenderSettings{}, test::runtime(), &messages);
+  std::vector<SceneEvent> events;
+  SceneLibrary lib({folder}, PluginPolicy{}, RenderSettings{}, test::runtime(), &events);
   ASSERT_EQ(lib.slots().size(), 1u);
   FrameClock clock;
   std::string m;
   // One reload first, so that the kernels of both versions are built, cached and vetted.
   drop(reload_plugin("reload_b"), folder, "soak_probe.so");
-  ASSERT_GE(poll_until(lib, clock, "reloaded", &m), 0) << m;
+  ASSERT_GE(poll_until(lib, clock, SceneEvent::Kind::Reloaded, &m), 0) << m;
   drop(reload_plugin("reload_a"), folder, "soak_probe.so");
-  ASSERT_GE(poll_until(lib, clock, "reloaded", &m), 0) << m;
+  ASSERT_GE(poll_until(lib, clock, SceneEvent::Kind::Reloaded, &m), 0) << m;
   const size_t fds = count_entries("/proc/self/fd"), threads = count_entries("/proc/self/task"),
                maps = mapping_count();
   const auto [children, zombies] = children_and_zombies();
   EXPECT_EQ(zombies, 0u);
   for (int i = 0; i < 1000; ++i) {
     drop(reload_plugin(i % 2 ? "reload_a" : "reload_b"), folder, "soak_probe.so");
-    ASSERT_GE(poll_until(lib, clock, "reloaded", &m), 0) << "reload " << i << ": " << m;
+    ASSERT_GE(poll_until(lib, clock, SceneEvent::Kind::Reloaded, &m), 0)
+        << "reload " << i << ": " << m;
     std::string error;
     ASSERT_TRUE(lib.slots()[0].instance->update(lib.slots()[0].state, clock.now_s, &error))
         << error;
@@ -187,15 +211,19 @@ TEST(HotReload, StartupVetsEveryScene) {
   drop(std::filesystem::path(HOSTILE_PLUGIN_DIR) / "hostile_de_loop.so", folder, "loops.so");
   PluginPolicy policy;
   policy.vet_timeout_s = 8;
-  std::vector<std::string> messages;
-  SceneLibrary lib({folder}, policy, RenderSettings{}, test::runtime(), &messages);
+  std::vector<SceneEvent> events;
+  SceneLibrary lib({folder}, policy, RenderSettings{}, test::runtime(), &events);
   ASSERT_EQ(lib.slots().size(), 1u);
   EXPECT_EQ(lib.slots()[0].scene->info.id, "reload_probe");
-  ASSERT_EQ(messages.size(), 1u);
-  EXPECT_NE(messages[0].find("skipped " + (folder / "loops.so").string() +
-                             ": a test render at 8x8 did not finish within 8 s"),
+  // The good scene is added; the looping one is skipped, with why.
+  ASSERT_EQ(events.size(), 2u);
+  const SceneEvent& skipped = events[0].kind == SceneEvent::Kind::Skipped ? events[0] : events[1];
+  EXPECT_EQ(skipped.kind, SceneEvent::Kind::Skipped);
+  EXPECT_EQ(skipped.file, folder / "loops.so");
+  EXPECT_NE(skipped.to_string().find("skipped " + (folder / "loops.so").string() +
+                                     ": a test render at 8x8 did not finish within 8 s"),
             std::string::npos)
-      << messages[0];
+      << skipped.to_string();
 }
 
 // Every hostile fixture dropped over a running scene: the old build keeps running, with the
@@ -204,12 +232,12 @@ TEST(HotReload, HostileBuildsNeverReplaceTheRunningScene) {
   const auto folder = test::fresh_dir("hot_reload_hostile");
   drop(reload_plugin("reload_a"), folder, "probe.so");
   std::filesystem::copy_file(test::fixture_plugin("valid_scene"), folder / "other.so");
-  std::vector<std::string> messages;
+  std::vector<SceneEvent> events;
   PluginPolicy policy;
   policy.load_timeout_s = 2;
   policy.call_timeout_s = 0.5;
   policy.vet_timeout_s = 8;
-  SceneLibrary lib({folder}, policy, RenderSettings{}, test::runtime(), &messages);
+  SceneLibrary lib({folder}, policy, RenderSettings{}, test::runtime(), &events);
   ASSERT_EQ(lib.slots().size(), 2u);
   FrameClock clock;
   std::string m;
@@ -232,7 +260,8 @@ TEST(HotReload, HostileBuildsNeverReplaceTheRunningScene) {
     SCOPED_TRACE(fixture);
     drop(std::filesystem::path(HOSTILE_PLUGIN_DIR) / ("hostile_" + std::string(fixture) + ".so"),
          folder, "probe.so");
-    ASSERT_GE(poll_until(lib, clock, "kept the running 'reload_probe'", &m, 30), 0);
+    ASSERT_GE(poll_until(lib, clock, SceneEvent::Kind::Kept, &m, 30), 0);
+    EXPECT_EQ(m.rfind("kept the running 'reload_probe': ", 0), 0u) << m;
     EXPECT_NE(m.find(reason), std::string::npos) << m;
     const int index = lib.find("reload_probe");
     ASSERT_GE(index, 0);
@@ -242,7 +271,8 @@ TEST(HotReload, HostileBuildsNeverReplaceTheRunningScene) {
   }
   // A file that suddenly declares another file's scene id is refused, and both keep running.
   drop(reload_plugin("reload_a"), folder, "other.so");
-  ASSERT_GE(poll_until(lib, clock, "kept the running 'fixture_valid'", &m), 0);
+  ASSERT_GE(poll_until(lib, clock, SceneEvent::Kind::Kept, &m), 0);
+  EXPECT_EQ(m.rfind("kept the running 'fixture_valid': ", 0), 0u) << m;
   EXPECT_NE(m.find("declares scene id 'reload_probe', which probe.so provides"), std::string::npos)
       << m;
   ASSERT_EQ(lib.slots().size(), 2u);

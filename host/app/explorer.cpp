@@ -3,6 +3,8 @@
 #include "image/png_write.hpp"
 #include "render/de_probe.hpp"
 
+#include <spdlog/spdlog.h>
+
 #include <chrono>
 #include <cmath>
 #include <cstring>
@@ -32,13 +34,7 @@ Explorer::Explorer(const Settings& settings, ClRuntime& runtime, SceneLibrary& l
   if (library_.slots().empty()) throw std::runtime_error("no scene could be loaded");
   const int index = library_.find(scene_id);
   current_ = index >= 0 ? index : 0;
-  if (index < 0)
-    add_message("no scene '" + scene_id + "'; showing '" + current().scene->info.id + "'");
-}
-
-void Explorer::add_message(std::string m) {
-  messages_.push_back(std::move(m));
-  while (messages_.size() > 8) messages_.pop_front();
+  if (index < 0) spdlog::warn("no scene '{}'; showing '{}'", scene_id, current().scene->info.id);
 }
 
 void Explorer::select_scene(int index) {
@@ -80,9 +76,10 @@ bool Explorer::update(const InputState& input, double dt_s, double now_s) {
     }
   }
   if (input.resized) changed_ = true;
-  for (std::string& m : library_.poll(now_s, settings_.render)) {
-    if (m.rfind("reloaded '" + current().scene->info.id + "'", 0) == 0) changed_ = true;
-    add_message(std::move(m));
+  for (const SceneEvent& e : library_.poll(now_s, settings_.render)) {
+    if (e.kind == SceneEvent::Kind::Reloaded && e.scene_id == current().scene->info.id)
+      changed_ = true;
+    log_scene_event(e);
   }
 
   SceneSlot& slot = current();
@@ -106,7 +103,7 @@ bool Explorer::update(const InputState& input, double dt_s, double now_s) {
   // said once, not every frame, and the scene stays failed until it is reloaded.
   if (!slot.instance->update(slot.state, now_s, &error) && slot.error != error) {
     slot.error = error;
-    add_message(error);
+    spdlog::error("scene '{}': {}", slot.scene->info.id, error);
   }
   if (!same_state(before, slot.state)) changed_ = true;
   return true;
@@ -132,7 +129,7 @@ const FrameImage* Explorer::render(int window_width_px, int window_height_px) {
                      last_);
   } catch (const std::exception& e) {
     slot.error = e.what();
-    add_message(e.what());
+    spdlog::error("{}", e.what());
     return nullptr;
   }
   stats_.frame_ms =

@@ -58,8 +58,6 @@ class Explorer {
   void mark_changed() { changed_ = true; }
 
   const ExplorerStats& stats() const { return stats_; }
-  const std::deque<std::string>& messages() const { return messages_; }
-  void add_message(std::string m);
   const std::vector<Action>& pending_window_actions() const { return window_actions_; }
 
  private:
@@ -75,7 +73,6 @@ class Explorer {
   bool changed_ = true;
   ExplorerStats stats_;
   FrameImage last_;
-  std::deque<std::string> messages_;
   std::vector<Action> window_actions_;  // overlay, fullscreen, screenshot: for the window layer
 };
 

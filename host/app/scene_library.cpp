@@ -5,9 +5,35 @@
 #include "plugin/plugin_text.hpp"
 #include "render/kernel_assembly.hpp"
 
+#include <spdlog/spdlog.h>
+
 #include <future>
 
 namespace fr {
+
+std::string SceneEvent::to_string() const {
+  const std::string name = printable(file.filename().string());
+  switch (kind) {
+    case Kind::Added:
+      return "added '" + scene_id + "' from " + name;
+    case Kind::Reloaded:
+      return "reloaded '" + scene_id + "' from " + name;
+    case Kind::Kept:
+      return "kept the running '" + scene_id + "': " + reason;
+    case Kind::Skipped:
+      return "skipped " + printable(file.string()) + ": " + reason;
+    case Kind::Removed:
+      return "'" + scene_id + "' was removed; it runs until you switch away";
+  }
+  return reason;
+}
+
+void log_scene_event(const SceneEvent& event) {
+  if (event.is_failure())
+    spdlog::warn("{}", event.to_string());
+  else
+    spdlog::info("{}", event.to_string());
+}
 
 bool make_slot(std::shared_ptr<const LoadedScene> scene, SceneSlot* slot, std::string* error) {
   slot->state = make_default_state(scene->info);
@@ -20,7 +46,7 @@ bool make_slot(std::shared_ptr<const LoadedScene> scene, SceneSlot* slot, std::s
 
 SceneLibrary::SceneLibrary(std::vector<std::filesystem::path> folders, const PluginPolicy& policy,
                            const RenderSettings& settings, ClRuntime& runtime,
-                           std::vector<std::string>* messages)
+                           std::vector<SceneEvent>* events)
     : policy_(policy), runtime_(runtime) {
   std::vector<LoadOutcome> outcomes = load_scene_folder(folders, policy_);
   // Test renders of the scenes not vetted before, at once (each waits on its own process).
@@ -35,25 +61,29 @@ SceneLibrary::SceneLibrary(std::vector<std::filesystem::path> folders, const Plu
   }
   for (size_t i = 0; i < outcomes.size(); ++i) {
     const LoadOutcome& o = outcomes[i];
-    const std::string file = printable(o.file.string());
+    auto skipped = [&](const std::string& why) {
+      events->push_back({SceneEvent::Kind::Skipped, "", o.file, why});
+    };
     if (!o.scene) {
-      messages->push_back("skipped " + file + ": " + o.message);
+      skipped(o.message);
       continue;
     }
     if (vets[i].valid()) {
       const VetResult vet = vets[i].get();
       if (!vet.ok) {
-        messages->push_back("skipped " + file + ": " + vet.error);
+        skipped(vet.error);
         continue;
       }
       vetted_.insert(hashes[i], settings);
     }
     SceneSlot slot;
     std::string error;
-    if (make_slot(o.scene, &slot, &error))
+    if (make_slot(o.scene, &slot, &error)) {
+      events->push_back({SceneEvent::Kind::Added, o.scene->info.id, o.file, ""});
       slots_.push_back(std::move(slot));
-    else
-      messages->push_back("skipped " + file + ": " + error);
+    } else {
+      skipped(error);
+    }
   }
   for (const auto& f : folders) watchers_.push_back(std::make_unique<PluginWatcher>(f));
 }
@@ -64,8 +94,8 @@ int SceneLibrary::find(const std::string& id) const {
   return -1;
 }
 
-std::string SceneLibrary::add_or_replace(const std::filesystem::path& file,
-                                         const RenderSettings& settings) {
+SceneEvent SceneLibrary::add_or_replace(const std::filesystem::path& file,
+                                        const RenderSettings& settings) {
   LoadOutcome o = load_scene_plugin(file, policy_);
   // The slot this file fills: its own, else (a new file) a removed scene's with the same id.
   int by_file = -1, by_id = -1;
@@ -77,9 +107,9 @@ std::string SceneLibrary::add_or_replace(const std::filesystem::path& file,
   auto keep_old = [&](const std::string& why) {
     if (index >= 0) {
       slots_[index].error = why;
-      return "kept the running '" + slots_[index].scene->info.id + "': " + why;
+      return SceneEvent{SceneEvent::Kind::Kept, slots_[index].scene->info.id, file, why};
     }
-    return "skipped " + printable(file.string()) + ": " + why;
+    return SceneEvent{SceneEvent::Kind::Skipped, "", file, why};
   };
   if (!o.scene) return keep_old(o.message);
   // A file may not take over a scene another file provides.
@@ -118,29 +148,28 @@ std::string SceneLibrary::add_or_replace(const std::filesystem::path& file,
   const std::string id = o.scene->info.id;
   if (index >= 0) {
     slots_[index] = std::move(fresh);
-    return "reloaded '" + id + "' from " + printable(file.filename().string());
+    return {SceneEvent::Kind::Reloaded, id, file, ""};
   }
   slots_.push_back(std::move(fresh));
-  return "added '" + id + "' from " + printable(file.filename().string());
+  return {SceneEvent::Kind::Added, id, file, ""};
 }
 
-std::vector<std::string> SceneLibrary::poll(double now_s, const RenderSettings& settings) {
-  std::vector<std::string> messages;
+std::vector<SceneEvent> SceneLibrary::poll(double now_s, const RenderSettings& settings) {
+  std::vector<SceneEvent> events;
   for (auto& w : watchers_) {
     for (const PluginChange& c : w->poll(now_s)) {
       if (c.kind == PluginChange::Kind::Removed) {
         for (auto& slot : slots_)
           if (slot.scene->file == c.file && !slot.removed) {
             slot.removed = true;
-            messages.push_back("'" + slot.scene->info.id +
-                               "' was removed; it runs until you switch away");
+            events.push_back({SceneEvent::Kind::Removed, slot.scene->info.id, c.file, ""});
           }
         continue;
       }
-      messages.push_back(add_or_replace(c.file, settings));
+      events.push_back(add_or_replace(c.file, settings));
     }
   }
-  return messages;
+  return events;
 }
 
 void SceneLibrary::drop_if_removed(int index) {

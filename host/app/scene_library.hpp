@@ -21,27 +21,46 @@
 
 namespace fr {
 
+// What happened to a scene file, as the explorer logs it and reacts to it.
+struct SceneEvent {
+  enum class Kind {
+    Added,     // a new scene, at start or dropped into a folder
+    Reloaded,  // a changed file replaced its running scene
+    Kept,      // a changed file failed; the running scene stays (reason says why)
+    Skipped,   // a file that gave no scene (reason says why)
+    Removed,   // the file went; the scene runs until the user switches away
+  };
+  Kind kind = Kind::Added;
+  std::string scene_id;  // empty for Skipped
+  std::filesystem::path file;
+  std::string reason;  // Kept and Skipped
+  // One line: "reloaded 'menger' from menger.so", "skipped bad.so: not an ELF file".
+  std::string to_string() const;
+  bool is_failure() const { return kind == Kind::Kept || kind == Kind::Skipped; }
+};
+
+// Logs the event through the one channel (io/log.hpp): failures as warnings, the rest as info.
+void log_scene_event(const SceneEvent& event);
+
 class SceneLibrary {
  public:
-  // Loads the folders (failures go to `messages`) and starts watching them.
+  // Loads the folders (an event per file goes to `events`) and starts watching them.
   // Each scene is vetted (scene_vetting.hpp) before it is added, once per file content; the
   // test renders run in parallel.
   SceneLibrary(std::vector<std::filesystem::path> folders, const PluginPolicy& policy,
-               const RenderSettings& settings, ClRuntime& runtime,
-               std::vector<std::string>* messages);
+               const RenderSettings& settings, ClRuntime& runtime, std::vector<SceneEvent>* events);
 
   std::vector<SceneSlot>& slots() { return slots_; }
   int find(const std::string& id) const;  // slot index or -1
 
-  // Applies the folder changes that became stable by now_s; returns one message per event
-  // ("reloaded 'menger'", "kept the running 'menger': ...").
-  std::vector<std::string> poll(double now_s, const RenderSettings& settings);
+  // Applies the folder changes that became stable by now_s; returns what happened, in order.
+  std::vector<SceneEvent> poll(double now_s, const RenderSettings& settings);
 
   // Drops a removed scene's slot (call when the user switches away from it).
   void drop_if_removed(int index);
 
  private:
-  std::string add_or_replace(const std::filesystem::path& file, const RenderSettings& settings);
+  SceneEvent add_or_replace(const std::filesystem::path& file, const RenderSettings& settings);
 
   PluginPolicy policy_;
   VettedScenes vetted_;

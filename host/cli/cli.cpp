@@ -2,11 +2,14 @@
 
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
-#include "render/cl.hpp"
-#include "render/cl_runtime.hpp"
+#include "io/echo.hpp"
+#include "io/log.hpp"
 
 #include <fractalis/abi.h>
 
+#include <spdlog/spdlog.h>
+
+#include <optional>
 #include <ostream>
 
 namespace fr {
@@ -27,7 +30,62 @@ const char* kUsage =
     "  check     run the conformance checks on a scene plugin (for scene authors)\n"
     "\n"
     "  fractalis <command> --help   options of a command\n"
-    "  fractalis --version          versions of fractalis and its scene ABI\n";
+    "  fractalis --version          versions of fractalis and its scene ABI\n"
+    "\n"
+    "options of every command (before or after its name):\n"
+    "  -v, --verbose      also say what is done step by step (debug messages)\n"
+    "  -q, --quiet        say errors only\n"
+    "  --log-file FILE    append every message, time-stamped, to FILE as well\n";
+
+// Takes the options every command has out of `args`.
+LogOptions take_log_options(std::vector<std::string>& args) {
+  LogOptions log;
+  bool verbose = false, quiet = false;
+  std::vector<std::string> rest;
+  for (size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (a == "-v" || a == "--verbose") {
+      verbose = true;
+    } else if (a == "-q" || a == "--quiet") {
+      quiet = true;
+    } else if (a == "--log-file" || a.rfind("--log-file=", 0) == 0) {
+      std::string file = a == "--log-file" ? (i + 1 < args.size() ? args[++i] : "") : a.substr(11);
+      if (file.empty()) throw UsageError("--log-file: expected a file name");
+      check_output_file("--log-file", file);
+      log.file = file;
+    } else {
+      rest.push_back(a);
+    }
+  }
+  if (verbose && quiet) throw UsageError("--verbose and --quiet: choose one");
+  log.verbosity = verbose ? LogVerbosity::Verbose
+                  : quiet ? LogVerbosity::Quiet
+                          : LogVerbosity::Normal;
+  args = std::move(rest);
+  return log;
+}
+
+int run_command(const std::string& command, const std::vector<std::string>& rest, std::ostream& out,
+                std::ostream& err) {
+  try {
+    if (command == "explore") return command_explore(rest, out, err);
+    if (command == "render") return command_render(rest, out, err);
+    if (command == "bench") return command_bench(rest, out, err);
+    if (command == "sweep") return command_sweep(rest, out, err);
+    if (command == "list") return command_list(rest, out, err);
+    if (command == "devices") return command_devices(rest, out, err);
+    if (command == "check") return command_check(rest, out, err);
+    if (command == "vet-scene") return command_vet_scene(rest, out, err);
+    throw UsageError("unknown command '" + echo(command) +
+                     "' (expected explore, render, bench, sweep, list, devices or check)");
+  } catch (const UsageError& e) {
+    spdlog::error("{}", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    spdlog::error("{}", e.what());
+    return 1;
+  }
+}
 
 }  // namespace
 
@@ -41,29 +99,19 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
         << FR_ABI_VERSION_MINOR << ")\n";
     return 0;
   }
-  const std::string command = args[0];
-  const std::vector<std::string> rest(args.begin() + 1, args.end());
+  std::vector<std::string> args_left = args;
+  std::optional<LogSession> log;
   try {
-    if (command == "explore") return command_explore(rest, out, err);
-    if (command == "render") return command_render(rest, out, err);
-    if (command == "bench") return command_bench(rest, out, err);
-    if (command == "sweep") return command_sweep(rest, out, err);
-    if (command == "list") return command_list(rest, out, err);
-    if (command == "devices") return command_devices(rest, out, err);
-    if (command == "check") return command_check(rest, out, err);
-    if (command == "vet-scene") return command_vet_scene(rest, out, err);
-    throw UsageError("unknown command '" + command +
-                     "' (expected explore, render, bench, sweep, list, devices or check)");
-  } catch (const UsageError& e) {
-    err << "fractalis: error: " << e.what() << "\n";
-    return 2;
-  } catch (const KernelBuildError& e) {
-    err << "fractalis: error: " << e.what() << "\n";
-    return 1;
+    const LogOptions log_options = take_log_options(args_left);
+    if (args_left.empty()) throw UsageError("no command given (try fractalis --help)");
+    log.emplace(err, log_options);
   } catch (const std::exception& e) {
     err << "fractalis: error: " << e.what() << "\n";
-    return 1;
+    return 2;
   }
+  const std::string command = args_left[0];
+  return run_command(command, std::vector<std::string>(args_left.begin() + 1, args_left.end()), out,
+                     err);
 }
 
 }  // namespace fr

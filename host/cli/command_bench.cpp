@@ -4,8 +4,11 @@
 #include "cli/scene_setup.hpp"
 #include "cli/watchdog.hpp"
 #include "io/atomic_file.hpp"
+#include "io/echo.hpp"
 #include "render/kernel_assembly.hpp"
 #include "render/renderer.hpp"
+
+#include <spdlog/spdlog.h>
 
 #include <chrono>
 #include <cstdio>
@@ -14,12 +17,13 @@
 namespace fr {
 namespace {
 
-int bench_explore(ParsedOptions options, std::ostream& out, std::ostream& err) {
+int bench_explore(ParsedOptions options, std::ostream& out,
+                  std::ostream& /*err: messages go to spdlog*/) {
   if (!options.has("size")) options.values["size"] = {"1280x720"};
   if (!options.has("scene")) options.values["scene"] = {"mandelbulb"};
   const int frames =
       static_cast<int>(parse_integer("--frames", options.get("frames").value_or("120"), 1, 100000));
-  ExplorerSetup setup = prepare_explorer(options, err);
+  ExplorerSetup setup = prepare_explorer(options);
   Explorer& explorer = *setup.explorer;
   const RenderSettings& render = setup.settings.render;
   // Warm-up: build the kernels the flight uses (render and DE probe), untimed.
@@ -82,13 +86,13 @@ int command_bench(const std::vector<std::string>& args, std::ostream& out, std::
       static_cast<int>(parse_integer("--runs", options.get("runs").value_or("3"), 1, 1000));
   const double duration = parse_finite("--duration", options.get("duration").value_or("10"));
   if (!(duration >= 0))
-    throw UsageError("--duration: expected seconds >= 0, got " + *options.get("duration"));
+    throw UsageError("--duration: expected seconds >= 0, got " + echo(*options.get("duration")));
   if (!options.has("scene")) options.values["scene"] = {"benchmark"};
   const auto json_file = options.get("json");
   // Checked before the benchmark runs, not after.
   if (json_file) check_output_file("--json", *json_file);
 
-  PreparedScene p = prepare_scene(options, err);
+  PreparedScene p = prepare_scene(options);
   ClRuntime runtime(p.device);
   Renderer renderer(runtime);
   std::string error;
@@ -134,7 +138,7 @@ int command_bench(const std::vector<std::string>& args, std::ostream& out, std::
   out << format_bench_text(report);
   if (json_file) {
     if (!write_file_atomic(*json_file, format_bench_json(report), &error)) {
-      err << "fractalis: error: " << error << "\n";
+      spdlog::error("{}", error);
       return 1;
     }
     out << "wrote " << *json_file << "\n";

@@ -6,12 +6,15 @@
 #include "cli/scene_setup.hpp"
 #include "io/atomic_file.hpp"
 
+#include <spdlog/spdlog.h>
+
 #include <optional>
 #include <ostream>
 
 namespace fr {
 
-int command_check(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+int command_check(const std::vector<std::string>& args, std::ostream& out,
+                  std::ostream& /*err: messages go to spdlog*/) {
   std::vector<OptionSpec> specs = {
       {"json", "FILE", false, "also write the findings as JSON (atomically)"},
       {"config", "FILE", false, "settings file (default: $XDG_CONFIG_HOME/fractalis/config.toml)"},
@@ -50,7 +53,7 @@ int command_check(const std::vector<std::string>& args, std::ostream& out, std::
   if (json_file) {
     std::string error;
     if (!write_file_atomic(*json_file, check_report_json(report), &error)) {
-      err << "fractalis: error: " << error << "\n";
+      spdlog::error("{}", error);
       return 1;
     }
   }

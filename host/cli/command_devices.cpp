@@ -2,6 +2,8 @@
 #include "cli/options.hpp"
 #include "render/device.hpp"
 
+#include <spdlog/spdlog.h>
+
 #include <ostream>
 
 namespace fr {
@@ -17,7 +19,7 @@ int command_devices(const std::vector<std::string>& args, std::ostream& out, std
   }
   const auto devices = list_devices();
   if (devices.empty()) {
-    err << "fractalis: error: no OpenCL device found (is pocl-opencl-icd installed?)\n";
+    spdlog::error("no OpenCL device found (is pocl-opencl-icd installed?)");
     return 1;
   }
   std::string error;

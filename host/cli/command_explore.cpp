@@ -5,13 +5,16 @@
 #include "ui/overlay.hpp"
 #include "ui/window.hpp"
 
+#include <spdlog/spdlog.h>
+
 #include <chrono>
 #include <ostream>
 #include <thread>
 
 namespace fr {
 
-int command_explore(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+int command_explore(const std::vector<std::string>& args, std::ostream& out,
+                    std::ostream& /*err: messages go to spdlog*/) {
   auto specs = scene_option_specs();
   specs.push_back({"frames", "N", false, "quit after N frames (for scripts and tests)"});
   specs.push_back({"fullscreen", nullptr, false, "start in fullscreen"});
@@ -32,7 +35,7 @@ int command_explore(const std::vector<std::string>& args, std::ostream& out, std
   if (!display_available())
     throw std::runtime_error(
         "no display (DISPLAY and WAYLAND_DISPLAY are unset); use `fractalis render` instead");
-  ExplorerSetup setup = prepare_explorer(options, err);
+  ExplorerSetup setup = prepare_explorer(options);
   Explorer& explorer = *setup.explorer;
   const Settings& settings = setup.settings;
   const RenderSettings& render = settings.render;
@@ -75,9 +78,9 @@ int command_explore(const std::vector<std::string>& args, std::ostream& out, std
           overlay.screenshot_at_window_size ? window.height_px() : overlay.screenshot_size[1];
       std::string error;
       if (explorer.screenshot(overlay.screenshot_file, w, h, &error))
-        explorer.add_message("saved " + overlay.screenshot_file);
+        spdlog::info("saved {}", overlay.screenshot_file);
       else
-        explorer.add_message(error);
+        spdlog::error("{}", error);
     }
     // Nothing left to refine: wait for input instead of spinning.
     if (!image) std::this_thread::sleep_for(std::chrono::milliseconds(10));

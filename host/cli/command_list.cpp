@@ -1,8 +1,11 @@
 #include "cli/commands.hpp"
 #include "cli/scene_setup.hpp"
+#include "io/log.hpp"
 #include "plugin/plugin_text.hpp"
 #include "plugin/scene_instance.hpp"
 #include "render/kernel_assembly.hpp"
+
+#include <spdlog/spdlog.h>
 
 #include <algorithm>
 #include <ostream>
@@ -56,24 +59,23 @@ void describe_kernel(const SceneInfo& info, const RenderSettings& settings, std:
 
 }  // namespace
 
-int command_list(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+int command_list(const std::vector<std::string>& args, std::ostream& out,
+                 std::ostream& /*err: messages go to spdlog*/) {
   auto specs = plugin_option_specs();
-  specs.push_back({"verbose", nullptr, false,
-                   "also show what each scene's kernel compiles in: stages, DE library files,\n"
-                   "                                 parameters baked in as constants"});
   specs.push_back({"help", nullptr, false, "show this help"});
   auto options = parse_options("list", args, specs);
   if (options.has("help")) {
     out << "usage: fractalis list [--plugins DIR] [--verbose]\n\nLists every scene plugin found: "
            "id, version, parameters with their ranges, or why it failed to load. Exits 1 when\n"
-           "a plugin failed to load.\n\n"
+           "a plugin failed to load. With --verbose (-v), also what each scene's kernel\n"
+           "compiles in: stages, DE library files, parameters baked in as constants.\n\n"
         << format_options(specs);
     return 0;
   }
   const Settings settings = load_settings(options);
   const auto folders = plugin_folders(settings, options);
   if (folders.empty()) {
-    err << "fractalis: error: no plugin folder found (build the plugins, or pass --plugins DIR)\n";
+    spdlog::error("no plugin folder found (build the plugins, or pass --plugins DIR)");
     return 1;
   }
   for (const auto& f : folders) out << "plugin folder: " << f.string() << "\n";
@@ -100,7 +102,7 @@ int command_list(const std::vector<std::string>& args, std::ostream& out, std::o
           << (p.flags & FR_PARAM_SPECIALIZE ? ", compiled in" : "")
           << (p.flags & FR_PARAM_ANIMATABLE ? ", animatable" : "") << "  " << p.description << "\n";
     }
-    if (options.has("verbose")) describe_kernel(s, settings.render, out);
+    if (log_verbosity() == LogVerbosity::Verbose) describe_kernel(s, settings.render, out);
   }
   // A plugin that did not load is a failure a script should see (the listing still shows the
   // rest).

@@ -6,6 +6,8 @@
 #include "render/precision.hpp"
 #include "render/renderer.hpp"
 
+#include <spdlog/spdlog.h>
+
 #include <algorithm>
 #include <cstdio>
 
@@ -19,33 +21,28 @@ namespace {
 // How the primary rays ended, and the warnings a user must see: many rays out of steps, a camera
 // inside the solid, surface detail finer than float resolves.
 void report_rays(const FrameImage& image, const fr_camera& camera, const RenderSettings& settings,
-                 std::ostream& out, std::ostream& err) {
+                 std::ostream& out, std::ostream& /*err: messages go to spdlog*/) {
   const RayCounts rays = count_rays(image);
   const size_t total = image.ray_status.size();
   auto percent = [&](size_t n) { return 100.0 * double(n) / double(std::max<size_t>(total, 1)); };
   out << "rays: " << rays.hit << " hit, " << rays.miss << " missed, " << rays.out_of_steps
       << " out of steps, " << rays.inside << " started inside the surface\n";
-  char line[256];
-  if (percent(rays.out_of_steps) > kOutOfStepsWarnPercent) {
-    std::snprintf(line, sizeof line,
-                  "fractalis: warning: %.2f%% of rays ran out of steps (render.max_steps = %d); "
-                  "each is shaded at its closest approach or as a miss; raise render.max_steps\n",
-                  percent(rays.out_of_steps), settings.max_steps);
-    err << line;
-  }
+  if (percent(rays.out_of_steps) > kOutOfStepsWarnPercent)
+    spdlog::warn(
+        "{:.2f}% of rays ran out of steps (render.max_steps = {}); each is shaded at its closest "
+        "approach or as a miss; raise render.max_steps",
+        percent(rays.out_of_steps), settings.max_steps);
   if (rays.inside > 0 && rays.inside == total)
-    err << "fractalis: warning: the camera is inside the surface: every ray starts inside the "
-           "solid and is black\n";
+    spdlog::warn(
+        "the camera is inside the surface: every ray starts inside the solid and is black");
   if (image.precision == Precision::Float) {
     const CameraRays camera_rays = make_camera_rays(camera, image.width_px, image.height_px);
     const size_t fine = pixels_below_float_resolution(image.depth, camera_rays);
-    if (fine > 0) {
-      std::snprintf(line, sizeof line,
-                    "fractalis: warning: %.2f%% of surface pixels are finer than float can "
-                    "resolve there; use --precision double\n",
-                    percent(fine));
-      err << line;
-    }
+    if (fine > 0)
+      spdlog::warn(
+          "{:.2f}% of surface pixels are finer than float can resolve there; use --precision "
+          "double",
+          percent(fine));
   }
 }
 
@@ -67,11 +64,11 @@ int command_render(const std::vector<std::string>& args, std::ostream& out, std:
   const std::string out_file = options.get("out").value_or("fractalis.png");
   // Checked before rendering, so a typo in the folder costs nothing.
   check_output_file("--out", out_file);
-  PreparedScene p = prepare_scene(options, err);
+  PreparedScene p = prepare_scene(options);
 
   std::string error;
   if (!p.instance->update(p.state, p.state.time_s, &error)) {
-    err << "fractalis: error: " << error << "\n";
+    spdlog::error("{}", error);
     return 1;
   }
   ClRuntime runtime(p.device);
@@ -91,7 +88,7 @@ int command_render(const std::vector<std::string>& args, std::ostream& out, std:
   const double render_ms = ms_since(render_start);
   watchdog.stop();
   if (!write_png_atomic(out_file, image.width_px, image.height_px, image.rgba8, &error)) {
-    err << "fractalis: error: " << error << "\n";
+    spdlog::error("{}", error);
     return 1;
   }
   out << "rendered " << p.scene->info.id << " " << image.width_px << "x" << image.height_px

@@ -8,6 +8,8 @@
 #include "sweep/sweep_reference.hpp"
 #include "sweep/sweep_report.hpp"
 
+#include <spdlog/spdlog.h>
+
 #include <signal.h>
 #include <unistd.h>
 
@@ -127,7 +129,7 @@ int command_sweep(const std::vector<std::string>& args, std::ostream& out, std::
   const std::string scene_id = options.get("scene").value_or("mandelbulb");
   const std::filesystem::path out_dir = options.get("out").value_or("sweep-" + scene_id);
   if (out_dir.empty()) throw UsageError("--out: empty folder name");
-  PreparedScene p = prepare_scene(options, err);
+  PreparedScene p = prepare_scene(options);
   std::vector<std::string> knobs = knob_names(p.scene->info);
   if (auto list = options.get("knobs")) {
     knobs = split_list(*list);
@@ -143,7 +145,7 @@ int command_sweep(const std::vector<std::string>& args, std::ostream& out, std::
 
   std::string error;
   if (!p.instance->update(p.state, p.state.time_s, &error)) {
-    err << "fractalis: error: " << error << "\n";
+    spdlog::error("{}", error);
     return 1;
   }
   const bool terminal = isatty(STDERR_FILENO) == 1;
@@ -167,7 +169,10 @@ int command_sweep(const std::vector<std::string>& args, std::ostream& out, std::
         return !g_interrupted;
       },
       &warning);
-  if (!warning.empty()) err << (terminal ? "\n" : "") << "fractalis: warning: " << warning << "\n";
+  if (!warning.empty()) {
+    if (terminal) err << "\n";  // off the progress bar's line
+    spdlog::warn("{}", warning);
+  }
   const double pixel_angle =
       make_camera_rays(p.state.camera, p.render.width_px, p.render.height_px).pixel_angle_rad;
 
@@ -211,7 +216,7 @@ int command_sweep(const std::vector<std::string>& args, std::ostream& out, std::
     result.rows[i].frame_ms = summarize_frames(times[i]).p50_ms;
   if (terminal) err << "\n";
   if (g_interrupted) {
-    err << "fractalis: sweep interrupted; nothing written\n";
+    spdlog::warn("sweep interrupted; nothing written");
     return 130;
   }
   double lanes_difference = -1;
@@ -249,7 +254,7 @@ int command_sweep(const std::vector<std::string>& args, std::ostream& out, std::
         {"sweep.json", format_sweep_json(result)},
         {"sweep.svg", format_sweep_svg(result)}}) {
     if (!write_file_atomic(out_dir / file, text, &error)) {
-      err << "fractalis: error: " << error << "\n";
+      spdlog::error("{}", error);
       return 1;
     }
   }

@@ -6,6 +6,8 @@
 #include "plugin/plugin_text.hpp"
 #include "render/renderer.hpp"
 
+#include <spdlog/spdlog.h>
+
 #include <ostream>
 
 namespace fr {
@@ -25,14 +27,14 @@ int command_vet_scene(const std::vector<std::string>& args, std::ostream& out, s
   const Settings settings = load_settings(options);
   const LoadOutcome o = load_scene_plugin(*file, settings.plugins);
   if (!o.scene) {
-    err << "fractalis: error: " << printable(*file) << ": " << o.message << "\n";
+    spdlog::error("{}: {}", printable(*file), o.message);
     return 1;
   }
   std::string error;
   auto instance = SceneInstance::create(o.scene, &error);
   SceneState state = make_default_state(o.scene->info);
   if (!instance || !instance->update(state, 0, &error)) {
-    err << "fractalis: error: " << error << "\n";
+    spdlog::error("{}", error);
     return 1;
   }
   ClRuntime runtime(choose_device(settings, options));

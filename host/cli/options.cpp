@@ -1,5 +1,7 @@
 #include "cli/options.hpp"
 
+#include "io/echo.hpp"
+
 #include <filesystem>
 
 #include <cerrno>
@@ -34,8 +36,8 @@ ParsedOptions parse_options(const std::string& command, const std::vector<std::s
     for (const auto& s : specs)
       if (name == s.name) spec = &s;
     if (!spec)
-      throw UsageError("unknown option '--" + name + "' for '" + command + "' (see fractalis " +
-                       command + " --help)");
+      throw UsageError("unknown option '--" + echo(name) + "' for '" + command +
+                       "' (see fractalis " + command + " --help)");
     if (spec->value_name) {
       if (!inline_value) {
         if (i + 1 >= args.size())
@@ -71,9 +73,9 @@ double parse_finite(const std::string& what, const std::string& text) {
   errno = 0;
   double v = std::strtod(begin, &end);
   if (text.empty() || end != begin + text.size())
-    throw UsageError(what + ": '" + text + "' is not a number");
+    throw UsageError(what + ": '" + echo(text) + "' is not a number");
   if (!std::isfinite(v) || errno == ERANGE)
-    throw UsageError(what + ": '" + text + "' is not a finite number");
+    throw UsageError(what + ": '" + echo(text) + "' is not a finite number");
   return v;
 }
 
@@ -84,9 +86,9 @@ long long parse_integer(const std::string& what, const std::string& text, long l
   errno = 0;
   long long v = std::strtoll(begin, &end, 10);
   if (text.empty() || end != begin + text.size() || errno == ERANGE)
-    throw UsageError(what + ": '" + text + "' is not a whole number");
+    throw UsageError(what + ": '" + echo(text) + "' is not a whole number");
   if (v < lo || v > hi)
-    throw UsageError(what + ": " + text + " is outside [" + std::to_string(lo) + ", " +
+    throw UsageError(what + ": " + echo(text) + " is outside [" + std::to_string(lo) + ", " +
                      std::to_string(hi) + "]");
   return v;
 }
@@ -94,7 +96,7 @@ long long parse_integer(const std::string& what, const std::string& text, long l
 std::array<int, 2> parse_size(const std::string& what, const std::string& text) {
   auto x = text.find_first_of("xX");
   if (x == std::string::npos)
-    throw UsageError(what + ": '" + text + "' is not WIDTHxHEIGHT (for example 1280x720)");
+    throw UsageError(what + ": '" + echo(text) + "' is not WIDTHxHEIGHT (for example 1280x720)");
   std::array<int, 2> size{};
   for (int i = 0; i < 2; ++i) {
     const std::string part = i == 0 ? text.substr(0, x) : text.substr(x + 1);
@@ -110,7 +112,7 @@ std::array<double, 3> parse_vec3(const std::string& what, const std::string& tex
   for (int i = 0; i < 3; ++i) {
     size_t comma = text.find(',', start);
     if ((i < 2) != (comma != std::string::npos))
-      throw UsageError(what + ": '" + text + "' is not three comma-separated numbers x,y,z");
+      throw UsageError(what + ": '" + echo(text) + "' is not three comma-separated numbers x,y,z");
     v[i] = parse_finite(what, text.substr(start, i < 2 ? comma - start : std::string::npos));
     start = comma + 1;
   }
@@ -123,9 +125,9 @@ void check_output_file(const std::string& what, const std::string& path) {
   const std::filesystem::path file(path);
   const std::filesystem::path folder = file.parent_path();
   if (!folder.empty() && !std::filesystem::is_directory(folder, ec))
-    throw UsageError(what + ": folder '" + folder.string() + "' does not exist");
+    throw UsageError(what + ": folder '" + echo(folder.string()) + "' does not exist");
   if (std::filesystem::is_directory(file, ec))
-    throw UsageError(what + ": '" + path + "' is a folder, not a file");
+    throw UsageError(what + ": '" + echo(path) + "' is a folder, not a file");
 }
 
 }  // namespace fr

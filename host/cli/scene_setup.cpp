@@ -1,7 +1,11 @@
 #include "cli/scene_setup.hpp"
 
+#include "io/echo.hpp"
+
 #include "plugin/plugin_text.hpp"
 #include "render/camera.hpp"
+
+#include <spdlog/spdlog.h>
 
 #include <cstdlib>
 #include <ostream>
@@ -45,8 +49,24 @@ Settings load_settings(const ParsedOptions& options, std::vector<SettingsProblem
   if (auto given = options.get("config")) {
     file = *given;
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(*file, ec))
-      throw UsageError("--config: no such file '" + file->string() + "'");
+    const auto status = std::filesystem::status(*file, ec);
+    const std::string named = "--config: '" + echo(file->string()) + "' ";
+    switch (status.type()) {
+      case std::filesystem::file_type::regular:
+        break;
+      case std::filesystem::file_type::not_found:
+        throw UsageError("--config: no such file '" + echo(file->string()) + "'");
+      case std::filesystem::file_type::directory:
+        throw UsageError(named + "is a folder, not a settings file");
+      case std::filesystem::file_type::character:
+      case std::filesystem::file_type::block:
+        throw UsageError(named + "is a device, not a settings file");
+      case std::filesystem::file_type::fifo:
+      case std::filesystem::file_type::socket:
+        throw UsageError(named + "is a pipe or socket, not a settings file");
+      default:
+        throw UsageError(named + "cannot be read" + (ec ? " (" + ec.message() + ")" : ""));
+    }
   } else {
     file = user_settings_file();
   }
@@ -72,7 +92,7 @@ std::vector<std::filesystem::path> plugin_folders(const Settings& settings,
   if (auto dir = options.get("plugins")) {
     std::error_code ec;
     if (!std::filesystem::is_directory(*dir, ec))
-      throw UsageError("--plugins: '" + *dir + "' is not a folder");
+      throw UsageError("--plugins: '" + echo(*dir) + "' is not a folder");
     return {*dir};
   }
   if (!settings.plugin_folders.empty()) return settings.plugin_folders;
@@ -104,12 +124,11 @@ std::filesystem::path user_scene_folder() {
 }
 
 std::vector<LoadOutcome> load_plugins(const std::vector<std::filesystem::path>& folders,
-                                      const PluginPolicy& policy, std::ostream& err) {
+                                      const PluginPolicy& policy) {
   auto outcomes = load_scene_folder(folders, policy);
   for (const auto& o : outcomes)
     if (o.result != LoadResult::Loaded)
-      err << "fractalis: warning: skipped plugin " << printable(o.file.string()) << ": "
-          << o.message << "\n";
+      spdlog::warn("skipped plugin {}: {}", printable(o.file.string()), o.message);
   return outcomes;
 }
 
@@ -117,8 +136,8 @@ namespace {
 UsageError unknown_scene(const std::string& id, const std::vector<std::string>& available) {
   std::string list;
   for (const auto& a : available) list += (list.empty() ? "" : ", ") + a;
-  return UsageError("unknown scene '" + id + "' (available: " + (list.empty() ? "none" : list) +
-                    ")");
+  return UsageError("unknown scene '" + echo(id) +
+                    "' (available: " + (list.empty() ? "none" : list) + ")");
 }
 }  // namespace
 
@@ -137,7 +156,7 @@ namespace {
 
 fr_value parse_param_value(const ParamInfo& p, const std::string& assignment,
                            const std::string& text) {
-  const std::string what = "--param " + assignment;
+  const std::string what = "--param " + echo(assignment);
   fr_value v{};
   switch (p.type) {
     case FR_PARAM_BOOL:
@@ -176,14 +195,15 @@ void apply_scene_overrides(const SceneInfo& info, const ParsedOptions& options, 
     for (const std::string& assignment : it->second) {
       auto eq = assignment.find('=');
       if (eq == std::string::npos)
-        throw UsageError("--param " + assignment + ": expected KEY=VALUE");
+        throw UsageError("--param " + echo(assignment) + ": expected KEY=VALUE");
       const std::string key = assignment.substr(0, eq);
       int index = info.find_param(key);
       if (index < 0) {
         std::string keys;
         for (const auto& p : info.params) keys += (keys.empty() ? "" : ", ") + p.key;
-        throw UsageError("--param " + assignment + ": scene '" + info.id + "' has no parameter '" +
-                         key + "' (it has: " + (keys.empty() ? "none" : keys) + ")");
+        throw UsageError("--param " + echo(assignment) + ": scene '" + info.id +
+                         "' has no parameter '" + key +
+                         "' (it has: " + (keys.empty() ? "none" : keys) + ")");
       }
       state.params[index] =
           parse_param_value(info.params[index], assignment, assignment.substr(eq + 1));
@@ -211,7 +231,7 @@ RenderSettings render_settings_from(const Settings& settings, const ParsedOption
   if (auto lanes = options.get("lanes")) {
     long long n = parse_integer("--lanes", *lanes, 1, 16);
     if (n != 1 && n != 4 && n != 8 && n != 16)
-      throw UsageError("--lanes: expected 1, 4, 8 or 16, got " + *lanes);
+      throw UsageError("--lanes: expected 1, 4, 8 or 16, got " + echo(*lanes));
     r.lanes = static_cast<int>(n);
   }
   if (auto samples = options.get("samples"))
@@ -220,7 +240,7 @@ RenderSettings render_settings_from(const Settings& settings, const ParsedOption
     const auto p = enum_from_name<Precision>(*precision);
     if (!p)
       throw UsageError("--precision: expected " + enum_name_list<Precision>() + ", got '" +
-                       *precision + "'");
+                       echo(*precision) + "'");
     r.precision = *p;
   }
   return r;
@@ -242,14 +262,14 @@ DeviceInfo choose_device(const Settings& settings, const ParsedOptions& options)
 
 namespace fr {
 
-PreparedScene prepare_scene(const ParsedOptions& options, std::ostream& err) {
+PreparedScene prepare_scene(const ParsedOptions& options) {
   PreparedScene p;
   p.settings = load_settings(options);
   p.render = render_settings_from(p.settings, options);
   const auto folders = plugin_folders(p.settings, options);
   if (folders.empty())
     throw std::runtime_error("no plugin folder found (build the plugins, or pass --plugins DIR)");
-  const auto outcomes = load_plugins(folders, p.settings.plugins, err);
+  const auto outcomes = load_plugins(folders, p.settings.plugins);
   p.scene = find_scene(outcomes, options.get("scene").value_or("mandelbulb"));
   p.state = make_default_state(p.scene->info);
   apply_scene_overrides(p.scene->info, options, p.state);
@@ -267,11 +287,11 @@ PreparedScene prepare_scene(const ParsedOptions& options, std::ostream& err) {
 
 namespace fr {
 
-ExplorerSetup prepare_explorer(ParsedOptions options, std::ostream& err) {
+ExplorerSetup prepare_explorer(ParsedOptions options) {
   ExplorerSetup x;
   std::vector<SettingsProblem> problems;
   x.settings = load_settings(options, &problems);
-  for (const auto& p : problems) err << "fractalis: warning: " << p.to_string() << "\n";
+  for (const auto& p : problems) spdlog::warn("{}", p.to_string());
   if (!options.has("size"))
     options.values["size"] = {std::to_string(x.settings.explorer.window_width_px) + "x" +
                               std::to_string(x.settings.explorer.window_height_px)};
@@ -280,10 +300,17 @@ ExplorerSetup prepare_explorer(ParsedOptions options, std::ostream& err) {
   if (folders.empty())
     throw std::runtime_error("no plugin folder found (build the plugins, or pass --plugins DIR)");
   x.runtime = std::make_unique<ClRuntime>(choose_device(x.settings, options));
-  std::vector<std::string> messages;
+  std::vector<SceneEvent> events;
   x.library = std::make_unique<SceneLibrary>(folders, x.settings.plugins, x.settings.render,
-                                             *x.runtime, &messages);
-  for (const auto& m : messages) err << "fractalis: warning: " << m << "\n";
+                                             *x.runtime, &events);
+  // The scenes found at start are listed at debug level (-v): the overlay lists them, and the
+  // terminal says what fails and, later, what changes.
+  for (const SceneEvent& e : events) {
+    if (e.is_failure())
+      log_scene_event(e);
+    else
+      spdlog::debug("{}", e.to_string());
+  }
   const std::string scene_id = options.get("scene").value_or("mandelbulb");
   if (x.library->find(scene_id) < 0) {
     std::vector<std::string> available;
@@ -291,8 +318,6 @@ ExplorerSetup prepare_explorer(ParsedOptions options, std::ostream& err) {
     throw unknown_scene(scene_id, available);
   }
   x.explorer = std::make_unique<Explorer>(x.settings, *x.runtime, *x.library, scene_id);
-  for (const auto& m : messages) x.explorer->add_message(m);
-  for (const auto& p : problems) x.explorer->add_message(p.to_string());
   apply_scene_overrides(x.explorer->current().scene->info, options, x.explorer->current().state);
   return x;
 }

@@ -35,10 +35,9 @@ std::vector<std::filesystem::path> plugin_folders(const Settings& settings,
 // Where a user drops scenes: $XDG_DATA_HOME/fractalis/scenes (~/.local/share/fractalis/scenes).
 std::filesystem::path user_scene_folder();
 
-// Loads the folders, reports each plugin that failed on `err` (one line each), and returns the
-// outcomes.
+// Loads the folders, logs a warning for each plugin that failed, and returns the outcomes.
 std::vector<LoadOutcome> load_plugins(const std::vector<std::filesystem::path>& folders,
-                                      const PluginPolicy& policy, std::ostream& err);
+                                      const PluginPolicy& policy);
 
 // The loaded scene with this id, or a UsageError listing the ids there are.
 std::shared_ptr<const LoadedScene> find_scene(const std::vector<LoadOutcome>& outcomes,
@@ -67,10 +66,10 @@ struct PreparedScene {
   DeviceInfo device;
 };
 
-// Settings, plugins (failures reported on `err`), scene (--scene, default mandelbulb), overrides,
+// Settings, plugins (failures logged as warnings), scene (--scene, default mandelbulb), overrides,
 // device, and the scene's instance. Throws UsageError for bad input, runtime_error when the
 // scene's create callback fails.
-PreparedScene prepare_scene(const ParsedOptions& options, std::ostream& err);
+PreparedScene prepare_scene(const ParsedOptions& options);
 
 }  // namespace fr
 
@@ -86,6 +85,6 @@ struct ExplorerSetup {
   std::unique_ptr<SceneLibrary> library;
   std::unique_ptr<Explorer> explorer;
 };
-ExplorerSetup prepare_explorer(ParsedOptions options, std::ostream& err);
+ExplorerSetup prepare_explorer(ParsedOptions options);
 
 }  // namespace fr

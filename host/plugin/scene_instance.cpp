@@ -12,7 +12,8 @@
 namespace fr {
 namespace {
 
-// Passes on what a plugin logged, with its scene id and with control characters escaped.
+// Passes on what a plugin logged to the one log channel (io/log.hpp) at the level it gave, with its
+// scene id and with control characters escaped.
 void forward_messages(const std::string& id, const std::vector<PluginMessage>& messages) {
   for (const PluginMessage& m : messages) {
     const std::string text = printable(m.text);
@@ -26,8 +27,8 @@ void forward_messages(const std::string& id, const std::vector<PluginMessage>& m
       case FR_LOG_WARNING:
         spdlog::warn("[{}] {}", id, text);
         break;
-      default:  // errors become the failing call's reason
-        spdlog::debug("[{}] error: {}", id, text);
+      default:  // errors keep their level, and also become the failing call's reason
+        spdlog::error("[{}] {}", id, text);
         break;
     }
   }

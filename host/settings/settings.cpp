@@ -1,6 +1,7 @@
 #include "settings/settings.hpp"
 
 #include "app/input.hpp"
+#include "io/echo.hpp"
 #include "settings/settings_table.hpp"
 
 #include <toml++/toml.h>
@@ -125,8 +126,10 @@ void apply_table(const toml::table& table, const std::string& prefix, const std:
     }
     const SettingSpec* spec = find_setting(key);
     if (!spec) {
+      const std::string nearest = nearest_known_key(key);
       problems.push_back(
-          {file, line, key, "unknown key (did you mean '" + nearest_known_key(key) + "'?)"});
+          {file, line, key,
+           nearest.empty() ? "unknown key" : "unknown key (did you mean '" + nearest + "'?)"});
       continue;
     }
     const SettingValue value = node_value(node);
@@ -212,10 +215,11 @@ std::vector<SettingsProblem> apply_toml(const std::string& text, const std::stri
 
 std::string SettingsProblem::to_string() const {
   return file + (line > 0 ? ":" + std::to_string(line) : "") + ": " +
-         (key.empty() ? "" : "key '" + key + "': ") + message;
+         (key.empty() ? "" : "key '" + echo(key) + "': ") + message;
 }
 
 std::string nearest_known_key(const std::string& key) {
+  if (key.size() > 200) return "";  // no key is near one this long
   std::string best;
   size_t best_d = ~size_t{0};
   for (const SettingSpec& known : settings_table()) {
@@ -293,7 +297,7 @@ std::vector<SettingsProblem> load_settings_file(const std::filesystem::path& fil
 std::vector<SettingsProblem> apply_setting_override(const std::string& assignment, Settings& s) {
   const auto eq = assignment.find('=');
   if (eq == std::string::npos)
-    return {{"--set", 0, "", "expected KEY=VALUE, got '" + assignment + "'"}};
+    return {{"--set", 0, "", "expected KEY=VALUE, got '" + echo(assignment) + "'"}};
   std::string key = assignment.substr(0, eq), value = assignment.substr(eq + 1);
   // Bare words are strings ("--set render.shading_model=lambert"); numbers, booleans, quoted
   // strings and arrays pass as TOML.
@@ -301,7 +305,7 @@ std::vector<SettingsProblem> apply_setting_override(const std::string& assignmen
                          value != "true" && value != "false" &&
                          value.find_first_not_of("+-.0123456789eE_") != std::string::npos;
   if (bare_word) value = "\"" + value + "\"";
-  auto problems = apply_toml(key + " = " + value + "\n", "--set " + assignment, s);
+  auto problems = apply_toml(key + " = " + value + "\n", "--set " + echo(assignment), s);
   for (auto& p : problems) p.line = 0;
   return problems;
 }

@@ -66,7 +66,8 @@ std::string format_settings_toml(const Settings& settings, const std::string& he
 // config/default.toml: the built-in defaults, written out.
 std::string default_settings_toml();
 
-// The known key closest to `key` by edit distance (for "did you mean").
+// The known key closest to `key` by edit distance (for "did you mean"); "" for a key of over 200
+// characters.
 std::string nearest_known_key(const std::string& key);
 std::vector<std::string> known_setting_keys();
 

@@ -1,10 +1,12 @@
 #include "ui/overlay.hpp"
 
 #include "io/atomic_file.hpp"
+#include "io/log.hpp"
 #include "render/kernel_assembly.hpp"
 #include "settings/settings_table.hpp"
 
 #include <imgui.h>
+#include <spdlog/spdlog.h>
 
 #include <cmath>
 #include <map>
@@ -172,9 +174,9 @@ void draw_overlay(Explorer& explorer, OverlayState& overlay) {
       std::string error;
       if (write_file_atomic(overlay.settings_file,
                             format_settings_toml(explorer.settings(), kSavedFileHeader), &error))
-        explorer.add_message("saved settings to " + overlay.settings_file.string());
+        spdlog::info("saved settings to {}", overlay.settings_file.string());
       else
-        explorer.add_message(error);
+        spdlog::error("{}", error);
     }
   }
 
@@ -212,7 +214,8 @@ void draw_overlay(Explorer& explorer, OverlayState& overlay) {
       ImGui::InputInt2("Size", overlay.screenshot_size.data());
     if (ImGui::Button("Save PNG (F12)")) overlay.screenshot_requested = true;
   }
-  for (const std::string& m : explorer.messages()) ImGui::TextWrapped("%s", m.c_str());
+  // The same messages the terminal shows (io/log.hpp), newest last.
+  for (const std::string& m : recent_log_messages(8)) ImGui::TextWrapped("%s", m.c_str());
   ImGui::End();
 }
 
