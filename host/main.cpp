@@ -1,8 +1,11 @@
 // The fractalis executable: everything is in the host library; see cli/cli.hpp.
 #include "cli/cli.hpp"
+#include "io/atomic_file.hpp"
 
 #include <iostream>
 
 int main(int argc, char** argv) {
+  // Ctrl-C or a kill while an output file is written leaves no temporary file.
+  fr::install_temp_file_cleanup();
   return fr::run_cli(std::vector<std::string>(argv + 1, argv + argc), std::cout, std::cerr);
 }

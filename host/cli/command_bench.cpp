@@ -135,13 +135,14 @@ int command_bench(const std::vector<std::string>& args, std::ostream& out, std::
   report.path_duration_s = duration;
   report.system = read_system_info(p.device);
 
-  out << format_bench_text(report);
+  std::ostream& text = json_file && is_standard_output(*json_file) ? err : out;
+  text << format_bench_text(report);
   if (json_file) {
     if (!write_file_atomic(*json_file, format_bench_json(report), &error)) {
       spdlog::error("{}", error);
       return 1;
     }
-    out << "wrote " << *json_file << "\n";
+    text << "wrote " << *json_file << "\n";
   }
   return 0;
 }

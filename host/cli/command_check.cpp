@@ -13,8 +13,7 @@
 
 namespace fr {
 
-int command_check(const std::vector<std::string>& args, std::ostream& out,
-                  std::ostream& /*err: messages go to spdlog*/) {
+int command_check(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   std::vector<OptionSpec> specs = {
       {"json", "FILE", false, "also write the findings as JSON (atomically)"},
       {"config", "FILE", false, "settings file (default: $XDG_CONFIG_HOME/fractalis/config.toml)"},
@@ -49,7 +48,7 @@ int command_check(const std::vector<std::string>& args, std::ostream& out,
   check.render = render_settings_from(settings, options);
   ClRuntime runtime(choose_device(settings, options));
   const CheckReport report = check_scene_plugin(*file, check, runtime);
-  write_check_table(report, out);
+  write_check_table(report, json_file && is_standard_output(*json_file) ? err : out);
   if (json_file) {
     std::string error;
     if (!write_file_atomic(*json_file, check_report_json(report), &error)) {

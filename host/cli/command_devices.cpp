@@ -8,7 +8,8 @@
 
 namespace fr {
 
-int command_devices(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+int command_devices(const std::vector<std::string>& args, std::ostream& out,
+                    std::ostream& /*err: messages go to spdlog*/) {
   const std::vector<OptionSpec> specs = {{"help", nullptr, false, "show this help"}};
   auto options = parse_options("devices", args, specs);
   if (options.has("help")) {

@@ -2,6 +2,7 @@
 #include "cli/scene_setup.hpp"
 #include "cli/watchdog.hpp"
 #include "image/png_write.hpp"
+#include "io/atomic_file.hpp"
 #include "render/camera.hpp"
 #include "render/precision.hpp"
 #include "render/renderer.hpp"
@@ -21,7 +22,7 @@ namespace {
 // How the primary rays ended, and the warnings a user must see: many rays out of steps, a camera
 // inside the solid, surface detail finer than float resolves.
 void report_rays(const FrameImage& image, const fr_camera& camera, const RenderSettings& settings,
-                 std::ostream& out, std::ostream& /*err: messages go to spdlog*/) {
+                 std::ostream& out) {
   const RayCounts rays = count_rays(image);
   const size_t total = image.ray_status.size();
   auto percent = [&](size_t n) { return 100.0 * double(n) / double(std::max<size_t>(total, 1)); };
@@ -91,11 +92,13 @@ int command_render(const std::vector<std::string>& args, std::ostream& out, std:
     spdlog::error("{}", error);
     return 1;
   }
-  out << "rendered " << p.scene->info.id << " " << image.width_px << "x" << image.height_px
-      << " on " << p.device.name << " (lanes " << image.lanes << ", "
-      << precision_name(image.precision) << "): kernel build " << static_cast<int>(build_ms)
-      << " ms, render " << static_cast<int>(render_ms) << " ms; wrote " << out_file << "\n";
-  report_rays(image, p.state.camera, p.render, out, err);
+  // `--out /dev/stdout | viewer`: the PNG is the output, the report goes to stderr.
+  std::ostream& report = is_standard_output(out_file) ? err : out;
+  report << "rendered " << p.scene->info.id << " " << image.width_px << "x" << image.height_px
+         << " on " << p.device.name << " (lanes " << image.lanes << ", "
+         << precision_name(image.precision) << "): kernel build " << static_cast<int>(build_ms)
+         << " ms, render " << static_cast<int>(render_ms) << " ms; wrote " << out_file << "\n";
+  report_rays(image, p.state.camera, p.render, report);
   return 0;
 }
 

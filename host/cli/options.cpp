@@ -1,5 +1,6 @@
 #include "cli/options.hpp"
 
+#include "io/atomic_file.hpp"
 #include "io/echo.hpp"
 
 #include <filesystem>
@@ -126,8 +127,8 @@ void check_output_file(const std::string& what, const std::string& path) {
   const std::filesystem::path folder = file.parent_path();
   if (!folder.empty() && !std::filesystem::is_directory(folder, ec))
     throw UsageError(what + ": folder '" + echo(folder.string()) + "' does not exist");
-  if (std::filesystem::is_directory(file, ec))
-    throw UsageError(what + ": '" + echo(path) + "' is a folder, not a file");
+  if (const std::string problem = output_problem(file); !problem.empty())
+    throw UsageError(what + ": '" + echo(path) + "' " + problem);
 }
 
 }  // namespace fr

@@ -46,7 +46,8 @@ long long parse_integer(const std::string& what, const std::string& text, long l
                         long long hi);
 
 // A file an option will write at the end of the command, checked before any work: its folder
-// exists and the path is not a folder. A UsageError names the option and the path otherwise.
+// exists and the path is something io/atomic_file.hpp writes (a new or regular file, a symlink to
+// one, a character device or FIFO). A UsageError names the option, the path and why otherwise.
 void check_output_file(const std::string& what, const std::string& path);
 
 // Largest accepted image side, in pixels (a 16384 x 16384 float image is already 4 GiB).

@@ -1,4 +1,17 @@
-// atomic_file.hpp — writing a file so that it appears whole or not at all.
+// atomic_file.hpp — writing an output file so that it appears whole or not at all, and never
+// replaces what is not a plain file.
+//
+// What an output path may name, and what writing it does:
+//   - nothing yet, or a regular file: the bytes go to a hidden temporary file beside it, which is
+//     flushed and renamed over it. An existing file keeps its permission bits; a new one gets
+//     0666 less the umask.
+//   - a symlink to a regular file: the same, beside the link's target; the link stays a link.
+//   - a character device or a FIFO (/dev/stdout piped on, /dev/null, a named pipe): the bytes are
+//     written through to it; nothing is replaced.
+//   - a folder, a block device, a socket, or a symlink to nothing: refused (output_problem says
+//     why, so the CLI refuses it with exit code 2 before any work).
+// A temporary file is removed when the write fails, and when SIGINT, SIGTERM or SIGHUP ends the
+// process mid-write (install_temp_file_cleanup), so no hidden half-file is ever left behind.
 #pragma once
 
 #include <cstdint>
@@ -8,10 +21,21 @@
 
 namespace fr {
 
-// Writes `bytes` to a temporary file beside `path`, flushes it to disk and renames it over
-// `path`. On failure returns false, sets *error (naming the path and the reason) and leaves any
-// existing file at `path` untouched.
+// Why `path` cannot be an output file ("is a block device"), or "" when it can.
+std::string output_problem(const std::filesystem::path& path);
+
+// True when `path` is this process's standard output (/dev/stdout, /proc/self/fd/1, or the file
+// or pipe stdout goes to): then a command's own report goes to stderr, not into the file.
+bool is_standard_output(const std::filesystem::path& path);
+
+// Writes `bytes` to `path` as described above. On failure returns false, sets *error (naming the
+// path and the reason) and leaves any existing file at `path` untouched.
 bool write_file_atomic(const std::filesystem::path& path, std::string_view bytes,
                        std::string* error);
+
+// Installs handlers for SIGINT, SIGTERM and SIGHUP (where their action is the default) that
+// remove the temporary files of writes in progress, then end the process by the same signal.
+// Call once, early in main.
+void install_temp_file_cleanup();
 
 }  // namespace fr
