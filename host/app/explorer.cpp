@@ -1,5 +1,7 @@
 #include "app/explorer.hpp"
 
+#include "render/memory_budget.hpp"
+
 #include "image/png_write.hpp"
 #include "render/de_probe.hpp"
 
@@ -153,6 +155,12 @@ bool Explorer::screenshot(const std::filesystem::path& file, int width_px, int h
   s.height_px = height_px;
   s.samples = frames_.settings().full_quality_samples;
   SceneSlot& slot = current();
+  const auto need = render_memory_need(width_px, height_px, false);
+  if (const std::string problem = memory_problem(need, runtime_.device()); !problem.empty()) {
+    *error = "screenshot at " + std::to_string(width_px) + "x" + std::to_string(height_px) + ": " +
+             problem;
+    return false;
+  }
   try {
     Renderer shot(runtime_);
     const FrameImage img = shot.render(slot.scene->info, slot.state, s);

@@ -1,5 +1,6 @@
 #include "app/scene_vetting.hpp"
 
+#include "io/cache_dirs.hpp"
 #include "plugin/plugin_files.hpp"
 #include "plugin/scan_cache.hpp"
 
@@ -138,12 +139,12 @@ uint64_t VettedScenes::content_hash(const std::filesystem::path& file) {
 
 namespace {
 std::filesystem::path marker(uint64_t hash, const RenderSettings& s) {
-  const auto scans = scan_cache_dir();
-  if (scans.empty()) return {};
+  const auto base = fractalis_cache_dir();
+  if (base.empty()) return {};
   char name[96];
   std::snprintf(name, sizeof name, "%016llx-lanes%d-%s", static_cast<unsigned long long>(hash),
                 s.lanes, precision_name(s.precision));
-  return scans.parent_path() / "vetted" / name;
+  return base / "vetted" / name;
 }
 }  // namespace
 

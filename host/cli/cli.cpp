@@ -28,6 +28,7 @@ const char* kUsage =
     "  list      list scene plugins, their parameters, or why they failed to load\n"
     "  devices   list OpenCL platforms and devices\n"
     "  check     run the conformance checks on a scene plugin (for scene authors)\n"
+    "  cache     show fractalis's cache folders and their sizes; --clear empties them\n"
     "\n"
     "  fractalis <command> --help   options of a command\n"
     "  fractalis --version          versions of fractalis and its scene ABI\n"
@@ -75,9 +76,10 @@ int run_command(const std::string& command, const std::vector<std::string>& rest
     if (command == "list") return command_list(rest, out, err);
     if (command == "devices") return command_devices(rest, out, err);
     if (command == "check") return command_check(rest, out, err);
+    if (command == "cache") return command_cache(rest, out, err);
     if (command == "vet-scene") return command_vet_scene(rest, out, err);
     throw UsageError("unknown command '" + echo(command) +
-                     "' (expected explore, render, bench, sweep, list, devices or check)");
+                     "' (expected explore, render, bench, sweep, list, devices, check or cache)");
   } catch (const UsageError& e) {
     spdlog::error("{}", e.what());
     return 2;

@@ -93,6 +93,7 @@ int command_bench(const std::vector<std::string>& args, std::ostream& out, std::
   if (json_file) check_output_file("--json", *json_file);
 
   PreparedScene p = prepare_scene(options);
+  check_memory(p.render, p.device, false);
   ClRuntime runtime(p.device);
   Renderer renderer(runtime);
   std::string error;

@@ -4,6 +4,7 @@
 #include "image/png_write.hpp"
 #include "io/atomic_file.hpp"
 #include "render/camera.hpp"
+#include "render/memory_budget.hpp"
 #include "render/precision.hpp"
 #include "render/renderer.hpp"
 
@@ -72,6 +73,7 @@ int command_render(const std::vector<std::string>& args, std::ostream& out, std:
     spdlog::error("{}", error);
     return 1;
   }
+  check_memory(p.render, p.device, true);
   ClRuntime runtime(p.device);
   Renderer renderer(runtime);
   using clock = std::chrono::steady_clock;

@@ -2,6 +2,7 @@
 #include "cli/commands.hpp"
 #include "cli/scene_setup.hpp"
 #include "io/atomic_file.hpp"
+#include "io/cache_dirs.hpp"
 #include "render/camera.hpp"
 #include "render/renderer.hpp"
 #include "sweep/sweep_plan.hpp"
@@ -50,11 +51,9 @@ class InterruptGuard {
 };
 
 std::filesystem::path default_cache_dir() {
-  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg)
-    return std::filesystem::path(xdg) / "fractalis" / "sweep";
-  if (const char* home = std::getenv("HOME"); home && *home)
-    return std::filesystem::path(home) / ".cache" / "fractalis" / "sweep";
-  return std::filesystem::temp_directory_path() / "fractalis-sweep-cache";
+  const auto base = fractalis_cache_dir();
+  return base.empty() ? std::filesystem::temp_directory_path() / "fractalis-sweep-cache"
+                      : base / "sweep";
 }
 
 std::vector<std::string> split_list(const std::string& text) {

@@ -16,6 +16,7 @@ int command_sweep(const std::vector<std::string>& args, std::ostream& out, std::
 int command_check(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 // Hidden: the explorer's test render of a scene in a child process (app/scene_vetting.hpp).
 int command_vet_scene(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+int command_cache(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 int command_devices(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 
 }  // namespace fr

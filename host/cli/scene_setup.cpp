@@ -1,6 +1,8 @@
 #include "cli/scene_setup.hpp"
 
 #include "io/echo.hpp"
+#include "render/kernel_cache.hpp"
+#include "render/memory_budget.hpp"
 
 #include "plugin/plugin_text.hpp"
 #include "render/camera.hpp"
@@ -247,6 +249,9 @@ RenderSettings render_settings_from(const Settings& settings, const ParsedOption
 }
 
 DeviceInfo choose_device(const Settings& settings, const ParsedOptions& options) {
+  // OpenCL work starts here: first keep the compiled-kernel cache within its bound.
+  trim_kernel_cache(kernel_cache_dir(), static_cast<uint64_t>(settings.cache.kernel_cache_mib)
+                                            << 20);
   const std::string selector = options.get("device").value_or(settings.device);
   const auto devices = list_devices();
   if (devices.empty())
@@ -261,6 +266,13 @@ DeviceInfo choose_device(const Settings& settings, const ParsedOptions& options)
 }  // namespace fr
 
 namespace fr {
+
+void check_memory(const RenderSettings& render, const DeviceInfo& device, bool all_passes) {
+  const auto need = render_memory_need(render.width_px, render.height_px, all_passes);
+  if (const std::string problem = memory_problem(need, device); !problem.empty())
+    throw UsageError("--size " + std::to_string(render.width_px) + "x" +
+                     std::to_string(render.height_px) + ": " + problem);
+}
 
 PreparedScene prepare_scene(const ParsedOptions& options) {
   PreparedScene p;

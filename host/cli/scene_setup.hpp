@@ -71,6 +71,10 @@ struct PreparedScene {
 // scene's create callback fails.
 PreparedScene prepare_scene(const ParsedOptions& options);
 
+// Throws a UsageError naming the limit when an image of the settings' size cannot be rendered on
+// `device` in this process (render/memory_budget.hpp); `all_passes`: every pass is read back.
+void check_memory(const RenderSettings& render, const DeviceInfo& device, bool all_passes);
+
 }  // namespace fr
 
 namespace fr {

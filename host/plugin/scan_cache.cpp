@@ -1,5 +1,7 @@
 #include "plugin/scan_cache.hpp"
 
+#include "io/cache_dirs.hpp"
+
 #include "io/atomic_file.hpp"
 #include "plugin/scene_wire.hpp"
 
@@ -33,11 +35,8 @@ std::filesystem::path entry_path(const FileIdentity& id) {
 }  // namespace
 
 std::filesystem::path scan_cache_dir() {
-  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg)
-    return std::filesystem::path(xdg) / "fractalis" / "scenes";
-  if (const char* home = std::getenv("HOME"); home && *home)
-    return std::filesystem::path(home) / ".cache" / "fractalis" / "scenes";
-  return {};
+  const auto base = fractalis_cache_dir();
+  return base.empty() ? base : base / "scenes";
 }
 
 std::optional<std::string> find_scan(const FileIdentity& identity) {

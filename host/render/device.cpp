@@ -75,6 +75,10 @@ std::vector<DeviceInfo> list_devices() {
       cl_ulong mem = 0;
       clGetDeviceInfo(devices[di], CL_DEVICE_GLOBAL_MEM_SIZE, sizeof mem, &mem, nullptr);
       info.global_mem_bytes = mem;
+      cl_ulong max_alloc = 0;
+      clGetDeviceInfo(devices[di], CL_DEVICE_MAX_MEM_ALLOC_SIZE, sizeof max_alloc, &max_alloc,
+                      nullptr);
+      info.max_alloc_bytes = max_alloc;
       info.has_fp64 =
           device_string(devices[di], CL_DEVICE_EXTENSIONS).find("cl_khr_fp64") != std::string::npos;
       out.push_back(std::move(info));

@@ -24,7 +24,8 @@ struct DeviceInfo {
   std::string driver_version;  // CL_DRIVER_VERSION
   cl_device_type type = 0;
   unsigned compute_units = 0;
-  unsigned long long global_mem_bytes = 0;
+  unsigned long long global_mem_bytes = 0;     // CL_DEVICE_GLOBAL_MEM_SIZE
+  unsigned long long max_alloc_bytes = 0;      // CL_DEVICE_MAX_MEM_ALLOC_SIZE: one buffer's limit
   bool has_fp64 = false;
 
   bool is_gpu() const { return (type & CL_DEVICE_TYPE_GPU) != 0; }

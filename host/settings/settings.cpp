@@ -294,6 +294,11 @@ std::vector<SettingsProblem> load_settings_file(const std::filesystem::path& fil
   return apply_toml(text.str(), file.string(), s);
 }
 
+std::vector<SettingsProblem> load_settings_text(const std::string& text, const std::string& name,
+                                                Settings& s) {
+  return apply_toml(text, name, s);
+}
+
 std::vector<SettingsProblem> apply_setting_override(const std::string& assignment, Settings& s) {
   const auto eq = assignment.find('=');
   if (eq == std::string::npos)

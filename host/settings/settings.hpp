@@ -28,12 +28,18 @@ struct ExplorerSettings {
   std::map<std::string, std::string> key_bindings;  // key name -> action name, over the defaults
 };
 
+// What fractalis keeps in its cache folder (io/cache_dirs.hpp).
+struct CacheSettings {
+  int kernel_cache_mib = 512;  // compiled kernels, trimmed least recently used first
+};
+
 struct Settings {
   std::vector<std::filesystem::path> plugin_folders;  // searched before the built-in folders
   PluginPolicy plugins;                               // isolation, time limits, permissions
   std::string device;                                 // selector, see select_device
   RenderSettings render;
   ExplorerSettings explorer;
+  CacheSettings cache;
 };
 
 // One problem in a settings file: "FILE:LINE: key 'render.lanes': expected one of 1, 4, 8, 16".
@@ -53,6 +59,10 @@ std::filesystem::path user_settings_path();
 // Reads `file` over `settings`. Values that are wrong are reported and leave that setting as it
 // was; the rest still apply. Returns the problems (empty when the file is fine).
 std::vector<SettingsProblem> load_settings_file(const std::filesystem::path& file,
+                                                Settings& settings);
+
+// The same for settings text already in memory; `name` stands for the file in messages.
+std::vector<SettingsProblem> load_settings_text(const std::string& text, const std::string& name,
                                                 Settings& settings);
 
 // Applies one "key=value" from the command line (--set), checked exactly like a file's.

@@ -174,6 +174,12 @@ std::vector<SettingSpec> make_table() {
   device.set = [](Settings& s, const SettingValue& v) { s.device = std::get<std::string>(v); };
   t.push_back(device);
 
+  t.push_back(int_setting<&S::cache, &CacheSettings::kernel_cache_mib>(
+      "cache.kernel_cache_mib", 16, 1 << 20,
+      "Most MiB of compiled kernels kept in $XDG_CACHE_HOME/fractalis/kernels (PoCL's kernel "
+      "cache);\nthe least recently used programs go first. `fractalis cache --clear` empties "
+      "every cache."));
+
   SettingSpec lanes = int_setting<&S::render, &R::lanes>(
       "render.lanes", 0, 16,
       "Rays per work-item: 0 lets the device decide (16 on CPUs, as float16 packets; 1 on GPUs).");
@@ -381,6 +387,7 @@ std::span<const SettingsSection> settings_sections() {
   static const SettingsSection sections[] = {
       {"plugins", ""},
       {"device", ""},
+      {"cache", ""},
       {"render", ""},
       {"render.effects",
        "Effects a scene may ask for; false switches one off, and its code is then not compiled."},
