@@ -11,6 +11,8 @@ FRACTALIS_PACKAGES=(
   libglm-dev libspdlog-dev libtomlplusplus-dev libstb-dev libsdl2-dev libimgui-dev
   xvfb xauth
   libgtest-dev libbenchmark-dev
+  nlohmann-json3-dev
+  clang libclang-rt-14-dev
 )
 
 fractalis_missing_packages() {

@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Build the libFuzzer programs (clang, ASan + UBSan) and run each target for a bounded time,
+# starting from its corpus in fuzz/corpus/. New inputs the fuzzer finds go to a scratch folder,
+# not into the tree; a crash stops the run with the crashing input saved under build-fuzz/.
+# Usage: scripts/fuzz.sh [SECONDS_PER_TARGET (default 20)] [TARGET...]
+set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+fractalis_install_packages
+seconds="${1:-20}"
+shift || true
+targets=("$@")
+[ ${#targets[@]} -eq 0 ] && targets=(settings_file set_override command_line scene_descriptor)
+
+FRACTALIS_BUILD="$FRACTALIS_ROOT/build-fuzz"
+if [ ! -f "$FRACTALIS_BUILD/CMakeCache.txt" ]; then
+  CC=clang CXX=clang++ cmake -S "$FRACTALIS_ROOT" -B "$FRACTALIS_BUILD" \
+    -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFRACTALIS_FUZZ=ON -DFRACTALIS_TESTS=OFF >&2
+fi
+cmake --build "$FRACTALIS_BUILD" -j "$(nproc 2>/dev/null || echo 2)" \
+  $(printf -- '--target fuzz_%s ' "${targets[@]}") >&2
+
+scratch="$(mktemp -d)"
+trap 'rm -rf "$scratch"' EXIT
+for target in "${targets[@]}"; do
+  mkdir -p "$scratch/$target" "$FRACTALIS_BUILD/crashes"
+  echo "fractalis: fuzzing $target for ${seconds} s" >&2
+  # -timeout: one input over 10 s is a hang; -rss_limit_mb: one over 2 GiB is a memory blow-up.
+  if ! "$FRACTALIS_BUILD/fuzz/fuzz_$target" "$scratch/$target" "$FRACTALIS_ROOT/fuzz/corpus/$target" \
+      "$FRACTALIS_ROOT/fuzz/regressions/$target" -max_total_time="$seconds" -timeout=10 \
+      -rss_limit_mb=2048 -print_final_stats=1 \
+      -artifact_prefix="$FRACTALIS_BUILD/crashes/$target-" 2> "$scratch/$target.log"; then
+    tail -n 40 "$scratch/$target.log" >&2
+    echo "fractalis: fuzz target $target failed; the input is in $FRACTALIS_BUILD/crashes/" \
+         "(copy it to fuzz/regressions/$target/ with the fix)" >&2
+    exit 1
+  fi
+  grep -E "^stat::number_of_executed_units|^Done" "$scratch/$target.log" >&2 || true
+done
+echo "fractalis: ${#targets[@]} fuzz targets ran ${seconds} s each without a crash" >&2
