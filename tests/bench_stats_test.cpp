@@ -3,6 +3,9 @@
 #include "bench/frame_stats.hpp"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <limits>
 
 namespace fr {
 namespace {
@@ -69,9 +72,19 @@ TEST(BenchStats, ReportFormats) {
       << text;
   EXPECT_NE(text.find("p95 60.00 ms"), std::string::npos) << text;
   EXPECT_NE(text.find("fps: average 28.57, min 16.67, max 100.00"), std::string::npos) << text;
-  const std::string json = format_bench_json(r);
-  EXPECT_NE(json.find("\"cpu\": \"Test \\\"CPU\\\"\""), std::string::npos) << json;
-  EXPECT_NE(json.find("\"resolution\": {\"width\": 1366, \"height\": 768}"), std::string::npos);
+  // The JSON parses, and says what the report holds; a non-finite value (no frames: infinite
+  // fps) is null, and text that is not UTF-8 is replaced, not an exception.
+  const auto json = nlohmann::json::parse(format_bench_json(r));
+  EXPECT_EQ(json["system"]["cpu"], "Test \"CPU\"");
+  EXPECT_EQ(json["resolution"]["width"], 1366);
+  EXPECT_EQ(json["resolution"]["height"], 768);
+  EXPECT_EQ(json["frame_ms"]["p50"], 30.0);
+  EXPECT_EQ(json["frame_ms"]["max"], 60.0);
+  r.stats.max_fps = std::numeric_limits<double>::infinity();
+  r.system.os = "bad \xff utf-8";
+  const auto odd = nlohmann::json::parse(format_bench_json(r));
+  EXPECT_TRUE(odd["fps"]["max"].is_null());
+  EXPECT_EQ(odd["system"]["os"], "bad \xef\xbf\xbd utf-8");
 }
 
 }  // namespace

@@ -1,4 +1,5 @@
 #include "app/camera_controller.hpp"
+#include "scene/vec3.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -8,24 +9,13 @@
 #include <cmath>
 
 namespace fr {
-namespace {
-
-glm::dvec3 get(const double v[3]) {
-  return {v[0], v[1], v[2]};
-}
-void set(double v[3], glm::dvec3 x) {
-  v[0] = x.x;
-  v[1] = x.y;
-  v[2] = x.z;
-}
-
-}  // namespace
+namespace {}  // namespace
 
 CameraMotion update_camera(fr_camera& camera, CameraMode mode, const InputState& input, bool look,
                            double dt_s, double surface_distance, const CameraControls& c) {
   CameraMotion motion;
-  glm::dvec3 eye = get(camera.eye), target = get(camera.target);
-  const glm::dvec3 up = glm::normalize(get(camera.up));
+  glm::dvec3 eye = to_dvec3(camera.eye), target = to_dvec3(camera.target);
+  const glm::dvec3 up = glm::normalize(to_dvec3(camera.up));
   glm::dvec3 forward = target - eye;
   double target_distance = glm::length(forward);
   forward /= target_distance;
@@ -76,8 +66,8 @@ CameraMotion update_camera(fr_camera& camera, CameraMode mode, const InputState&
     target_distance = std::max(target_distance - zoom, 1e-6);
     eye = target - forward * target_distance;
   }
-  set(camera.eye, eye);
-  set(camera.target, target);
+  store_dvec3(camera.eye, eye);
+  store_dvec3(camera.target, target);
   return motion;
 }
 

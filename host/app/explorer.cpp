@@ -1,6 +1,7 @@
 #include "app/explorer.hpp"
 
 #include "render/memory_budget.hpp"
+#include "scene/vec3.hpp"
 
 #include "image/png_write.hpp"
 #include "render/de_probe.hpp"
@@ -86,9 +87,7 @@ bool Explorer::update(const InputState& input, double dt_s, double now_s) {
 
   SceneSlot& slot = current();
   // The flying speed follows the scene's own DE at the eye, evaluated on the device.
-  const auto& eye = slot.state.camera.eye;
-  const std::array<float, 3> eye_f = {static_cast<float>(eye[0]), static_cast<float>(eye[1]),
-                                      static_cast<float>(eye[2])};
+  const std::array<float, 3> eye_f = to_float3(slot.state.camera.eye);
   try {
     stats_.surface_distance = probe_de(runtime_, slot.scene->info, slot.state.params, {eye_f})[0];
   } catch (const std::exception& e) {

@@ -130,7 +130,7 @@ SceneEvent SceneLibrary::add_or_replace(const std::filesystem::path& file,
   }
   // Build the kernel now, so a scene that does not compile never replaces a working one.
   try {
-    const int lanes = settings.lanes > 0 ? settings.lanes : preferred_lanes(runtime_.device());
+    const int lanes = resolve_lanes(settings.lanes, &runtime_.device());
     const auto k = assemble_render_kernel(o.scene->info, fresh.state.params,
                                           make_kernel_config(o.scene->info, settings, lanes));
     runtime_.program(k.source, k.build_options, k.description);

@@ -2,6 +2,8 @@
 
 #include "io/json_text.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <cstdio>
 #include <sstream>
 
@@ -49,39 +51,37 @@ std::string format_bench_text(const BenchReport& r) {
 std::string format_bench_json(const BenchReport& r) {
   const FrameStats& s = r.stats;
   const SystemInfo& y = r.system;
-  std::ostringstream out;
-  out << "{\n"
-      << "  \"scene\": " << json_string(r.scene_id) << ",\n"
-      << "  \"scene_version\": " << json_string(r.scene_version) << ",\n"
-      << "  \"resolution\": {\"width\": " << r.width_px << ", \"height\": " << r.height_px << "},\n"
-      << "  \"precision\": " << json_string(r.precision) << ",\n"
-      << "  \"lanes\": " << r.lanes << ",\n"
-      << "  \"effects\": " << json_string(r.stages) << ",\n"
-      << "  \"runs\": " << r.runs << ",\n"
-      << "  \"frames_per_run\": " << r.frames_per_run << ",\n"
-      << "  \"path_duration_s\": " << r.path_duration_s << ",\n"
-      << "  \"frames_rendered\": " << s.frames << ",\n"
-      << "  \"wall_s\": " << r.wall_s << ",\n"
-      << "  \"frame_ms\": {\"min\": " << s.min_ms << ", \"max\": " << s.max_ms
-      << ", \"average\": " << s.mean_ms << ", \"p50\": " << s.p50_ms << ", \"p95\": " << s.p95_ms
-      << "},\n"
-      << "  \"fps\": {\"average\": " << s.mean_fps << ", \"min\": " << s.min_fps
-      << ", \"max\": " << s.max_fps << "},\n"
-      << "  \"run_average_ms\": [";
-  for (size_t i = 0; i < r.run_mean_ms.size(); ++i) out << (i ? ", " : "") << r.run_mean_ms[i];
-  out << "],\n"
-      << "  \"system\": {\n"
-      << "    \"cpu\": " << json_string(y.cpu_model) << ",\n"
-      << "    \"logical_cores\": " << y.logical_cores << ",\n"
-      << "    \"memory_bytes\": " << y.memory_bytes << ",\n"
-      << "    \"os\": " << json_string(y.os) << ",\n"
-      << "    \"opencl_platform\": " << json_string(y.opencl_platform) << ",\n"
-      << "    \"opencl_device\": " << json_string(y.opencl_device) << ",\n"
-      << "    \"opencl_device_version\": " << json_string(y.opencl_device_version) << ",\n"
-      << "    \"opencl_driver\": " << json_string(y.opencl_driver) << "\n"
-      << "  }\n"
-      << "}\n";
-  return out.str();
+  const nlohmann::ordered_json j = {
+      {"scene", r.scene_id},
+      {"scene_version", r.scene_version},
+      {"resolution", {{"width", r.width_px}, {"height", r.height_px}}},
+      {"precision", r.precision},
+      {"lanes", r.lanes},
+      {"effects", r.stages},
+      {"runs", r.runs},
+      {"frames_per_run", r.frames_per_run},
+      {"path_duration_s", r.path_duration_s},
+      {"frames_rendered", s.frames},
+      {"wall_s", r.wall_s},
+      {"frame_ms",
+       {{"min", s.min_ms},
+        {"max", s.max_ms},
+        {"average", s.mean_ms},
+        {"p50", s.p50_ms},
+        {"p95", s.p95_ms}}},
+      {"fps", {{"average", s.mean_fps}, {"min", s.min_fps}, {"max", s.max_fps}}},
+      {"run_average_ms", r.run_mean_ms},
+      {"system",
+       {{"cpu", y.cpu_model},
+        {"logical_cores", y.logical_cores},
+        {"memory_bytes", y.memory_bytes},
+        {"os", y.os},
+        {"opencl_platform", y.opencl_platform},
+        {"opencl_device", y.opencl_device},
+        {"opencl_device_version", y.opencl_device_version},
+        {"opencl_driver", y.opencl_driver}}},
+  };
+  return json_text(j);
 }
 
 }  // namespace fr

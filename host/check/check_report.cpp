@@ -2,6 +2,8 @@
 
 #include "io/json_text.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <cstdio>
 #include <ostream>
 
@@ -44,17 +46,17 @@ void write_check_table(const CheckReport& report, std::ostream& out) {
 }
 
 std::string check_report_json(const CheckReport& report) {
-  std::string out = "{\n  \"file\": " + json_string(report.file) +
-                    ",\n  \"scene\": " + json_string(report.scene_id) +
-                    ",\n  \"result\": " + json_string(report.failed() ? "fail" : "pass") +
-                    ",\n  \"checks\": [";
-  for (size_t i = 0; i < report.rows.size(); ++i) {
-    const CheckRow& r = report.rows[i];
-    out += std::string(i ? "," : "") + "\n    {\"check\": " + json_string(r.check) +
-           ", \"status\": " + json_string(check_status_name(r.status)) +
-           ", \"detail\": " + json_string(r.detail) + "}";
-  }
-  return out + "\n  ]\n}\n";
+  nlohmann::ordered_json checks = nlohmann::ordered_json::array();
+  for (const CheckRow& r : report.rows)
+    checks.push_back(
+        {{"check", r.check}, {"status", check_status_name(r.status)}, {"detail", r.detail}});
+  const nlohmann::ordered_json j = {
+      {"file", report.file},
+      {"scene", report.scene_id},
+      {"result", report.failed() ? "fail" : "pass"},
+      {"checks", checks},
+  };
+  return json_text(j);
 }
 
 }  // namespace fr

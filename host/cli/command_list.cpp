@@ -30,11 +30,10 @@ std::string format_value(const ParamInfo& p, const fr_value& v) {
 // out, the DE library files it includes, and the parameters baked in as constants. This is
 // "each scene's kernel contains only what it needs", made visible.
 void describe_kernel(const SceneInfo& info, const RenderSettings& settings, std::ostream& out) {
-  const int lanes = settings.lanes > 0 ? settings.lanes : 16;
+  const int lanes = resolve_lanes(settings.lanes, nullptr);
   const KernelConfig config = make_kernel_config(info, settings, lanes);
   const AssembledKernel k = assemble_render_kernel(info, make_default_state(info).params, config);
-  const fr_features all = FR_FEATURE_AO | FR_FEATURE_SHADOWS | FR_FEATURE_GLOW | FR_FEATURE_FOG |
-                          FR_FEATURE_REFLECTIONS | kStageDepthOfField;
+  const fr_features all = all_optional_stages();
   out << "  kernel (lanes " << lanes << ", " << precision_name(config.precision) << "): stages "
       << stage_names(config.stages) << "; left out: " << stage_names(all & ~config.stages) << "\n";
   std::set<std::string> library;

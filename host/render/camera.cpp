@@ -1,25 +1,20 @@
 #include "render/camera.hpp"
+#include "scene/vec3.hpp"
 
 #include <glm/geometric.hpp>
 
 #include <cmath>
 
 namespace fr {
-namespace {
-glm::dvec3 to_vec(const double v[3]) {
-  return {v[0], v[1], v[2]};
-}
-}  // namespace
-
 CameraRays make_camera_rays(const fr_camera& c, int k, int m) {
-  const glm::dvec3 t = to_vec(c.target) - to_vec(c.eye);
-  const glm::dvec3 b = glm::cross(to_vec(c.up), t);
+  const glm::dvec3 t = to_dvec3(c.target) - to_dvec3(c.eye);
+  const glm::dvec3 b = glm::cross(to_dvec3(c.up), t);
   const glm::dvec3 v = glm::cross(t, b);
   const glm::dvec3 t_n = glm::normalize(t), b_n = glm::normalize(b), v_n = glm::normalize(v);
   const double g_x = std::tan(c.fov_deg * M_PI / 360.0);
   const double g_y = g_x * m / k;
   CameraRays r;
-  r.eye = to_vec(c.eye);
+  r.eye = to_dvec3(c.eye);
   r.right = -b_n;
   r.up = v_n;
   r.forward = t_n;

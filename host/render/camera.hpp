@@ -10,7 +10,7 @@
 // pixel; image column x (0 = left) is i - 1 = k - 1 - x and row y (0 = top) is j - 1 = m - 1 - y.
 #pragma once
 
-#include "plugin/scene_info.hpp"  // check_camera
+#include "scene/scene_data.hpp"  // check_camera
 
 #include <fractalis/scene.h>
 
@@ -35,7 +35,7 @@ struct CameraRays {
 };
 
 // The seed model's vectors for a width_px x height_px image (each >= 1). The camera must pass
-// check_camera (plugin/scene_info.hpp).
+// check_camera (scene/scene_data.hpp).
 CameraRays make_camera_rays(const fr_camera& camera, int width_px, int height_px);
 
 // Unit direction of the ray through image pixel (x, y), row 0 at the top; the same arithmetic

@@ -12,7 +12,7 @@ std::vector<float> probe_de(ClRuntime& runtime, const SceneInfo& info,
                             const std::vector<std::array<float, 3>>& points, int lanes,
                             Precision precision) {
   if (points.empty()) return {};
-  if (lanes <= 0) lanes = preferred_lanes(runtime.device());
+  lanes = resolve_lanes(lanes, &runtime.device());
   const AssembledKernel k = assemble_probe_kernel(info, params, KernelConfig{lanes, precision});
   cl_kernel kernel =
       runtime.kernel(runtime.program(k.source, k.build_options, k.description), "fr_probe_de");

@@ -2,9 +2,9 @@
 // the scene's own OpenCL DE (kernels/probe.cl). There is no C++ copy of any DE.
 #pragma once
 
-#include "plugin/scene_info.hpp"
 #include "render/cl_runtime.hpp"
 #include "render/render_settings.hpp"
+#include "scene/scene_data.hpp"
 
 #include <array>
 #include <vector>

@@ -123,4 +123,11 @@ int preferred_lanes(const DeviceInfo& device) {
   return (device.type & CL_DEVICE_TYPE_CPU) ? 16 : 1;
 }
 
+int resolve_lanes(int requested, const DeviceInfo* device) {
+  if (requested > 0) return requested;
+  DeviceInfo cpu;
+  cpu.type = CL_DEVICE_TYPE_CPU;
+  return preferred_lanes(device ? *device : cpu);
+}
+
 }  // namespace fr

@@ -24,8 +24,8 @@ struct DeviceInfo {
   std::string driver_version;  // CL_DRIVER_VERSION
   cl_device_type type = 0;
   unsigned compute_units = 0;
-  unsigned long long global_mem_bytes = 0;     // CL_DEVICE_GLOBAL_MEM_SIZE
-  unsigned long long max_alloc_bytes = 0;      // CL_DEVICE_MAX_MEM_ALLOC_SIZE: one buffer's limit
+  unsigned long long global_mem_bytes = 0;  // CL_DEVICE_GLOBAL_MEM_SIZE
+  unsigned long long max_alloc_bytes = 0;   // CL_DEVICE_MAX_MEM_ALLOC_SIZE: one buffer's limit
   bool has_fp64 = false;
 
   bool is_gpu() const { return (type & CL_DEVICE_TYPE_GPU) != 0; }
@@ -44,5 +44,10 @@ std::optional<DeviceInfo> select_device(const std::vector<DeviceInfo>& devices,
 
 // Lane width that suits the device: 16 on CPUs, 1 on GPUs and accelerators.
 int preferred_lanes(const DeviceInfo& device);
+
+// The one rule for the lane width a kernel is built with: the requested width (render.lanes,
+// --lanes) when set, else the device's preferred width; with no device at hand (describing a
+// kernel without opening one), a CPU's.
+int resolve_lanes(int requested, const DeviceInfo* device);
 
 }  // namespace fr

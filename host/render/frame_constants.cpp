@@ -1,4 +1,5 @@
 #include "render/frame_constants.hpp"
+#include "scene/vec3.hpp"
 
 #include <glm/geometric.hpp>
 
@@ -50,9 +51,6 @@ void put_hi_lo(float hi[4], float lo[4], glm::dvec3 v) {
   for (int a = 0; a < 3; ++a) put_hi_lo(hi[a], lo[a], v[a]);
   hi[3] = lo[3] = 0;
 }
-glm::dvec3 vec(const double v[3]) {
-  return {v[0], v[1], v[2]};
-}
 
 // The start plane of primary rays (frame_constants.h): the eye's distance along the view to
 // just before the bounding sphere, as a multiple of the direction vectors' component along the
@@ -100,8 +98,8 @@ fr_frame_constants make_frame_constants(const CameraRays& rays, const SceneState
   int count = 0;
   for (const fr_light& l : state.lights) {
     if (count == FR_MAX_LIGHTS) break;
-    const glm::dvec3 color = vec(l.color) * l.intensity;
-    put(fc.light_vector[count], vec(l.vector), l.kind == FR_LIGHT_DIRECTIONAL ? 1 : 2);
+    const glm::dvec3 color = to_dvec3(l.color) * l.intensity;
+    put(fc.light_vector[count], to_dvec3(l.vector), l.kind == FR_LIGHT_DIRECTIONAL ? 1 : 2);
     put(fc.light_color[count], color, l.kind == FR_LIGHT_POINT ? l.attenuation : 0);
     fc.light_falloff[count][0] = static_cast<float>(l.kind == FR_LIGHT_POINT ? l.falloff : 0);
     ++count;
@@ -145,8 +143,9 @@ fr_frame_constants make_frame_constants(const CameraRays& rays, const SceneState
   fc.glow_falloff = static_cast<float>(s.glow_falloff * radius);
   fc.aperture_radius = s.aperture_radius;
   fc.focus_distance = static_cast<float>(
-      s.focus_distance > 0 ? s.focus_distance
-                           : glm::length(vec(state.camera.target) - vec(state.camera.eye)));
+      s.focus_distance > 0
+          ? s.focus_distance
+          : glm::length(to_dvec3(state.camera.target) - to_dvec3(state.camera.eye)));
   const auto jitter = sample_jitter(sample_index);
   fc.jitter_x = static_cast<float>(jitter[0]);
   fc.jitter_y = static_cast<float>(jitter[1]);

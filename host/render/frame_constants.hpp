@@ -1,7 +1,8 @@
 // frame_constants.hpp — filling the struct shared with the kernels (kernels/frame_constants.h).
 #pragma once
 
-#include "plugin/scene_instance.hpp"
+#include "scene/scene_data.hpp"
+
 #include "render/camera.hpp"
 #include "render/render_settings.hpp"
 

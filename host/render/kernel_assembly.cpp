@@ -250,6 +250,12 @@ KernelConfig make_kernel_config(const SceneInfo& info, const RenderSettings& s, 
   return c;
 }
 
+fr_features all_optional_stages() {
+  fr_features all = 0;
+  for (const auto& s : kOptionalStages) all |= s.feature;
+  return all;
+}
+
 std::string stage_names(fr_features stages) {
   std::string out;
   for (const auto& s : kOptionalStages)

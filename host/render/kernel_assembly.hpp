@@ -8,8 +8,8 @@
 // compiler messages point into the scene's own source.
 #pragma once
 
-#include "plugin/scene_info.hpp"
 #include "render/render_settings.hpp"
+#include "scene/scene_data.hpp"
 
 #include <cstdint>
 #include <string>
@@ -54,6 +54,9 @@ TileShape tile_shape(int lanes);
 fr_features enabled_stages(const SceneInfo& info, fr_features disabled_by_user);
 
 // Names of the stages in `stages`, comma-separated ("ao, shadows"), or "none".
+// Every optional stage (FR_FEATURE_* the renderer implements, and kStageDepthOfField).
+fr_features all_optional_stages();
+
 std::string stage_names(fr_features stages);
 
 // Both throw KernelBuildError when a scene source #includes a library file that does not exist.

@@ -8,11 +8,10 @@
 // surface is at least that far) and picks double there.
 #pragma once
 
-#include "plugin/scene_info.hpp"
-#include "plugin/scene_instance.hpp"
 #include "render/camera.hpp"
 #include "render/cl_runtime.hpp"
 #include "render/render_settings.hpp"
+#include "scene/scene_data.hpp"
 
 #include <vector>
 

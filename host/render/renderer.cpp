@@ -36,7 +36,7 @@ Renderer::Renderer(ClRuntime& runtime) : runtime_(runtime) {
 }
 
 int Renderer::lanes_for(const RenderSettings& s) const {
-  return s.lanes > 0 ? s.lanes : preferred_lanes(runtime_.device());
+  return resolve_lanes(s.lanes, &runtime_.device());
 }
 
 void Renderer::ensure_buffers(size_t n) {
@@ -99,7 +99,7 @@ void Renderer::render_sample(const SceneInfo& info, const SceneState& state,
                                 nullptr, nullptr),
            "clEnqueueWriteBuffer", "uploading scene parameters");
 
-  const cl_mem args[] = {constants_.get(), params_.get(),  hdr_.get(),   depth_.get(),
+  const cl_mem args[] = {constants_.get(), params_.get(),  hdr_.get(),    depth_.get(),
                          steps_.get(),     factors_.get(), status_.get(), normal_.get()};
   for (cl_uint i = 0; i < std::size(args); ++i) set_arg(kernel, i, args[i]);
   const TileShape tile = tile_shape(lanes);

@@ -3,7 +3,8 @@
 // a running mean, then the post kernel, and read back the image.
 #pragma once
 
-#include "plugin/scene_instance.hpp"
+#include "scene/scene_data.hpp"
+
 #include "render/cl_runtime.hpp"
 #include "render/render_settings.hpp"
 

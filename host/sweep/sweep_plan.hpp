@@ -2,8 +2,8 @@
 // defaults, then each knob through its values one at a time (the others at their defaults).
 #pragma once
 
-#include "plugin/scene_info.hpp"
 #include "render/render_settings.hpp"
+#include "scene/scene_data.hpp"
 
 #include <string>
 #include <vector>

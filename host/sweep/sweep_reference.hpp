@@ -5,9 +5,8 @@
 // refinement still changed is reported: no configuration can be measured as better than that.
 #pragma once
 
-#include "plugin/scene_info.hpp"
-#include "plugin/scene_instance.hpp"
 #include "render/renderer.hpp"
+#include "scene/scene_data.hpp"
 #include "sweep/sweep_metrics.hpp"
 
 #include <filesystem>

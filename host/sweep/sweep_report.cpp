@@ -2,6 +2,8 @@
 
 #include "io/json_text.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -14,11 +16,6 @@ std::string fmt(const char* format, double v) {
   char buf[64];
   std::snprintf(buf, sizeof buf, format, v);
   return buf;
-}
-
-// JSON has no infinity: an identical image's PSNR is written as null.
-std::string json_number(double v) {
-  return std::isfinite(v) ? fmt("%.6g", v) : "null";
 }
 
 std::string label(const SweepRow& r) {
@@ -113,38 +110,39 @@ std::string format_sweep_csv(const SweepResult& s) {
 }
 
 std::string format_sweep_json(const SweepResult& s) {
-  std::ostringstream out;
-  out << "{\n  \"scene\": " << json_string(s.scene_id)
-      << ",\n  \"device\": " << json_string(s.device)
-      << ",\n  \"resolution\": {\"width\": " << s.width_px << ", \"height\": " << s.height_px
-      << "},\n  \"timed_frames\": " << s.timed_frames
-      << ",\n  \"reference\": {\"hit_threshold_k\": " << json_number(s.reference.hit_threshold_k)
-      << ", \"refinements\": " << s.reference.refinements << ", \"samples\": " << kReferenceSamples
-      << ", \"convergence_mean_abs_error\": " << json_number(s.reference.convergence_mae)
-      << ", \"convergence_depth_px\": " << json_number(s.reference.convergence_depth_px)
-      << "},\n  \"notes\": [";
-  for (size_t i = 0; i < s.notes.size(); ++i) out << (i ? ", " : "") << json_string(s.notes[i]);
-  out << "],\n  \"configurations\": [\n";
-  for (size_t i = 0; i < s.rows.size(); ++i) {
-    const SweepRow& r = s.rows[i];
+  nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+  for (const SweepRow& r : s.rows) {
     const ErrorMetrics& e = r.error;
-    out << "    {\"knob\": " << json_string(r.knob) << ", \"value\": " << json_string(r.value)
-        << ", \"frame_ms\": " << json_number(r.frame_ms)
-        << ", \"mean_abs_error\": " << json_number(e.mean_abs_error)
-        << ", \"psnr_db\": " << json_number(e.psnr_db)
-        << ", \"fraction_over_8\": " << json_number(e.fraction_over_8)
-        << ", \"depth_median_px\": " << json_number(e.depth_median_px)
-        << ", \"depth_p95_px\": " << json_number(e.depth_p95_px)
-        << ", \"silhouette_mismatch\": " << json_number(e.silhouette_mismatch)
-        << ", \"normal_p95_deg\": " << json_number(e.normal_p95_deg)
-        << ", \"overstep_rate\": " << json_number(e.overstep_rate)
-        << ", \"out_of_steps_fraction\": " << json_number(e.out_of_steps_fraction)
-        << ", \"non_finite\": " << e.non_finite
-        << ", \"on_pareto_front\": " << (r.on_front ? "true" : "false") << "}"
-        << (i + 1 < s.rows.size() ? ",\n" : "\n");
+    rows.push_back({{"knob", r.knob},
+                    {"value", r.value},
+                    {"frame_ms", r.frame_ms},
+                    {"mean_abs_error", e.mean_abs_error},
+                    {"psnr_db", e.psnr_db},  // an identical image's infinity is written as null
+                    {"fraction_over_8", e.fraction_over_8},
+                    {"depth_median_px", e.depth_median_px},
+                    {"depth_p95_px", e.depth_p95_px},
+                    {"silhouette_mismatch", e.silhouette_mismatch},
+                    {"normal_p95_deg", e.normal_p95_deg},
+                    {"overstep_rate", e.overstep_rate},
+                    {"out_of_steps_fraction", e.out_of_steps_fraction},
+                    {"non_finite", e.non_finite},
+                    {"on_pareto_front", r.on_front}});
   }
-  out << "  ]\n}\n";
-  return out.str();
+  const nlohmann::ordered_json j = {
+      {"scene", s.scene_id},
+      {"device", s.device},
+      {"resolution", {{"width", s.width_px}, {"height", s.height_px}}},
+      {"timed_frames", s.timed_frames},
+      {"reference",
+       {{"hit_threshold_k", s.reference.hit_threshold_k},
+        {"refinements", s.reference.refinements},
+        {"samples", kReferenceSamples},
+        {"convergence_mean_abs_error", s.reference.convergence_mae},
+        {"convergence_depth_px", s.reference.convergence_depth_px}}},
+      {"notes", s.notes},
+      {"configurations", rows},
+  };
+  return json_text(j);
 }
 
 std::string format_sweep_svg(const SweepResult& s) {

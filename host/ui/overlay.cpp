@@ -3,6 +3,7 @@
 #include "io/atomic_file.hpp"
 #include "io/log.hpp"
 #include "render/kernel_assembly.hpp"
+#include "scene/vec3.hpp"
 #include "settings/settings_table.hpp"
 
 #include <imgui.h>
@@ -46,16 +47,14 @@ bool edit_param(const ParamInfo& p, fr_value& v) {
       break;
     }
     case FR_PARAM_COLOR: {
-      float c[3] = {static_cast<float>(v.v[0]), static_cast<float>(v.v[1]),
-                    static_cast<float>(v.v[2])};
-      changed = ImGui::ColorEdit3(label, c);
+      std::array<float, 3> c = to_float3(v.v);
+      changed = ImGui::ColorEdit3(label, c.data());
       if (changed) v = fr_value{{c[0], c[1], c[2]}};
       break;
     }
     default: {
-      float c[3] = {static_cast<float>(v.v[0]), static_cast<float>(v.v[1]),
-                    static_cast<float>(v.v[2])};
-      changed = ImGui::DragFloat3(label, c, 0.01f, static_cast<float>(p.min_value.v[0]),
+      std::array<float, 3> c = to_float3(v.v);
+      changed = ImGui::DragFloat3(label, c.data(), 0.01f, static_cast<float>(p.min_value.v[0]),
                                   static_cast<float>(p.max_value.v[0]));
       if (changed) v = fr_value{{c[0], c[1], c[2]}};
       break;

@@ -1,4 +1,5 @@
-#include "plugin/scene_info.hpp"
+#include "scene/scene_data.hpp"
+#include "scene/vec3.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
@@ -35,8 +36,8 @@ std::optional<std::string> check_camera(const fr_camera& c) {
       return "camera has a non-finite coordinate";
   if (!(c.fov_deg > 0 && c.fov_deg < 180))
     return "field of view " + std::to_string(c.fov_deg) + " is outside (0, 180) degrees";
-  const glm::dvec3 eye(c.eye[0], c.eye[1], c.eye[2]), up(c.up[0], c.up[1], c.up[2]);
-  const glm::dvec3 t = glm::dvec3(c.target[0], c.target[1], c.target[2]) - eye;
+  const glm::dvec3 eye = to_dvec3(c.eye), up = to_dvec3(c.up);
+  const glm::dvec3 t = to_dvec3(c.target) - eye;
   if (glm::length(t) == 0) return "target equals eye";
   const glm::dvec3 b = glm::cross(up, t);
   if (!(glm::length(b) > 1e-12 * glm::length(t) * glm::length(up)))

@@ -1,0 +1,72 @@
+// scene_data.hpp — a scene as plain data: what it declared (SceneInfo, ParamInfo) and the state
+// the host keeps for it (SceneState). No plugin code or process behind it: the renderer, the
+// kernel assembler and the sweep work from these alone, and only plugin/ knows how they were
+// obtained (plugin/scene_info.hpp adds LoadedScene, which also runs the scene's callbacks).
+//
+// The loader builds a SceneInfo from the plugin's fr_scene_desc; every string and table is
+// copied, so a SceneInfo never points into plugin memory and can cross processes.
+#pragma once
+
+#include <fractalis/fractalis.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace fr {
+
+struct ParamInfo {
+  std::string key;
+  std::string name;
+  std::string group;
+  std::string description;
+  fr_param_type type = FR_PARAM_FLOAT;
+  fr_param_flags flags = 0;
+  fr_value default_value{};
+  fr_value min_value{};
+  fr_value max_value{};
+
+  int component_count() const { return type == FR_PARAM_VEC3 || type == FR_PARAM_COLOR ? 3 : 1; }
+  bool specialized() const { return (flags & FR_PARAM_SPECIALIZE) != 0; }
+};
+
+const char* param_type_name(fr_param_type type);
+
+// Why a camera cannot make rays (a non-finite value, fov outside (0, 180) degrees, target at the
+// eye, up zero or parallel to the view), or nullopt when it can. Checked on a scene's default
+// camera when it loads, and on the camera the command line sets.
+std::optional<std::string> check_camera(const fr_camera& camera);
+
+struct SceneInfo {
+  std::string id;
+  std::string name;
+  std::string version;
+  std::string author;
+  std::string license;
+  std::string description;
+  std::string de_source;
+  std::string de_source_name;  // for compiler messages; "<id>.cl" when the plugin gave none
+  std::string surface_source;  // empty: the host's material settings
+  std::string surface_source_name;
+  std::vector<ParamInfo> params;
+  fr_features features = 0;
+  fr_camera camera{};
+  std::vector<fr_light> lights;
+  double bounding_radius = 0;
+
+  // Index of the parameter with this key, or -1.
+  int find_param(const std::string& key) const;
+};
+
+// The host-owned state of a scene in use: what its update callback is lent each frame.
+struct SceneState {
+  std::vector<fr_value> params;  // one per SceneInfo::params, same order
+  fr_camera camera{};
+  std::vector<fr_light> lights;
+  double time_s = 0;
+  double dt_s = 0;
+  uint64_t frame_index = 0;
+  double bounding_radius = 0;
+};
+
+}  // namespace fr
