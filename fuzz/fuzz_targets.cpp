@@ -2,10 +2,13 @@
 
 #include "cli/cli.hpp"
 #include "cli/options.hpp"
+#include "plugin/descriptor_copy.hpp"
 #include "plugin/scene_checks.hpp"
 #include "plugin/scene_wire.hpp"
 #include "settings/settings.hpp"
 
+#include <cstring>
+#include <deque>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -75,6 +78,146 @@ int fuzz_scene_descriptor(const uint8_t* data, size_t size) {
     (void)check_scene_info(info);
     for (size_t i = 0; i < info.params.size(); ++i) (void)check_param_info(info.params[i], i);
   }
+  return 0;
+}
+
+namespace {
+
+// Takes values off the front of the input; past its end, zeros.
+class ByteReader {
+ public:
+  ByteReader(const uint8_t* data, size_t size) : data_(data), size_(size) {}
+  uint8_t u8() { return at_ < size_ ? data_[at_++] : 0; }
+  uint32_t u32() {
+    uint32_t v = 0;
+    for (int i = 0; i < 4; ++i) v = v << 8 | u8();
+    return v;
+  }
+  double f64() {
+    uint64_t bits = 0;
+    for (int i = 0; i < 8; ++i) bits = bits << 8 | u8();
+    double v;
+    std::memcpy(&v, &bits, sizeof v);
+    return v;
+  }
+  // A small count most of the time, sometimes a huge one (the caps must hold).
+  uint32_t count(uint32_t usual_max) {
+    const uint8_t pick = u8();
+    return pick < 240 ? pick % (usual_max + 1) : u32();
+  }
+  std::string text() {
+    std::string s;
+    const size_t n = u8() == 255 ? 5000 : u8() % 80;
+    for (size_t i = 0; i < n; ++i) s += static_cast<char>(u8());  // may hold a NUL: shorter
+    return s;
+  }
+
+ private:
+  const uint8_t* data_;
+  size_t size_;
+  size_t at_ = 0;
+};
+
+// A struct_size as a plugin might give it: right, the 1.0 size, a bit off, or anything.
+uint32_t struct_size(ByteReader& in, uint32_t right) {
+  switch (in.u8() % 6) {
+    case 3:
+      return right - 8;
+    case 4:
+      return right + 8;
+    case 5:
+      return in.u32();
+    default:
+      return right;
+  }
+}
+
+}  // namespace
+
+int fuzz_scene_desc_copy(const uint8_t* data, size_t size) {
+  ByteReader in(data, size);
+  std::deque<std::string> strings;  // deque: the c_str() pointers handed out stay valid
+  auto text = [&]() -> const char* {
+    if (in.u8() % 8 == 0) return nullptr;
+    strings.push_back(in.text());
+    return strings.back().c_str();
+  };
+  auto value = [&] { return fr_value{{in.f64(), in.f64(), in.f64()}}; };
+
+  // At most 300 real parameters and 20 lights lie behind the counts; a bigger count is a lie
+  // the loader must refuse before it reads the array (so the arrays are sized to the cap).
+  std::deque<fr_param_desc> params;
+  std::vector<const fr_param_desc*> param_ptrs;
+  const uint32_t param_count = in.count(8);
+  for (uint32_t i = 0; i < std::min<uint32_t>(param_count, 300); ++i) {
+    fr_param_desc p{};
+    p.struct_size = struct_size(in, sizeof(fr_param_desc));
+    p.type = static_cast<fr_param_type>(in.u8() % 7);
+    p.flags = in.u8() % 4 == 0 ? in.u32() : in.u8() % 4;
+    p.reserved = in.u8() % 16 == 0 ? 1 : 0;
+    p.key = text();
+    p.name = text();
+    p.group = text();
+    p.description = text();
+    p.default_value = value();
+    p.min_value = value();
+    p.max_value = value();
+    params.push_back(p);
+    param_ptrs.push_back(in.u8() % 32 == 0 ? nullptr : &params.back());
+  }
+  param_ptrs.resize(300, nullptr);
+  std::deque<fr_light> lights;
+  std::vector<const fr_light*> light_ptrs;
+  const uint32_t light_count = in.count(4);
+  for (uint32_t i = 0; i < std::min<uint32_t>(light_count, 20); ++i) {
+    fr_light l{};
+    l.struct_size = struct_size(in, sizeof(fr_light));
+    l.kind = in.u8() % 4;
+    for (double& c : l.vector) c = in.f64();
+    for (double& c : l.color) c = in.f64();
+    l.intensity = in.f64();
+    l.attenuation = in.f64();
+    l.falloff = in.f64();
+    lights.push_back(l);
+    light_ptrs.push_back(in.u8() % 32 == 0 ? nullptr : &lights.back());
+  }
+  light_ptrs.resize(20, nullptr);
+  fr_camera camera{};
+  camera.struct_size = struct_size(in, sizeof(fr_camera));
+  for (double& c : camera.eye) c = in.f64();
+  for (double& c : camera.target) c = in.f64();
+  for (double& c : camera.up) c = in.f64();
+  camera.fov_deg = in.f64();
+
+  fr_scene_desc desc{};
+  desc.struct_size = struct_size(in, sizeof(fr_scene_desc));
+  desc.reserved = in.u8() % 16 == 0 ? 1 : 0;
+  desc.id = text();
+  desc.name = text();
+  desc.version = text();
+  desc.author = text();
+  desc.license = text();
+  desc.description = text();
+  desc.de_source = text();
+  desc.de_source_name = text();
+  desc.surface_source = text();
+  desc.surface_source_name = text();
+  desc.params = in.u8() % 16 == 0 ? nullptr : param_ptrs.data();
+  desc.param_count = param_count;
+  desc.light_count = light_count;
+  desc.features = in.u8() % 8 == 0 ? in.u32() : in.u8() % 32;
+  desc.camera = in.u8() % 4 == 0 ? nullptr : &camera;
+  desc.lights = in.u8() % 16 == 0 ? nullptr : light_ptrs.data();
+  desc.bounding_radius = in.f64();
+
+  fr_scene_entry entry{};
+  entry.abi_major = in.u8() % 8 == 0 ? in.u32() : FR_ABI_VERSION_MAJOR;
+  entry.abi_minor = in.u8() % 8 == 0 ? in.u32() : in.u8() % 2;
+  entry.struct_size = struct_size(in, sizeof(fr_scene_entry));
+  entry.reserved = in.u8() % 16 == 0 ? 1 : 0;
+  entry.scene = in.u8() % 32 == 0 ? nullptr : &desc;
+  const DescriptorCopy copy = copy_descriptor(in.u8() % 32 == 0 ? nullptr : &entry);
+  (void)copy.message.size();
   return 0;
 }
 

@@ -26,6 +26,11 @@ int fuzz_command_line(const uint8_t* data, size_t size);
 // checked as the host does (plugin/scene_checks.hpp): the host trusts no byte of it.
 int fuzz_scene_descriptor(const uint8_t* data, size_t size);
 
+// A plugin's entry and descriptor as it lies in the plugin's memory (counts, sizes, strings,
+// parameter tables, camera, lights, all from the bytes), read by the loader's copy_descriptor
+// (plugin/descriptor_copy.hpp), the only code that reads plugin memory.
+int fuzz_scene_desc_copy(const uint8_t* data, size_t size);
+
 struct FuzzTarget {
   const char* name;  // its folder under fuzz/corpus and fuzz/regressions
   int (*run)(const uint8_t* data, size_t size);
@@ -35,6 +40,7 @@ inline constexpr FuzzTarget kFuzzTargets[] = {
     {"set_override", fuzz_set_override},
     {"command_line", fuzz_command_line},
     {"scene_descriptor", fuzz_scene_descriptor},
+    {"scene_desc_copy", fuzz_scene_desc_copy},
 };
 
 }  // namespace fr

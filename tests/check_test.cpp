@@ -77,7 +77,9 @@ TEST(Check, SceneBuiltAgainstAbi10Passes) {
 // ones quick.
 TEST(Check, EveryBrokenFixtureFailsItsCheck) {
   const std::filesystem::path check_dir = CHECK_PLUGIN_DIR, hostile_dir = HOSTILE_PLUGIN_DIR;
-  auto hostile = [&](const char* name) { return hostile_dir / ("hostile_" + std::string(name) + ".so"); };
+  auto hostile = [&](const char* name) {
+    return hostile_dir / ("hostile_" + std::string(name) + ".so");
+  };
   const std::map<std::filesystem::path, std::pair<std::string, std::string>> cases = {
       // fixtures/plugins, as the loader sees them
       {test::fixture_plugin("not_elf"), {"descriptor", "not an ELF shared library"}},

@@ -20,13 +20,6 @@
 namespace fr {
 namespace {
 
-std::string read_all(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 mode_t mode_of(const std::filesystem::path& file) {
   struct stat st {};
   EXPECT_EQ(stat(file.c_str(), &st), 0) << file;
@@ -46,7 +39,7 @@ TEST(OutputSafety, RegularFilesKeepTheirModeAndNewOnesFollowTheUmask) {
   EXPECT_EQ(mode_of(dir / "new.txt"), 0640u);
   chmod((dir / "new.txt").c_str(), 0600);
   ASSERT_TRUE(write_file_atomic(dir / "new.txt", "two", &error)) << error;
-  EXPECT_EQ(read_all(dir / "new.txt"), "two");
+  EXPECT_EQ(test::read_file(dir / "new.txt"), "two");
   EXPECT_EQ(mode_of(dir / "new.txt"), 0600u) << "the existing file's mode is kept";
   EXPECT_EQ(entries(dir), 1u) << "no temporary file left";
 }
@@ -61,7 +54,7 @@ TEST(OutputSafety, SymlinkStaysALinkAndItsTargetIsWritten) {
   ASSERT_TRUE(write_file_atomic(dir / "link.png", "new", &error)) << error;
   EXPECT_TRUE(std::filesystem::is_symlink(dir / "link.png"));
   EXPECT_EQ(std::filesystem::read_symlink(dir / "link.png"), "real/image.png");
-  EXPECT_EQ(read_all(dir / "real" / "image.png"), "new");
+  EXPECT_EQ(test::read_file(dir / "real" / "image.png"), "new");
   EXPECT_EQ(mode_of(dir / "real" / "image.png"), 0604u);
   EXPECT_EQ(entries(dir / "real"), 1u);
 
@@ -78,7 +71,7 @@ TEST(OutputSafety, FifoAndCharacterDeviceAreWrittenThrough) {
   const auto dir = test::fresh_dir("output_fifo");
   const auto fifo = dir / "pipe.png";
   ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
-  auto reader = std::async(std::launch::async, [&] { return read_all(fifo); });
+  auto reader = std::async(std::launch::async, [&] { return test::read_file(fifo); });
   std::string error;
   ASSERT_TRUE(write_file_atomic(fifo, "through the pipe", &error)) << error;
   EXPECT_EQ(reader.get(), "through the pipe");
@@ -116,11 +109,11 @@ TEST(OutputSafety, StandardOutputCarriesOnlyThePng) {
     const auto png = dir / "out.png", said = dir / "said.txt";
     const std::string command = render + " 2> " + said.string() + to + png.string();
     ASSERT_EQ(std::system(command.c_str()), 0) << command;
-    const std::string bytes = read_all(png);
+    const std::string bytes = test::read_file(png);
     ASSERT_GT(bytes.size(), 20u) << command;
     EXPECT_EQ(bytes.substr(1, 3), "PNG") << command;
     EXPECT_EQ(bytes.substr(bytes.size() - 8), std::string("IEND\xae\x42\x60\x82", 8)) << command;
-    EXPECT_NE(read_all(said).find("rendered menger 16x16"), std::string::npos) << command;
+    EXPECT_NE(test::read_file(said).find("rendered menger 16x16"), std::string::npos) << command;
   }
 }
 
@@ -135,6 +128,10 @@ void kill_during_write(int sig) {
     const int null_fd = open("/dev/null", O_WRONLY);
     dup2(null_fd, 1);
     dup2(null_fd, 2);
+    // As from a terminal: a shell running the tests in the background may have set SIGINT to
+    // be ignored, which fractalis (rightly) leaves alone.
+    signal(SIGINT, SIG_DFL);
+    signal(SIGTERM, SIG_DFL);
     execl(FRACTALIS_EXECUTABLE, FRACTALIS_EXECUTABLE, "render", "--scene", "menger", "--size",
           "2400x2400", "--out", out.c_str(), static_cast<char*>(nullptr));
     _exit(127);

@@ -10,13 +10,6 @@
 namespace fr {
 namespace {
 
-std::string read_all(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 TEST(PngWrite, RoundTrip) {
   const auto dir = test::fresh_dir("png_roundtrip");
   std::vector<uint8_t> rgba(3 * 2 * 4);
@@ -41,7 +34,7 @@ TEST(PngWrite, FailureKeepsExistingFile) {
   // Pixels that do not match the size: refused before anything is written.
   EXPECT_FALSE(write_png_atomic(dir / "keep.png", 4, 4, std::vector<uint8_t>(10), &error));
   EXPECT_NE(error.find("keep.png"), std::string::npos);
-  EXPECT_EQ(read_all(dir / "keep.png"), "precious");
+  EXPECT_EQ(test::read_file(dir / "keep.png"), "precious");
   // A folder that does not exist: a clear error naming the path.
   EXPECT_FALSE(write_png_atomic(dir / "missing" / "x.png", 1, 1, std::vector<uint8_t>(4), &error));
   EXPECT_NE(error.find("missing"), std::string::npos) << error;

@@ -129,6 +129,7 @@ int command_sweep(const std::vector<std::string>& args, std::ostream& out, std::
   const std::filesystem::path out_dir = options.get("out").value_or("sweep-" + scene_id);
   if (out_dir.empty()) throw UsageError("--out: empty folder name");
   PreparedScene p = prepare_scene(options);
+  check_memory(p.render, p.device, true);
   std::vector<std::string> knobs = knob_names(p.scene->info);
   if (auto list = options.get("knobs")) {
     knobs = split_list(*list);

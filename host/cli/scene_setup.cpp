@@ -311,7 +311,9 @@ ExplorerSetup prepare_explorer(ParsedOptions options) {
   const auto folders = plugin_folders(x.settings, options);
   if (folders.empty())
     throw std::runtime_error("no plugin folder found (build the plugins, or pass --plugins DIR)");
-  x.runtime = std::make_unique<ClRuntime>(choose_device(x.settings, options));
+  const DeviceInfo device = choose_device(x.settings, options);
+  check_memory(x.settings.render, device, false);  // the window's size, at full resolution
+  x.runtime = std::make_unique<ClRuntime>(device);
   std::vector<SceneEvent> events;
   x.library = std::make_unique<SceneLibrary>(folders, x.settings.plugins, x.settings.render,
                                              *x.runtime, &events);

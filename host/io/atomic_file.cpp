@@ -7,6 +7,8 @@
 
 #include <atomic>
 #include <cerrno>
+#include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -44,6 +46,13 @@ void remove_temps_and_die(int sig) {
     if (g_temp_state[i].load() == 2) unlink(g_temp_paths[i]);
   signal(sig, SIG_DFL);
   raise(sig);
+}
+
+// Bits for temporary file names: not secret, only unlikely to repeat.
+uint32_t random_bits() {
+  static std::atomic<uint32_t> counter{0};
+  const auto now = std::chrono::steady_clock::now().time_since_epoch().count();
+  return static_cast<uint32_t>(now) * 2654435761u + counter.fetch_add(0x9e3779b9u);
 }
 
 // 0666 less the process's umask, read without changing it (umask(2) would, for a moment, for
@@ -140,18 +149,26 @@ bool write_file_atomic(const std::filesystem::path& path, std::string_view bytes
     mode = new_file_mode();
   }
   const std::filesystem::path dir = real.has_parent_path() ? real.parent_path() : ".";
-  std::string hidden_name = real.filename().string();
-  hidden_name.insert(hidden_name.begin(), '.');
-  hidden_name += ".XXXXXX";
-  std::string tmpl = (dir / hidden_name).string();
-  // Signals are held while the file is created and registered, so none lands in between.
-  sigset_t all, before;
-  sigfillset(&all);
-  pthread_sigmask(SIG_BLOCK, &all, &before);
-  const int fd = mkostemp(tmpl.data(), O_CLOEXEC);
-  const int slot = fd >= 0 ? register_temp(tmpl) : -1;
-  const int create_errno = errno;
-  pthread_sigmask(SIG_SETMASK, &before, nullptr);
+  // The temporary file's name is registered for the signal handler before the file exists: a
+  // signal may be delivered to any thread, so blocking it in this one would not close the gap
+  // between creating the file and registering it. (Removing a name not yet created is harmless;
+  // the pid in the name keeps it from being another process's file.)
+  std::string tmpl;
+  int fd = -1, slot = -1, create_errno = 0;
+  for (int attempt = 0; attempt < 100 && fd < 0; ++attempt) {
+    char suffix[40];
+    std::snprintf(suffix, sizeof suffix, ".%ld.%08x", static_cast<long>(getpid()),
+                  static_cast<unsigned>(random_bits()));
+    std::string hidden = real.filename().string();  // built by appending: GCC 12's -Wrestrict
+    hidden.insert(hidden.begin(), '.');             // misfires on "." + string
+    hidden += suffix;
+    tmpl = (dir / hidden).string();
+    slot = register_temp(tmpl);
+    fd = open(tmpl.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+    create_errno = errno;
+    if (fd < 0) unregister_temp(slot);
+    if (fd < 0 && create_errno != EEXIST) break;
+  }
   if (fd < 0) {
     *error = "cannot write " + path.string() + ": cannot create a temporary file in " +
              dir.string() + ": " + std::strerror(create_errno);
