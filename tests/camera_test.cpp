@@ -83,12 +83,36 @@ TEST(Camera, UpIsOrthogonalised) {
 
 TEST(Camera, RejectsDegenerateCameras) {
   EXPECT_TRUE(check_camera(make_camera({1, 1, 1}, {1, 1, 1}, {0, 1, 0}, 45)).has_value());
-  EXPECT_TRUE(check_camera(make_camera({0, 0, 5}, {0, 0, 0}, {0, 0, 1}, 45)).has_value());
   EXPECT_TRUE(check_camera(make_camera({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 0)).has_value());
   EXPECT_TRUE(check_camera(make_camera({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 180)).has_value());
   EXPECT_TRUE(check_camera(make_camera({0, 0, NAN}, {0, 0, 0}, {0, 1, 0}, 45)).has_value());
   EXPECT_FALSE(check_camera(make_camera({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 45)).has_value());
   EXPECT_EQ(*check_camera(make_camera({1, 1, 1}, {1, 1, 1}, {0, 1, 0}, 45)), "target equals eye");
+}
+
+// Up parallel to the view (looking straight down, or up, the default up axis): no refusal, and a
+// stable perpendicular, +y, at both poles; the image's right then follows from the seed's
+// b = w x t by hand: down (t = -z): b = y x -z = -x, right = -b = +x; up (t = +z): right = -x.
+// A nearly parallel up (1e-9 off) gives the same picture as exactly parallel, not noise.
+TEST(Camera, UpParallelToTheViewTakesAStablePerpendicular) {
+  for (const double pole : {+1.0, -1.0}) {
+    SCOPED_TRACE(pole);
+    const fr_camera c = make_camera({0, 0, 3 * pole}, {0, 0, 0}, {0, 0, 1}, 60);
+    EXPECT_FALSE(check_camera(c).has_value());
+    const CameraRays r = make_camera_rays(c, 9, 7);
+    expect_dir(r.forward, {0, 0, -pole});
+    expect_dir(r.up, {0, 1, 0});
+    expect_dir(r.right, {pole, 0, 0});
+    const CameraRays near =
+        make_camera_rays(make_camera({0, 0, 3 * pole}, {0, 0, 0}, {1e-9, 0, 1}, 60), 9, 7);
+    for (double x : {0.0, 4.0, 8.0})
+      EXPECT_NEAR(glm::length(camera_ray_dir(r, x, 0) - camera_ray_dir(near, x, 0)), 0, 1e-12);
+  }
+  // Along y, with up y: the stable perpendicular is +z. A zero up takes it too.
+  const CameraRays y = make_camera_rays(make_camera({0, 5, 0}, {0, 0, 0}, {0, 1, 0}, 60), 4, 4);
+  expect_dir(y.up, {0, 0, 1});
+  const CameraRays zero = make_camera_rays(make_camera({0, 5, 0}, {0, 0, 0}, {0, 0, 0}, 60), 4, 4);
+  expect_dir(zero.up, {0, 0, 1});
 }
 
 TEST(Camera, SinglePixelLooksAtTarget) {

@@ -58,6 +58,8 @@ TEST(Cli, UsageErrors) {
   expect_usage_error({"render", "--eye", "1,2,3", "--target", "1,2,3"},
                      "camera: target equals eye");
   expect_usage_error({"render", "--eye", "1,2"}, "not three comma-separated numbers");
+  expect_usage_error({"render", "--up", "0,0,0"}, "--up: 0,0,0 has no direction");
+  expect_usage_error({"render", "--up", "0,nan,1"}, "is not a finite number");
   expect_usage_error({"render", "--fov", "200"}, "outside (0, 180) degrees");
   expect_usage_error({"render", "--lanes", "3"}, "--lanes: expected 1, 4, 8 or 16");
   expect_usage_error({"render", "--precision", "half"}, "expected auto, float or double");

@@ -112,6 +112,30 @@ TEST(CameraController, MouseLookYawsAndInvertY) {
   EXPECT_LT(b.target[1], 0);
 }
 
+// At a pole (up +z, looking down -z, as --eye 0,0,10 --target 0,0,0 --up 0,0,1 gives) the
+// controls use the image's stable up (+y): strafing right moves along the image's right, +x
+// (camera_test derives it), and looking around never makes the camera non-finite.
+TEST(CameraController, WorksAtAPole) {
+  fr_camera c = looking_down_minus_z();
+  c.up[1] = 0;
+  c.up[2] = 1;
+  InputState right;
+  right.held.insert(Action::MoveRight);
+  CameraControls controls;
+  update_camera(c, CameraMode::Fly, right, false, 1.0, 1.0, controls);
+  EXPECT_GT(c.eye[0], 0);
+  EXPECT_NEAR(c.eye[1], 0, 1e-12);
+  EXPECT_NEAR(c.eye[2], 10, 1e-12);
+  InputState look;
+  look.look_dx = 40;
+  look.look_dy = 300;
+  for (int i = 0; i < 10; ++i) update_camera(c, CameraMode::Fly, look, true, 0.016, 1.0, controls);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_TRUE(std::isfinite(c.eye[i]) && std::isfinite(c.target[i]));
+  }
+  EXPECT_FALSE(check_camera(c).has_value());
+}
+
 TEST(CameraController, OrbitKeepsTheTarget) {
   InputState in;
   in.look_dx = 600;  // 90 degrees around

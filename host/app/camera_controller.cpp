@@ -1,4 +1,5 @@
 #include "app/camera_controller.hpp"
+#include "scene/camera_up.hpp"
 #include "scene/vec3.hpp"
 
 #include <glm/geometric.hpp>
@@ -9,13 +10,12 @@
 #include <cmath>
 
 namespace fr {
-namespace {}  // namespace
-
 CameraMotion update_camera(fr_camera& camera, CameraMode mode, const InputState& input, bool look,
                            double dt_s, double surface_distance, const CameraControls& c) {
   CameraMotion motion;
   glm::dvec3 eye = to_dvec3(camera.eye), target = to_dvec3(camera.target);
-  const glm::dvec3 up = glm::normalize(to_dvec3(camera.up));
+  // At a pole (up parallel to the view) the image's own stable up (scene/camera_up.hpp).
+  const glm::dvec3 up = glm::normalize(effective_up(camera));
   glm::dvec3 forward = target - eye;
   double target_distance = glm::length(forward);
   forward /= target_distance;

@@ -28,6 +28,8 @@ std::vector<OptionSpec> scene_option_specs() {
       {"size", "WxH", false, "image size in pixels (default 1280x720)"},
       {"eye", "X,Y,Z", false, "camera position (default: the scene's)"},
       {"target", "X,Y,Z", false, "point the camera looks at"},
+      {"up", "X,Y,Z", false,
+       "camera up direction (default: the scene's); parallel to the view: a stable perpendicular"},
       {"fov", "DEG", false, "horizontal field of view in degrees, (0, 180)"},
       {"param", "KEY=VALUE", true, "set a scene parameter (repeatable); vec3 as x,y,z"},
       {"time", "SECONDS", false, "scene time for the update callback (default 0)"},
@@ -218,6 +220,11 @@ void apply_scene_overrides(const SceneInfo& info, const ParsedOptions& options, 
   if (auto target = options.get("target")) {
     auto v = parse_vec3("--target", *target);
     std::copy(v.begin(), v.end(), state.camera.target);
+  }
+  if (auto up = options.get("up")) {
+    auto v = parse_vec3("--up", *up);
+    if (v[0] == 0 && v[1] == 0 && v[2] == 0) throw UsageError("--up: 0,0,0 has no direction");
+    std::copy(v.begin(), v.end(), state.camera.up);
   }
   if (auto fov = options.get("fov")) state.camera.fov_deg = parse_finite("--fov", *fov);
   if (auto problem = check_camera(state.camera)) throw UsageError("camera: " + *problem);

@@ -1,4 +1,5 @@
 #include "render/camera.hpp"
+#include "scene/camera_up.hpp"
 #include "scene/vec3.hpp"
 
 #include <glm/geometric.hpp>
@@ -8,7 +9,7 @@
 namespace fr {
 CameraRays make_camera_rays(const fr_camera& c, int k, int m) {
   const glm::dvec3 t = to_dvec3(c.target) - to_dvec3(c.eye);
-  const glm::dvec3 b = glm::cross(to_dvec3(c.up), t);
+  const glm::dvec3 b = glm::cross(effective_up(c), t);
   const glm::dvec3 v = glm::cross(t, b);
   const glm::dvec3 t_n = glm::normalize(t), b_n = glm::normalize(b), v_n = glm::normalize(v);
   const double g_x = std::tan(c.fov_deg * M_PI / 360.0);

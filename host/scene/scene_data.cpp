@@ -1,4 +1,6 @@
 #include "scene/scene_data.hpp"
+
+#include "scene/camera_up.hpp"
 #include "scene/vec3.hpp"
 
 #include <glm/geometric.hpp>
@@ -36,13 +38,23 @@ std::optional<std::string> check_camera(const fr_camera& c) {
       return "camera has a non-finite coordinate";
   if (!(c.fov_deg > 0 && c.fov_deg < 180))
     return "field of view " + std::to_string(c.fov_deg) + " is outside (0, 180) degrees";
-  const glm::dvec3 eye = to_dvec3(c.eye), up = to_dvec3(c.up);
-  const glm::dvec3 t = to_dvec3(c.target) - eye;
+  const glm::dvec3 t = to_dvec3(c.target) - to_dvec3(c.eye);
   if (glm::length(t) == 0) return "target equals eye";
-  const glm::dvec3 b = glm::cross(up, t);
-  if (!(glm::length(b) > 1e-12 * glm::length(t) * glm::length(up)))
-    return "up direction is zero or parallel to the view direction";
+  // An up that is zero or parallel to the view is fine: effective_up takes a perpendicular.
   return std::nullopt;
+}
+
+glm::dvec3 effective_up(const fr_camera& c) {
+  const glm::dvec3 t = glm::normalize(to_dvec3(c.target) - to_dvec3(c.eye));
+  const glm::dvec3 up = to_dvec3(c.up);
+  const double up_length = glm::length(up);
+  if (up_length > 0 && glm::length(glm::cross(up / up_length, t)) > 1e-6) return up;
+  // The world axis least aligned with the view; y, then z, then x on ties.
+  const glm::dvec3 axes[] = {{0, 1, 0}, {0, 0, 1}, {1, 0, 0}};
+  glm::dvec3 best = axes[0];
+  for (const glm::dvec3& a : axes)
+    if (std::abs(glm::dot(a, t)) < std::abs(glm::dot(best, t)) - 1e-12) best = a;
+  return best;
 }
 
 }  // namespace fr

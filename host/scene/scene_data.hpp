@@ -33,7 +33,8 @@ struct ParamInfo {
 const char* param_type_name(fr_param_type type);
 
 // Why a camera cannot make rays (a non-finite value, fov outside (0, 180) degrees, target at the
-// eye, up zero or parallel to the view), or nullopt when it can. Checked on a scene's default
+// eye), or nullopt when it can. An up vector that is zero or parallel to the view is fine: the
+// camera then uses a stable perpendicular (camera_up.hpp). Checked on a scene's default
 // camera when it loads, and on the camera the command line sets.
 std::optional<std::string> check_camera(const fr_camera& camera);
 
