@@ -2,6 +2,7 @@
 
 #include "app/input.hpp"
 #include "io/echo.hpp"
+#include "io/toml_guard.hpp"
 #include "settings/settings_table.hpp"
 
 #include <toml++/toml.h>
@@ -140,59 +141,11 @@ void apply_table(const toml::table& table, const std::string& prefix, const std:
   }
 }
 
-// Deepest nesting a settings text may have: the parser recurses once per level of arrays,
-// inline tables and dotted key parts, so tens of thousands of levels exhaust the stack. The
-// known keys are at most three levels deep.
-constexpr int kMaxTomlNesting = 64;
-
-// Why `text` nests too deeply to parse safely (the line and how deep), or "". Brackets, braces
-// and dots inside strings and comments do not count.
-std::string nesting_problem(const std::string& text, int* line_out) {
-  int depth = 0, dots = 0, line = 1;
-  char quote = 0;
-  bool comment = false;
-  for (size_t i = 0; i < text.size(); ++i) {
-    const char c = text[i];
-    if (c == '\n') {
-      ++line;
-      dots = 0;
-      comment = false;
-      if (quote == '"' || quote == '\'') quote = 0;  // single-line strings end here anyway
-      continue;
-    }
-    if (comment) continue;
-    if (quote) {
-      if (c == '\\' && quote == '"')
-        ++i;
-      else if (c == quote)
-        quote = 0;
-      continue;
-    }
-    if (c == '#')
-      comment = true;
-    else if (c == '"' || c == '\'')
-      quote = c;
-    else if (c == '[' || c == '{')
-      ++depth;
-    else if (c == ']' || c == '}')
-      depth = depth > 0 ? depth - 1 : 0;
-    else if (c == '.' && !(i > 0 && std::isdigit(static_cast<unsigned char>(text[i - 1]))))
-      ++dots;
-    if (depth > kMaxTomlNesting || dots > kMaxTomlNesting) {
-      *line_out = line;
-      return "nested more than " + std::to_string(kMaxTomlNesting) +
-             " levels deep (arrays, inline tables or dotted key parts); settings are at most 3 "
-             "deep, so this is not a settings file";
-    }
-  }
-  return "";
-}
-
 std::vector<SettingsProblem> apply_toml(const std::string& text, const std::string& file,
                                         Settings& s) {
   std::vector<SettingsProblem> problems;
   int deep_line = 0;
-  if (std::string why = nesting_problem(text, &deep_line); !why.empty()) {
+  if (std::string why = toml_nesting_problem(text, &deep_line); !why.empty()) {
     problems.push_back({file, deep_line, "", why});
     return problems;
   }

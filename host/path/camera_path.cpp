@@ -1,0 +1,311 @@
+#include "path/camera_path.hpp"
+
+#include "io/echo.hpp"
+#include "io/toml_guard.hpp"
+#include "scene/camera_up.hpp"
+#include "scene/vec3.hpp"
+
+#include <toml++/toml.h>
+#include <glm/geometric.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/mat3x3.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace fr {
+namespace {
+
+const char* const kKeyframeKeys[] = {"time_s", "eye", "target", "up", "fov_deg", "params"};
+
+int line_of(const toml::node& n) {
+  return static_cast<int>(n.source().begin.line);
+}
+
+// A finite number (integers too), or nullopt.
+std::optional<double> number(const toml::node& n) {
+  if (!n.is_number()) return std::nullopt;
+  const double v = *n.value<double>();
+  return std::isfinite(v) ? std::optional<double>(v) : std::nullopt;
+}
+
+std::optional<glm::dvec3> vec3(const toml::node& n) {
+  const auto* a = n.as_array();
+  if (!a || a->size() != 3) return std::nullopt;
+  glm::dvec3 v;
+  for (int i = 0; i < 3; ++i) {
+    auto c = number(*a->get(static_cast<size_t>(i)));
+    if (!c) return std::nullopt;
+    v[i] = *c;
+  }
+  return v;
+}
+
+std::string range_text(const ParamInfo& p) {
+  std::ostringstream out;
+  out << "[" << p.min_value.v[0] << ", " << p.max_value.v[0] << "]";
+  return out.str();
+}
+
+// The value of parameter `p` in `n`, or why not.
+std::optional<fr_value> param_value(const toml::node& n, const ParamInfo& p, std::string* why) {
+  fr_value v{};
+  switch (p.type) {
+    case FR_PARAM_BOOL:
+      if (!n.is_boolean()) {
+        *why = "expected true or false";
+        return std::nullopt;
+      }
+      v.v[0] = *n.value<bool>() ? 1 : 0;
+      return v;
+    case FR_PARAM_INT: {
+      auto x = number(n);
+      if (!x || *x != std::floor(*x)) {
+        *why = "expected a whole number";
+        return std::nullopt;
+      }
+      v.v[0] = *x;
+      break;
+    }
+    case FR_PARAM_FLOAT: {
+      auto x = number(n);
+      if (!x) {
+        *why = "expected a finite number";
+        return std::nullopt;
+      }
+      v.v[0] = *x;
+      break;
+    }
+    default: {
+      auto x = vec3(n);
+      if (!x) {
+        *why = "expected [x, y, z] (three finite numbers)";
+        return std::nullopt;
+      }
+      for (int i = 0; i < 3; ++i) v.v[i] = (*x)[i];
+    }
+  }
+  for (int i = 0; i < p.component_count(); ++i)
+    if (!(v.v[i] >= p.min_value.v[i] && v.v[i] <= p.max_value.v[i])) {
+      *why = "outside the range of '" + p.key + "' " + range_text(p);
+      return std::nullopt;
+    }
+  return v;
+}
+
+// The keyframe's orientation: right, up and back (-forward) as the rotation's columns.
+glm::dquat orientation(const Keyframe& k) {
+  fr_camera c{};
+  store_dvec3(c.eye, k.eye);
+  store_dvec3(c.target, k.target);
+  store_dvec3(c.up, k.up);
+  const glm::dvec3 forward = glm::normalize(k.target - k.eye);
+  const glm::dvec3 right = glm::normalize(glm::cross(forward, effective_up(c)));
+  const glm::dvec3 up = glm::cross(right, forward);
+  return glm::quat_cast(glm::dmat3(right, up, -forward));
+}
+
+// The centripetal Catmull-Rom segment from p1 to p2 at u in [0, 1] (Barry and Goldman's
+// pyramid, knot intervals the square roots of the chord lengths).
+glm::dvec3 catmull_rom(const glm::dvec3& p0, const glm::dvec3& p1, const glm::dvec3& p2,
+                       const glm::dvec3& p3, double u) {
+  auto interval = [](const glm::dvec3& a, const glm::dvec3& b) {
+    const double d = std::sqrt(glm::length(b - a));
+    return d > 1e-12 ? d : 1.0;  // coincident points: any interval gives the same point
+  };
+  if (glm::length(p2 - p1) == 0) return p1;
+  const double t0 = 0, t1 = t0 + interval(p0, p1), t2 = t1 + interval(p1, p2),
+               t3 = t2 + interval(p2, p3);
+  const double t = t1 + u * (t2 - t1);
+  auto lerp = [&](const glm::dvec3& a, const glm::dvec3& b, double ta, double tb) {
+    return ((tb - t) * a + (t - ta) * b) / (tb - ta);
+  };
+  const glm::dvec3 a1 = lerp(p0, p1, t0, t1), a2 = lerp(p1, p2, t1, t2), a3 = lerp(p2, p3, t2, t3);
+  const glm::dvec3 b1 = lerp(a1, a2, t0, t2), b2 = lerp(a2, a3, t1, t3);
+  return lerp(b1, b2, t1, t2);
+}
+
+}  // namespace
+
+std::string PathProblem::to_string() const {
+  std::string out = file;  // appended, not "a" + b: GCC 12's -Wrestrict misfires on that
+  if (line > 0) out.append(":").append(std::to_string(line));
+  return out.append(": ").append(message);
+}
+
+std::optional<CameraPath> parse_camera_path(const std::string& text, const std::string& file,
+                                            const SceneInfo& scene,
+                                            std::vector<PathProblem>* problems) {
+  const size_t problems_before = problems->size();
+  auto problem = [&](int line, const std::string& message) {
+    problems->push_back({file, line, message});
+  };
+  int deep_line = 0;
+  if (std::string why = toml_nesting_problem(text, &deep_line); !why.empty()) {
+    problem(deep_line, why);
+    return std::nullopt;
+  }
+  toml::table root;
+  try {
+    root = toml::parse(text, file);
+  } catch (const toml::parse_error& e) {
+    problem(static_cast<int>(e.source().begin.line),
+            "not valid TOML: " + std::string(e.description()));
+    return std::nullopt;
+  }
+  for (const auto& [key, node] : root)
+    if (key.str() != "keyframe")
+      problem(line_of(node),
+              "unknown key '" + echo(key.str()) + "' (a path holds [[keyframe]] tables only)");
+  const toml::array* keys = root["keyframe"].as_array();
+  if (!keys || !keys->is_array_of_tables()) {
+    problem(keys ? line_of(*keys) : 0, "expected [[keyframe]] tables");
+    return std::nullopt;
+  }
+  CameraPath path;
+  path.file = file;
+  Keyframe previous;  // what a keyframe leaves out: the scene's camera and parameters at first
+  previous.eye = to_dvec3(scene.camera.eye);
+  previous.up = to_dvec3(scene.camera.up);
+  previous.fov_deg = scene.camera.fov_deg;
+  for (const ParamInfo& p : scene.params) previous.params.push_back(p.default_value);
+  for (const toml::node& node : *keys) {
+    const toml::table& t = *node.as_table();
+    Keyframe k = previous;
+    k.line = line_of(node);
+    const std::string where = "keyframe " + std::to_string(path.keyframes.size() + 1) + ": ";
+    for (const auto& [key, value] : t)
+      if (std::find(std::begin(kKeyframeKeys), std::end(kKeyframeKeys), key.str()) ==
+          std::end(kKeyframeKeys))
+        problem(line_of(value), where + "unknown key '" + echo(key.str()) +
+                                    "' (expected time_s, eye, target, up, fov_deg, params)");
+    auto need_vec3 = [&](const char* name, glm::dvec3* out, bool required) {
+      const toml::node* n = t.get(name);
+      if (!n) {
+        if (required) problem(k.line, where + "'" + name + "' is missing");
+        return;
+      }
+      if (auto v = vec3(*n))
+        *out = *v;
+      else
+        problem(line_of(*n), where + "'" + name + "': expected [x, y, z] (three finite numbers)");
+    };
+    if (const toml::node* n = t.get("time_s")) {
+      if (auto v = number(*n))
+        k.time_s = *v;
+      else
+        problem(line_of(*n), where + "'time_s': expected a finite number of seconds");
+    } else {
+      problem(k.line, where + "'time_s' is missing");
+    }
+    need_vec3("eye", &k.eye, true);
+    need_vec3("target", &k.target, true);
+    need_vec3("up", &k.up, false);
+    if (glm::length(k.up) == 0) problem(k.line, where + "'up' is [0, 0, 0]: it has no direction");
+    if (const toml::node* n = t.get("fov_deg")) {
+      auto v = number(*n);
+      if (!v || !(*v > 0 && *v < 180))
+        problem(line_of(*n), where + "'fov_deg': expected degrees in (0, 180)");
+      else
+        k.fov_deg = *v;
+    }
+    if (k.eye == k.target) problem(k.line, where + "'target' equals 'eye'");
+    if (const toml::node* n = t.get("params")) {
+      if (const toml::table* params = n->as_table()) {
+        for (const auto& [key, value] : *params) {
+          const int index = scene.find_param(std::string(key.str()));
+          if (index < 0) {
+            problem(line_of(value),
+                    where + "scene '" + scene.id + "' has no parameter '" + echo(key.str()) + "'");
+            continue;
+          }
+          std::string why;
+          if (auto v = param_value(value, scene.params[index], &why))
+            k.params[index] = *v;
+          else
+            problem(line_of(value), where + "parameter '" + scene.params[index].key + "': " + why);
+        }
+      } else {
+        problem(line_of(*n), where + "'params': expected a table of key = value");
+      }
+    }
+    if (!path.keyframes.empty() && !(k.time_s > path.keyframes.back().time_s))
+      problem(k.line, where + "time_s " + std::to_string(k.time_s) +
+                          " is not after the previous keyframe's " +
+                          std::to_string(path.keyframes.back().time_s) + " (times must increase)");
+    path.keyframes.push_back(k);
+    previous = k;
+  }
+  if (path.keyframes.size() < 2)
+    problem(path.keyframes.empty() ? 0 : path.keyframes.front().line,
+            "a path needs at least two keyframes (it has " + std::to_string(path.keyframes.size()) +
+                ")");
+  if (problems->size() > problems_before) {
+    std::stable_sort(problems->begin() + static_cast<std::ptrdiff_t>(problems_before),
+                     problems->end(),
+                     [](const PathProblem& a, const PathProblem& b) { return a.line < b.line; });
+    return std::nullopt;
+  }
+  return path;
+}
+
+std::optional<CameraPath> load_camera_path(const std::filesystem::path& file,
+                                           const SceneInfo& scene,
+                                           std::vector<PathProblem>* problems) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(file, ec)) {
+    problems->push_back({file.string(), 0, "not a readable file"});
+    return std::nullopt;
+  }
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return parse_camera_path(text.str(), file.string(), scene, problems);
+}
+
+PathSample sample_camera_path(const CameraPath& path, const SceneInfo& scene, double time_s) {
+  const auto& keys = path.keyframes;
+  const double t = std::clamp(time_s, path.start_s(), path.end_s());
+  // The segment [i, i + 1] holding t, and where in it.
+  size_t i = 0;
+  while (i + 2 < keys.size() && t >= keys[i + 1].time_s) ++i;
+  const Keyframe &k1 = keys[i], &k2 = keys[i + 1];
+  const double u = std::clamp((t - k1.time_s) / (k2.time_s - k1.time_s), 0.0, 1.0);
+  // Phantom end points: the first and last keys mirrored through their neighbours.
+  const glm::dvec3 p0 = i > 0 ? keys[i - 1].eye : 2.0 * k1.eye - k2.eye;
+  const glm::dvec3 p3 = i + 2 < keys.size() ? keys[i + 2].eye : 2.0 * k2.eye - k1.eye;
+  const glm::dvec3 eye = u == 0 ? k1.eye : u == 1 ? k2.eye : catmull_rom(p0, k1.eye, k2.eye, p3, u);
+
+  glm::dquat q1 = orientation(k1), q2 = orientation(k2);
+  if (glm::dot(q1, q2) < 0) q2 = -q2;  // the shorter way round
+  const glm::dmat3 r = glm::mat3_cast(glm::normalize(glm::slerp(q1, q2, u)));
+  const glm::dvec3 forward = -r[2], up = r[1];
+  const double d1 = glm::length(k1.target - k1.eye), d2 = glm::length(k2.target - k2.eye);
+  const glm::dvec3 target = u == 0   ? k1.target
+                            : u == 1 ? k2.target
+                                     : eye + forward * ((1 - u) * d1 + u * d2);
+
+  PathSample s;
+  s.camera.struct_size = sizeof(fr_camera);
+  store_dvec3(s.camera.eye, eye);
+  store_dvec3(s.camera.target, target);
+  // At the keyframes themselves, their own up (the quaternion's is the orthogonalised one).
+  store_dvec3(s.camera.up, u == 0 ? k1.up : u == 1 ? k2.up : up);
+  s.camera.fov_deg = (1 - u) * k1.fov_deg + u * k2.fov_deg;
+  s.params.resize(scene.params.size());
+  for (size_t p = 0; p < scene.params.size(); ++p) {
+    const ParamInfo& info = scene.params[p];
+    for (int c = 0; c < 3; ++c) {
+      const double a = k1.params[p].v[c], b = k2.params[p].v[c];
+      double v = (1 - u) * a + u * b;
+      if (info.type == FR_PARAM_INT) v = std::round(v);
+      if (info.type == FR_PARAM_BOOL) v = u < 1 ? a : b;
+      s.params[p].v[c] = v;
+    }
+  }
+  return s;
+}
+
+}  // namespace fr
