@@ -2,6 +2,7 @@
 
 #include "cli/cli.hpp"
 #include "cli/options.hpp"
+#include "path/camera_path.hpp"
 #include "plugin/descriptor_copy.hpp"
 #include "plugin/scene_checks.hpp"
 #include "plugin/scene_wire.hpp"
@@ -218,6 +219,42 @@ int fuzz_scene_desc_copy(const uint8_t* data, size_t size) {
   entry.scene = in.u8() % 32 == 0 ? nullptr : &desc;
   const DescriptorCopy copy = copy_descriptor(in.u8() % 32 == 0 ? nullptr : &entry);
   (void)copy.message.size();
+  return 0;
+}
+
+int fuzz_camera_path(const uint8_t* data, size_t size) {
+  static const SceneInfo scene = [] {
+    SceneInfo s;
+    s.id = "fuzz";
+    const fr_param_type types[] = {FR_PARAM_FLOAT, FR_PARAM_INT, FR_PARAM_BOOL, FR_PARAM_VEC3,
+                                   FR_PARAM_COLOR};
+    const char* keys[] = {"power", "iterations", "animate", "offset", "tint"};
+    for (int i = 0; i < 5; ++i) {
+      ParamInfo p;
+      p.key = p.name = keys[i];
+      p.type = types[i];
+      for (int c = 0; c < 3; ++c) {
+        p.min_value.v[c] = types[i] == FR_PARAM_BOOL || types[i] == FR_PARAM_COLOR ? 0 : -10;
+        p.max_value.v[c] = types[i] == FR_PARAM_BOOL || types[i] == FR_PARAM_COLOR ? 1 : 10;
+      }
+      s.params.push_back(p);
+    }
+    s.camera.struct_size = sizeof(fr_camera);
+    s.camera.eye[2] = 5;
+    s.camera.up[1] = 1;
+    s.camera.fov_deg = 45;
+    return s;
+  }();
+  std::vector<PathProblem> problems;
+  const auto path = parse_camera_path(std::string(reinterpret_cast<const char*>(data), size),
+                                      "fuzz.toml", scene, &problems);
+  for (const auto& p : problems) (void)p.to_string();
+  if (!path) return 0;
+  const double span = path->end_s() - path->start_s();
+  for (int i = -1; i <= 33; ++i) {
+    const PathSample s = sample_camera_path(*path, scene, path->start_s() + span * i / 32.0);
+    (void)check_camera(s.camera);
+  }
   return 0;
 }
 

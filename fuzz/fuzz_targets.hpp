@@ -26,6 +26,9 @@ int fuzz_command_line(const uint8_t* data, size_t size);
 // checked as the host does (plugin/scene_checks.hpp): the host trusts no byte of it.
 int fuzz_scene_descriptor(const uint8_t* data, size_t size);
 
+// A camera path file (path/camera_path.hpp) for a scene with a parameter of each type, parsed,
+// checked and, when it is a path, sampled across its length.
+int fuzz_camera_path(const uint8_t* data, size_t size);
 // A plugin's entry and descriptor as it lies in the plugin's memory (counts, sizes, strings,
 // parameter tables, camera, lights, all from the bytes), read by the loader's copy_descriptor
 // (plugin/descriptor_copy.hpp), the only code that reads plugin memory.
@@ -36,11 +39,9 @@ struct FuzzTarget {
   int (*run)(const uint8_t* data, size_t size);
 };
 inline constexpr FuzzTarget kFuzzTargets[] = {
-    {"settings_file", fuzz_settings_file},
-    {"set_override", fuzz_set_override},
-    {"command_line", fuzz_command_line},
-    {"scene_descriptor", fuzz_scene_descriptor},
-    {"scene_desc_copy", fuzz_scene_desc_copy},
+    {"settings_file", fuzz_settings_file},     {"set_override", fuzz_set_override},
+    {"command_line", fuzz_command_line},       {"scene_descriptor", fuzz_scene_descriptor},
+    {"scene_desc_copy", fuzz_scene_desc_copy}, {"camera_path", fuzz_camera_path},
 };
 
 }  // namespace fr

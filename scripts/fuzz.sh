@@ -9,7 +9,7 @@ fractalis_install_packages
 seconds="${1:-20}"
 shift || true
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(settings_file set_override command_line scene_descriptor scene_desc_copy)
+[ ${#targets[@]} -eq 0 ] && targets=(settings_file set_override command_line scene_descriptor scene_desc_copy camera_path)
 
 FRACTALIS_BUILD="$FRACTALIS_ROOT/build-fuzz"
 if [ ! -f "$FRACTALIS_BUILD/CMakeCache.txt" ]; then
