@@ -108,6 +108,42 @@ TEST(Cli, LongAndHostileValuesAreEchoedShort) {
   EXPECT_NE(escape.err.find("unknown scene '\\x1b]0;owned\\x07'"), std::string::npos) << escape.err;
 }
 
+// render --path: a keyframe's time renders exactly what that keyframe's view and parameters
+// given as options render; half-way is neither; a bad file is FILE:LINE and exit code 2.
+TEST(Cli, RenderAtATimeOfACameraPath) {
+  const auto dir = test::fresh_dir("cli_path");
+  const auto path = dir / "path.toml";
+  std::ofstream(path) << "[[keyframe]]\ntime_s = 0\neye = [0.5, -2.5, 1.2]\n"
+                         "target = [0, 0, 0]\n[keyframe.params]\npower = 6\n"
+                         "[[keyframe]]\ntime_s = 2\neye = [2.6, 0.3, 0.4]\ntarget = [0, 0.1, 0]\n"
+                         "fov_deg = 30\n";
+  auto png = [&](const char* name) { return (dir / name).string(); };
+  const std::vector<std::string> common = {"render", "--scene", "mandelbulb", "--size", "48x32"};
+  auto render = [&](std::vector<std::string> extra, const char* name) {
+    std::vector<std::string> args = common;
+    args.insert(args.end(), extra.begin(), extra.end());
+    args.insert(args.end(), {"--out", png(name)});
+    const CliRun r = run(args);
+    EXPECT_EQ(r.code, 0) << r.err;
+    return test::read_file(png(name));
+  };
+  const std::string at_start = render({"--path", path.string()}, "start.png");
+  const std::string by_hand =
+      render({"--eye", "0.5,-2.5,1.2", "--target", "0,0,0", "--param", "power=6"}, "hand.png");
+  EXPECT_FALSE(at_start.empty());
+  EXPECT_EQ(at_start, by_hand) << "the first keyframe is the view it names";
+  const std::string at_end = render({"--path", path.string(), "--time", "2"}, "end.png");
+  const std::string end_by_hand =
+      render({"--eye", "2.6,0.3,0.4", "--target", "0,0.1,0", "--fov", "30", "--param", "power=6"},
+             "end_hand.png");
+  EXPECT_EQ(at_end, end_by_hand) << "power 6 carries over to the second keyframe";
+  EXPECT_NE(render({"--path", path.string(), "--time", "1"}, "mid.png"), at_start);
+  std::ofstream(dir / "bad.toml") << "[[keyframe]]\ntime_s = 0\neye = [0, 0, 3]\n"
+                                     "target = [0, 0, 0]\n";
+  expect_usage_error({"render", "--path", (dir / "bad.toml").string()},
+                     "bad.toml:1: a path needs at least two keyframes");
+}
+
 TEST(Cli, HelpAndVersion) {
   for (const char* command : {"render", "bench", "list", "devices"}) {  // every command has --help
     const CliRun r = run({command, "--help"});

@@ -53,6 +53,9 @@ void report_rays(const FrameImage& image, const fr_camera& camera, const RenderS
 int command_render(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   auto specs = scene_option_specs();
   specs.push_back({"out", "FILE", false, "PNG file to write (default fractalis.png)"});
+  specs.push_back({"path", "FILE", false,
+                   "camera path (TOML keyframes): the view and parameters at --time (default: "
+                   "its first keyframe); --eye, --param and the like still override"});
   specs.push_back({"help", nullptr, false, "show this help"});
   auto options = parse_options("render", args, specs);
   if (options.has("help")) {

@@ -1,6 +1,7 @@
 #include "cli/scene_setup.hpp"
 
 #include "io/echo.hpp"
+#include "path/camera_path.hpp"
 #include "render/kernel_cache.hpp"
 #include "render/memory_budget.hpp"
 
@@ -274,6 +275,21 @@ DeviceInfo choose_device(const Settings& settings, const ParsedOptions& options)
 
 namespace fr {
 
+void apply_camera_path(const SceneInfo& info, const std::string& file, const ParsedOptions& options,
+                       SceneState& state) {
+  std::vector<PathProblem> problems;
+  const auto path = load_camera_path(file, info, &problems);
+  if (!path) {
+    std::string message = "--path: " + problems.front().to_string();
+    if (problems.size() > 1) message += " (and " + std::to_string(problems.size() - 1) + " more)";
+    throw UsageError(message);
+  }
+  if (!options.has("time")) state.time_s = path->start_s();
+  const PathSample sample = sample_camera_path(*path, info, state.time_s);
+  state.camera = sample.camera;
+  state.params = sample.params;
+}
+
 void check_memory(const RenderSettings& render, const DeviceInfo& device, bool all_passes) {
   const auto need = render_memory_need(render.width_px, render.height_px, all_passes);
   if (const std::string problem = memory_problem(need, device); !problem.empty())
@@ -291,8 +307,9 @@ PreparedScene prepare_scene(const ParsedOptions& options) {
   const auto outcomes = load_plugins(folders, p.settings.plugins);
   p.scene = find_scene(outcomes, options.get("scene").value_or("mandelbulb"));
   p.state = make_default_state(p.scene->info);
-  apply_scene_overrides(p.scene->info, options, p.state);
   if (auto t = options.get("time")) p.state.time_s = parse_finite("--time", *t);
+  if (auto file = options.get("path")) apply_camera_path(p.scene->info, *file, options, p.state);
+  apply_scene_overrides(p.scene->info, options, p.state);
   p.device = choose_device(p.settings, options);
   if (p.render.precision == Precision::Double && !p.device.has_fp64)
     throw UsageError("--precision double: device " + p.device.name + " has no double precision");

@@ -71,6 +71,12 @@ struct PreparedScene {
 // scene's create callback fails.
 PreparedScene prepare_scene(const ParsedOptions& options);
 
+// Sets `state`'s camera and parameters from the camera path `file` (path/camera_path.hpp) at
+// the state's time, or at the path's start without --time. Throws a UsageError with the file's
+// FILE:LINE problem.
+void apply_camera_path(const SceneInfo& info, const std::string& file, const ParsedOptions& options,
+                       SceneState& state);
+
 // Throws a UsageError naming the limit when an image of the settings' size cannot be rendered on
 // `device` in this process (render/memory_budget.hpp); `all_passes`: every pass is read back.
 void check_memory(const RenderSettings& render, const DeviceInfo& device, bool all_passes);
