@@ -123,6 +123,23 @@ TEST(ResourceLimits, CacheCommandShowsAndClears) {
   EXPECT_NE(test::read_file(out).find("cleared"), std::string::npos) << test::read_file(out);
   EXPECT_EQ(folder_bytes(kernels), 0u);
   EXPECT_FALSE(std::filesystem::exists(kernels));
+  // A POCL_CACHE_DIR the user set is theirs: neither cleared nor trimmed.
+  const auto theirs = home / "theirs";
+  // Over the 16 MiB bound the render below sets, and old: a trim would take it first.
+  make_file(theirs / "AB" / "PROGRAM" / "program.bc", 17u << 20, std::time(nullptr) - 86400);
+  const std::string their_env = "env POCL_CACHE_DIR=" + theirs.string() +
+                                " ASAN_OPTIONS=detect_leaks=0 XDG_CACHE_HOME=" + home.string() +
+                                " ";
+  ASSERT_EQ(std::system((their_env + exe + " cache --clear > " + out.string()).c_str()), 0);
+  EXPECT_NE(test::read_file(out).find("which you set: not fractalis's to clear or bound"),
+            std::string::npos)
+      << test::read_file(out);
+  ASSERT_EQ(std::system((their_env + exe + " render --scene menger --size 8x8 --set " +
+                         "cache.kernel_cache_mib=16 --out " + (home / "t.png").string() +
+                         " > /dev/null 2>&1")
+                            .c_str()),
+            0);
+  EXPECT_TRUE(std::filesystem::exists(theirs / "AB" / "PROGRAM" / "program.bc"));
 }
 
 }  // namespace

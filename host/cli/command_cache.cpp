@@ -36,7 +36,7 @@ int command_cache(const std::vector<std::string>& args, std::ostream& out,
   }
   const char* pocl = std::getenv("POCL_CACHE_DIR");
   // main() set POCL_CACHE_DIR to ours unless the user had set it: then the kernels are theirs.
-  const bool kernels_are_ours = kernel_cache_dir() == base / "kernels";
+  const bool kernels_are_ours = kernel_cache_is_ours();
   out << "cache folder: " << base.string() << "\n";
   int failures = 0;
   for (const CacheFolder& folder : cache_folders()) {

@@ -258,8 +258,9 @@ RenderSettings render_settings_from(const Settings& settings, const ParsedOption
 
 DeviceInfo choose_device(const Settings& settings, const ParsedOptions& options) {
   // OpenCL work starts here: first keep the compiled-kernel cache within its bound.
-  trim_kernel_cache(kernel_cache_dir(), static_cast<uint64_t>(settings.cache.kernel_cache_mib)
-                                            << 20);
+  if (kernel_cache_is_ours())
+    trim_kernel_cache(kernel_cache_dir(), static_cast<uint64_t>(settings.cache.kernel_cache_mib)
+                                              << 20);
   const std::string selector = options.get("device").value_or(settings.device);
   const auto devices = list_devices();
   if (devices.empty())

@@ -35,6 +35,11 @@ fs::path kernel_cache_dir() {
   return base.empty() ? base : base / "kernels";
 }
 
+bool kernel_cache_is_ours() {
+  const auto base = fractalis_cache_dir();
+  return !base.empty() && kernel_cache_dir() == base / "kernels";
+}
+
 void use_kernel_cache_dir() {
   if (const char* pocl = std::getenv("POCL_CACHE_DIR"); pocl && *pocl) return;
   const auto dir = kernel_cache_dir();

@@ -19,6 +19,10 @@ namespace fr {
 // <fractalis_cache_dir()>/kernels.
 std::filesystem::path kernel_cache_dir();
 
+// True when the kernel cache is fractalis's own folder: a POCL_CACHE_DIR the user set elsewhere
+// is theirs, and fractalis neither trims nor clears it.
+bool kernel_cache_is_ours();
+
 // Sets POCL_CACHE_DIR to kernel_cache_dir() unless the user set it. Call before any OpenCL call
 // (the platform reads it once, when it starts).
 void use_kernel_cache_dir();
