@@ -86,22 +86,6 @@ bool write_all(int fd, std::string_view bytes) {
   return true;
 }
 
-// Writes through to a character device or FIFO: no temporary file, nothing replaced.
-bool write_through(const std::filesystem::path& path, std::string_view bytes, std::string* error) {
-  const int fd = open(path.c_str(), O_WRONLY | O_CLOEXEC | O_NOCTTY);
-  if (fd < 0) {
-    *error = "cannot write " + path.string() + ": " + std::strerror(errno);
-    return false;
-  }
-  const bool ok = write_all(fd, bytes);
-  const int write_errno = errno;
-  if (close(fd) != 0 || !ok) {
-    *error = "cannot write " + path.string() + ": " + std::strerror(ok ? errno : write_errno);
-    return false;
-  }
-  return true;
-}
-
 }  // namespace
 
 std::string output_problem(const std::filesystem::path& path) {
@@ -124,80 +108,110 @@ bool is_standard_output(const std::filesystem::path& path) {
          file.st_dev == out.st_dev && file.st_ino == out.st_ino;
 }
 
-bool write_file_atomic(const std::filesystem::path& path, std::string_view bytes,
-                       std::string* error) {
+std::unique_ptr<OutputFile> OutputFile::open(const std::filesystem::path& path,
+                                             std::string* error) {
   if (const std::string problem = output_problem(path); !problem.empty()) {
     *error = "cannot write " + path.string() + ": it " + problem;
-    return false;
+    return nullptr;
   }
-  std::filesystem::path real = path;
-  mode_t mode = 0;
+  std::unique_ptr<OutputFile> out(new OutputFile());
+  out->path_ = out->real_ = path;
   struct stat st {};
   if (stat(path.c_str(), &st) == 0) {
-    if (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode)) return write_through(path, bytes, error);
-    mode = st.st_mode & 07777;
+    if (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode)) {
+      // Written through: no temporary file, nothing replaced.
+      out->fd_ = ::open(path.c_str(), O_WRONLY | O_CLOEXEC | O_NOCTTY);
+      if (out->fd_ < 0) {
+        *error = "cannot write " + path.string() + ": " + std::strerror(errno);
+        return nullptr;
+      }
+      return out;
+    }
+    out->mode_ = st.st_mode & 07777;
     struct stat link {};
     if (lstat(path.c_str(), &link) == 0 && S_ISLNK(link.st_mode)) {
       std::error_code ec;
-      real = std::filesystem::canonical(path, ec);  // the link's target is replaced, not the link
+      out->real_ = std::filesystem::canonical(path, ec);  // the link's target is replaced
       if (ec) {
         *error = "cannot write " + path.string() + ": " + ec.message();
-        return false;
+        return nullptr;
       }
     }
   } else {
-    mode = new_file_mode();
+    out->mode_ = new_file_mode();
   }
-  const std::filesystem::path dir = real.has_parent_path() ? real.parent_path() : ".";
+  const std::filesystem::path dir = out->real_.has_parent_path() ? out->real_.parent_path() : ".";
   // The temporary file's name is registered for the signal handler before the file exists: a
   // signal may be delivered to any thread, so blocking it in this one would not close the gap
   // between creating the file and registering it. (Removing a name not yet created is harmless;
   // the pid in the name keeps it from being another process's file.)
-  std::string tmpl;
-  int fd = -1, slot = -1, create_errno = 0;
-  for (int attempt = 0; attempt < 100 && fd < 0; ++attempt) {
+  int create_errno = 0;
+  for (int attempt = 0; attempt < 100 && out->fd_ < 0; ++attempt) {
     char suffix[40];
     std::snprintf(suffix, sizeof suffix, ".%ld.%08x", static_cast<long>(getpid()),
                   static_cast<unsigned>(random_bits()));
-    std::string hidden = real.filename().string();  // built by appending: GCC 12's -Wrestrict
-    hidden.insert(hidden.begin(), '.');             // misfires on "." + string
+    std::string hidden = out->real_.filename().string();  // appended: GCC 12's -Wrestrict
+    hidden.insert(hidden.begin(), '.');                   // misfires on "." + string
     hidden += suffix;
-    tmpl = (dir / hidden).string();
-    slot = register_temp(tmpl);
-    fd = open(tmpl.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+    out->temp_ = (dir / hidden).string();
+    out->slot_ = register_temp(out->temp_);
+    out->fd_ = ::open(out->temp_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
     create_errno = errno;
-    if (fd < 0) unregister_temp(slot);
-    if (fd < 0 && create_errno != EEXIST) break;
+    if (out->fd_ < 0) {
+      unregister_temp(out->slot_);
+      out->slot_ = -1;
+      if (create_errno != EEXIST) break;
+    }
   }
-  if (fd < 0) {
+  if (out->fd_ < 0) {
     *error = "cannot write " + path.string() + ": cannot create a temporary file in " +
              dir.string() + ": " + std::strerror(create_errno);
-    return false;
+    out->temp_.clear();
+    return nullptr;
   }
+  return out;
+}
+
+bool OutputFile::write(std::string_view bytes, std::string* error) {
+  if (write_all(fd_, bytes)) return true;
+  *error = "cannot write " + path_.string() + ": write failed: " + std::strerror(errno);
+  return false;
+}
+
+bool OutputFile::commit(std::string* error) {
   auto fail = [&](const char* what) {
-    *error = "cannot write " + path.string() + ": " + what + ": " + std::strerror(errno);
-    close(fd);
-    unlink(tmpl.c_str());
-    unregister_temp(slot);
+    *error = "cannot write " + path_.string() + ": " + what + ": " + std::strerror(errno);
     return false;
   };
-  if (!write_all(fd, bytes)) return fail("write failed");
-  if (fchmod(fd, mode) != 0) return fail("chmod failed");
-  if (fsync(fd) != 0) return fail("fsync failed");
-  if (close(fd) != 0) {
-    *error = "cannot write " + path.string() + ": close failed: " + std::strerror(errno);
-    unlink(tmpl.c_str());
-    unregister_temp(slot);
-    return false;
+  if (temp_.empty()) {  // written through
+    const int fd = fd_;
+    fd_ = -1;
+    done_ = true;
+    return close(fd) == 0 || fail("close failed");
   }
-  if (rename(tmpl.c_str(), real.c_str()) != 0) {
-    *error = "cannot write " + path.string() + ": rename failed: " + std::strerror(errno);
-    unlink(tmpl.c_str());
-    unregister_temp(slot);
-    return false;
-  }
-  unregister_temp(slot);
+  if (fchmod(fd_, static_cast<mode_t>(mode_)) != 0) return fail("chmod failed");
+  if (fsync(fd_) != 0) return fail("fsync failed");
+  const int fd = fd_;
+  fd_ = -1;
+  if (close(fd) != 0) return fail("close failed");
+  if (rename(temp_.c_str(), real_.c_str()) != 0) return fail("rename failed");
+  unregister_temp(slot_);
+  done_ = true;
   return true;
+}
+
+OutputFile::~OutputFile() {
+  if (fd_ >= 0) close(fd_);
+  if (!done_ && !temp_.empty()) {
+    unlink(temp_.c_str());
+    unregister_temp(slot_);
+  }
+}
+
+bool write_file_atomic(const std::filesystem::path& path, std::string_view bytes,
+                       std::string* error) {
+  auto out = OutputFile::open(path, error);
+  return out && out->write(bytes, error) && out->commit(error);
 }
 
 void install_temp_file_cleanup() {

@@ -16,6 +16,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <string_view>
 
@@ -27,6 +28,32 @@ std::string output_problem(const std::filesystem::path& path);
 // True when `path` is this process's standard output (/dev/stdout, /proc/self/fd/1, or the file
 // or pipe stdout goes to): then a command's own report goes to stderr, not into the file.
 bool is_standard_output(const std::filesystem::path& path);
+
+// An output file written piece by piece (a poster's PNG, a band of rows at a time), with the
+// same rules: the pieces go to the temporary file (or straight through to a FIFO or character
+// device), and only commit() puts the file in place; destroyed without commit() — an error, an
+// exception — it removes the temporary file.
+class OutputFile {
+ public:
+  // Nullptr with *error (naming the path and why) when `path` cannot be written.
+  static std::unique_ptr<OutputFile> open(const std::filesystem::path& path, std::string* error);
+  ~OutputFile();
+  OutputFile(const OutputFile&) = delete;
+  OutputFile& operator=(const OutputFile&) = delete;
+
+  bool write(std::string_view bytes, std::string* error);
+  bool commit(std::string* error);  // flush to disk and rename into place
+
+ private:
+  OutputFile() = default;
+  std::filesystem::path path_;  // as given, for messages
+  std::filesystem::path real_;  // what the rename replaces (a symlink's target)
+  std::string temp_;            // empty when writing through
+  int fd_ = -1;
+  int slot_ = -1;
+  unsigned mode_ = 0;
+  bool done_ = false;
+};
 
 // Writes `bytes` to `path` as described above. On failure returns false, sets *error (naming the
 // path and the reason) and leaves any existing file at `path` untouched.

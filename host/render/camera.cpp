@@ -29,6 +29,18 @@ CameraRays make_camera_rays(const fr_camera& c, int k, int m) {
   return r;
 }
 
+CameraRays window_rays(const CameraRays& full, int x0, int y0, int w, int h) {
+  // The seed counts pixels from the image's far corner (i = W - 1 - x): the window's first
+  // pixel direction is the full image's, stepped by the columns and rows beyond the window.
+  CameraRays r = full;
+  r.first_pixel_dir = full.first_pixel_dir +
+                      full.pixel_step_x * static_cast<double>(full.width_px - x0 - w) +
+                      full.pixel_step_y * static_cast<double>(full.height_px - y0 - h);
+  r.width_px = w;
+  r.height_px = h;
+  return r;
+}
+
 glm::dvec3 camera_ray_dir(const CameraRays& r, double x, double y) {
   const double i = (r.width_px - 1) - x, j = (r.height_px - 1) - y;
   return glm::normalize(r.first_pixel_dir + r.pixel_step_x * i + r.pixel_step_y * j);

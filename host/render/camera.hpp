@@ -38,6 +38,11 @@ struct CameraRays {
 // check_camera (scene/scene_data.hpp).
 CameraRays make_camera_rays(const fr_camera& camera, int width_px, int height_px);
 
+// The rays of the w x h window at (x0, y0) (top-left, in pixels) of the image `full` describes,
+// as an image of its own: the same ray through every pixel, so windows rendered apart and put
+// together are the whole image (posters are rendered so, a band of rows at a time).
+CameraRays window_rays(const CameraRays& full, int x0, int y0, int w, int h);
+
 // Unit direction of the ray through image pixel (x, y), row 0 at the top; the same arithmetic
 // as kernels/rays.cl, in double.
 glm::dvec3 camera_ray_dir(const CameraRays& rays, double x, double y);

@@ -74,9 +74,19 @@ inline const char* precision_name(Precision p) {
   return enum_name(p);
 }
 
+// A window of a larger image: rendering it gives those pixels of the whole image exactly
+// (render/camera.hpp's window_rays). full_width_px 0: the image is the whole.
+struct ImageWindow {
+  int full_width_px = 0;
+  int full_height_px = 0;
+  int x0_px = 0;
+  int y0_px = 0;
+};
+
 struct RenderSettings {
-  int width_px = 1280;
+  int width_px = 1280;  // of the image rendered (the window's size when `window` is set)
   int height_px = 720;
+  ImageWindow window;
   int lanes = 0;  // 1, 4, 8 or 16; 0 picks the device's preferred width
   Precision precision = Precision::Auto;
   int samples = 1;                  // jittered samples accumulated per image (anti-aliasing)

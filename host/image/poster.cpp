@@ -1,0 +1,49 @@
+#include "image/poster.hpp"
+
+#include "image/png_stream.hpp"
+#include "render/precision.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace fr {
+
+PosterResult render_poster(ClRuntime& runtime, const SceneInfo& info, const SceneState& state,
+                           RenderSettings settings, const std::filesystem::path& file,
+                           uint64_t band_pixels, const std::function<void(int, int)>& progress) {
+  const int width = settings.width_px, height = settings.height_px;
+  PosterResult result;
+  settings.window = {};
+  settings.precision = resolve_precision(runtime, info, state, settings);
+  result.precision = settings.precision;
+  const int band_rows =
+      static_cast<int>(std::clamp<uint64_t>(band_pixels / static_cast<uint64_t>(width), 1, height));
+  result.bands = (height + band_rows - 1) / band_rows;
+
+  std::string error;
+  auto out = OutputFile::open(file, &error);
+  if (!out) throw std::runtime_error(error);
+  PngStream png(*out, width, height);
+  Renderer renderer(runtime);
+  FrameImage band;
+  for (int b = 0; b < result.bands; ++b) {
+    const int y0 = b * band_rows, rows = std::min(band_rows, height - y0);
+    RenderSettings s = settings;
+    s.height_px = rows;
+    s.window = {width, height, 0, y0};
+    for (int i = 0; i < std::max(1, s.samples); ++i) renderer.render_sample(info, state, s, i);
+    renderer.finish(s, Readback::DisplayAndSteps, band);
+    png.write_rows(band.rgba8.data(), rows);
+    const RayCounts counts = count_rays(band);
+    result.rays.hit += counts.hit;
+    result.rays.miss += counts.miss;
+    result.rays.out_of_steps += counts.out_of_steps;
+    result.rays.inside += counts.inside;
+    result.lanes = band.lanes;
+    if (progress) progress(b + 1, result.bands);
+  }
+  png.finish();
+  return result;
+}
+
+}  // namespace fr

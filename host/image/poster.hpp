@@ -1,0 +1,37 @@
+// poster.hpp — an image of any size up to 65535 x 65535, rendered a band of rows at a time and
+// streamed to a PNG (png_stream.hpp), so memory stays that of one band however large the image.
+//
+// Each band is a window of the whole image (render/camera.hpp's window_rays): the same ray
+// through every pixel as a render of the whole, so bands join without seams. Every band gets all
+// of settings.samples. Auto precision is decided once for the whole view, so that no band
+// switches precision on its own.
+#pragma once
+
+#include "render/renderer.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+
+namespace fr {
+
+// Pixels per band by default: 8 M (about 0.4 GB of device buffers and 0.2 GB on the host).
+constexpr uint64_t kPosterBandPixels = 8u << 20;
+
+struct PosterResult {
+  RayCounts rays;  // over the whole image
+  Precision precision = Precision::Float;
+  int lanes = 0;
+  int bands = 0;
+};
+
+// Renders `settings`' size of the scene in bands of at most `band_pixels` pixels (whole rows;
+// at least one row) and writes it to `file` as PNG, atomically. `progress(done, total)` is
+// called after each band. Throws std::runtime_error (rendering or writing); nothing is left at
+// `file` then.
+PosterResult render_poster(ClRuntime& runtime, const SceneInfo& info, const SceneState& state,
+                           RenderSettings settings, const std::filesystem::path& file,
+                           uint64_t band_pixels = kPosterBandPixels,
+                           const std::function<void(int, int)>& progress = nullptr);
+
+}  // namespace fr
