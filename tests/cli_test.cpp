@@ -52,8 +52,11 @@ TEST(Cli, UsageErrors) {
   expect_usage_error({"render", "--param", "power=40"}, "outside the range of 'power'");
   expect_usage_error({"render", "--param", "iterations=2.5"}, "not a whole number");
   expect_usage_error({"render", "--param", "animate_power=maybe"}, "expected true or false");
-  expect_usage_error({"render", "--size", "0x10"}, "--size width: 0 is outside [1, 16384]");
-  expect_usage_error({"render", "--size", "100000x100000"}, "outside [1, 16384]");
+  expect_usage_error({"render", "--size", "0x10"}, "--size width: 0 is outside [1, 65535]");
+  expect_usage_error({"render", "--size", "100000x100000"}, "outside [1, 65535]");
+  expect_usage_error({"render", "--size", "10x65536"},
+                     "--size height: 65536 is outside [1, 65535]");
+  expect_usage_error({"bench", "--size", "16385x10"}, "outside [1, 16384]");
   expect_usage_error({"render", "--size", "big"}, "is not WIDTHxHEIGHT");
   expect_usage_error({"render", "--eye", "1,2,3", "--target", "1,2,3"},
                      "camera: target equals eye");
@@ -142,6 +145,20 @@ TEST(Cli, RenderAtATimeOfACameraPath) {
                                      "target = [0, 0, 0]\n";
   expect_usage_error({"render", "--path", (dir / "bad.toml").string()},
                      "bad.toml:1: a path needs at least two keyframes");
+}
+
+// Over 8 M pixels, render goes in bands and streams the PNG: it says so, and the file decodes to
+// the size asked for.
+TEST(Cli, LargeRenderGoesInBands) {
+  const auto file = test::fresh_dir("cli_poster") / "big.png";
+  const CliRun r =
+      run({"render", "--scene", "menger", "--size", "4000x2200", "--out", file.string()});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("rendered menger 4000x2200 in 2 bands"), std::string::npos) << r.out;
+  int w = 0, h = 0, channels = 0;
+  ASSERT_TRUE(stbi_info(file.c_str(), &w, &h, &channels));
+  EXPECT_EQ(w, 4000);
+  EXPECT_EQ(h, 2200);
 }
 
 TEST(Cli, HelpAndVersion) {

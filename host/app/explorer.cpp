@@ -1,9 +1,9 @@
 #include "app/explorer.hpp"
 
+#include "image/poster.hpp"
 #include "render/memory_budget.hpp"
 #include "scene/vec3.hpp"
 
-#include "image/png_write.hpp"
 #include "render/de_probe.hpp"
 
 #include <spdlog/spdlog.h>
@@ -154,16 +154,25 @@ bool Explorer::screenshot(const std::filesystem::path& file, int width_px, int h
   s.height_px = height_px;
   s.samples = frames_.settings().full_quality_samples;
   SceneSlot& slot = current();
-  const auto need = render_memory_need(width_px, height_px, false);
+  if (width_px < 1 || height_px < 1 || width_px > 65535 || height_px > 65535) {
+    *error = "screenshot size " + std::to_string(width_px) + "x" + std::to_string(height_px) +
+             " is outside 1 to 65535 pixels a side";
+    return false;
+  }
+  // Rendered like `render` renders a poster: in bands, streamed to the PNG (image/poster.hpp),
+  // so a screenshot far larger than the window needs only a band's memory.
+  RenderSettings band = s;
+  band.height_px = static_cast<int>(std::clamp<uint64_t>(
+      kPosterBandPixels / static_cast<uint64_t>(std::max(width_px, 1)), 1, std::max(height_px, 1)));
+  const auto need = render_memory_need(band.width_px, band.height_px, false);
   if (const std::string problem = memory_problem(need, runtime_.device()); !problem.empty()) {
     *error = "screenshot at " + std::to_string(width_px) + "x" + std::to_string(height_px) + ": " +
              problem;
     return false;
   }
   try {
-    Renderer shot(runtime_);
-    const FrameImage img = shot.render(slot.scene->info, slot.state, s);
-    return write_png_atomic(file, img.width_px, img.height_px, img.rgba8, error);
+    render_poster(runtime_, slot.scene->info, slot.state, s, file);
+    return true;
   } catch (const std::exception& e) {
     *error = e.what();
     return false;

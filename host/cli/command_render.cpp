@@ -2,6 +2,7 @@
 #include "cli/scene_setup.hpp"
 #include "cli/watchdog.hpp"
 #include "image/png_write.hpp"
+#include "image/poster.hpp"
 #include "io/atomic_file.hpp"
 #include "render/camera.hpp"
 #include "render/memory_budget.hpp"
@@ -13,6 +14,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include <unistd.h>
 #include <chrono>
 #include <filesystem>
 #include <ostream>
@@ -48,6 +50,51 @@ void report_rays(const FrameImage& image, const fr_camera& camera, const RenderS
   }
 }
 
+// A size over kPosterBandPixels: rendered a band of rows at a time and streamed to the PNG
+// (image/poster.hpp), with a progress bar on a terminal.
+int render_in_bands(const PreparedScene& p, const std::string& out_file, std::ostream& report,
+                    std::ostream& err) {
+  const int width = p.render.width_px, height = p.render.height_px;
+  RenderSettings band = p.render;
+  band.height_px = static_cast<int>(
+      std::clamp<uint64_t>(kPosterBandPixels / static_cast<uint64_t>(width), 1, height));
+  check_memory(band, p.device, false);
+  ClRuntime runtime(p.device);
+  // The watchdog guards each band: a poster may take longer than render.watchdog_s in all.
+  Watchdog watchdog(p.render.watchdog_s, "rendering scene '" + p.scene->info.id + "'");
+  const bool terminal = isatty(STDERR_FILENO) != 0;
+  const auto start = std::chrono::steady_clock::now();
+  auto seconds = [&] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+  const PosterResult r = render_poster(
+      runtime, p.scene->info, p.state, p.render, out_file, kPosterBandPixels,
+      [&](int done, int total) {
+        watchdog.kick();
+        if (!terminal) return;
+        const int width_chars = 30, filled = width_chars * done / total;
+        const double left_s = seconds() / done * (total - done);
+        err << "\r[" << std::string(filled, '#') << std::string(width_chars - filled, '.')
+            << "] band " << done << "/" << total << ", " << static_cast<int>(left_s + 0.5)
+            << " s left " << std::flush;
+      });
+  watchdog.stop();
+  if (terminal) err << "\n";
+  report << "rendered " << p.scene->info.id << " " << width << "x" << height << " in " << r.bands
+         << " bands on " << p.device.name << " (lanes " << r.lanes << ", "
+         << precision_name(r.precision) << "): " << static_cast<int>(seconds() * 1000)
+         << " ms; wrote " << out_file << "\n";
+  report << "rays: " << r.rays.hit << " hit, " << r.rays.miss << " missed, " << r.rays.out_of_steps
+         << " out of steps, " << r.rays.inside << " started inside the surface\n";
+  const double total = static_cast<double>(width) * height;
+  if (100.0 * r.rays.out_of_steps / total > kOutOfStepsWarnPercent)
+    spdlog::warn(
+        "{:.2f}% of rays ran out of steps (render.max_steps = {}); each is shaded at its closest "
+        "approach or as a miss; raise render.max_steps",
+        100.0 * r.rays.out_of_steps / total, p.render.max_steps);
+  return 0;
+}
+
 }  // namespace
 
 int command_render(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
@@ -69,13 +116,16 @@ int command_render(const std::vector<std::string>& args, std::ostream& out, std:
   const std::string out_file = options.get("out").value_or("fractalis.png");
   // Checked before rendering, so a typo in the folder costs nothing.
   check_output_file("--out", out_file);
-  PreparedScene p = prepare_scene(options);
+  PreparedScene p = prepare_scene(options, kMaxPosterSide);
 
   std::string error;
   if (!p.instance->update(p.state, p.state.time_s, &error)) {
     spdlog::error("{}", error);
     return 1;
   }
+  std::ostream& report = is_standard_output(out_file) ? err : out;
+  if (static_cast<uint64_t>(p.render.width_px) * p.render.height_px > kPosterBandPixels)
+    return render_in_bands(p, out_file, report, err);
   check_memory(p.render, p.device, true);
   ClRuntime runtime(p.device);
   Renderer renderer(runtime);
@@ -98,7 +148,6 @@ int command_render(const std::vector<std::string>& args, std::ostream& out, std:
     return 1;
   }
   // `--out /dev/stdout | viewer`: the PNG is the output, the report goes to stderr.
-  std::ostream& report = is_standard_output(out_file) ? err : out;
   report << "rendered " << p.scene->info.id << " " << image.width_px << "x" << image.height_px
          << " on " << p.device.name << " (lanes " << image.lanes << ", "
          << precision_name(image.precision) << "): kernel build " << static_cast<int>(build_ms)

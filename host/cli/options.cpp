@@ -94,15 +94,15 @@ long long parse_integer(const std::string& what, const std::string& text, long l
   return v;
 }
 
-std::array<int, 2> parse_size(const std::string& what, const std::string& text) {
+std::array<int, 2> parse_size(const std::string& what, const std::string& text, int max_side) {
   auto x = text.find_first_of("xX");
   if (x == std::string::npos)
     throw UsageError(what + ": '" + echo(text) + "' is not WIDTHxHEIGHT (for example 1280x720)");
   std::array<int, 2> size{};
   for (int i = 0; i < 2; ++i) {
     const std::string part = i == 0 ? text.substr(0, x) : text.substr(x + 1);
-    size[i] = static_cast<int>(
-        parse_integer(what + (i == 0 ? " width" : " height"), part, 1, kMaxImageSide));
+    size[i] =
+        static_cast<int>(parse_integer(what + (i == 0 ? " width" : " height"), part, 1, max_side));
   }
   return size;
 }

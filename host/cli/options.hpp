@@ -39,7 +39,9 @@ ParsedOptions parse_options(const std::string& command, const std::vector<std::s
 std::string format_options(const std::vector<OptionSpec>& specs);
 
 // Value parsers; `what` names the option in messages ("--size").
-std::array<int, 2> parse_size(const std::string& what, const std::string& text);     // "WxH"
+// "WxH", each side in [1, max_side].
+std::array<int, 2> parse_size(const std::string& what, const std::string& text,
+                              int max_side = 16384);
 std::array<double, 3> parse_vec3(const std::string& what, const std::string& text);  // "x,y,z"
 double parse_finite(const std::string& what, const std::string& text);
 long long parse_integer(const std::string& what, const std::string& text, long long lo,
@@ -50,7 +52,10 @@ long long parse_integer(const std::string& what, const std::string& text, long l
 // one, a character device or FIFO). A UsageError names the option, the path and why otherwise.
 void check_output_file(const std::string& what, const std::string& path);
 
-// Largest accepted image side, in pixels (a 16384 x 16384 float image is already 4 GiB).
+// Largest image side rendered in one piece, in pixels (a 16384 x 16384 float image is already
+// 4 GiB): the explorer, bench, sweep.
 constexpr int kMaxImageSide = 16384;
+// Largest side `render` takes: larger images are rendered in bands (image/poster.hpp).
+constexpr int kMaxPosterSide = 65535;
 
 }  // namespace fr

@@ -231,10 +231,11 @@ void apply_scene_overrides(const SceneInfo& info, const ParsedOptions& options, 
   if (auto problem = check_camera(state.camera)) throw UsageError("camera: " + *problem);
 }
 
-RenderSettings render_settings_from(const Settings& settings, const ParsedOptions& options) {
+RenderSettings render_settings_from(const Settings& settings, const ParsedOptions& options,
+                                    int max_side) {
   RenderSettings r = settings.render;
   if (auto size = options.get("size")) {
-    auto wh = parse_size("--size", *size);
+    auto wh = parse_size("--size", *size, max_side);
     r.width_px = wh[0];
     r.height_px = wh[1];
   }
@@ -298,10 +299,10 @@ void check_memory(const RenderSettings& render, const DeviceInfo& device, bool a
                      std::to_string(render.height_px) + ": " + problem);
 }
 
-PreparedScene prepare_scene(const ParsedOptions& options) {
+PreparedScene prepare_scene(const ParsedOptions& options, int max_side) {
   PreparedScene p;
   p.settings = load_settings(options);
-  p.render = render_settings_from(p.settings, options);
+  p.render = render_settings_from(p.settings, options, max_side);
   const auto folders = plugin_folders(p.settings, options);
   if (folders.empty())
     throw std::runtime_error("no plugin folder found (build the plugins, or pass --plugins DIR)");

@@ -47,7 +47,8 @@ std::shared_ptr<const LoadedScene> find_scene(const std::vector<LoadOutcome>& ou
 void apply_scene_overrides(const SceneInfo& info, const ParsedOptions& options, SceneState& state);
 
 // --size, --lanes, --precision over the settings' render defaults.
-RenderSettings render_settings_from(const Settings& settings, const ParsedOptions& options);
+RenderSettings render_settings_from(const Settings& settings, const ParsedOptions& options,
+                                    int max_side = kMaxImageSide);
 
 // The device: --device, else settings' device.select, else the default rule.
 DeviceInfo choose_device(const Settings& settings, const ParsedOptions& options);
@@ -69,7 +70,7 @@ struct PreparedScene {
 // Settings, plugins (failures logged as warnings), scene (--scene, default mandelbulb), overrides,
 // device, and the scene's instance. Throws UsageError for bad input, runtime_error when the
 // scene's create callback fails.
-PreparedScene prepare_scene(const ParsedOptions& options);
+PreparedScene prepare_scene(const ParsedOptions& options, int max_side = kMaxImageSide);
 
 // Sets `state`'s camera and parameters from the camera path `file` (path/camera_path.hpp) at
 // the state's time, or at the path's start without --time. Throws a UsageError with the file's

@@ -12,6 +12,9 @@ PosterResult render_poster(ClRuntime& runtime, const SceneInfo& info, const Scen
                            RenderSettings settings, const std::filesystem::path& file,
                            uint64_t band_pixels, const std::function<void(int, int)>& progress) {
   const int width = settings.width_px, height = settings.height_px;
+  if (width < 1 || height < 1)
+    throw std::runtime_error("image size " + std::to_string(width) + "x" + std::to_string(height) +
+                             " has no pixels");
   PosterResult result;
   settings.window = {};
   settings.precision = resolve_precision(runtime, info, state, settings);
