@@ -162,8 +162,7 @@ bool Explorer::screenshot(const std::filesystem::path& file, int width_px, int h
   // Rendered like `render` renders a poster: in bands, streamed to the PNG (image/poster.hpp),
   // so a screenshot far larger than the window needs only a band's memory.
   RenderSettings band = s;
-  band.height_px = static_cast<int>(std::clamp<uint64_t>(
-      kPosterBandPixels / static_cast<uint64_t>(std::max(width_px, 1)), 1, std::max(height_px, 1)));
+  band.height_px = poster_band_rows(width_px, height_px);
   const auto need = render_memory_need(band.width_px, band.height_px, false);
   if (const std::string problem = memory_problem(need, runtime_.device()); !problem.empty()) {
     *error = "screenshot at " + std::to_string(width_px) + "x" + std::to_string(height_px) + ": " +

@@ -56,8 +56,7 @@ int render_in_bands(const PreparedScene& p, const std::string& out_file, std::os
                     std::ostream& err) {
   const int width = p.render.width_px, height = p.render.height_px;
   RenderSettings band = p.render;
-  band.height_px = static_cast<int>(
-      std::clamp<uint64_t>(kPosterBandPixels / static_cast<uint64_t>(width), 1, height));
+  band.height_px = poster_band_rows(width, height);
   check_memory(band, p.device, false);
   ClRuntime runtime(p.device);
   // The watchdog guards each band: a poster may take longer than render.watchdog_s in all.

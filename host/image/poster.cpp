@@ -8,6 +8,12 @@
 
 namespace fr {
 
+int poster_band_rows(int width_px, int height_px, uint64_t band_pixels) {
+  return static_cast<int>(
+      std::clamp<uint64_t>(band_pixels / static_cast<uint64_t>(std::max(width_px, 1)), 1,
+                           static_cast<uint64_t>(std::max(height_px, 1))));
+}
+
 PosterResult render_poster(ClRuntime& runtime, const SceneInfo& info, const SceneState& state,
                            RenderSettings settings, const std::filesystem::path& file,
                            uint64_t band_pixels, const std::function<void(int, int)>& progress) {
@@ -19,8 +25,7 @@ PosterResult render_poster(ClRuntime& runtime, const SceneInfo& info, const Scen
   settings.window = {};
   settings.precision = resolve_precision(runtime, info, state, settings);
   result.precision = settings.precision;
-  const int band_rows =
-      static_cast<int>(std::clamp<uint64_t>(band_pixels / static_cast<uint64_t>(width), 1, height));
+  const int band_rows = poster_band_rows(width, height, band_pixels);
   result.bands = (height + band_rows - 1) / band_rows;
 
   std::string error;

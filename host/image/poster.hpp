@@ -18,6 +18,9 @@ namespace fr {
 // Pixels per band by default: 8 M (about 0.4 GB of device buffers and 0.2 GB on the host).
 constexpr uint64_t kPosterBandPixels = 8u << 20;
 
+// Rows per band for a width_px x height_px poster: whole rows within band_pixels, at least one.
+int poster_band_rows(int width_px, int height_px, uint64_t band_pixels = kPosterBandPixels);
+
 struct PosterResult {
   RayCounts rays;  // over the whole image
   Precision precision = Precision::Float;
