@@ -107,7 +107,8 @@ int command_render(const std::vector<std::string>& args, std::ostream& out, std:
   if (options.has("help")) {
     out << "usage: fractalis render [--scene ID] [--size WxH] [--out FILE] [options]\n\n"
            "Renders one frame of a scene and writes it as a PNG (atomically: a temporary file,\n"
-           "then a rename).\n\n"
+           "then a rename). Sizes go up to 65535 a side; over 8 M pixels the image is rendered\n"
+           "a band of rows at a time and streamed to the PNG, in a band's memory.\n\n"
         << format_options(specs) << "\nexample:\n"
         << "  fractalis render --scene mandelbulb --size 1280x720 --param power=6 --out bulb.png\n";
     return 0;
