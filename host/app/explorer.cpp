@@ -129,8 +129,9 @@ const FrameImage* Explorer::render(int window_width_px, int window_height_px) {
     renderer_.finish(s, plan.sample_index == 0 ? Readback::DisplayAndSteps : Readback::Display,
                      last_);
   } catch (const std::exception& e) {
+    // Said once, not every frame while it keeps failing.
+    if (slot.error != e.what()) spdlog::error("{}", e.what());
     slot.error = e.what();
-    spdlog::error("{}", e.what());
     return nullptr;
   }
   stats_.frame_ms =
