@@ -12,6 +12,8 @@ FRACTALIS_PACKAGES=(
   xvfb xauth
   libgtest-dev libbenchmark-dev
   nlohmann-json3-dev
+  libavcodec-dev libavformat-dev libavutil-dev libswscale-dev ffmpeg
+  libopenexr-dev
   clang libclang-rt-14-dev
 )
 

@@ -22,7 +22,8 @@ const char* kUsage =
     "\n"
     "commands:\n"
     "  explore   open the explorer window and fly through a scene\n"
-    "  render    render a scene to a PNG file\n"
+    "  render    render a scene to a PNG file (or a poster of up to 65535 pixels a side)\n"
+    "  animate   render a scene along a camera path to a video or a folder of PNGs\n"
     "  bench     time frames of a scene (median, min, max)\n"
     "  sweep     measure image error against frame time over the quality knobs\n"
     "  list      list scene plugins, their parameters, or why they failed to load\n"
@@ -71,6 +72,7 @@ int run_command(const std::string& command, const std::vector<std::string>& rest
   try {
     if (command == "explore") return command_explore(rest, out, err);
     if (command == "render") return command_render(rest, out, err);
+    if (command == "animate") return command_animate(rest, out, err);
     if (command == "bench") return command_bench(rest, out, err);
     if (command == "sweep") return command_sweep(rest, out, err);
     if (command == "list") return command_list(rest, out, err);

@@ -1,4 +1,5 @@
 #include "cli/commands.hpp"
+#include "cli/progress.hpp"
 #include "cli/scene_setup.hpp"
 #include "cli/watchdog.hpp"
 #include "image/png_write.hpp"
@@ -61,24 +62,18 @@ int render_in_bands(const PreparedScene& p, const std::string& out_file, std::os
   ClRuntime runtime(p.device);
   // The watchdog guards each band: a poster may take longer than render.watchdog_s in all.
   Watchdog watchdog(p.render.watchdog_s, "rendering scene '" + p.scene->info.id + "'");
-  const bool terminal = isatty(STDERR_FILENO) != 0;
   const auto start = std::chrono::steady_clock::now();
+  Progress progress(err, "band", (height + band.height_px - 1) / band.height_px);
+  const PosterResult r = render_poster(runtime, p.scene->info, p.state, p.render, out_file,
+                                       kPosterBandPixels, [&](int done, int) {
+                                         watchdog.kick();
+                                         progress.update(done);
+                                       });
+  watchdog.stop();
+  progress.finish();
   auto seconds = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
-  const PosterResult r = render_poster(
-      runtime, p.scene->info, p.state, p.render, out_file, kPosterBandPixels,
-      [&](int done, int total) {
-        watchdog.kick();
-        if (!terminal) return;
-        const int width_chars = 30, filled = width_chars * done / total;
-        const double left_s = seconds() / done * (total - done);
-        err << "\r[" << std::string(filled, '#') << std::string(width_chars - filled, '.')
-            << "] band " << done << "/" << total << ", " << static_cast<int>(left_s + 0.5)
-            << " s left " << std::flush;
-      });
-  watchdog.stop();
-  if (terminal) err << "\n";
   report << "rendered " << p.scene->info.id << " " << width << "x" << height << " in " << r.bands
          << " bands on " << p.device.name << " (lanes " << r.lanes << ", "
          << precision_name(r.precision) << "): " << static_cast<int>(seconds() * 1000)

@@ -9,6 +9,7 @@
 namespace fr {
 
 int command_render(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+int command_animate(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 int command_bench(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 int command_list(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 int command_explore(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);

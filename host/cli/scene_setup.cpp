@@ -277,17 +277,22 @@ DeviceInfo choose_device(const Settings& settings, const ParsedOptions& options)
 
 namespace fr {
 
-void apply_camera_path(const SceneInfo& info, const std::string& file, const ParsedOptions& options,
-                       SceneState& state) {
+CameraPath load_path_option(const SceneInfo& info, const std::string& file) {
   std::vector<PathProblem> problems;
-  const auto path = load_camera_path(file, info, &problems);
+  auto path = load_camera_path(file, info, &problems);
   if (!path) {
     std::string message = "--path: " + problems.front().to_string();
     if (problems.size() > 1) message += " (and " + std::to_string(problems.size() - 1) + " more)";
     throw UsageError(message);
   }
-  if (!options.has("time")) state.time_s = path->start_s();
-  const PathSample sample = sample_camera_path(*path, info, state.time_s);
+  return std::move(*path);
+}
+
+void apply_camera_path(const SceneInfo& info, const std::string& file, const ParsedOptions& options,
+                       SceneState& state) {
+  const CameraPath path = load_path_option(info, file);
+  if (!options.has("time")) state.time_s = path.start_s();
+  const PathSample sample = sample_camera_path(path, info, state.time_s);
   state.camera = sample.camera;
   state.params = sample.params;
 }

@@ -4,6 +4,7 @@
 
 #include "app/explorer.hpp"
 #include "cli/options.hpp"
+#include "path/camera_path.hpp"
 #include "plugin/plugin_loader.hpp"
 #include "plugin/scene_instance.hpp"
 #include "render/device.hpp"
@@ -71,6 +72,9 @@ struct PreparedScene {
 // device, and the scene's instance. Throws UsageError for bad input, runtime_error when the
 // scene's create callback fails.
 PreparedScene prepare_scene(const ParsedOptions& options, int max_side = kMaxImageSide);
+
+// The camera path `file` for scene `info`, or a UsageError "--path: FILE:LINE: problem".
+CameraPath load_path_option(const SceneInfo& info, const std::string& file);
 
 // Sets `state`'s camera and parameters from the camera path `file` (path/camera_path.hpp) at
 // the state's time, or at the path's start without --time. Throws a UsageError with the file's

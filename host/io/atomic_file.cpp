@@ -173,8 +173,22 @@ std::unique_ptr<OutputFile> OutputFile::open(const std::filesystem::path& path,
 }
 
 bool OutputFile::write(std::string_view bytes, std::string* error) {
-  if (write_all(fd_, bytes)) return true;
+  if (write_all(fd_, bytes)) {
+    position_ += bytes.size();
+    return true;
+  }
   *error = "cannot write " + path_.string() + ": write failed: " + std::strerror(errno);
+  return false;
+}
+
+bool OutputFile::seek(uint64_t offset, std::string* error) {
+  if (seekable() && lseek(fd_, static_cast<off_t>(offset), SEEK_SET) >= 0) {
+    position_ = offset;
+    return true;
+  }
+  *error = "cannot write " + path_.string() + ": " +
+           (seekable() ? std::string("seek failed: ") + std::strerror(errno)
+                       : std::string("this format must seek, and a pipe or device cannot"));
   return false;
 }
 

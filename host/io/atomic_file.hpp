@@ -44,6 +44,13 @@ class OutputFile {
   bool write(std::string_view bytes, std::string* error);
   bool commit(std::string* error);  // flush to disk and rename into place
 
+  // Formats that patch their header or index after the data (MP4, OpenEXR) need to move within
+  // the file: possible for a temporary file, not for a pipe or a character device written
+  // through. position() is the byte offset the next write goes to.
+  bool seekable() const { return !temp_.empty(); }
+  bool seek(uint64_t offset, std::string* error);
+  uint64_t position() const { return position_; }
+
  private:
   OutputFile() = default;
   std::filesystem::path path_;  // as given, for messages
@@ -52,6 +59,7 @@ class OutputFile {
   int fd_ = -1;
   int slot_ = -1;
   unsigned mode_ = 0;
+  uint64_t position_ = 0;
   bool done_ = false;
 };
 

@@ -5,6 +5,7 @@
 #include "scene/camera_up.hpp"
 #include "scene/vec3.hpp"
 
+#include <spdlog/fmt/fmt.h>
 #include <toml++/toml.h>
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -192,7 +193,9 @@ std::optional<CameraPath> parse_camera_path(const std::string& text, const std::
       else
         problem(line_of(*n), where + "'" + name + "': expected [x, y, z] (three finite numbers)");
     };
+    int time_line = k.line;
     if (const toml::node* n = t.get("time_s")) {
+      time_line = line_of(*n);
       if (auto v = number(*n))
         k.time_s = *v;
       else
@@ -232,9 +235,9 @@ std::optional<CameraPath> parse_camera_path(const std::string& text, const std::
       }
     }
     if (!path.keyframes.empty() && !(k.time_s > path.keyframes.back().time_s))
-      problem(k.line, where + "time_s " + std::to_string(k.time_s) +
-                          " is not after the previous keyframe's " +
-                          std::to_string(path.keyframes.back().time_s) + " (times must increase)");
+      problem(time_line, where + fmt::format("time_s {} is not after the previous keyframe's {} "
+                                             "(times must increase)",
+                                             k.time_s, path.keyframes.back().time_s));
     path.keyframes.push_back(k);
     previous = k;
   }

@@ -1,0 +1,40 @@
+#include "cli/progress.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <ostream>
+
+namespace fr {
+
+Progress::Progress(std::ostream& err, std::string noun, int total, int already_done)
+    : err_(err),
+      noun_(std::move(noun)),
+      total_(std::max(total, 1)),
+      already_done_(already_done),
+      terminal_(isatty(STDERR_FILENO) != 0),
+      start_(std::chrono::steady_clock::now()) {}
+
+void Progress::update(int done) {
+  const double elapsed_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  const int done_now = done - already_done_;
+  const int left_s =
+      done_now > 0 ? static_cast<int>(elapsed_s / done_now * (total_ - done) + 0.5) : 0;
+  const std::string status = noun_ + " " + std::to_string(done) + "/" + std::to_string(total_) +
+                             ", " + std::to_string(left_s) + " s left";
+  if (terminal_) {
+    constexpr int kBarChars = 30;
+    const int filled = kBarChars * done / total_;
+    err_ << "\r[" << std::string(filled, '#') << std::string(kBarChars - filled, '.') << "] "
+         << status << "   " << std::flush;
+  } else {
+    err_ << status << "\n" << std::flush;
+  }
+}
+
+void Progress::finish() {
+  if (terminal_) err_ << "\n" << std::flush;
+}
+
+}  // namespace fr
