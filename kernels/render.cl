@@ -3,7 +3,8 @@
  * then mirror bounces; the sample is mixed into the running mean in hdr_rgba (progressive
  * anti-aliasing and depth of field). Also writes, for the primary ray, the hit depth from the eye
  * (+inf for a miss), the DE steps, the occlusion and first-light shadow factors, the ray's
- * status (FR_RAY_* in march.cl) and the unit surface normal (zero for a miss).
+ * status (FR_RAY_* in march.cl), the unit surface normal and the surface's albedo (both zero for
+ * a miss): the passes an OpenEXR file carries for compositing.
  *
  * Optional stages (lens.cl, glow.cl, ao.cl, shadow.cl, fog.cl, reflect.cl) are pasted in only
  * when the scene needs them and they are switched on; each defines its hook, and a hook with no
@@ -42,7 +43,7 @@ __kernel void fr_render(__constant const fr_frame_constants* fc,
                         __constant const scene_params_t* params, __global float* hdr_rgba,
                         __global float* depth, __global float* steps_out,
                         __global float* factors_out, __global uchar* status_out,
-                        __global float* normal_out) {
+                        __global float* normal_out, __global float* albedo_out) {
   const int tile_x = get_global_id(0) * FR_TILE_W;
   const int tile_y = get_global_id(1) * FR_TILE_H;
   const real_t px = (real_t)tile_x + FR_LANE_X;
@@ -57,7 +58,7 @@ __kernel void fr_render(__constant const fr_frame_constants* fc,
   mask_t active = FR_MASK_TRUE;
   real_t first_depth = (real_t)INFINITY, first_steps = (real_t)0, first_status = (real_t)0;
   real_t first_ao = (real_t)1, first_shadow = (real_t)1;
-  vec3_t first_normal = v3s(0, 0, 0);
+  vec3_t first_normal = v3s(0, 0, 0), first_albedo = v3s(0, 0, 0);
   const int bounces = FR_MAX_BOUNCES(fc);
   for (int bounce = 0; bounce <= bounces; ++bounce) {
     march_result_t m = march(ray, path_t, fc, params);
@@ -88,6 +89,7 @@ __kernel void fr_render(__constant const fr_frame_constants* fc,
       reflectivity = lane_select(hit, clamp(surface.reflectivity, (real_t)0, (real_t)1), 0);
       if (bounce == 0) {
         first_normal = v3_select(hit, v3_normalize(n), first_normal);
+        first_albedo = v3_select(hit, surface.albedo, first_albedo);
         first_ao = lane_select(hit, ao, 1);
         first_shadow = lane_select(hit, shadow, 1);
       }
@@ -114,7 +116,8 @@ __kernel void fr_render(__constant const fr_frame_constants* fc,
 
   /* Scatter the lanes to their pixels; tiles at the right and bottom edges are partial. */
   float r[FR_LANES], g[FR_LANES], b[FR_LANES], d[FR_LANES], s[FR_LANES], o[FR_LANES],
-      sh[FR_LANES], st[FR_LANES], nx[FR_LANES], ny[FR_LANES], nz[FR_LANES];
+      sh[FR_LANES], st[FR_LANES], nx[FR_LANES], ny[FR_LANES], nz[FR_LANES], ar[FR_LANES],
+      ag[FR_LANES], ab[FR_LANES];
   store_lanes(color.x, r);
   store_lanes(color.y, g);
   store_lanes(color.z, b);
@@ -126,6 +129,9 @@ __kernel void fr_render(__constant const fr_frame_constants* fc,
   store_lanes(first_normal.x, nx);
   store_lanes(first_normal.y, ny);
   store_lanes(first_normal.z, nz);
+  store_lanes(first_albedo.x, ar);
+  store_lanes(first_albedo.y, ag);
+  store_lanes(first_albedo.z, ab);
   const float w = fc->accumulate_weight;
   for (int lane = 0; lane < FR_LANES; ++lane) {
     int x = tile_x + lane % FR_TILE_W;
@@ -150,5 +156,8 @@ __kernel void fr_render(__constant const fr_frame_constants* fc,
     normal_out[3 * i + 0] = nx[lane];
     normal_out[3 * i + 1] = ny[lane];
     normal_out[3 * i + 2] = nz[lane];
+    albedo_out[3 * i + 0] = ar[lane];
+    albedo_out[3 * i + 1] = ag[lane];
+    albedo_out[3 * i + 2] = ab[lane];
   }
 }

@@ -19,12 +19,13 @@ namespace {
 TEST(ResourceLimits, MemoryNeedCountsEveryBuffer) {
   const MemoryNeed display = render_memory_need(100, 50, false);
   EXPECT_EQ(display.largest_buffer_bytes, 5000u * 16);  // float4 HDR
-  // HDR 16, depth 4, steps 4, AO+shadow 8, status 1, normal 12, RGBA8 4.
-  EXPECT_EQ(display.device_bytes, 5000u * 49);
+  // HDR 16, depth 4, steps 4, AO+shadow 8, status 1, normal 12, albedo 12, RGBA8 4.
+  EXPECT_EQ(display.device_bytes, 5000u * 61);
   // RGBA8 4, steps 4, status 1; PNG filter copy, stream and our copy 12.
   EXPECT_EQ(display.host_bytes, 5000u * 21);
-  // Every pass also reads back linear RGBA 16, depth 4, factors 8, normal 12, AO 4, shadow 4.
-  EXPECT_EQ(render_memory_need(100, 50, true).host_bytes, 5000u * (21 + 48));
+  // Every pass also reads back linear RGBA 16, depth 4, factors 8, normal 12, albedo 12, AO 4,
+  // shadow 4.
+  EXPECT_EQ(render_memory_need(100, 50, true).host_bytes, 5000u * (21 + 60));
 }
 
 TEST(ResourceLimits, DeviceLimitsAreNamed) {

@@ -2,6 +2,7 @@
 #include "cli/progress.hpp"
 #include "cli/scene_setup.hpp"
 #include "cli/watchdog.hpp"
+#include "image/exr_write.hpp"
 #include "image/png_write.hpp"
 #include "image/poster.hpp"
 #include "io/atomic_file.hpp"
@@ -15,6 +16,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include <sys/stat.h>
 #include <unistd.h>
 #include <chrono>
 #include <filesystem>
@@ -93,7 +95,9 @@ int render_in_bands(const PreparedScene& p, const std::string& out_file, std::os
 
 int command_render(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   auto specs = scene_option_specs();
-  specs.push_back({"out", "FILE", false, "PNG file to write (default fractalis.png)"});
+  specs.push_back({"out", "FILE", false,
+                   "PNG file to write (default fractalis.png); FILE.exr: OpenEXR, linear, with "
+                   "passes"});
   specs.push_back({"path", "FILE", false,
                    "camera path (TOML keyframes): the view and parameters at --time (default: "
                    "its first keyframe); --eye, --param and the like still override"});
@@ -103,15 +107,33 @@ int command_render(const std::vector<std::string>& args, std::ostream& out, std:
     out << "usage: fractalis render [--scene ID] [--size WxH] [--out FILE] [options]\n\n"
            "Renders one frame of a scene and writes it as a PNG (atomically: a temporary file,\n"
            "then a rename). Sizes go up to 65535 a side; over 8 M pixels the image is rendered\n"
-           "a band of rows at a time and streamed to the PNG, in a band's memory.\n\n"
+           "a band of rows at a time and streamed to the PNG, in a band's memory.\n"
+           "An --out ending in .exr gets an OpenEXR file instead: the linear HDR image with\n"
+           "depth (Z), normal (N.x, N.y, N.z), albedo, DE steps and hit mask channels for\n"
+           "compositing, rendered in one piece (at most 16384 a side).\n\n"
         << format_options(specs) << "\nexample:\n"
-        << "  fractalis render --scene mandelbulb --size 1280x720 --param power=6 --out bulb.png\n";
+        << "  fractalis render --scene mandelbulb --size 1280x720 --param power=6 --out bulb.png\n"
+        << "  fractalis render --scene menger --size 1920x1080 --samples 4 --out sponge.exr\n";
     return 0;
   }
   const std::string out_file = options.get("out").value_or("fractalis.png");
   // Checked before rendering, so a typo in the folder costs nothing.
   check_output_file("--out", out_file);
-  PreparedScene p = prepare_scene(options, kMaxPosterSide);
+  const bool exr = is_exr_file_name(out_file);
+  if (exr) {
+    struct stat st {};
+    if (stat(out_file.c_str(), &st) == 0 && (S_ISFIFO(st.st_mode) || S_ISCHR(st.st_mode)))
+      throw UsageError("--out " + out_file +
+                       ": an EXR file cannot go to a pipe or device (OpenEXR seeks back to index "
+                       "its scanlines)");
+  }
+  if (const auto size = options.get("size"); exr && size) {
+    const auto wh = parse_size("--size", *size, kMaxPosterSide);
+    if (std::max(wh[0], wh[1]) > kMaxImageSide)
+      throw UsageError("--size " + *size + ": an EXR file is rendered in one piece, at most " +
+                       std::to_string(kMaxImageSide) + " pixels a side (a PNG may be larger)");
+  }
+  PreparedScene p = prepare_scene(options, exr ? kMaxImageSide : kMaxPosterSide);
 
   std::string error;
   if (!p.instance->update(p.state, p.state.time_s, &error)) {
@@ -119,7 +141,7 @@ int command_render(const std::vector<std::string>& args, std::ostream& out, std:
     return 1;
   }
   std::ostream& report = is_standard_output(out_file) ? err : out;
-  if (static_cast<uint64_t>(p.render.width_px) * p.render.height_px > kPosterBandPixels)
+  if (!exr && static_cast<uint64_t>(p.render.width_px) * p.render.height_px > kPosterBandPixels)
     return render_in_bands(p, out_file, report, err);
   check_memory(p.render, p.device, true);
   ClRuntime runtime(p.device);
@@ -138,7 +160,8 @@ int command_render(const std::vector<std::string>& args, std::ostream& out, std:
   FrameImage image = renderer.render(p.scene->info, p.state, p.render, true);
   const double render_ms = ms_since(render_start);
   watchdog.stop();
-  if (!write_png_atomic(out_file, image.width_px, image.height_px, image.rgba8, &error)) {
+  if (exr ? !write_exr_atomic(out_file, image, &error)
+          : !write_png_atomic(out_file, image.width_px, image.height_px, image.rgba8, &error)) {
     spdlog::error("{}", error);
     return 1;
   }

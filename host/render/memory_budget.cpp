@@ -12,8 +12,8 @@ namespace fr {
 namespace {
 
 // Bytes per pixel of renderer.cpp's buffers: HDR float4, depth, steps, AO and shadow factors,
-// ray status, normal float3, display RGBA8.
-constexpr uint64_t kDeviceBytesPerPixel = 16 + 4 + 4 + 8 + 1 + 12 + 4;
+// ray status, normal float3, albedo float3, display RGBA8.
+constexpr uint64_t kDeviceBytesPerPixel = 16 + 4 + 4 + 8 + 1 + 12 + 12 + 4;
 // Read-back copies (FrameImage): RGBA8, steps, status; with every pass also linear RGBA, depth,
 // factors, normal, occlusion and shadow.
 constexpr uint64_t kDisplayReadbackBytesPerPixel = 4 + 4 + 1;

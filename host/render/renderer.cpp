@@ -59,6 +59,7 @@ void Renderer::ensure_buffers(size_t n) {
   factors_ = make_buffer(ctx, CL_MEM_WRITE_ONLY, n * 2 * sizeof(float), "the AO and shadow buffer");
   status_ = make_buffer(ctx, CL_MEM_WRITE_ONLY, n, "the ray status buffer");
   normal_ = make_buffer(ctx, CL_MEM_WRITE_ONLY, n * 3 * sizeof(float), "the normal buffer");
+  albedo_ = make_buffer(ctx, CL_MEM_WRITE_ONLY, n * 3 * sizeof(float), "the albedo buffer");
   rgba8_ = make_buffer(ctx, CL_MEM_WRITE_ONLY, padded * 4, "the display image");
   buffer_pixels_ = n;
 }
@@ -107,7 +108,8 @@ void Renderer::render_sample(const SceneInfo& info, const SceneState& state,
            "clEnqueueWriteBuffer", "uploading scene parameters");
 
   const cl_mem args[] = {constants_.get(), params_.get(),  hdr_.get(),    depth_.get(),
-                         steps_.get(),     factors_.get(), status_.get(), normal_.get()};
+                         steps_.get(),     factors_.get(), status_.get(), normal_.get(),
+                         albedo_.get()};
   for (cl_uint i = 0; i < std::size(args); ++i) set_arg(kernel, i, args[i]);
   const TileShape tile = tile_shape(lanes);
   const size_t global[2] = {round_up_div(w, tile.width_px), round_up_div(h, tile.height_px)};
@@ -182,6 +184,7 @@ void Renderer::finish(const RenderSettings& settings, Readback what, FrameImage&
   img.shadow.clear();
   img.ray_status.clear();
   img.normal.clear();
+  img.albedo.clear();
   std::vector<float> factors;
   if (what != Readback::Display) {
     img.steps.resize(n);
@@ -210,6 +213,10 @@ void Renderer::finish(const RenderSettings& settings, Readback what, FrameImage&
     cl_check(clEnqueueReadBuffer(q, normal_.get(), CL_FALSE, 0, n * 12, img.normal.data(), 0,
                                  nullptr, nullptr),
              "clEnqueueReadBuffer", "reading normals");
+    img.albedo.resize(n * 3);
+    cl_check(clEnqueueReadBuffer(q, albedo_.get(), CL_FALSE, 0, n * 12, img.albedo.data(), 0,
+                                 nullptr, nullptr),
+             "clEnqueueReadBuffer", "reading albedos");
   }
   cl_check(clFinish(q), "clFinish", "reading back the frame");
   if (what == Readback::Everything) {

@@ -26,6 +26,7 @@ struct FrameImage {
   std::vector<float> occlusion;    // ambient-occlusion factor at the hit, in [0, 1]; 1 on a miss
   std::vector<float> shadow;       // first light's shadow factor at the hit, in [0, 1]
   std::vector<float> normal;       // unit surface normal at the hit, 3 floats; 0 for a miss
+  std::vector<float> albedo;       // the surface's albedo (linear RGB) at the hit; 0 for a miss
   // Filled with the steps (DisplayAndSteps, Everything): each primary ray's RayStatus.
   std::vector<uint8_t> ray_status;
   Precision precision = Precision::Float;  // what the kernel ran in (Auto resolved)
@@ -92,7 +93,8 @@ class Renderer {
   size_t frame_pixels_ = 0;   // pixels of the frame being rendered
   int last_lanes_ = 0;
   Precision last_precision_ = Precision::Float;
-  ClBufferHandle constants_, params_, hdr_, depth_, steps_, factors_, status_, normal_, rgba8_;
+  ClBufferHandle constants_, params_, hdr_, depth_, steps_, factors_, status_, normal_, albedo_,
+      rgba8_;
   size_t params_bytes_ = 0;
 };
 

@@ -1,0 +1,31 @@
+// exr_write.hpp — a rendered frame as an OpenEXR file with its passes, for compositing.
+//
+// Channels (32-bit float, ZIP-compressed scanlines, written with the OpenEXR library):
+//   R, G, B, A          the linear HDR image (the mean of every sample), not tonemapped; A = 1
+//   Z                   distance from the eye along the pixel's ray to the surface (scene units;
+//                       not the planar depth); +inf where the ray missed
+//   N.x, N.y, N.z       unit surface normal in world space; 0 where the ray missed
+//   albedo.R/.G/.B      the surface's albedo (linear); 0 where the ray missed
+//   steps               DE evaluations of the primary ray
+//   mask                1 where the primary ray hit the surface, else 0 (missed, ran out of steps,
+//                       or started inside the solid)
+// The passes other than RGBA are those of the last sample's primary rays (renderer.hpp).
+// The file is written like every output (io/atomic_file.hpp): whole or not at all.
+#pragma once
+
+#include "render/renderer.hpp"
+
+#include <filesystem>
+#include <string>
+
+namespace fr {
+
+// True when `file`'s name ends in .exr (any case).
+bool is_exr_file_name(const std::filesystem::path& file);
+
+// Writes `image` (read back with Readback::Everything). On failure returns false with *error
+// naming the file and why, leaving any existing file untouched.
+bool write_exr_atomic(const std::filesystem::path& file, const FrameImage& image,
+                      std::string* error);
+
+}  // namespace fr
