@@ -206,3 +206,54 @@ TEST(CameraPath, KeyframeAtThePole) {
 
 }  // namespace
 }  // namespace fr
+
+namespace fr {
+namespace {
+
+// What the explorer saves reads back to the same keyframes, bit for bit: awkward doubles
+// (0.1, 1/3, 1e-300), every parameter type, parameters that change and ones that carry over.
+TEST(CameraPath, SavedPathReadsBackExactly) {
+  const SceneInfo info = scene();
+  CameraPath path;
+  for (int k = 0; k < 3; ++k) {
+    Keyframe key;
+    key.time_s = k * 0.1;
+    key.eye = {1.0 / 3 + k, -0.1 * k, 1e-300 + 4};
+    key.target = {0, 0.25 * k, -1e-7};
+    key.up = {0, 0, 1};
+    key.fov_deg = 45.5 + k;
+    for (const ParamInfo& p : info.params) key.params.push_back(p.default_value);
+    if (k >= 1) key.params[0].v[0] = 2.0 / 3 + 7;  // power: changed at 1, carried to 2
+    if (k == 2) {
+      key.params[1].v[0] = 13;  // iterations
+      key.params[2].v[0] = 1;   // animate
+      key.params[3] = fr_value{{-0.5, 1.0 / 7, 0.9}};
+    }
+    path.keyframes.push_back(key);
+  }
+  const std::string text = format_camera_path(path, info);
+  std::vector<PathProblem> problems;
+  const auto back = parse_camera_path(text, "saved.toml", info, &problems);
+  ASSERT_TRUE(back) << (problems.empty() ? "" : problems[0].to_string()) << "\n" << text;
+  ASSERT_EQ(back->keyframes.size(), 3u);
+  for (size_t k = 0; k < 3; ++k) {
+    const Keyframe &a = path.keyframes[k], &b = back->keyframes[k];
+    EXPECT_EQ(a.time_s, b.time_s);
+    EXPECT_EQ(a.eye, b.eye);
+    EXPECT_EQ(a.target, b.target);
+    EXPECT_EQ(a.up, b.up);
+    EXPECT_EQ(a.fov_deg, b.fov_deg);
+    for (size_t i = 0; i < a.params.size(); ++i)
+      for (int c = 0; c < info.params[i].component_count(); ++c)
+        EXPECT_EQ(a.params[i].v[c], b.params[i].v[c]) << "keyframe " << k << " param " << i;
+  }
+  // The second keyframe names only the parameter that changed.
+  const auto second = text.find("[[keyframe]]", text.find("[[keyframe]]") + 1);
+  const auto third = text.find("[[keyframe]]", second + 1);
+  const std::string middle = text.substr(second, third - second);
+  EXPECT_NE(middle.find("power = "), std::string::npos) << middle;
+  EXPECT_EQ(middle.find("iterations"), std::string::npos) << middle;
+}
+
+}  // namespace
+}  // namespace fr

@@ -178,6 +178,60 @@ TEST_F(ExplorerWindow, ScreenshotIsTheHeadlessRender) {
   EXPECT_GT(luminance_spread(png.rgba8), 10) << "the screenshot is blank";
 }
 
+// K records the view as a keyframe, the saved path is what was recorded (read back by the
+// path parser `animate` uses), and P plays it: the camera starts at the first keyframe, passes
+// the path's own sample half-way, and stops at the last one.
+TEST_F(ExplorerWindow, RecordsSavesAndPlaysACameraPath) {
+  InputState input;
+  auto press = [&](SDL_Keycode key) {
+    push_key(key, true);
+    push_key(key, false);
+    frame(input);
+  };
+  frame(input);
+  const fr_camera first = explorer->current().state.camera;
+  press(SDLK_k);
+  push_key(SDLK_w, true);
+  for (int i = 0; i < 5; ++i) frame(input);
+  push_key(SDLK_w, false);
+  frame(input);
+  const fr_camera second = explorer->current().state.camera;
+  ASSERT_NE(first.eye[2], second.eye[2]);
+  press(SDLK_k);
+  ASSERT_EQ(explorer->path().keyframes.size(), 2u);
+
+  const SceneInfo& info = explorer->current().scene->info;
+  const auto file = test::fresh_dir("explorer_path") / "recorded.toml";
+  std::string error;
+  ASSERT_TRUE(save_recorded_path(explorer->path(), info, file, &error)) << error;
+  std::vector<PathProblem> problems;
+  const auto saved = load_camera_path(file, info, &problems);
+  ASSERT_TRUE(saved) << problems.front().to_string();
+  ASSERT_EQ(saved->keyframes.size(), 2u);
+  EXPECT_EQ(saved->keyframes[0].time_s, 0.0);
+  EXPECT_EQ(saved->keyframes[1].time_s, 2.0) << "keyframes 2 s apart by default";
+  for (int a = 0; a < 3; ++a) {
+    EXPECT_EQ(saved->keyframes[0].eye[a], first.eye[a]);
+    EXPECT_EQ(saved->keyframes[1].eye[a], second.eye[a]);
+  }
+
+  press(SDLK_p);  // frames advance 1/30 s each
+  ASSERT_TRUE(explorer->path().playing);
+  EXPECT_EQ(explorer->current().state.camera.eye[2], first.eye[2]) << "playback starts at key 1";
+  for (int i = 0; i < 30; ++i) frame(input);
+  const PathSample half = sample_camera_path(*saved, info, 1.0);
+  for (int a = 0; a < 3; ++a)
+    EXPECT_NEAR(explorer->current().state.camera.eye[a], half.camera.eye[a], 1e-9);
+  for (int i = 0; i < 40; ++i) frame(input);
+  EXPECT_FALSE(explorer->path().playing) << "playback stops after the last keyframe";
+  for (int a = 0; a < 3; ++a) EXPECT_EQ(explorer->current().state.camera.eye[a], second.eye[a]);
+  // Stopped, the keys fly the camera again.
+  push_key(SDLK_w, true);
+  for (int i = 0; i < 3; ++i) frame(input);
+  push_key(SDLK_w, false);
+  EXPECT_NE(explorer->current().state.camera.eye[2], second.eye[2]);
+}
+
 TEST_F(ExplorerWindow, QuitEndsTheLoop) {
   SDL_Event quit{};
   quit.type = SDL_QUIT;

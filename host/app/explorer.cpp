@@ -73,6 +73,13 @@ bool Explorer::update(const InputState& input, double dt_s, double now_s) {
       case Action::ToggleMouseLook:
         mouse_look_ = !mouse_look_;
         break;
+      case Action::AddKeyframe:
+        add_keyframe(path_, current().scene->info, current().state);
+        spdlog::info("keyframe {} at {:g} s", path_.keyframes.size(), path_.keyframes.back().time_s);
+        break;
+      case Action::PlayPath:
+        toggle_playback(path_, current().scene->info);
+        break;
       default:
         window_actions_.push_back(a);
         break;
@@ -95,9 +102,11 @@ bool Explorer::update(const InputState& input, double dt_s, double now_s) {
     stats_.surface_distance = 0.1;
   }
   const SceneState before = slot.state;
-  if (update_camera(slot.state.camera, mode_, input, mouse_look_, dt_s, stats_.surface_distance,
-                    controls_)
-          .moved)
+  if (path_.playing)
+    advance_playback(path_, slot.scene->info, dt_s, slot.state);
+  else if (update_camera(slot.state.camera, mode_, input, mouse_look_, dt_s,
+                         stats_.surface_distance, controls_)
+               .moved)
     changed_ = true;
   std::string error;
   // A failed update keeps the scene's last good state on screen (the camera still flies); it is

@@ -6,6 +6,7 @@
 #include "app/camera_controller.hpp"
 #include "app/frame_controller.hpp"
 #include "app/input.hpp"
+#include "app/path_recorder.hpp"
 #include "app/scene_library.hpp"
 #include "render/renderer.hpp"
 #include "settings/settings.hpp"
@@ -57,6 +58,10 @@ class Explorer {
   // Something outside update() (the overlay) changed the scene or settings: refine again.
   void mark_changed() { changed_ = true; }
 
+  // The camera path being recorded or played (app/path_recorder.hpp). While it plays, the
+  // camera and parameters follow it and flying is paused.
+  PathRecorder& path() { return path_; }
+
   const ExplorerStats& stats() const { return stats_; }
   const std::vector<Action>& pending_window_actions() const { return window_actions_; }
 
@@ -72,6 +77,7 @@ class Explorer {
   int current_ = 0;
   bool changed_ = true;
   ExplorerStats stats_;
+  PathRecorder path_;
   FrameImage last_;
   std::vector<Action> window_actions_;  // overlay, fullscreen, screenshot: for the window layer
 };

@@ -22,6 +22,8 @@ KeyBindings KeyBindings::defaults() {
       {"Tab", Action::NextScene},
       {"Backspace", Action::PreviousScene},
       {"F12", Action::Screenshot},
+      {"K", Action::AddKeyframe},
+      {"P", Action::PlayPath},
       {"Escape", Action::Quit},
   };
   return b;

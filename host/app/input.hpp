@@ -27,6 +27,8 @@ enum class Action {
   NextScene,
   PreviousScene,
   Screenshot,
+  AddKeyframe,  // the view on screen becomes the camera path's next keyframe
+  PlayPath,     // play the camera path from its start, or stop it
   Quit,
 };
 
@@ -46,6 +48,8 @@ inline constexpr EnumName<Action> kActionNames[] = {
     {Action::NextScene, "next_scene", "next scene", nullptr},
     {Action::PreviousScene, "previous_scene", "previous scene", nullptr},
     {Action::Screenshot, "screenshot", "screenshot", nullptr},
+    {Action::AddKeyframe, "add_keyframe", "add keyframe", nullptr},
+    {Action::PlayPath, "play_path", "play / stop path", nullptr},
     {Action::Quit, "quit", "quit", nullptr},
 };
 constexpr std::span<const EnumName<Action>> enum_names(Action) {

@@ -17,6 +17,8 @@ int command_explore(const std::vector<std::string>& args, std::ostream& out,
                     std::ostream& /*err: messages go to spdlog*/) {
   auto specs = scene_option_specs();
   specs.push_back({"frames", "N", false, "quit after N frames (for scripts and tests)"});
+  specs.push_back({"path", "FILE", false,
+                   "camera path to play from the start (P stops and replays it; K adds keyframes)"});
   specs.push_back({"fullscreen", nullptr, false, "start in fullscreen"});
   specs.push_back({"help", nullptr, false, "show this help"});
   auto options = parse_options("explore", args, specs);
@@ -26,6 +28,8 @@ int command_explore(const std::vector<std::string>& args, std::ostream& out,
            "M captures the mouse to look around, O switches fly/orbit, Tab/Backspace switch "
            "scene,\n"
            "F1 hides the overlay, F11 toggles fullscreen, F12 saves a screenshot, Esc quits.\n"
+           "K adds the view as the next keyframe of a camera path, P plays or stops the path;\n"
+           "the overlay's Camera path section saves it for `fractalis animate` and loads one.\n"
            "Scenes dropped into the plugin folder appear while it runs; changed ones reload.\n\n"
         << format_options(specs);
     return 0;

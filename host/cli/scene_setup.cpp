@@ -363,7 +363,15 @@ ExplorerSetup prepare_explorer(ParsedOptions options) {
     throw unknown_scene(scene_id, available);
   }
   x.explorer = std::make_unique<Explorer>(x.settings, *x.runtime, *x.library, scene_id);
-  apply_scene_overrides(x.explorer->current().scene->info, options, x.explorer->current().state);
+  const SceneInfo& info = x.explorer->current().scene->info;
+  apply_scene_overrides(info, options, x.explorer->current().state);
+  if (auto file = options.get("path")) {  // explore --path: play it from the start
+    PathRecorder& recorder = x.explorer->path();
+    recorder.scene_id = info.id;
+    recorder.keyframes = load_path_option(info, *file).keyframes;
+    std::string error;
+    start_playback(recorder, info, &error);
+  }
   return x;
 }
 

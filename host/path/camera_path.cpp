@@ -12,6 +12,7 @@
 #include <glm/mat3x3.hpp>
 
 #include <algorithm>
+#include <cstring>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -266,6 +267,41 @@ std::optional<CameraPath> load_camera_path(const std::filesystem::path& file,
   std::stringstream text;
   text << in.rdbuf();
   return parse_camera_path(text.str(), file.string(), scene, problems);
+}
+
+std::string format_camera_path(const CameraPath& path, const SceneInfo& scene) {
+  std::string out = fmt::format(
+      "# Camera path for scene '{}' (fractalis animate --scene {} --path FILE).\n", scene.id,
+      scene.id);
+  auto vec = [](const glm::dvec3& v) { return fmt::format("[{}, {}, {}]", v.x, v.y, v.z); };
+  for (size_t k = 0; k < path.keyframes.size(); ++k) {
+    const Keyframe& key = path.keyframes[k];
+    out += fmt::format("\n[[keyframe]]\ntime_s = {}\neye = {}\ntarget = {}\nup = {}\nfov_deg = {}\n",
+                       key.time_s, vec(key.eye), vec(key.target), vec(key.up), key.fov_deg);
+    std::string params;
+    for (size_t i = 0; i < scene.params.size() && i < key.params.size(); ++i) {
+      const fr_value& v = key.params[i];
+      if (k > 0 && std::memcmp(&v, &path.keyframes[k - 1].params[i], sizeof v) == 0) continue;
+      const ParamInfo& p = scene.params[i];
+      std::string text;
+      switch (p.type) {
+        case FR_PARAM_BOOL:
+          text = v.v[0] != 0 ? "true" : "false";
+          break;
+        case FR_PARAM_INT:
+          text = fmt::format("{}", static_cast<long long>(v.v[0]));
+          break;
+        case FR_PARAM_FLOAT:
+          text = fmt::format("{}", v.v[0]);
+          break;
+        default:
+          text = vec(glm::dvec3(v.v[0], v.v[1], v.v[2]));
+      }
+      params += p.key + " = " + text + "\n";
+    }
+    if (!params.empty()) out += "[keyframe.params]\n" + params;
+  }
+  return out;
 }
 
 PathSample sample_camera_path(const CameraPath& path, const SceneInfo& scene, double time_s) {

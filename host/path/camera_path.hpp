@@ -64,6 +64,11 @@ std::optional<CameraPath> load_camera_path(const std::filesystem::path& file,
                                            const SceneInfo& scene,
                                            std::vector<PathProblem>* problems);
 
+// The path as a TOML file that parse_camera_path reads back to the same keyframes: every
+// keyframe with its time, eye, target, up and fov; the first with every parameter, later ones with
+// the parameters that changed. Numbers are written in the shortest form that reads back exactly.
+std::string format_camera_path(const CameraPath& path, const SceneInfo& scene);
+
 struct PathSample {
   fr_camera camera{};
   std::vector<fr_value> params;

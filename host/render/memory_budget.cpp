@@ -15,9 +15,9 @@ namespace {
 // ray status, normal float3, albedo float3, display RGBA8.
 constexpr uint64_t kDeviceBytesPerPixel = 16 + 4 + 4 + 8 + 1 + 12 + 12 + 4;
 // Read-back copies (FrameImage): RGBA8, steps, status; with every pass also linear RGBA, depth,
-// factors, normal, occlusion and shadow.
+// factors, normal, albedo, occlusion and shadow.
 constexpr uint64_t kDisplayReadbackBytesPerPixel = 4 + 4 + 1;
-constexpr uint64_t kAllPassesReadbackBytesPerPixel = 16 + 4 + 8 + 12 + 4 + 4;
+constexpr uint64_t kAllPassesReadbackBytesPerPixel = 16 + 4 + 8 + 12 + 12 + 4 + 4;
 // The PNG encoder: its filtered copy of the image, the compressed stream and our copy of it.
 constexpr uint64_t kPngBytesPerPixel = 4 + 4 + 4;
 

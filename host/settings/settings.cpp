@@ -41,7 +41,7 @@ std::string key_bindings_comment() {
   text +=
       " Defaults: W/S/A/D move, E or Space up, Q or Left Ctrl down, Left Shift faster, M mouse "
       "look, O fly/orbit, Tab/Backspace next/previous scene, F1 overlay, F11 fullscreen, F12 "
-      "screenshot, Escape quit.";
+      "screenshot, K add keyframe, P play/stop path, Escape quit.";
   // Wrapped to 96 columns.
   std::string wrapped, line;
   std::istringstream words(text);

@@ -207,6 +207,37 @@ void draw_overlay(Explorer& explorer, OverlayState& overlay) {
     }
   }
 
+  if (ImGui::CollapsingHeader("Camera path")) {
+    PathRecorder& path = explorer.path();
+    const size_t keys = path.scene_id == info.id ? path.keyframes.size() : 0;
+    ImGui::Text("%zu keyframes%s", keys,
+                path.playing ? fmt::format(", playing: {:.1f} s", path.play_s).c_str() : "");
+    float spacing = static_cast<float>(path.spacing_s);
+    if (ImGui::SliderFloat("Seconds between keyframes", &spacing, 0.1f, 30.0f, "%.1f s",
+                           ImGuiSliderFlags_Logarithmic))
+      path.spacing_s = spacing;
+    if (ImGui::Button("Add keyframe (K)")) add_keyframe(path, info, slot.state);
+    ImGui::SameLine();
+    if (ImGui::Button("Remove last")) remove_last_keyframe(path);
+    ImGui::SameLine();
+    if (ImGui::Button(path.playing ? "Stop (P)" : "Play (P)")) toggle_playback(path, info);
+    ImGui::InputText("File", overlay.path_file.data(), overlay.path_file.size());
+    std::string error;
+    if (ImGui::Button("Save path")) {
+      if (save_recorded_path(path, info, overlay.path_file.data(), &error))
+        spdlog::info("saved the camera path to {}", overlay.path_file.data());
+      else
+        spdlog::error("cannot save the path: {}", error);
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Load path")) {
+      if (load_recorded_path(path, info, overlay.path_file.data(), &error))
+        spdlog::info("loaded {} keyframes from {}", path.keyframes.size(), overlay.path_file.data());
+      else
+        spdlog::error("cannot load the path: {}", error);
+    }
+  }
+
   if (ImGui::CollapsingHeader("Screenshot")) {
     ImGui::Checkbox("At window size", &overlay.screenshot_at_window_size);
     if (!overlay.screenshot_at_window_size)

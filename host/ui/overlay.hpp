@@ -1,7 +1,7 @@
 // overlay.hpp — the explorer's Dear ImGui panel, generated from the scene's parameter table:
 // scene list, parameters (sliders with the declared ranges, log scale where flagged, colour
 // pickers, checkboxes, vec3 fields, grouped), effects and shading model, camera and bookmarks,
-// statistics, screenshot. Call between ImGui::NewFrame and ImGui::Render (Window::present does).
+// camera path (keyframes, playback, save and load), statistics, screenshot. Call between ImGui::NewFrame and ImGui::Render (Window::present does).
 #pragma once
 
 #include "app/explorer.hpp"
@@ -19,6 +19,7 @@ struct OverlayState {
   std::string screenshot_file = "fractalis-screenshot.png";
   bool screenshot_requested = false;
   bool screenshot_at_window_size = true;
+  std::array<char, 1024> path_file{"fractalis-path.toml"};  // the camera path's Save / Load file
   std::filesystem::path settings_file;  // where "Save settings" writes (the user's config.toml)
 };
 
