@@ -3,9 +3,12 @@
 // code path through the CLI), PNG sequences that resume and refuse to mix animations, and bad
 // input refused with exit code 2 before rendering.
 #include "cli/cli.hpp"
+#include "path/camera_path.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
 
 #include <cmath>
 #include <cstdio>
@@ -252,6 +255,54 @@ TEST(Animate, BadInputIsRefusedBeforeRendering) {
   // Nothing was written by any of them.
   EXPECT_FALSE(std::filesystem::exists(dir / "a.mp4"));
   EXPECT_FALSE(std::filesystem::exists(dir / "a.webm"));
+}
+
+}  // namespace
+}  // namespace fr
+
+namespace fr {
+namespace {
+
+// The benchmark scene's route is the ordinary path file paths/benchmark.toml, flown by `bench`:
+// a lap at radius 7.4 bobbing 1.8 + 0.6 sin(2a) (the formula the scene's update callback used),
+// which the spline through its 17 keyframes follows closely.
+TEST(Animate, BenchmarkRouteIsAnOrdinaryPath) {
+  auto scene = test::load_or_fail(std::filesystem::path(SCENE_PLUGIN_DIR) / "benchmark.so");
+  ASSERT_TRUE(scene);
+  std::vector<PathProblem> problems;
+  const auto path = load_camera_path(std::filesystem::path(SOURCE_DIR) / "paths" / "benchmark.toml",
+                                     scene->info, &problems);
+  ASSERT_TRUE(path) << problems.front().to_string();
+  EXPECT_EQ(path->start_s(), 0.0);
+  EXPECT_EQ(path->end_s(), 20.0);
+  double worst_radius = 0, worst_height = 0, worst_aim_deg = 0;
+  for (int i = 0; i <= 400; ++i) {
+    const PathSample s = sample_camera_path(*path, scene->info, 20.0 * i / 400);
+    const double radius = std::hypot(s.camera.eye[0], s.camera.eye[2]);
+    const double a = std::atan2(s.camera.eye[0], s.camera.eye[2]);
+    worst_radius = std::max(worst_radius, std::abs(radius / 7.4 - 1));
+    worst_height =
+        std::max(worst_height, std::abs(s.camera.eye[1] - (1.8 + 0.6 * std::sin(2 * a))));
+    // Orientation is interpolated (slerp), not re-aimed: the view stays near the centre.
+    const glm::dvec3 eye(s.camera.eye[0], s.camera.eye[1], s.camera.eye[2]);
+    const glm::dvec3 view(s.camera.target[0], s.camera.target[1], s.camera.target[2]);
+    const double cos_aim =
+        glm::dot(glm::normalize(view - eye), glm::normalize(glm::dvec3(0, -0.1, 0) - eye));
+    worst_aim_deg = std::max(worst_aim_deg, std::acos(std::min(1.0, cos_aim)) * 180 / M_PI);
+  }
+  EXPECT_LT(worst_radius, 0.001);  // interior and across the seam: it is a closed loop
+  EXPECT_LT(worst_height, 0.01);
+  EXPECT_LT(worst_aim_deg, 0.5);
+  RecordProperty("worst_radius_fraction", std::to_string(worst_radius));
+  RecordProperty("worst_height", std::to_string(worst_height));
+  RecordProperty("worst_aim_deg", std::to_string(worst_aim_deg));
+
+  const CliRun r = run({"bench", "--frames", "2", "--runs", "1", "--size", "64x36"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("along " +
+                       (std::filesystem::path(SOURCE_DIR) / "paths" / "benchmark.toml").string()),
+            std::string::npos)
+      << r.out;
 }
 
 }  // namespace

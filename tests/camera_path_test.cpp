@@ -257,3 +257,37 @@ TEST(CameraPath, SavedPathReadsBackExactly) {
 
 }  // namespace
 }  // namespace fr
+
+namespace fr {
+namespace {
+
+// A path whose last eye is its first is a closed loop: the velocity leaving the first keyframe is
+// the velocity arriving at the last (no kink at the seam); an open path's ends are not matched.
+TEST(CameraPath, ClosedLoopIsSmoothAcrossTheSeam) {
+  const SceneInfo info = scene();
+  auto path_text = [](double last_x) {
+    std::string text;
+    const double xs[] = {1, 0, -1, 0, last_x}, zs[] = {0, 1, 0, -1, 0};
+    for (int k = 0; k < 5; ++k)
+      text += "[[keyframe]]\ntime_s = " + std::to_string(k) + "\neye = [" + std::to_string(xs[k]) +
+              ", 0, " + std::to_string(zs[k]) + "]\ntarget = [0, 0.001, 0]\n";
+    return text;
+  };
+  auto velocity_mismatch = [&](double last_x) {
+    std::vector<PathProblem> problems;
+    const auto path = parse_camera_path(path_text(last_x), "loop.toml", info, &problems);
+    EXPECT_TRUE(path);
+    const double h = 1e-5;
+    auto eye = [&](double t) {
+      const auto c = sample_camera_path(*path, info, t).camera;
+      return glm::dvec3(c.eye[0], c.eye[1], c.eye[2]);
+    };
+    const glm::dvec3 leaving = (eye(h) - eye(0)) / h, arriving = (eye(4) - eye(4 - h)) / h;
+    return glm::length(leaving - arriving) / glm::length(leaving);
+  };
+  EXPECT_LT(velocity_mismatch(1.0), 1e-3) << "closed: smooth at the seam";
+  EXPECT_GT(velocity_mismatch(1.0 + 1e-6), 0.1) << "open: each end has its own tangent";
+}
+
+}  // namespace
+}  // namespace fr

@@ -75,7 +75,8 @@ bool Explorer::update(const InputState& input, double dt_s, double now_s) {
         break;
       case Action::AddKeyframe:
         add_keyframe(path_, current().scene->info, current().state);
-        spdlog::info("keyframe {} at {:g} s", path_.keyframes.size(), path_.keyframes.back().time_s);
+        spdlog::info("keyframe {} at {:g} s", path_.keyframes.size(),
+                     path_.keyframes.back().time_s);
         break;
       case Action::PlayPath:
         toggle_playback(path_, current().scene->info);

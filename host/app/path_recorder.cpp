@@ -14,7 +14,8 @@ void add_keyframe(PathRecorder& recorder, const SceneInfo& scene, const SceneSta
     recorder.scene_id = scene.id;
   }
   Keyframe k;
-  k.time_s = recorder.keyframes.empty() ? 0.0 : recorder.keyframes.back().time_s + recorder.spacing_s;
+  k.time_s =
+      recorder.keyframes.empty() ? 0.0 : recorder.keyframes.back().time_s + recorder.spacing_s;
   k.eye = to_dvec3(state.camera.eye);
   k.target = to_dvec3(state.camera.target);
   k.up = to_dvec3(state.camera.up);

@@ -25,8 +25,9 @@ std::string format_bench_text(const BenchReport& r) {
       << r.height_px << ", " << r.precision << ", lanes " << r.lanes << ", effects: " << r.stages
       << "\n"
       << r.runs << " run(s) x " << r.frames_per_run << " frames over "
-      << fixed(r.path_duration_s, 1) << " s of scene time; " << s.frames << " frames rendered in "
-      << fixed(r.wall_s, 2) << " s"
+      << fixed(r.path_duration_s, 1) << " s of scene time"
+      << (r.camera_path.empty() ? "" : " along " + r.camera_path) << "; " << s.frames
+      << " frames rendered in " << fixed(r.wall_s, 2) << " s"
       << " (kernel build and warm-up: " << fixed(r.kernel_build_ms, 0) << " ms, not counted)\n"
       << "median " << fixed(s.p50_ms) << " ms, min " << fixed(s.min_ms) << " ms, max "
       << fixed(s.max_ms) << " ms over " << s.frames << " frames\n"
@@ -61,6 +62,7 @@ std::string format_bench_json(const BenchReport& r) {
       {"runs", r.runs},
       {"frames_per_run", r.frames_per_run},
       {"path_duration_s", r.path_duration_s},
+      {"camera_path", r.camera_path},
       {"frames_rendered", s.frames},
       {"wall_s", r.wall_s},
       {"frame_ms",

@@ -18,6 +18,7 @@ struct BenchReport {
   int runs = 0;
   int frames_per_run = 0;
   double path_duration_s = 0;  // scene time each run covers
+  std::string camera_path;     // the path file flown; empty: the scene's own animation
   double wall_s = 0;           // real time of all timed frames
   double kernel_build_ms = 0;  // untimed warm-up frame, including the kernel build
   FrameStats stats;

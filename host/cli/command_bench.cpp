@@ -52,6 +52,10 @@ int command_bench(const std::vector<std::string>& args, std::ostream& out, std::
   specs.push_back({"frames", "N", false, "timed frames per run (default 30)"});
   specs.push_back({"runs", "N", false, "runs of the whole path (default 3)"});
   specs.push_back({"duration", "SECONDS", false, "scene time one run covers (default 10)"});
+  specs.push_back({"path", "FILE", false,
+                   "camera path to fly (default for the benchmark scene: its route,\n"
+                   "                                 paths/benchmark.toml; others: their own "
+                   "animation)"});
   specs.push_back({"json", "FILE", false, "also write the report as JSON (atomically)"});
   specs.push_back(
       {"explore", nullptr, false,
@@ -66,7 +70,8 @@ int command_bench(const std::vector<std::string>& args, std::ostream& out, std::
            "Renders a scene along its animation for a fixed number of frames, several times,\n"
            "after one untimed warm-up frame that builds the kernel, and reports frame times\n"
            "(min, max, average, p50, p95), fps, and the system it ran on. Without --scene it runs\n"
-           "the benchmark scene, whose camera follows a fixed path. Each frame is the whole loop:\n"
+           "the benchmark scene along its fixed route (the camera path paths/benchmark.toml);\n"
+           "--path flies any scene along a path. Each frame is the whole loop: camera path,\n"
            "scene update, render, tonemap, read-back. Any resolution works, for example the seed\n"
            "report's 1366x768, 1920x1080, 2560x1440 and 3840x2160.\n\n"
         << format_options(specs) << "\nexamples:\n"
@@ -88,17 +93,27 @@ int command_bench(const std::vector<std::string>& args, std::ostream& out, std::
   if (!(duration >= 0))
     throw UsageError("--duration: expected seconds >= 0, got " + echo(*options.get("duration")));
   if (!options.has("scene")) options.values["scene"] = {"benchmark"};
+  if (!options.has("path") && options.get("scene") == "benchmark")
+    options.values["path"] = {shipped_path_file("benchmark.toml").string()};
   const auto json_file = options.get("json");
   // Checked before the benchmark runs, not after.
   if (json_file) check_output_file("--json", *json_file);
 
   PreparedScene p = prepare_scene(options);
+  std::optional<CameraPath> path;
+  if (auto file = options.get("path")) path = load_path_option(p.scene->info, *file);
   check_memory(p.render, p.device, false);
   ClRuntime runtime(p.device);
   Renderer renderer(runtime);
   std::string error;
   Watchdog watchdog(p.render.watchdog_s, "a frame of scene '" + p.scene->info.id + "'");
   auto frame = [&](double time_s) {
+    if (path) {  // run time t is the path's start + t (clamped to its end)
+      const PathSample sample = sample_camera_path(*path, p.scene->info, path->start_s() + time_s);
+      p.state.camera = sample.camera;
+      p.state.params = sample.params;
+      apply_scene_overrides(p.scene->info, options, p.state);
+    }
     if (!p.instance->update(p.state, time_s, &error)) throw std::runtime_error(error);
     renderer.render(p.scene->info, p.state, p.render);
     watchdog.kick();
@@ -134,6 +149,7 @@ int command_bench(const std::vector<std::string>& args, std::ostream& out, std::
   report.runs = runs;
   report.frames_per_run = frames;
   report.path_duration_s = duration;
+  if (path) report.camera_path = path->file;
   report.system = read_system_info(p.device);
 
   std::ostream& text = json_file && is_standard_output(*json_file) ? err : out;

@@ -17,8 +17,9 @@ int command_explore(const std::vector<std::string>& args, std::ostream& out,
                     std::ostream& /*err: messages go to spdlog*/) {
   auto specs = scene_option_specs();
   specs.push_back({"frames", "N", false, "quit after N frames (for scripts and tests)"});
-  specs.push_back({"path", "FILE", false,
-                   "camera path to play from the start (P stops and replays it; K adds keyframes)"});
+  specs.push_back(
+      {"path", "FILE", false,
+       "camera path to play from the start (P stops and replays it; K adds keyframes)"});
   specs.push_back({"fullscreen", nullptr, false, "start in fullscreen"});
   specs.push_back({"help", nullptr, false, "show this help"});
   auto options = parse_options("explore", args, specs);

@@ -28,8 +28,11 @@ void Progress::update(int done) {
     const int filled = kBarChars * done / total_;
     err_ << "\r[" << std::string(filled, '#') << std::string(kBarChars - filled, '.') << "] "
          << status << "   " << std::flush;
-  } else {
+  } else if (done >= total_ || last_line_done_ < 0 || done - last_line_done_ >= total_ / 100 ||
+             elapsed_s - last_line_s_ >= 10) {
     err_ << status << "\n" << std::flush;
+    last_line_done_ = done;
+    last_line_s_ = elapsed_s;
   }
 }
 

@@ -1,6 +1,7 @@
 // progress.hpp — how long commands report how far they are: a bar redrawn in place on a terminal
-// ("[#######.......] frame 12/49, 31 s left"), one plain line per step otherwise (a log file or a
-// CI console gets lines, not carriage returns).
+// ("[#######.......] frame 12/49, 31 s left"), plain lines otherwise (a log file or a CI console
+// gets lines, not carriage returns): one per step, at most about a hundred in all (one per 1% of
+// the steps, or one per 10 s when steps are slow), and always the last.
 #pragma once
 
 #include <chrono>
@@ -24,6 +25,8 @@ class Progress {
   int total_, already_done_;
   bool terminal_;
   std::chrono::steady_clock::time_point start_;
+  int last_line_done_ = -1;  // the step of the last plain line
+  double last_line_s_ = 0;
 };
 
 }  // namespace fr

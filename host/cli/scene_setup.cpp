@@ -120,6 +120,15 @@ std::vector<std::filesystem::path> plugin_folders(const Settings& settings,
   return folders;
 }
 
+std::filesystem::path shipped_path_file(const std::string& name) {
+  std::error_code ec;
+  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  const std::string build_root = std::string(FRACTALIS_BUILD_ROOT) + "/";
+  if (ec || exe.string().rfind(build_root, 0) == 0)
+    return std::filesystem::path(FRACTALIS_PATHS_SOURCE_DIR) / name;
+  return exe.parent_path().parent_path() / FRACTALIS_PATHS_INSTALL_DIR / name;
+}
+
 std::filesystem::path user_scene_folder() {
   if (const char* xdg = std::getenv("XDG_DATA_HOME"); xdg && *xdg)
     return std::filesystem::path(xdg) / "fractalis" / "scenes";

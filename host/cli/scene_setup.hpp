@@ -33,6 +33,10 @@ Settings load_settings(const ParsedOptions& options,
 std::vector<std::filesystem::path> plugin_folders(const Settings& settings,
                                                   const ParsedOptions& options);
 
+// A camera path that ships with fractalis (paths/ in the source tree, share/fractalis/paths
+// installed), for the executable that runs: "benchmark.toml" is the benchmark scene's route.
+std::filesystem::path shipped_path_file(const std::string& name);
+
 // Where a user drops scenes: $XDG_DATA_HOME/fractalis/scenes (~/.local/share/fractalis/scenes).
 std::filesystem::path user_scene_folder();
 

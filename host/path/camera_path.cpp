@@ -12,8 +12,8 @@
 #include <glm/mat3x3.hpp>
 
 #include <algorithm>
-#include <cstring>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 
@@ -270,14 +270,15 @@ std::optional<CameraPath> load_camera_path(const std::filesystem::path& file,
 }
 
 std::string format_camera_path(const CameraPath& path, const SceneInfo& scene) {
-  std::string out = fmt::format(
-      "# Camera path for scene '{}' (fractalis animate --scene {} --path FILE).\n", scene.id,
-      scene.id);
+  std::string out =
+      fmt::format("# Camera path for scene '{}' (fractalis animate --scene {} --path FILE).\n",
+                  scene.id, scene.id);
   auto vec = [](const glm::dvec3& v) { return fmt::format("[{}, {}, {}]", v.x, v.y, v.z); };
   for (size_t k = 0; k < path.keyframes.size(); ++k) {
     const Keyframe& key = path.keyframes[k];
-    out += fmt::format("\n[[keyframe]]\ntime_s = {}\neye = {}\ntarget = {}\nup = {}\nfov_deg = {}\n",
-                       key.time_s, vec(key.eye), vec(key.target), vec(key.up), key.fov_deg);
+    out +=
+        fmt::format("\n[[keyframe]]\ntime_s = {}\neye = {}\ntarget = {}\nup = {}\nfov_deg = {}\n",
+                    key.time_s, vec(key.eye), vec(key.target), vec(key.up), key.fov_deg);
     std::string params;
     for (size_t i = 0; i < scene.params.size() && i < key.params.size(); ++i) {
       const fr_value& v = key.params[i];
@@ -312,9 +313,13 @@ PathSample sample_camera_path(const CameraPath& path, const SceneInfo& scene, do
   while (i + 2 < keys.size() && t >= keys[i + 1].time_s) ++i;
   const Keyframe &k1 = keys[i], &k2 = keys[i + 1];
   const double u = std::clamp((t - k1.time_s) / (k2.time_s - k1.time_s), 0.0, 1.0);
-  // Phantom end points: the first and last keys mirrored through their neighbours.
-  const glm::dvec3 p0 = i > 0 ? keys[i - 1].eye : 2.0 * k1.eye - k2.eye;
-  const glm::dvec3 p3 = i + 2 < keys.size() ? keys[i + 2].eye : 2.0 * k2.eye - k1.eye;
+  // The neighbours of the end segments: on a closed loop (the last eye is the first), the keys
+  // across the seam, so the loop has no kink there; otherwise phantom points, the first and last
+  // keys mirrored through their neighbours.
+  const size_t n = keys.size();
+  const bool closed = n > 2 && keys.front().eye == keys.back().eye;
+  const glm::dvec3 p0 = i > 0 ? keys[i - 1].eye : closed ? keys[n - 2].eye : 2.0 * k1.eye - k2.eye;
+  const glm::dvec3 p3 = i + 2 < n ? keys[i + 2].eye : closed ? keys[1].eye : 2.0 * k2.eye - k1.eye;
   const glm::dvec3 eye = u == 0 ? k1.eye : u == 1 ? k2.eye : catmull_rom(p0, k1.eye, k2.eye, p3, u);
 
   glm::dquat q1 = orientation(k1), q2 = orientation(k2);

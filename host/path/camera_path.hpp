@@ -16,7 +16,8 @@
 //
 // Between keyframes: the eye on a centripetal Catmull-Rom spline through the keyframes' eyes
 // (alpha = 1/2: no cusps or self-intersections within a segment, and no overshoot of collinear
-// keys; Yuksel et al. 2011), the orientation by spherical interpolation of the keyframes'
+// keys; Yuksel et al. 2011; a path whose last eye equals its first is a closed loop, smooth across
+// the seam), the orientation by spherical interpolation of the keyframes'
 // orientation quaternions, the distance to the target, the field of view and the parameters
 // linearly (integer parameters rounded, booleans switching at the next keyframe).
 #pragma once

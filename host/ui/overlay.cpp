@@ -232,7 +232,8 @@ void draw_overlay(Explorer& explorer, OverlayState& overlay) {
     ImGui::SameLine();
     if (ImGui::Button("Load path")) {
       if (load_recorded_path(path, info, overlay.path_file.data(), &error))
-        spdlog::info("loaded {} keyframes from {}", path.keyframes.size(), overlay.path_file.data());
+        spdlog::info("loaded {} keyframes from {}", path.keyframes.size(),
+                     overlay.path_file.data());
       else
         spdlog::error("cannot load the path: {}", error);
     }

@@ -1,7 +1,8 @@
 // overlay.hpp — the explorer's Dear ImGui panel, generated from the scene's parameter table:
 // scene list, parameters (sliders with the declared ranges, log scale where flagged, colour
 // pickers, checkboxes, vec3 fields, grouped), effects and shading model, camera and bookmarks,
-// camera path (keyframes, playback, save and load), statistics, screenshot. Call between ImGui::NewFrame and ImGui::Render (Window::present does).
+// camera path (keyframes, playback, save and load), statistics, screenshot. Call between
+// ImGui::NewFrame and ImGui::Render (Window::present does).
 #pragma once
 
 #include "app/explorer.hpp"
