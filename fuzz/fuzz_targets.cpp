@@ -250,6 +250,20 @@ int fuzz_camera_path(const uint8_t* data, size_t size) {
                                       "fuzz.toml", scene, &problems);
   for (const auto& p : problems) (void)p.to_string();
   if (!path) return 0;
+  // What the explorer would save reads back to the same keyframes.
+  std::vector<PathProblem> again;
+  const auto back =
+      parse_camera_path(format_camera_path(*path, scene), "saved.toml", scene, &again);
+  if (!back || back->keyframes.size() != path->keyframes.size()) __builtin_trap();
+  for (size_t k = 0; k < path->keyframes.size(); ++k) {
+    const Keyframe &a = path->keyframes[k], &b = back->keyframes[k];
+    if (a.time_s != b.time_s || a.eye != b.eye || a.target != b.target || a.up != b.up ||
+        a.fov_deg != b.fov_deg)
+      __builtin_trap();
+    for (size_t i = 0; i < scene.params.size(); ++i)
+      for (int c = 0; c < scene.params[i].component_count(); ++c)
+        if (a.params[i].v[c] != b.params[i].v[c]) __builtin_trap();
+  }
   const double span = path->end_s() - path->start_s();
   for (int i = -1; i <= 33; ++i) {
     const PathSample s = sample_camera_path(*path, scene, path->start_s() + span * i / 32.0);
