@@ -402,29 +402,37 @@ TEST(PluginIsolation, RepeatedLoadsLeakNothing) {
   }
 }
 
-// A DE that never returns: `fractalis render` ends after render.watchdog_s with exit status 3
-// and an error naming the scene, and writes nothing.
+// A DE that never returns: `fractalis render` (and `animate`, into a video whose temporary file
+// is open) ends after render.watchdog_s with exit status 3 and an error naming the scene, and
+// leaves nothing behind.
 TEST(PluginIsolation, RenderWatchdogEndsADeThatNeverReturns) {
-  const auto dir = test::fresh_dir("de_loop_render");
-  std::filesystem::copy_file(hostile("de_loop"), dir / "de_loop.so");
-  const auto out = dir / "never.png", log = dir / "stderr.txt";
-  const std::string command = std::string(FRACTALIS_EXECUTABLE) + " render --plugins " +
-                              dir.string() + " --scene fixture_de_loop --size 16x16 " +
-                              "--set render.watchdog_s=2 --out " + out.string() + " 2> " +
-                              log.string();
-  const int status = std::system(command.c_str());
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 3);
-  std::ifstream in(log);
-  const std::string said((std::istreambuf_iterator<char>(in)), {});
-  EXPECT_NE(said.find("rendering scene 'fixture_de_loop' did not finish within 2 s "
-                      "(render.watchdog_s)"),
-            std::string::npos)
-      << said;
-  EXPECT_FALSE(std::filesystem::exists(out));
-  size_t entries = 0;
-  for (const auto& e : std::filesystem::directory_iterator(dir)) entries += e.path() != log;
-  EXPECT_EQ(entries, 1u) << "a temporary file was left behind";
+  for (const std::string command_out : {"render --out never.png", "animate --out never.mkv"}) {
+    const auto dir = test::fresh_dir("de_loop_render");
+    std::filesystem::copy_file(hostile("de_loop"), dir / "de_loop.so");
+    std::ofstream(dir / "path.toml") << "[[keyframe]]\ntime_s = 0\neye = [0, 0, 3]\n"
+                                        "target = [0, 0, 0]\n[[keyframe]]\ntime_s = 1\n"
+                                        "eye = [0, 1, 3]\ntarget = [0, 0, 0]\n";
+    const auto log = dir / "stderr.txt";
+    const std::string command =
+        "cd " + dir.string() + " && " + FRACTALIS_EXECUTABLE + " " + command_out + " --plugins " +
+        dir.string() + " --scene fixture_de_loop --size 16x16 " + "--set render.watchdog_s=2 " +
+        (command_out[0] == 'a' ? "--path path.toml " : "") + "2> " + log.string();
+    const int status = std::system(command.c_str());
+    ASSERT_TRUE(WIFEXITED(status)) << command;
+    EXPECT_EQ(WEXITSTATUS(status), 3) << command;
+    std::ifstream in(log);
+    const std::string said((std::istreambuf_iterator<char>(in)), {});
+    EXPECT_NE(said.find("rendering scene 'fixture_de_loop' did not finish within 2 s "
+                        "(render.watchdog_s)"),
+              std::string::npos)
+        << said;
+    std::vector<std::string> left;
+    for (const auto& e : std::filesystem::directory_iterator(dir)) {
+      const std::string name = e.path().filename().string();
+      if (name != "stderr.txt" && name != "de_loop.so" && name != "path.toml") left.push_back(name);
+    }
+    EXPECT_TRUE(left.empty()) << command << " left " << left.front();
+  }
 }
 
 // A scan is kept by the file's identity: the second load of an unchanged file reads it back and

@@ -1,5 +1,7 @@
 #include "cli/watchdog.hpp"
 
+#include "io/atomic_file.hpp"
+
 #include <unistd.h>
 
 #include <chrono>
@@ -25,9 +27,10 @@ Watchdog::Watchdog(double limit_s, std::string what) {
     // The work is stuck inside a call nothing can interrupt; say so, and end the process.
     std::fprintf(stderr,
                  "fractalis: error: %s did not finish within %g s (render.watchdog_s); the "
-                 "scene's DE may never return for some points. Nothing was written.\n",
+                 "scene's DE may never return for some points. Nothing half-written is left.\n",
                  what.c_str(), limit_s);
     std::fflush(stderr);
+    remove_temp_files();  // a poster's or a video's file in progress
     _exit(kWatchdogExitStatus);
   });
 }

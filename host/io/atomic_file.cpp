@@ -42,8 +42,7 @@ void unregister_temp(int slot) {
 }
 
 void remove_temps_and_die(int sig) {
-  for (int i = 0; i < kTempSlots; ++i)
-    if (g_temp_state[i].load() == 2) unlink(g_temp_paths[i]);
+  remove_temp_files();
   signal(sig, SIG_DFL);
   raise(sig);
 }
@@ -226,6 +225,11 @@ bool write_file_atomic(const std::filesystem::path& path, std::string_view bytes
                        std::string* error) {
   auto out = OutputFile::open(path, error);
   return out && out->write(bytes, error) && out->commit(error);
+}
+
+void remove_temp_files() {
+  for (int i = 0; i < kTempSlots; ++i)
+    if (g_temp_state[i].load() == 2) unlink(g_temp_paths[i]);
 }
 
 void install_temp_file_cleanup() {

@@ -68,6 +68,10 @@ class OutputFile {
 bool write_file_atomic(const std::filesystem::path& path, std::string_view bytes,
                        std::string* error);
 
+// Removes the temporary files of every write in progress (async-signal-safe: unlink only), for
+// a process about to end abruptly (the watchdog's _exit).
+void remove_temp_files();
+
 // Installs handlers for SIGINT, SIGTERM and SIGHUP (where their action is the default) that
 // remove the temporary files of writes in progress, then end the process by the same signal.
 // Call once, early in main.
