@@ -3,6 +3,7 @@
 // code path through the CLI), PNG sequences that resume and refuse to mix animations, and bad
 // input refused with exit code 2 before rendering.
 #include "cli/cli.hpp"
+#include "cli_run.hpp"
 #include "path/camera_path.hpp"
 #include "test_support.hpp"
 
@@ -20,16 +21,9 @@
 namespace fr {
 namespace {
 
-struct CliRun {
-  int code;
-  std::string out, err;
-};
-
-CliRun run(const std::vector<std::string>& args) {
-  std::ostringstream out, err;
-  const int code = run_cli(args, out, err);
-  return {code, out.str(), err.str()};
-}
+using test::CliRun;
+using test::expect_usage_error;
+using test::run;
 
 // A shell command's standard output.
 std::string capture(const std::string& command) {
@@ -194,15 +188,6 @@ TEST(Animate, PngSequenceResumesAndRefusesToMix) {
   EXPECT_NE(r.out.find("rendered 5 frames"), std::string::npos) << r.out;
   EXPECT_FALSE(std::filesystem::exists(frames / "frame_000005.png"))
       << "--force removes the old sequence's frames";
-}
-
-void expect_usage_error(const std::vector<std::string>& args, const std::string& message_part) {
-  const CliRun r = run(args);
-  std::string joined;
-  for (const auto& a : args) joined += a + " ";
-  EXPECT_EQ(r.code, 2) << joined << "\n" << r.err;
-  EXPECT_NE(r.err.find(message_part), std::string::npos) << joined << " said: " << r.err;
-  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line: " << r.err;
 }
 
 TEST(Animate, BadInputIsRefusedBeforeRendering) {

@@ -1,5 +1,6 @@
 // The CLI's error paths: every wrong option or value gets one line naming it and exit code 2.
 #include "cli/cli.hpp"
+#include "cli_run.hpp"
 #include "plugin/scene_instance.hpp"
 #include "render/renderer.hpp"
 #include "test_support.hpp"
@@ -11,26 +12,9 @@
 namespace fr {
 namespace {
 
-struct CliRun {
-  int code;
-  std::string out, err;
-};
-
-CliRun run(std::vector<std::string> args) {
-  std::ostringstream out, err;
-  int code = run_cli(args, out, err);
-  return {code, out.str(), err.str()};
-}
-
-void expect_usage_error(std::vector<std::string> args, const std::string& message_part) {
-  const CliRun r = run(args);
-  std::string joined;
-  for (const auto& a : args) joined += a + " ";
-  EXPECT_EQ(r.code, 2) << joined << "\n" << r.err;
-  EXPECT_NE(r.err.find(message_part), std::string::npos) << joined << " said: " << r.err;
-  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line: " << r.err;
-  EXPECT_EQ(r.err.rfind("fractalis: error: ", 0), 0u) << r.err;
-}
+using test::CliRun;
+using test::expect_usage_error;
+using test::run;
 
 TEST(Cli, UsageErrors) {
   expect_usage_error({"frobnicate"}, "unknown command 'frobnicate'");

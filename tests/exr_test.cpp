@@ -2,6 +2,7 @@
 // the unit ball (depth along the ray, normal, hit mask), with the albedo the settings give, and
 // with the renderer's own linear image bit for bit (32-bit float, lossless ZIP).
 #include "cli/cli.hpp"
+#include "cli_run.hpp"
 #include "image/exr_write.hpp"
 #include "plugin/scene_instance.hpp"
 #include "render/camera.hpp"
@@ -24,6 +25,9 @@
 
 namespace fr {
 namespace {
+
+using test::CliRun;
+using test::run;
 
 struct ExrImage {
   int width = 0, height = 0;
@@ -121,17 +125,6 @@ TEST(Exr, PassesMatchTheUnitBall) {
     }
   EXPECT_GT(hits, 300);
   EXPECT_GT(misses, 300);
-}
-
-struct CliRun {
-  int code;
-  std::string out, err;
-};
-
-CliRun run(const std::vector<std::string>& args) {
-  std::ostringstream out, err;
-  const int code = run_cli(args, out, err);
-  return {code, out.str(), err.str()};
 }
 
 // `render --out FILE.exr` writes the passes; what cannot be an EXR is refused before rendering.

@@ -2,6 +2,7 @@
 // points, the plan of configurations, bad input before any work, and one small sweep end to end
 // (files written whole, the reference cached and reused).
 #include "cli/cli.hpp"
+#include "cli_run.hpp"
 #include "sweep/sweep_metrics.hpp"
 #include "sweep/sweep_plan.hpp"
 #include "sweep/sweep_report.hpp"
@@ -18,6 +19,9 @@
 
 namespace fr {
 namespace {
+
+using test::CliRun;
+using test::run;
 
 // A 2x2 reference: two hits at depth 10 and 20 facing +z, two misses, grey pixels.
 ReferenceImage two_by_two() {
@@ -125,16 +129,6 @@ TEST(SweepReport, DefaultOffTheFrontIsSaid) {
   EXPECT_NE(svg.find("<svg"), std::string::npos);
   EXPECT_NE(svg.find("default"), std::string::npos);
   EXPECT_EQ(format_sweep_csv(r).substr(0, 10), "knob,value");
-}
-
-struct CliRun {
-  int code;
-  std::string out, err;
-};
-CliRun run(std::vector<std::string> args) {
-  std::ostringstream out, err;
-  const int code = run_cli(args, out, err);
-  return {code, out.str(), err.str()};
 }
 
 TEST(SweepCommand, BadInputBeforeAnyWork) {
