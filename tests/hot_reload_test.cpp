@@ -91,7 +91,7 @@ TEST(HotReload, AddChangeBreakRemove) {
   slot.state.camera.eye[0] = 0.25;
 
   drop(reload_plugin("reload_b"), folder, "probe.so");
-  ASSERT_GE(poll_until(lib, clock, SceneEvent::Kind::Reloaded, &m), 0);
+  ASSERT_GE(poll_until(lib, clock, SceneEvent::Kind::Reloaded, &m), 0) << "said:\n" << log.str();
   EXPECT_EQ(m, "reloaded 'reload_probe' from probe.so");
   {
     SceneSlot& b = lib.slots()[0];
