@@ -1,6 +1,7 @@
 // Output files: what --out and --json do to what is already at the path (io/atomic_file.hpp),
 // and that a signal during the write leaves no temporary file. Checked against the file system
 // itself (lstat, permission bits, a reader on a FIFO), not against what the code reports.
+#include "cli/cli.hpp"
 #include "io/atomic_file.hpp"
 #include "test_support.hpp"
 
@@ -119,50 +120,120 @@ TEST(OutputSafety, StandardOutputCarriesOnlyThePng) {
 
 // `fractalis render` killed by `sig` while its PNG's temporary file exists: the process ends by
 // that signal and the folder is left empty.
-void kill_during_write(int sig) {
-  const auto dir = test::fresh_dir(std::string("output_kill_") + strsignal(sig));
-  const std::string out = (dir / "big.png").string();
+// Runs fractalis with `args` in `dir` (stdout and stderr to /dev/null, SIGINT and SIGTERM at
+// their defaults, as from a terminal: a shell running the tests in the background may have set
+// SIGINT to be ignored, which fractalis rightly leaves alone) and sends `sig` the moment a file
+// whose name starts with `watch_prefix` appears. Returns the exit status; *seen says whether the
+// file appeared.
+int signal_when_file_appears(const std::filesystem::path& dir, std::vector<std::string> args,
+                             const std::string& watch_prefix, int sig, bool* seen) {
   const pid_t pid = fork();
-  ASSERT_GE(pid, 0);
   if (pid == 0) {
+    if (chdir(dir.c_str()) != 0) _exit(127);
     const int null_fd = open("/dev/null", O_WRONLY);
     dup2(null_fd, 1);
     dup2(null_fd, 2);
-    // As from a terminal: a shell running the tests in the background may have set SIGINT to
-    // be ignored, which fractalis (rightly) leaves alone.
     signal(SIGINT, SIG_DFL);
     signal(SIGTERM, SIG_DFL);
-    execl(FRACTALIS_EXECUTABLE, FRACTALIS_EXECUTABLE, "render", "--scene", "menger", "--size",
-          "2400x2400", "--out", out.c_str(), static_cast<char*>(nullptr));
+    std::vector<char*> argv{const_cast<char*>(FRACTALIS_EXECUTABLE)};
+    for (auto& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    execv(FRACTALIS_EXECUTABLE, argv.data());
     _exit(127);
   }
-  // Watch for the hidden temporary file and signal the moment it appears.
-  bool seen = false;
+  *seen = false;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
-  while (!seen && std::chrono::steady_clock::now() < deadline) {
+  while (!*seen && std::chrono::steady_clock::now() < deadline) {
     for (const auto& e : std::filesystem::directory_iterator(dir))
-      if (e.path().filename().string().rfind(".big.png.", 0) == 0) seen = true;
-    if (!seen) {
-      if (waitpid(pid, nullptr, WNOHANG) == pid) break;  // finished before we saw it
+      if (e.path().filename().string().rfind(watch_prefix, 0) == 0) *seen = true;
+    if (!*seen) {
+      if (waitpid(pid, nullptr, WNOHANG) == pid) return -1;  // finished before we saw it
       std::this_thread::sleep_for(std::chrono::microseconds(200));
     }
   }
-  if (seen) kill(pid, sig);
+  if (*seen) kill(pid, sig);
   int status = 0;
   waitpid(pid, &status, 0);
+  return status;
+}
+
+void kill_during_write(int sig, const std::vector<std::string>& args, const std::string& file) {
+  const auto dir = test::fresh_dir(std::string("output_kill_") + strsignal(sig));
+  std::ofstream(dir / "path.toml") << "[[keyframe]]\ntime_s = 0\neye = [0, 0, 3]\n"
+                                      "target = [0, 0, 0]\n[[keyframe]]\ntime_s = 100\n"
+                                      "eye = [0, 1, 3]\ntarget = [0, 0, 0]\n";
+  bool seen = false;
+  const int status = signal_when_file_appears(dir, args, "." + file + ".", sig, &seen);
   ASSERT_TRUE(seen) << "the temporary file was never seen";
   EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == sig)
       << "ended by the signal, not otherwise (status " << status << ")";
   std::string left;
-  for (const auto& e : std::filesystem::directory_iterator(dir)) left += e.path().string() + " ";
+  for (const auto& e : std::filesystem::directory_iterator(dir))
+    if (e.path().filename() != "path.toml") left += e.path().string() + " ";
   EXPECT_EQ(left, "") << "nothing is left behind";
 }
 
 TEST(OutputSafety, SigtermDuringTheWriteLeavesNoTemporaryFile) {
-  kill_during_write(SIGTERM);
+  kill_during_write(SIGTERM,
+                    {"render", "--scene", "menger", "--size", "2400x2400", "--out", "big.png"},
+                    "big.png");
 }
 TEST(OutputSafety, CtrlCDuringTheWriteLeavesNoTemporaryFile) {
-  kill_during_write(SIGINT);
+  kill_during_write(SIGINT,
+                    {"render", "--scene", "menger", "--size", "2400x2400", "--out", "big.png"},
+                    "big.png");
+}
+// A video is written to its temporary file frame by frame: interrupted, nothing is left.
+TEST(OutputSafety, CtrlCDuringAVideoLeavesNoTemporaryFile) {
+  kill_during_write(
+      SIGINT,
+      {"animate", "--path", "path.toml", "--fps", "2", "--size", "64x48", "--out", "film.mkv"},
+      "film.mkv");
+}
+
+// A PNG sequence interrupted after a few frames resumes with the frames that are missing only.
+TEST(OutputSafety, InterruptedSequenceResumes) {
+  const auto dir = test::fresh_dir("output_sequence");
+  std::ofstream(dir / "path.toml") << "[[keyframe]]\ntime_s = 0\neye = [0, 0, 3]\n"
+                                      "target = [0, 0, 0]\n[[keyframe]]\ntime_s = 4\n"
+                                      "eye = [0, 1, 3]\ntarget = [0, 0, 0]\n";
+  const std::vector<std::string> args = {"animate",
+                                         "--path",
+                                         (dir / "path.toml").string(),
+                                         "--fps",
+                                         "10",
+                                         "--size",
+                                         "160x120",
+                                         "--samples",
+                                         "8",
+                                         "--out",
+                                         (dir / "frames").string()};
+  bool seen = false;
+  std::filesystem::create_directory(dir / "frames");
+  int status = signal_when_file_appears(dir / "frames", args, "frame_000003", SIGINT, &seen);
+  (void)status;
+  ASSERT_TRUE(seen);
+  size_t before = 0;
+  for (const auto& e : std::filesystem::directory_iterator(dir / "frames"))
+    before += e.path().extension() == ".png";
+  ASSERT_LT(before, 41u);
+  // The resumed run, in-process: it says how many were there and renders the rest.
+  std::ostringstream out, err;
+  const int code = run_cli(args, out, err);
+  ASSERT_EQ(code, 0) << err.str();
+  EXPECT_NE(out.str().find("resuming: " + std::to_string(before) + " of 41 frames"),
+            std::string::npos)
+      << out.str();
+  EXPECT_NE(out.str().find("rendered " + std::to_string(41 - before) + " frames"),
+            std::string::npos)
+      << out.str();
+  size_t pngs = 0, hidden = 0;
+  for (const auto& e : std::filesystem::directory_iterator(dir / "frames")) {
+    pngs += e.path().extension() == ".png";
+    hidden += e.path().filename().string().rfind(".frame_", 0) == 0;
+  }
+  EXPECT_EQ(pngs, 41u);
+  EXPECT_EQ(hidden, 0u) << "no temporary frame left";
 }
 
 }  // namespace
