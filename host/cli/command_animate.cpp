@@ -76,7 +76,7 @@ int command_animate(const std::vector<std::string>& args, std::ostream& out, std
            "                         [--samples N] [options]\n\n"
            "Renders a scene along a camera path (see README: Camera paths). A path from its\n"
            "first keyframe to its last, D seconds, at N fps has floor(D x N) + 1 frames: the\n"
-           "first and the closing keyframe both included, so a video lasts D + 1/N seconds.\n"
+           "first and the closing keyframe both included; a video shows each for 1/N s.\n"
            "A video (.mp4, .mkv: H.264; .webm: VP9; yuv420p, so even sizes) is written whole or\n"
            "not at all. Any other OUT is a folder of frame_000000.png ...; an interrupted run\n"
            "resumes where it stopped, if nothing that changes the frames changed.\n\n"
