@@ -1,5 +1,6 @@
 #include "app/explorer.hpp"
 
+#include "image/exr_write.hpp"
 #include "image/poster.hpp"
 #include "render/memory_budget.hpp"
 #include "scene/vec3.hpp"
@@ -173,15 +174,15 @@ bool Explorer::screenshot(const std::filesystem::path& file, int width_px, int h
   // Rendered like `render` renders a poster: in bands, streamed to the PNG (image/poster.hpp),
   // so a screenshot far larger than the window needs only a band's memory.
   RenderSettings band = s;
-  band.height_px = poster_band_rows(width_px, height_px);
-  const auto need = render_memory_need(band.width_px, band.height_px, false);
+  band.height_px = poster_band_rows(width_px, height_px, poster_band_pixels(file));
+  const auto need = render_memory_need(band.width_px, band.height_px, is_exr_file_name(file));
   if (const std::string problem = memory_problem(need, runtime_.device()); !problem.empty()) {
     *error = "screenshot at " + std::to_string(width_px) + "x" + std::to_string(height_px) + ": " +
              problem;
     return false;
   }
   try {
-    render_poster(runtime_, slot.scene->info, slot.state, s, file);
+    render_poster(runtime_, slot.scene->info, slot.state, s, file, poster_band_pixels(file));
     return true;
   } catch (const std::exception& e) {
     *error = e.what();

@@ -41,7 +41,8 @@ class Explorer {
   // image is already at full quality (nothing new to show).
   const FrameImage* render(int window_width_px, int window_height_px);
 
-  // Writes a PNG of the current view at the given size with full-quality samples.
+  // Writes a PNG (or, for a file named *.exr, an OpenEXR file with its passes) of the current
+  // view at the given size with full-quality samples, in bands (image/poster.hpp).
   bool screenshot(const std::filesystem::path& file, int width_px, int height_px,
                   std::string* error);
 

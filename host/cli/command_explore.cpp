@@ -82,8 +82,8 @@ int command_explore(const std::vector<std::string>& args, std::ostream& out,
       const int h =
           overlay.screenshot_at_window_size ? window.height_px() : overlay.screenshot_size[1];
       std::string error;
-      if (explorer.screenshot(overlay.screenshot_file, w, h, &error))
-        spdlog::info("saved {}", overlay.screenshot_file);
+      if (explorer.screenshot(overlay.screenshot_file.data(), w, h, &error))
+        spdlog::info("saved {}", overlay.screenshot_file.data());
       else
         spdlog::error("{}", error);
     }

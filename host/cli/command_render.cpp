@@ -53,21 +53,23 @@ void report_rays(const FrameImage& image, const fr_camera& camera, const RenderS
   }
 }
 
-// A size over kPosterBandPixels: rendered a band of rows at a time and streamed to the PNG
+// A size over poster_band_pixels: rendered a band of rows at a time and streamed to the PNG or
+// EXR file
 // (image/poster.hpp), with a progress bar on a terminal.
 int render_in_bands(const PreparedScene& p, const std::string& out_file, std::ostream& report,
                     std::ostream& err) {
   const int width = p.render.width_px, height = p.render.height_px;
   RenderSettings band = p.render;
-  band.height_px = poster_band_rows(width, height);
-  check_memory(band, p.device, false);
+  const uint64_t band_pixels = poster_band_pixels(out_file);
+  band.height_px = poster_band_rows(width, height, band_pixels);
+  check_memory(band, p.device, is_exr_file_name(out_file));
   ClRuntime runtime(p.device);
   // The watchdog guards each band: a poster may take longer than render.watchdog_s in all.
   Watchdog watchdog(p.render.watchdog_s, "rendering scene '" + p.scene->info.id + "'");
   const auto start = std::chrono::steady_clock::now();
   Progress progress(err, "band", (height + band.height_px - 1) / band.height_px);
   const PosterResult r = render_poster(runtime, p.scene->info, p.state, p.render, out_file,
-                                       kPosterBandPixels, [&](int done, int) {
+                                       band_pixels, [&](int done, int) {
                                          watchdog.kick();
                                          progress.update(done);
                                        });
@@ -110,7 +112,7 @@ int command_render(const std::vector<std::string>& args, std::ostream& out, std:
            "a band of rows at a time and streamed to the PNG, in a band's memory.\n"
            "An --out ending in .exr gets an OpenEXR file instead: the linear HDR image with\n"
            "depth (Z), normal (N.x, N.y, N.z), albedo, DE steps and hit mask channels for\n"
-           "compositing, rendered in one piece (at most 16384 a side).\n\n"
+           "compositing; large ones are rendered in bands like a PNG.\n\n"
         << format_options(specs) << "\nexample:\n"
         << "  fractalis render --scene mandelbulb --size 1280x720 --param power=6 --out bulb.png\n"
         << "  fractalis render --scene menger --size 1920x1080 --samples 4 --out sponge.exr\n";
@@ -127,13 +129,7 @@ int command_render(const std::vector<std::string>& args, std::ostream& out, std:
                        ": an EXR file cannot go to a pipe or device (OpenEXR seeks back to index "
                        "its scanlines)");
   }
-  if (const auto size = options.get("size"); exr && size) {
-    const auto wh = parse_size("--size", *size, kMaxPosterSide);
-    if (std::max(wh[0], wh[1]) > kMaxImageSide)
-      throw UsageError("--size " + *size + ": an EXR file is rendered in one piece, at most " +
-                       std::to_string(kMaxImageSide) + " pixels a side (a PNG may be larger)");
-  }
-  PreparedScene p = prepare_scene(options, exr ? kMaxImageSide : kMaxPosterSide);
+  PreparedScene p = prepare_scene(options, kMaxPosterSide);
 
   std::string error;
   if (!p.instance->update(p.state, p.state.time_s, &error)) {
@@ -141,7 +137,7 @@ int command_render(const std::vector<std::string>& args, std::ostream& out, std:
     return 1;
   }
   std::ostream& report = is_standard_output(out_file) ? err : out;
-  if (!exr && static_cast<uint64_t>(p.render.width_px) * p.render.height_px > kPosterBandPixels)
+  if (static_cast<uint64_t>(p.render.width_px) * p.render.height_px > poster_band_pixels(out_file))
     return render_in_bands(p, out_file, report, err);
   check_memory(p.render, p.device, true);
   ClRuntime runtime(p.device);

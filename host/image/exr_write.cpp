@@ -1,7 +1,5 @@
 #include "image/exr_write.hpp"
 
-#include "io/atomic_file.hpp"
-
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
@@ -13,6 +11,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdint>
+#include <optional>
 
 namespace fr {
 namespace {
@@ -38,7 +38,24 @@ class OutputFileStream : public Imf::OStream {
   std::string error_;
 };
 
+struct Channel {
+  const char* name;
+  int component;  // of the FrameImage field
+};
+
+const Channel kRgba[] = {{"R", 0}, {"G", 1}, {"B", 2}, {"A", 3}};
+const Channel kNormal[] = {{"N.x", 0}, {"N.y", 1}, {"N.z", 2}};
+const Channel kAlbedo[] = {{"albedo.R", 0}, {"albedo.G", 1}, {"albedo.B", 2}};
+
 }  // namespace
+
+struct ExrStream::State {
+  OutputFile& out;
+  OutputFileStream stream;
+  std::optional<Imf::OutputFile> exr;
+  int width = 0, height = 0, rows_written = 0;
+  State(OutputFile& o, const std::string& name) : out(o), stream(o, name) {}
+};
 
 bool is_exr_file_name(const std::filesystem::path& file) {
   std::string ext = file.extension().string();
@@ -47,62 +64,94 @@ bool is_exr_file_name(const std::filesystem::path& file) {
   return ext == ".exr";
 }
 
-bool write_exr_atomic(const std::filesystem::path& file, const FrameImage& image,
-                      std::string* error) {
-  const size_t w = static_cast<size_t>(image.width_px), h = static_cast<size_t>(image.height_px);
-  const size_t n = w * h;
-  if (n == 0 || image.linear_rgba.size() != n * 4 || image.depth.size() != n ||
-      image.normal.size() != n * 3 || image.albedo.size() != n * 3 || image.steps.size() != n ||
-      image.ray_status.size() != n) {
-    *error = "cannot write " + file.string() + ": the frame lacks its passes";
-    return false;
+ExrStream::ExrStream(OutputFile& out, int width_px, int height_px) {
+  if (!out.seekable())
+    throw std::runtime_error(
+        "an EXR file cannot go to a pipe or device (OpenEXR seeks back to index its scanlines)");
+  state_ = std::make_unique<State>(out, "EXR");
+  state_->width = width_px;
+  state_->height = height_px;
+  Imf::Header header(width_px, height_px);
+  header.compression() = Imf::ZIP_COMPRESSION;
+  header.lineOrder() = Imf::INCREASING_Y;
+  Imf::addComments(header, "rendered by fractalis; Z is the distance along each pixel's ray");
+  for (const Channel& c : kRgba) header.channels().insert(c.name, Imf::Channel(Imf::FLOAT));
+  header.channels().insert("Z", Imf::Channel(Imf::FLOAT));
+  for (const Channel& c : kNormal) header.channels().insert(c.name, Imf::Channel(Imf::FLOAT));
+  for (const Channel& c : kAlbedo) header.channels().insert(c.name, Imf::Channel(Imf::FLOAT));
+  header.channels().insert("steps", Imf::Channel(Imf::FLOAT));
+  header.channels().insert("mask", Imf::Channel(Imf::FLOAT));
+  try {
+    state_->exr.emplace(state_->stream, header);
+  } catch (const std::exception& e) {
+    throw std::runtime_error(state_->stream.error().empty() ? e.what() : state_->stream.error());
   }
+}
+
+ExrStream::~ExrStream() = default;
+
+void ExrStream::write_rows(const FrameImage& band) {
+  State& s = *state_;
+  const size_t w = static_cast<size_t>(s.width), rows = static_cast<size_t>(band.height_px);
+  const size_t n = w * rows;
+  if (band.width_px != s.width || rows == 0 || s.rows_written + band.height_px > s.height ||
+      band.linear_rgba.size() != n * 4 || band.depth.size() != n || band.normal.size() != n * 3 ||
+      band.albedo.size() != n * 3 || band.steps.size() != n || band.ray_status.size() != n)
+    throw std::runtime_error("an EXR band lacks its passes or does not fit the image");
   std::vector<float> mask(n);
   for (size_t i = 0; i < n; ++i)
-    mask[i] = static_cast<RayStatus>(image.ray_status[i]) == RayStatus::Hit ? 1.0f : 0.0f;
+    mask[i] = static_cast<RayStatus>(band.ray_status[i]) == RayStatus::Hit ? 1.0f : 0.0f;
+  // OpenEXR finds pixel (x, y) of the whole image at base + x * xStride + y * yStride, so each
+  // slice's base is the band's first row moved up by the rows above it (computed as integers:
+  // the address itself lies outside the band and is never read).
+  const int y0 = s.rows_written;
+  Imf::FrameBuffer frame;
+  auto add = [&](const char* name, const float* first, size_t floats_per_pixel) {
+    const size_t x_stride = sizeof(float) * floats_per_pixel, y_stride = x_stride * w;
+    const uintptr_t base =
+        reinterpret_cast<uintptr_t>(first) - static_cast<uintptr_t>(y0) * y_stride;
+    frame.insert(name, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(base), x_stride, y_stride));
+  };
+  for (const Channel& c : kRgba) add(c.name, band.linear_rgba.data() + c.component, 4);
+  add("Z", band.depth.data(), 1);
+  for (const Channel& c : kNormal) add(c.name, band.normal.data() + c.component, 3);
+  for (const Channel& c : kAlbedo) add(c.name, band.albedo.data() + c.component, 3);
+  add("steps", band.steps.data(), 1);
+  add("mask", mask.data(), 1);
+  try {
+    s.exr->setFrameBuffer(frame);
+    s.exr->writePixels(band.height_px);
+  } catch (const std::exception& e) {
+    throw std::runtime_error(s.stream.error().empty() ? e.what() : s.stream.error());
+  }
+  s.rows_written += band.height_px;
+}
 
+void ExrStream::finish() {
+  State& s = *state_;
+  if (s.rows_written != s.height) throw std::runtime_error("an EXR file ended before its last row");
+  s.exr.reset();  // writes the scanline offsets
+  if (!s.stream.error().empty()) throw std::runtime_error(s.stream.error());
+  std::string error;
+  if (!s.out.commit(&error)) throw std::runtime_error(error);
+}
+
+bool write_exr_atomic(const std::filesystem::path& file, const FrameImage& image,
+                      std::string* error) {
   auto out = OutputFile::open(file, error);
   if (!out) return false;
-  if (!out->seekable()) {
-    *error = "cannot write " + file.string() +
-             ": OpenEXR seeks back to index its scanlines, and a pipe or device cannot";
-    return false;
-  }
-  OutputFileStream stream(*out, file.string());
   try {
-    Imf::Header header(image.width_px, image.height_px);
-    header.compression() = Imf::ZIP_COMPRESSION;
-    Imf::addComments(header, "rendered by fractalis; Z is the distance along each pixel's ray");
-    Imf::FrameBuffer frame;
-    auto add = [&](const char* name, const float* base, size_t floats_per_pixel) {
-      header.channels().insert(name, Imf::Channel(Imf::FLOAT));
-      frame.insert(
-          name, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(const_cast<float*>(base)),
-                           sizeof(float) * floats_per_pixel, sizeof(float) * floats_per_pixel * w));
-    };
-    const char* rgba[] = {"R", "G", "B", "A"};
-    for (int c = 0; c < 4; ++c) add(rgba[c], image.linear_rgba.data() + c, 4);
-    add("Z", image.depth.data(), 1);
-    const char* normal[] = {"N.x", "N.y", "N.z"};
-    for (int c = 0; c < 3; ++c) add(normal[c], image.normal.data() + c, 3);
-    const char* albedo[] = {"albedo.R", "albedo.G", "albedo.B"};
-    for (int c = 0; c < 3; ++c) add(albedo[c], image.albedo.data() + c, 3);
-    add("steps", image.steps.data(), 1);
-    add("mask", mask.data(), 1);
-    Imf::OutputFile exr(stream, header);
-    exr.setFrameBuffer(frame);
-    exr.writePixels(image.height_px);
+    ExrStream exr(*out, image.width_px, image.height_px);
+    exr.write_rows(image);
+    exr.finish();
+    return true;
   } catch (const std::exception& e) {
     const std::string what = e.what();
-    *error =
-        what.rfind("cannot write", 0) == 0 ? what : "cannot write " + file.string() + ": " + what;
+    *error = what.rfind("cannot write " + file.string(), 0) == 0
+                 ? what
+                 : "cannot write " + file.string() + ": " + what;
     return false;
   }
-  if (!stream.error().empty()) {
-    *error = stream.error();
-    return false;
-  }
-  return out->commit(error);
 }
 
 }  // namespace fr

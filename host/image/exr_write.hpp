@@ -13,9 +13,11 @@
 // The file is written like every output (io/atomic_file.hpp): whole or not at all.
 #pragma once
 
+#include "io/atomic_file.hpp"
 #include "render/renderer.hpp"
 
 #include <filesystem>
+#include <memory>
 #include <string>
 
 namespace fr {
@@ -23,8 +25,29 @@ namespace fr {
 // True when `file`'s name ends in .exr (any case).
 bool is_exr_file_name(const std::filesystem::path& file);
 
-// Writes `image` (read back with Readback::Everything). On failure returns false with *error
-// naming the file and why, leaving any existing file untouched.
+// An EXR written a band of rows at a time (posters: image/poster.hpp), top to bottom, into an
+// OutputFile, which must be seekable (OpenEXR goes back to index its scanlines).
+class ExrStream {
+ public:
+  // Writes the header of a width_px x height_px image. Throws std::runtime_error.
+  ExrStream(OutputFile& out, int width_px, int height_px);
+  ~ExrStream();
+  ExrStream(const ExrStream&) = delete;
+  ExrStream& operator=(const ExrStream&) = delete;
+
+  // The next band: a frame read back with Readback::Everything, as wide as the image.
+  void write_rows(const FrameImage& band);
+  // After the last row: the scanline index, then the file committed. Throws.
+  void finish();
+
+  struct State;
+
+ private:
+  std::unique_ptr<State> state_;
+};
+
+// Writes `image` (read back with Readback::Everything) whole. On failure returns false with
+// *error naming the file and why, leaving any existing file untouched.
 bool write_exr_atomic(const std::filesystem::path& file, const FrameImage& image,
                       std::string* error);
 

@@ -1,9 +1,11 @@
 #include "image/poster.hpp"
 
+#include "image/exr_write.hpp"
 #include "image/png_stream.hpp"
 #include "render/precision.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <stdexcept>
 
 namespace fr {
@@ -12,6 +14,10 @@ int poster_band_rows(int width_px, int height_px, uint64_t band_pixels) {
   return static_cast<int>(
       std::clamp<uint64_t>(band_pixels / static_cast<uint64_t>(std::max(width_px, 1)), 1,
                            static_cast<uint64_t>(std::max(height_px, 1))));
+}
+
+uint64_t poster_band_pixels(const std::filesystem::path& file) {
+  return is_exr_file_name(file) ? kExrPosterBandPixels : kPosterBandPixels;
 }
 
 PosterResult render_poster(ClRuntime& runtime, const SceneInfo& info, const SceneState& state,
@@ -31,7 +37,13 @@ PosterResult render_poster(ClRuntime& runtime, const SceneInfo& info, const Scen
   std::string error;
   auto out = OutputFile::open(file, &error);
   if (!out) throw std::runtime_error(error);
-  PngStream png(*out, width, height);
+  const bool exr = is_exr_file_name(file);
+  std::optional<PngStream> png;
+  std::optional<ExrStream> exr_stream;
+  if (exr)
+    exr_stream.emplace(*out, width, height);
+  else
+    png.emplace(*out, width, height);
   Renderer renderer(runtime);
   FrameImage band;
   for (int b = 0; b < result.bands; ++b) {
@@ -40,8 +52,11 @@ PosterResult render_poster(ClRuntime& runtime, const SceneInfo& info, const Scen
     s.height_px = rows;
     s.window = {width, height, 0, y0};
     for (int i = 0; i < std::max(1, s.samples); ++i) renderer.render_sample(info, state, s, i);
-    renderer.finish(s, Readback::DisplayAndSteps, band);
-    png.write_rows(band.rgba8.data(), rows);
+    renderer.finish(s, exr ? Readback::Everything : Readback::DisplayAndSteps, band);
+    if (exr)
+      exr_stream->write_rows(band);
+    else
+      png->write_rows(band.rgba8.data(), rows);
     const RayCounts counts = count_rays(band);
     result.rays.hit += counts.hit;
     result.rays.miss += counts.miss;
@@ -50,7 +65,10 @@ PosterResult render_poster(ClRuntime& runtime, const SceneInfo& info, const Scen
     result.lanes = band.lanes;
     if (progress) progress(b + 1, result.bands);
   }
-  png.finish();
+  if (exr)
+    exr_stream->finish();
+  else
+    png->finish();
   return result;
 }
 

@@ -1,5 +1,6 @@
 // poster.hpp — an image of any size up to 65535 x 65535, rendered a band of rows at a time and
-// streamed to a PNG (png_stream.hpp), so memory stays that of one band however large the image.
+// streamed to a PNG (png_stream.hpp) or, for a file named *.exr, to an OpenEXR file with its
+// passes (exr_write.hpp), so memory stays that of one band however large the image.
 //
 // Each band is a window of the whole image (render/camera.hpp's window_rays): the same ray
 // through every pixel as a render of the whole, so bands join without seams. Every band gets all
@@ -18,6 +19,11 @@ namespace fr {
 // Pixels per band by default: 8 M (about 0.4 GB of device buffers and 0.2 GB on the host).
 constexpr uint64_t kPosterBandPixels = 8u << 20;
 
+// An EXR band reads every pass back (81 bytes a pixel on the host, not 9): half the pixels.
+constexpr uint64_t kExrPosterBandPixels = kPosterBandPixels / 2;
+// The band size for `file`: kExrPosterBandPixels for *.exr, else kPosterBandPixels.
+uint64_t poster_band_pixels(const std::filesystem::path& file);
+
 // Rows per band for a width_px x height_px poster: whole rows within band_pixels, at least one.
 int poster_band_rows(int width_px, int height_px, uint64_t band_pixels = kPosterBandPixels);
 
@@ -29,7 +35,8 @@ struct PosterResult {
 };
 
 // Renders `settings`' size of the scene in bands of at most `band_pixels` pixels (whole rows;
-// at least one row) and writes it to `file` as PNG, atomically. `progress(done, total)` is
+// at least one row) and writes it to `file` as PNG, or as OpenEXR when it is named *.exr,
+// atomically. `progress(done, total)` is
 // called after each band. Throws std::runtime_error (rendering or writing); nothing is left at
 // `file` then.
 PosterResult render_poster(ClRuntime& runtime, const SceneInfo& info, const SceneState& state,

@@ -243,7 +243,11 @@ void draw_overlay(Explorer& explorer, OverlayState& overlay) {
     ImGui::Checkbox("At window size", &overlay.screenshot_at_window_size);
     if (!overlay.screenshot_at_window_size)
       ImGui::InputInt2("Size", overlay.screenshot_size.data());
-    if (ImGui::Button("Save PNG (F12)")) overlay.screenshot_requested = true;
+    ImGui::InputText("Screenshot file", overlay.screenshot_file.data(),
+                     overlay.screenshot_file.size());
+    if (ImGui::Button("Save screenshot (F12)")) overlay.screenshot_requested = true;
+    ImGui::SameLine();
+    ImGui::TextUnformatted(".png, or .exr with passes");
   }
   // The same messages the terminal shows (io/log.hpp), newest last.
   for (const std::string& m : recent_log_messages(8)) ImGui::TextWrapped("%s", m.c_str());

@@ -17,7 +17,8 @@ struct OverlayState {
   bool visible = true;
   std::vector<fr_camera> bookmarks;
   std::array<int, 2> screenshot_size{1920, 1080};
-  std::string screenshot_file = "fractalis-screenshot.png";
+  // The screenshot's file: a PNG, or an OpenEXR file with its passes when named *.exr.
+  std::array<char, 1024> screenshot_file{"fractalis-screenshot.png"};
   bool screenshot_requested = false;
   bool screenshot_at_window_size = true;
   std::array<char, 1024> path_file{"fractalis-path.toml"};  // the camera path's Save / Load file
