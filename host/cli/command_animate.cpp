@@ -188,12 +188,15 @@ int command_animate(const std::vector<std::string>& args, std::ostream& out, std
   progress.finish();
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  out << "rendered " << done - already << " frames of " << info.id << " at " << p.render.width_px
-      << "x" << p.render.height_px << ", " << fps << " fps on " << p.device.name << " in "
-      << static_cast<int>(seconds + 0.5) << " s; wrote " << out_path.string();
+  const int rendered = done - already;
+  out << "rendered " << rendered << (rendered == 1 ? " frame of " : " frames of ") << info.id
+      << " at " << p.render.width_px << "x" << p.render.height_px << ", " << fps << " fps on "
+      << p.device.name << " in " << static_cast<int>(seconds + 0.5) << " s; wrote "
+      << out_path.string();
   if (video)
-    out << " (" << video->codec << ", " << plan->frames << " frames, "
-        << static_cast<double>(plan->frames) / fps << " s)";
+    out << " (" << video->codec << ", " << plan->frames
+        << (plan->frames == 1 ? " frame, " : " frames, ") << static_cast<double>(plan->frames) / fps
+        << " s)";
   out << "\n";
   if (pixels > 0 && 100.0 * out_of_steps / pixels > kOutOfStepsWarnPercent)
     spdlog::warn("{:.2f}% of rays ran out of steps (render.max_steps = {}); raise render.max_steps",
