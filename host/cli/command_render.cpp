@@ -54,8 +54,7 @@ void report_rays(const FrameImage& image, const fr_camera& camera, const RenderS
 }
 
 // A size over poster_band_pixels: rendered a band of rows at a time and streamed to the PNG or
-// EXR file
-// (image/poster.hpp), with a progress bar on a terminal.
+// EXR file (image/poster.hpp), with a progress bar on a terminal.
 int render_in_bands(const PreparedScene& p, const std::string& out_file, std::ostream& report,
                     std::ostream& err) {
   const int width = p.render.width_px, height = p.render.height_px;
