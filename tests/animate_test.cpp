@@ -248,15 +248,16 @@ TEST(Animate, BadInputIsRefusedBeforeRendering) {
 namespace fr {
 namespace {
 
-// The benchmark scene's route is the ordinary path file paths/benchmark.toml, flown by `bench`:
-// a lap at radius 7.4 bobbing 1.8 + 0.6 sin(2a) (the formula the scene's update callback used),
-// which the spline through its 17 keyframes follows closely.
+// The benchmark scene's route is the ordinary path file config/paths/benchmark.toml, flown by
+// `bench`: a lap at radius 7.4 bobbing 1.8 + 0.6 sin(2a) (the formula the scene's update callback
+// used), which the spline through its 17 keyframes follows closely.
 TEST(Animate, BenchmarkRouteIsAnOrdinaryPath) {
   auto scene = test::load_or_fail(std::filesystem::path(SCENE_PLUGIN_DIR) / "benchmark.so");
   ASSERT_TRUE(scene);
   std::vector<PathProblem> problems;
-  const auto path = load_camera_path(std::filesystem::path(SOURCE_DIR) / "paths" / "benchmark.toml",
-                                     scene->info, &problems);
+  const auto path =
+      load_camera_path(std::filesystem::path(SOURCE_DIR) / "config" / "paths" / "benchmark.toml",
+                       scene->info, &problems);
   ASSERT_TRUE(path) << problems.front().to_string();
   EXPECT_EQ(path->start_s(), 0.0);
   EXPECT_EQ(path->end_s(), 20.0);
@@ -284,9 +285,11 @@ TEST(Animate, BenchmarkRouteIsAnOrdinaryPath) {
 
   const CliRun r = run({"bench", "--frames", "2", "--runs", "1", "--size", "64x36"});
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.out.find("along " +
-                       (std::filesystem::path(SOURCE_DIR) / "paths" / "benchmark.toml").string()),
-            std::string::npos)
+  EXPECT_NE(
+      r.out.find(
+          "along " +
+          (std::filesystem::path(SOURCE_DIR) / "config" / "paths" / "benchmark.toml").string()),
+      std::string::npos)
       << r.out;
 }
 

@@ -52,10 +52,11 @@ int command_bench(const std::vector<std::string>& args, std::ostream& out, std::
   specs.push_back({"frames", "N", false, "timed frames per run (default 30)"});
   specs.push_back({"runs", "N", false, "runs of the whole path (default 3)"});
   specs.push_back({"duration", "SECONDS", false, "scene time one run covers (default 10)"});
-  specs.push_back({"path", "FILE", false,
-                   "camera path to fly (default for the benchmark scene: its route,\n"
-                   "                                 paths/benchmark.toml; others: their own "
-                   "animation)"});
+  specs.push_back(
+      {"path", "FILE", false,
+       "camera path to fly (default for the benchmark scene: its route,\n"
+       "                                 config/paths/benchmark.toml; others: their own "
+       "animation)"});
   specs.push_back({"json", "FILE", false, "also write the report as JSON (atomically)"});
   specs.push_back(
       {"explore", nullptr, false,
@@ -70,7 +71,8 @@ int command_bench(const std::vector<std::string>& args, std::ostream& out, std::
            "Renders a scene along its animation for a fixed number of frames, several times,\n"
            "after one untimed warm-up frame that builds the kernel, and reports frame times\n"
            "(min, max, average, p50, p95), fps, and the system it ran on. Without --scene it runs\n"
-           "the benchmark scene along its fixed route (the camera path paths/benchmark.toml);\n"
+           "the benchmark scene along its fixed route (the camera path "
+           "config/paths/benchmark.toml);\n"
            "--path flies any scene along a path. Each frame is the whole loop: camera path,\n"
            "scene update, render, tonemap, read-back. Any resolution works, for example the seed\n"
            "report's 1366x768, 1920x1080, 2560x1440 and 3840x2160.\n\n"

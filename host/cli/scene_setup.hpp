@@ -33,7 +33,7 @@ Settings load_settings(const ParsedOptions& options,
 std::vector<std::filesystem::path> plugin_folders(const Settings& settings,
                                                   const ParsedOptions& options);
 
-// A camera path that ships with fractalis (paths/ in the source tree, share/fractalis/paths
+// A camera path that ships with fractalis (config/paths/ in the source tree, share/fractalis/paths
 // installed), for the executable that runs: "benchmark.toml" is the benchmark scene's route.
 std::filesystem::path shipped_path_file(const std::string& name);
 

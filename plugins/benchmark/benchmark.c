@@ -1,8 +1,9 @@
 /* benchmark.c — the scene the seed report's benchmark (FR-3.1, 5.2) asks for: fractal and
  * primitive geometry (a Mandelbulb and a Menger sponge on a reflective floor with spheres), two
  * coloured point lights with attenuation, ambient occlusion, soft shadows and reflections. Its
- * fixed camera route is the ordinary camera path paths/benchmark.toml, which `fractalis bench`
- * flies for this scene: a function of time only, so every run renders the same frames. */
+ * fixed camera route is the ordinary camera path config/paths/benchmark.toml, which
+ * `fractalis bench` flies for this scene: a function of time only, so every run renders the
+ * same frames. */
 #include "fractalis/fractalis.h"
 
 extern const char fr_de_source[];
@@ -45,13 +46,14 @@ static const fr_scene_desc scene = {
     .struct_size = sizeof(fr_scene_desc),
     .id = "benchmark",
     .name = "Benchmark",
-    .version = "2.0.0", /* 2: the route left the update callback for paths/benchmark.toml */
+    /* 2.0.0: the route left the update callback for config/paths/benchmark.toml */
+    .version = "2.0.0",
     .author = "The Fractalis developers",
     .license = "MIT",
     .description =
         "A Mandelbulb and a Menger sponge on a reflective floor with spheres, two "
         "coloured lights and every effect on; `fractalis bench` flies its fixed route, "
-        "paths/benchmark.toml.",
+        "config/paths/benchmark.toml.",
     .de_source = fr_de_source,
     .de_source_name = "benchmark.cl",
     .surface_source = fr_surface_source,
