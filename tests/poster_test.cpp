@@ -9,6 +9,15 @@
 namespace fr {
 namespace {
 
+// 97 x 61 in float: odd sizes, so packets are partial and the last band is short.
+RenderSettings odd_size() {
+  RenderSettings s;
+  s.width_px = 97;
+  s.height_px = 61;
+  s.precision = Precision::Float;
+  return s;
+}
+
 // 97 x 61 (odd sizes: partial packets and a short last band), in bands of 7 rows, against one
 // render of the whole: every pixel within 1/255 and at most 0.1% differing at all (float
 // rounding of the shifted first ray direction), and the bands' ray counts add up to the whole's.
@@ -16,10 +25,7 @@ TEST(Poster, BandsJoinWithoutSeams) {
   const auto scene = test::mandelbulb();
   ASSERT_TRUE(scene);
   SceneState state = make_default_state(scene->info);
-  RenderSettings s;
-  s.width_px = 97;
-  s.height_px = 61;
-  s.precision = Precision::Float;
+  const RenderSettings s = odd_size();
   Renderer whole_renderer(test::runtime());
   const FrameImage whole = whole_renderer.render(scene->info, state, s, true);
 
@@ -48,10 +54,7 @@ TEST(Poster, ExrBandsJoinWithoutSeams) {
   const auto scene = test::mandelbulb();
   ASSERT_TRUE(scene);
   SceneState state = make_default_state(scene->info);
-  RenderSettings s;
-  s.width_px = 97;
-  s.height_px = 61;
-  s.precision = Precision::Float;
+  const RenderSettings s = odd_size();
   const FrameImage whole = Renderer(test::runtime()).render(scene->info, state, s, true);
   const auto dir = test::fresh_dir("poster_exr");
   std::string error;
