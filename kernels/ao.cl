@@ -21,6 +21,7 @@ real_t sampled_ao(vec3_t p, vec3_t n, __constant const fr_frame_constants* fc,
   return clamp((real_t)1 - (real_t)fc->ao_strength * (real_t)0.5 * occlusion, (real_t)0, (real_t)1);
 }
 #define FR_APPLY_AO(ao, p, n, m) ao = sampled_ao(p, n, fc, params)
+#define FR_AO_EVALS (fc->ao_samples)
 #else
 /* Normalised by a fixed step count, not the step budget: raising max_steps must not change
  * converged pixels. */

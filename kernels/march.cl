@@ -63,7 +63,7 @@ inline mask_t intersect_bounds(ray_t ray, scalar_t radius, real_t* t_enter, real
  *    counts these rays and warns when there are many. */
 #define FR_CANDIDATE_MAX_ERROR 4
 march_result_t march(ray_t ray, real_t path_t, __constant const fr_frame_constants* fc,
-                     __constant const scene_params_t* params) {
+                     __constant const scene_params_t* params FR_COUNTS_PARAM) {
   real_t t, t_exit;
   mask_t active = intersect_bounds(ray, fc->bounding_radius, &t, &t_exit);
   active &= t < t_exit;
@@ -79,6 +79,7 @@ march_result_t march(ray_t ray, real_t path_t, __constant const fr_frame_constan
   for (int i = 0; i < fc->max_steps && any_lane(active); ++i) {
     vec3_t p = v3_mad(ray.origin, ray.dir, t);
     real_t dist = scene_de(p, params) * (real_t)fc->step_scale;
+    FR_COUNT(FR_COUNT_MARCH, active, 1);
     real_t eps = hit_threshold(fc, path_t + t, p);
     FR_MARCH_TRACK(min_dist, dist, active);
     steps += mask_to_real(active);
@@ -120,6 +121,7 @@ march_result_t march(ray_t ray, real_t path_t, __constant const fr_frame_constan
   const mask_t converged = hit;
   for (int i = 0; i < fc->refine_steps && any_lane(converged); ++i) {
     const real_t dist = scene_de(v3_mad(ray.origin, ray.dir, t), params) * (real_t)fc->step_scale;
+    FR_COUNT(FR_COUNT_MARCH, converged, 1);
     t = lane_select(converged, t + fmax(dist, (real_t)0), t);
   }
   march_result_t r;

@@ -3,6 +3,12 @@
  *   FR_NORMALS_TETRAHEDRON  tetrahedron: four DE evaluations at p + h k_i, k_i the corners of a tetrahedron
  *   FR_NORMALS_CENTRAL      central differences: six evaluations, p +- h along each axis (seed report 9.4) */
 
+#if FR_NORMALS == FR_NORMALS_CENTRAL
+#define FR_NORMAL_EVALS 6
+#else
+#define FR_NORMAL_EVALS 4
+#endif
+
 vec3_t calc_normal(vec3_t p, real_t h, __constant const scene_params_t* params) {
 #if FR_NORMALS == FR_NORMALS_CENTRAL
   vec3_t n = v3(scene_de(v3(p.x + h, p.y, p.z), params) - scene_de(v3(p.x - h, p.y, p.z), params),

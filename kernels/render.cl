@@ -19,6 +19,9 @@
 #ifndef FR_APPLY_AO
 #define FR_APPLY_AO(ao, p, n, m)
 #endif
+#ifndef FR_AO_EVALS
+#define FR_AO_EVALS 0
+#endif
 #ifndef FR_APPLY_FOG
 #define FR_APPLY_FOG(color, t)
 #endif
@@ -43,7 +46,9 @@ __kernel void fr_render(__constant const fr_frame_constants* fc,
                         __constant const scene_params_t* params, __global float* hdr_rgba,
                         __global float* depth, __global float* steps_out,
                         __global float* factors_out, __global uchar* status_out,
-                        __global float* normal_out, __global float* albedo_out) {
+                        __global float* normal_out, __global float* albedo_out,
+                        __global uint* counts_out) {
+  FR_COUNTS_BEGIN;
   const int tile_x = get_global_id(0) * FR_TILE_W;
   const int tile_y = get_global_id(1) * FR_TILE_H;
   const real_t px = (real_t)tile_x + FR_LANE_X;
@@ -61,7 +66,8 @@ __kernel void fr_render(__constant const fr_frame_constants* fc,
   vec3_t first_normal = v3s(0, 0, 0), first_albedo = v3s(0, 0, 0);
   const int bounces = FR_MAX_BOUNCES(fc);
   for (int bounce = 0; bounce <= bounces; ++bounce) {
-    march_result_t m = march(ray, path_t, fc, params);
+    FR_COUNT_BOUNCE(bounce);
+    march_result_t m = march(ray, path_t, fc, params FR_COUNTS_ARG);
     const mask_t hit = active & m.hit;
     const mask_t miss = active & !m.hit & !m.inside;
     vec3_t segment = sky_color(ray.dir, fc);
@@ -77,13 +83,17 @@ __kernel void fr_render(__constant const fr_frame_constants* fc,
        * accuracy) must not turn the shading into sub-pixel noise. */
       const real_t normal_h = fmax(h, (real_t)(0.5f * fc->pixel_angle_rad) * (path_t + m.t));
       vec3_t gradient = calc_normal(p, normal_h, params);
+      FR_COUNT(FR_COUNT_NORMALS, hit, FR_NORMAL_EVALS);
       /* A degenerate normal (all samples equal) faces the viewer. */
       n = v3_select(v3_length2(gradient) > (real_t)0, gradient, n);
       surface_t surface = surface_at(p);
+      FR_COUNT(FR_COUNT_SURFACE, hit, FR_HAS_SURFACE);
       real_t ao = (real_t)1;
       FR_APPLY_AO(ao, p, n, m);
+      FR_COUNT(FR_COUNT_AO, hit, FR_AO_EVALS);
       real_t shadow = (real_t)1;
-      vec3_t lit = shade_surface(p, n, ray.dir, surface, ao, h, hit, fc, params, &shadow);
+      vec3_t lit = shade_surface(p, n, ray.dir, surface, ao, h, hit, fc, params,
+                               &shadow FR_COUNTS_ARG);
       FR_APPLY_FOG(lit, path_t + m.t);
       segment = v3_select(hit, lit, segment);
       reflectivity = lane_select(hit, clamp(surface.reflectivity, (real_t)0, (real_t)1), 0);
@@ -113,6 +123,8 @@ __kernel void fr_render(__constant const fr_frame_constants* fc,
     path_t += m.t;
     FR_BOUNCE(ray, p, n, h);
   }
+
+  FR_COUNTS_END(counts_out);
 
   /* Scatter the lanes to their pixels; tiles at the right and bottom edges are partial. */
   float r[FR_LANES], g[FR_LANES], b[FR_LANES], d[FR_LANES], s[FR_LANES], o[FR_LANES],

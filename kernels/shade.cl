@@ -9,7 +9,7 @@
  * Linear RGB, unbounded (tonemapped in post.cl). */
 
 #ifndef FR_APPLY_SHADOWS
-#define FR_APPLY_SHADOWS(shadow, p, n, h, light, lanes)
+#define FR_APPLY_SHADOWS(shadow, p, n, h, light, light_index, lanes)
 #endif
 
 vec3_t sky_color(vec3_t dir, __constant const fr_frame_constants* fc) {
@@ -62,7 +62,8 @@ vec3_t brdf_cos(vec3_t n, vec3_t to_light, vec3_t to_eye, vec3_t albedo, real_t 
 /* The colour of the surface at p seen along view_dir, and the first light's shadow factor. */
 vec3_t shade_surface(vec3_t p, vec3_t n, vec3_t view_dir, surface_t surface, real_t ao, real_t h,
                      mask_t lanes, __constant const fr_frame_constants* fc,
-                     __constant const scene_params_t* params, real_t* first_shadow) {
+                     __constant const scene_params_t* params,
+                     real_t* first_shadow FR_COUNTS_PARAM) {
   vec3_t to_eye = v3_neg(view_dir);
   vec3_t color = v3_mul(surface.albedo, v3_scale(v3_from_float4(fc->ambient_color), ao));
   *first_shadow = (real_t)1;
@@ -75,7 +76,7 @@ vec3_t shade_surface(vec3_t p, vec3_t n, vec3_t view_dir, surface_t surface, rea
       continue;
     }
     real_t shadow = (real_t)1;
-    FR_APPLY_SHADOWS(shadow, p, n, h, light, facing);
+    FR_APPLY_SHADOWS(shadow, p, n, h, light, i, facing);
     shadow = lane_select(facing, shadow, 0);
     if (i == 0) *first_shadow = shadow;
     vec3_t reflected = brdf_cos(n, light.to_light, to_eye, surface.albedo, n_dot_l, fc);

@@ -6,7 +6,8 @@
 
 real_t shadow_factor(vec3_t origin, vec3_t to_light, real_t t_start, real_t light_distance,
                      __constant const fr_frame_constants* fc,
-                     __constant const scene_params_t* params, mask_t lanes) {
+                     __constant const scene_params_t* params, mask_t lanes,
+                     int light_index FR_COUNTS_PARAM) {
   ray_t ray;
   ray.origin = origin;
   ray.dir = to_light;
@@ -19,6 +20,7 @@ real_t shadow_factor(vec3_t origin, vec3_t to_light, real_t t_start, real_t ligh
   for (int i = 0; i < fc->shadow_max_steps && any_lane(active); ++i) {
     vec3_t p = v3_mad(origin, to_light, t);
     real_t dist = scene_de(p, params);
+    FR_COUNT(FR_COUNT_SHADOW + light_index, active, 1);
 #if FR_SHADOW == FR_SHADOW_SOFT
     lit = lane_select(active, fmin(lit, (real_t)fc->shadow_softness * dist / t), lit);
 #else
@@ -32,6 +34,6 @@ real_t shadow_factor(vec3_t origin, vec3_t to_light, real_t t_start, real_t ligh
 }
 
 /* The renderer's hook (shade.cl): start just off the surface, along the normal. */
-#define FR_APPLY_SHADOWS(shadow, p, n, h, light, lanes)                                      \
+#define FR_APPLY_SHADOWS(shadow, p, n, h, light, light_index, lanes)                         \
   shadow = shadow_factor(v3_mad(p, n, 2 * (h)), (light).to_light, 4 * (h), (light).distance, \
-                         fc, params, lanes)
+                         fc, params, lanes, light_index FR_COUNTS_ARG)

@@ -133,6 +133,7 @@ const FrameImage* Explorer::render(int window_width_px, int window_height_px) {
   s.height_px =
       std::max(1, static_cast<int>(std::lround(window_height_px * plan.resolution_scale)));
   s.max_steps = std::max(16, static_cast<int>(s.max_steps * plan.step_budget));
+  s.count_evaluations = count_evaluations_;
   SceneSlot& slot = current();
   const auto start = std::chrono::steady_clock::now();
   try {
@@ -154,9 +155,17 @@ const FrameImage* Explorer::render(int window_width_px, int window_height_px) {
     stats_.de_steps_per_pixel = total / static_cast<double>(last_.steps.size());
     stats_.out_of_steps_fraction =
         double(count_rays(last_).out_of_steps) / static_cast<double>(last_.steps.size());
+    if (count_evaluations_) stats_.eval_counts = renderer_.eval_counts();
   }
   stats_.precision = last_.precision;
   return &last_;
+}
+
+void Explorer::set_count_evaluations(bool on) {
+  if (on == count_evaluations_) return;
+  count_evaluations_ = on;
+  stats_.eval_counts = EvalCounts{};
+  changed_ = true;
 }
 
 bool Explorer::screenshot(const std::filesystem::path& file, int width_px, int height_px,

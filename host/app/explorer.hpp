@@ -26,6 +26,8 @@ struct ExplorerStats {
   double out_of_steps_fraction = 0;  // primary rays of the last full frame that ran out of steps
   Precision precision = Precision::Float;  // what the last frame ran in (auto resolved)
   double surface_distance = 0;             // DE at the eye
+  // Where the last full frame's DE evaluations went, while counting is on (samples 0: off).
+  EvalCounts eval_counts;
 };
 
 class Explorer {
@@ -56,6 +58,9 @@ class Explorer {
   void set_camera_mode(CameraMode m) { mode_ = m; }
   bool mouse_look() const { return mouse_look_; }
   void set_mouse_look(bool on) { mouse_look_ = on; }
+  // Per-stage DE counters (render/eval_counts.hpp): a counting kernel, a little slower.
+  bool count_evaluations() const { return count_evaluations_; }
+  void set_count_evaluations(bool on);
   // Something outside update() (the overlay) changed the scene or settings: refine again.
   void mark_changed() { changed_ = true; }
 
@@ -77,6 +82,7 @@ class Explorer {
   bool mouse_look_ = false;
   int current_ = 0;
   bool changed_ = true;
+  bool count_evaluations_ = false;
   ExplorerStats stats_;
   PathRecorder path_;
   FrameImage last_;

@@ -40,6 +40,7 @@ std::string format_bench_text(const BenchReport& r) {
     for (double m : r.run_mean_ms) out << " " << fixed(m) << " ms";
     out << "\n";
   }
+  if (r.counts.samples > 0) out << format_eval_counts(r.counts);
   const SystemInfo& y = r.system;
   out << "system: " << y.cpu_model << ", " << y.logical_cores << " logical cores, "
       << fixed(static_cast<double>(y.memory_bytes) / (1024.0 * 1024 * 1024), 1) << " GiB, " << y.os
@@ -52,7 +53,13 @@ std::string format_bench_text(const BenchReport& r) {
 std::string format_bench_json(const BenchReport& r) {
   const FrameStats& s = r.stats;
   const SystemInfo& y = r.system;
-  const nlohmann::ordered_json j = {
+  nlohmann::ordered_json stages = nlohmann::ordered_json::array();
+  for (const StageCount& c : stage_counts(r.counts))
+    stages.push_back({{"bounce", c.bounce},
+                      {"stage", c.stage},
+                      {"per_pixel", c.evals_per_pixel},
+                      {"utilisation", c.utilisation}});
+  nlohmann::ordered_json j = {
       {"scene", r.scene_id},
       {"scene_version", r.scene_version},
       {"resolution", {{"width", r.width_px}, {"height", r.height_px}}},
@@ -83,6 +90,11 @@ std::string format_bench_json(const BenchReport& r) {
         {"opencl_device_version", y.opencl_device_version},
         {"opencl_driver", y.opencl_driver}}},
   };
+  if (r.counts.samples > 0)
+    j["de_evaluations"] = {{"per_pixel", total_evals_per_pixel(r.counts)},
+                           {"utilisation", total_utilisation(r.counts)},
+                           {"lanes", r.counts.lanes},
+                           {"stages", stages}};
   return json_text(j);
 }
 

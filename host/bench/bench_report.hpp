@@ -3,6 +3,7 @@
 
 #include "bench/frame_stats.hpp"
 #include "bench/system_info.hpp"
+#include "render/eval_counts.hpp"
 
 #include <string>
 
@@ -23,6 +24,9 @@ struct BenchReport {
   double kernel_build_ms = 0;  // untimed warm-up frame, including the kernel build
   FrameStats stats;
   std::vector<double> run_mean_ms;  // one per run
+  // DE evaluations of one counted pass over the same frames (untimed; counting kernels are
+  // slower); samples == 0: not counted.
+  EvalCounts counts;
   SystemInfo system;
 };
 

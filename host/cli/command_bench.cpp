@@ -140,6 +140,13 @@ int command_bench(const std::vector<std::string>& args, std::ostream& out, std::
     all.insert(all.end(), times.begin(), times.end());
   }
   report.wall_s = (now_ms() - wall_start) / 1000.0;
+  // Where the evaluations went: the frames of one run again, with a counting kernel (untimed).
+  p.render.count_evaluations = true;
+  for (int i = 0; i < frames; ++i) {
+    frame(duration * i / frames);
+    add_eval_counts(report.counts, renderer.eval_counts());
+  }
+  p.render.count_evaluations = false;
   report.stats = summarize_frames(all);
   report.scene_id = p.scene->info.id;
   report.scene_version = p.scene->info.version;

@@ -102,6 +102,9 @@ int command_render(const std::vector<std::string>& args, std::ostream& out, std:
   specs.push_back({"path", "FILE", false,
                    "camera path (TOML keyframes): the view and parameters at --time (default: "
                    "its first keyframe); --eye, --param and the like still override"});
+  specs.push_back({"counts", nullptr, false,
+                   "also report where the DE evaluations went, per stage (a counting kernel:\n"
+                   "                                 slower; the picture is the same)"});
   specs.push_back({"help", nullptr, false, "show this help"});
   auto options = parse_options("render", args, specs);
   if (options.has("help")) {
@@ -129,6 +132,7 @@ int command_render(const std::vector<std::string>& args, std::ostream& out, std:
                        "its scanlines)");
   }
   PreparedScene p = prepare_scene(options, kMaxPosterSide);
+  p.render.count_evaluations = options.has("counts");
 
   std::string error;
   if (!p.instance->update(p.state, p.state.time_s, &error)) {
@@ -136,8 +140,13 @@ int command_render(const std::vector<std::string>& args, std::ostream& out, std:
     return 1;
   }
   std::ostream& report = is_standard_output(out_file) ? err : out;
-  if (static_cast<uint64_t>(p.render.width_px) * p.render.height_px > poster_band_pixels(out_file))
+  if (static_cast<uint64_t>(p.render.width_px) * p.render.height_px >
+      poster_band_pixels(out_file)) {
+    if (p.render.count_evaluations)
+      throw UsageError("--counts: not for images rendered in bands (over " +
+                       std::to_string(poster_band_pixels(out_file)) + " pixels)");
     return render_in_bands(p, out_file, report, err);
+  }
   check_memory(p.render, p.device, true);
   ClRuntime runtime(p.device);
   Renderer renderer(runtime);
@@ -166,6 +175,7 @@ int command_render(const std::vector<std::string>& args, std::ostream& out, std:
          << precision_name(image.precision) << "): kernel build " << static_cast<int>(build_ms)
          << " ms, render " << static_cast<int>(render_ms) << " ms; wrote " << out_file << "\n";
   report_rays(image, p.state.camera, p.render, report);
+  if (p.render.count_evaluations) report << format_eval_counts(renderer.eval_counts());
   return 0;
 }
 

@@ -33,6 +33,7 @@ struct PipelineFile {
   const char* file;
 };
 const PipelineFile kRenderPipeline[] = {
+    {0, "eval_counts.cl"},
     {0, "rays.cl"},
     {kStageDepthOfField, "lens.cl"},
     {FR_FEATURE_GLOW, "glow.cl"},
@@ -188,6 +189,7 @@ void append_scene_prefix(std::ostringstream& out, const SceneInfo& info,
   define_choice(out, "FR_SHADOW", config.shadow_method);
   define_choice(out, "FR_FOG", config.fog_method);
   out << "#define FR_HAS_SURFACE " << (has_surface ? 1 : 0) << "\n";
+  out << "#define FR_COUNT_EVALS " << (config.count_evaluations ? 1 : 0) << "\n";
   append_file(out, "frame_constants.h", kernel_source("frame_constants.h"));
   append_file(out, "prelude.cl", kernel_source("prelude.cl"));
   append_params(out, info, values, config.precision);
@@ -211,7 +213,8 @@ AssembledKernel finish(std::ostringstream& out, const SceneInfo& info, const Ker
   k.description = "scene '" + info.id + "' " + kind + " kernel (lanes " +
                   std::to_string(config.lanes) + ", " +
                   (config.precision == Precision::Double ? "double" : "float") +
-                  ", stages: " + stage_names(config.stages) + ")";
+                  ", stages: " + stage_names(config.stages) +
+                  (config.count_evaluations ? ", counting DE evaluations" : "") + ")";
   return k;
 }
 
@@ -247,6 +250,7 @@ KernelConfig make_kernel_config(const SceneInfo& info, const RenderSettings& s, 
   c.shadow_method = s.shadow_method;
   c.fog_method = s.fog_method;
   c.fast_math = s.fast_math;
+  c.count_evaluations = s.count_evaluations;
   return c;
 }
 

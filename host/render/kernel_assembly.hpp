@@ -31,6 +31,7 @@ struct KernelConfig {
   ShadowMethod shadow_method = ShadowMethod::Soft;
   FogMethod fog_method = FogMethod::Exponential;
   bool fast_math = false;  // -cl-fast-relaxed-math (off by default, see kernel_assembly.cpp)
+  bool count_evaluations = false;  // FR_COUNT_EVALS: per-stage DE counters (eval_counts.cl)
 };
 
 // The kernel configuration a frame with these settings compiles for this scene.

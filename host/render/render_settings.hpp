@@ -114,6 +114,9 @@ struct RenderSettings {
   float step_scale = 1.0f;
   float relaxation = 1.3f;  // over-relaxed sphere tracing's omega; 1 is plain sphere tracing
   bool fast_math = false;   // build with -cl-fast-relaxed-math (finite-math-only, relaxed trig)
+  // Diagnostics, not a quality knob: build the kernel with the per-stage DE counters
+  // (render/eval_counts.hpp; Renderer::eval_counts reads them). Changes no pixel.
+  bool count_evaluations = false;
   float ao_strength = 2.5f;
   int ao_reference_steps = 160;  // step-count AO: this many march steps is full occlusion
   float ao_distance = 0.1f;      // x bounding radius

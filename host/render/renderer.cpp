@@ -35,11 +35,15 @@ size_t round_up_div(size_t n, size_t d) {
   return (n + d - 1) / d;
 }
 
+constexpr size_t kCountWords = size_t{FR_COUNT_SLOTS} * FR_COUNT_CELLS * 2;
+constexpr size_t kCountBytes = kCountWords * sizeof(cl_uint);
+
 }  // namespace
 
 Renderer::Renderer(ClRuntime& runtime) : runtime_(runtime) {
   constants_ = make_buffer(runtime_.context(), CL_MEM_READ_ONLY, sizeof(fr_frame_constants),
                            "frame constants");
+  counts_ = make_buffer(runtime_.context(), CL_MEM_READ_WRITE, kCountBytes, "the DE counters");
 }
 
 int Renderer::lanes_for(const RenderSettings& s) const {
@@ -107,9 +111,19 @@ void Renderer::render_sample(const SceneInfo& info, const SceneState& state,
                                 nullptr, nullptr),
            "clEnqueueWriteBuffer", "uploading scene parameters");
 
+  if (sample_index == 0) counted_samples_ = 0;
+  if (settings.count_evaluations) {
+    if (counted_samples_ == 0) {
+      const cl_uint zero = 0;
+      cl_check(clEnqueueFillBuffer(q, counts_.get(), &zero, sizeof zero, 0, kCountBytes, 0, nullptr,
+                                   nullptr),
+               "clEnqueueFillBuffer", "clearing the DE counters");
+    }
+    ++counted_samples_;
+  }
   const cl_mem args[] = {constants_.get(), params_.get(),  hdr_.get(),    depth_.get(),
                          steps_.get(),     factors_.get(), status_.get(), normal_.get(),
-                         albedo_.get()};
+                         albedo_.get(),    counts_.get()};
   for (cl_uint i = 0; i < std::size(args); ++i) set_arg(kernel, i, args[i]);
   const TileShape tile = tile_shape(lanes);
   const size_t global[2] = {round_up_div(w, tile.width_px), round_up_div(h, tile.height_px)};
@@ -227,6 +241,15 @@ void Renderer::finish(const RenderSettings& settings, Readback what, FrameImage&
       img.shadow[i] = factors[2 * i + 1];
     }
   }
+}
+
+EvalCounts Renderer::eval_counts() {
+  std::vector<uint32_t> words(kCountWords, 0);
+  if (counted_samples_ > 0)
+    cl_check(clEnqueueReadBuffer(runtime_.queue(), counts_.get(), CL_TRUE, 0, kCountBytes,
+                                 words.data(), 0, nullptr, nullptr),
+             "clEnqueueReadBuffer", "reading the DE counters");
+  return sum_eval_counts(words, last_lanes_, frame_pixels_, counted_samples_);
 }
 
 RayCounts count_rays(const FrameImage& image) {

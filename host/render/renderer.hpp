@@ -6,6 +6,7 @@
 #include "scene/scene_data.hpp"
 
 #include "render/cl_runtime.hpp"
+#include "render/eval_counts.hpp"
 #include "render/render_settings.hpp"
 
 #include <cstdint>
@@ -73,6 +74,10 @@ class Renderer {
                      int sample_index);
   void finish(const RenderSettings& settings, Readback what, FrameImage& image);
 
+  // The DE evaluations of the samples rendered since the last sample 0, when they were rendered
+  // with settings.count_evaluations (otherwise all zero). Waits for the device.
+  EvalCounts eval_counts();
+
   // The lane width a frame with these settings uses on this device.
   int lanes_for(const RenderSettings& settings) const;
 
@@ -96,6 +101,8 @@ class Renderer {
   ClBufferHandle constants_, params_, hdr_, depth_, steps_, factors_, status_, normal_, albedo_,
       rgba8_;
   size_t params_bytes_ = 0;
+  ClBufferHandle counts_;    // uint[FR_COUNT_SLOTS][FR_COUNT_CELLS][2], kernels/eval_counts.cl
+  int counted_samples_ = 0;  // samples counted into counts_ since it was last cleared
 };
 
 }  // namespace fr

@@ -128,6 +128,20 @@ void draw_overlay(Explorer& explorer, OverlayState& overlay) {
   ImGui::TextColored(many ? ImVec4(1, 0.6f, 0.2f, 1) : ImVec4(0.7f, 0.7f, 0.7f, 1),
                      "%.2f%% of rays out of steps%s; %s", 100 * st.out_of_steps_fraction,
                      many ? " (raise Max steps)" : "", precision_name(st.precision));
+  if (ImGui::CollapsingHeader("DE evaluations by stage")) {
+    bool counting = explorer.count_evaluations();
+    if (ImGui::Checkbox("Count them (a slower kernel)", &counting))
+      explorer.set_count_evaluations(counting);
+    if (counting && st.eval_counts.samples > 0) {
+      ImGui::Text("per pixel, busy lanes (lanes %d)", st.eval_counts.lanes);
+      for (const StageCount& c : stage_counts(st.eval_counts))
+        ImGui::Text("%s %-15s %7.2f %5.1f%%",
+                    c.bounce == 0 ? "primary " : ("bounce " + std::to_string(c.bounce)).c_str(),
+                    c.stage.c_str(), c.evals_per_pixel, 100 * c.utilisation);
+      ImGui::Text("total %24.2f %5.1f%%", total_evals_per_pixel(st.eval_counts),
+                  100 * total_utilisation(st.eval_counts));
+    }
+  }
 
   // Scenes.
   auto& slots = explorer.library().slots();
