@@ -16,6 +16,11 @@ inline real_t bench_bulb(vec3_t p, __constant const scene_params_t* params, real
   vec3_t q = p_translate(p, BULB_CENTRE);
   const scalar_t bound = pow((scalar_t)2, 1 / ((scalar_t)PARAM(bulb_power) - 1));
   const real_t to_bound = v3_length(q) - to_real(bound);
+  /* The same value as the select below gives, without the iterations, when no lane is near. */
+  if (all_lanes(to_bound > to_real(0.25))) {
+    *trap = to_real(1);
+    return to_bound;
+  }
   const real_t de = de_mandelbulb(v3(q.x, q.z, q.y), PARAM(bulb_power), to_real(2),
                                   PARAM(bulb_iterations), trap);
   return lane_select(to_bound > to_real(0.25), to_bound, de);
