@@ -6,6 +6,7 @@
 #define FR_FRAME_CONSTANTS_H
 
 #define FR_MAX_LIGHTS 8
+#define FR_CONE_BLOCK 8 /* pixels a side of the cone pre-pass's blocks (cone.cl) */
 
 /* DE-evaluation counters (kernels/eval_counts.cl), filled only by kernels built to count. One cell
  * per (bounce, kind): bounce 0 is the primary ray, 1..FR_COUNT_MAX_BOUNCES the mirror bounces;
@@ -18,7 +19,8 @@
 #define FR_COUNT_NORMALS 1
 #define FR_COUNT_SURFACE 2
 #define FR_COUNT_AO 3
-#define FR_COUNT_SHADOW 4
+#define FR_COUNT_CONE 4
+#define FR_COUNT_SHADOW 5
 #define FR_COUNT_KINDS (FR_COUNT_SHADOW + FR_MAX_LIGHTS)
 #define FR_COUNT_MAX_BOUNCES 8
 #define FR_COUNT_CELLS ((FR_COUNT_MAX_BOUNCES + 1) * FR_COUNT_KINDS)
@@ -102,6 +104,13 @@ typedef struct fr_frame_constants {
   float start_scale_lo;
   float ao_reference_steps; /* step-count AO: this many steps is full occlusion */
   int refine_steps;         /* plain DE steps after a hit, towards the surface (march.cl) */
+  /* The cone pre-pass (cone.cl): blocks of FR_CONE_BLOCK pixels on the whole image's grid, so
+   * that a window of it (a poster's band) has the same blocks; the phase is the window's offset
+   * into its first block. */
+  int cone_phase_x;
+  int cone_phase_y;
+  int cone_blocks_x; /* blocks covering this image (or window) */
+  int cone_blocks_y;
 } fr_frame_constants;
 
 #endif /* FR_FRAME_CONSTANTS_H */

@@ -39,7 +39,8 @@ inline mask_t intersect_bounds(ray_t ray, scalar_t radius, real_t* t_enter, real
 /* Marches each lane from where it enters the scene's bounding sphere until it is within the hit
  * threshold of the surface, leaves the sphere (a miss: there is no other maximum distance) or
  * runs out of steps. `path_t` is the length already travelled before this ray's origin (the
- * start plane, or a bounce), so the threshold keeps following the pixel's footprint.
+ * start plane, or a bounce), so the threshold keeps following the pixel's footprint. The march
+ * starts no nearer than t_min (where the cone pre-pass, cone.cl, found the way free; else 0).
  *
  * Over-relaxed (Keinert et al. 2014): each step is omega times the DE. Where the unbounding
  * spheres of two consecutive steps do not overlap, the step overshot the guarantee; the lane then
@@ -62,17 +63,24 @@ inline mask_t intersect_bounds(ray_t ray, scalar_t radius, real_t* t_enter, real
  *    (a ray creeping past an edge) as a miss. Either way `out_of_steps` is set, and the host
  *    counts these rays and warns when there are many. */
 #define FR_CANDIDATE_MAX_ERROR 4
-march_result_t march(ray_t ray, real_t path_t, __constant const fr_frame_constants* fc,
+march_result_t march(ray_t ray, real_t path_t, real_t t_min,
+                     __constant const fr_frame_constants* fc,
                      __constant const scene_params_t* params FR_COUNTS_PARAM) {
   real_t t, t_exit;
   mask_t active = intersect_bounds(ray, fc->bounding_radius, &t, &t_exit);
+  t = fmax(t, t_min);
   active &= t < t_exit;
   mask_t hit = FR_MASK_FALSE, inside = FR_MASK_FALSE, leaving = FR_MASK_FALSE;
   real_t steps = (real_t)0, ao_steps = (real_t)0;
   mask_t near = FR_MASK_FALSE;
   real_t min_dist = (real_t)FR_SCALAR_MAX;
   const real_t max_step = (real_t)fc->bounding_radius;
+#if FR_RELAX_ADAPTIVE
+  real_t omega = (real_t)1; /* of the step that led here: the first is plain */
+  mask_t plain_next = FR_MASK_TRUE;
+#else
   real_t omega = (real_t)fc->relaxation;
+#endif
   real_t previous_radius = (real_t)0;
   real_t step = (real_t)0;
   real_t best_t = t, best_error = (real_t)FR_SCALAR_MAX;
@@ -95,14 +103,35 @@ march_result_t march(ray_t ray, real_t path_t, __constant const fr_frame_constan
       leaving = active & at_origin & (dist < eps);
     }
     real_t radius = fabs(dist);
-    mask_t overshot = !leaving & (omega > (real_t)1) & (radius + previous_radius < step);
+    /* A relaxed step overshot where its sphere and the last one do not overlap, or where it
+     * landed inside the solid (a step that went through a surface can land deep enough for the
+     * spheres to overlap). */
+    mask_t overshot = !leaving & (omega > (real_t)1) &
+                      ((radius + previous_radius < step) | (dist < -eps));
+#if FR_RELAX_ADAPTIVE
+    /* The DE's slope along the ray over the last step. Were it linear, the next sphere would
+     * still overlap this one for any omega <= 2 / (1 - slope): 1 heading straight at a surface
+     * (slope -1), 2 running parallel to one (slope 0). Take 95% of that, at most the user's
+     * relaxation; plain after a step back. Overshot: back to where the previous (safe) sphere
+     * ended, exactly, and relax again from there (Bán and Valasek 2023's automatic relaxation,
+     * with Keinert et al.'s overlap test as its guard). */
+    const real_t slope = (radius - previous_radius) / fmax(step, (real_t)FR_SCALAR_MIN);
+    const real_t next_omega = lane_select(
+        plain_next, 1,
+        clamp((real_t)1.9 / fmax((real_t)1 - slope, (real_t)FR_SCALAR_EPSILON), (real_t)1,
+              (real_t)fc->relaxation));
+    step = lane_select(overshot, previous_radius - step, fmin(dist * next_omega, max_step));
+    omega = lane_select(overshot, 1, next_omega);
+    plain_next = overshot;
+#else
     /* Overshot: go back to where the previous (safe) sphere ended, unrelaxed from here on. */
     step = lane_select(overshot, step - omega * step, fmin(dist * omega, max_step));
+#endif
     /* Leaving a surface: steps of at least eps, unrelaxed; a hit only once the ray has gone
      * through it (DE below -eps), so looking away from the surface is never a hit at the eye. */
     step = lane_select(leaving, fmin(fmax(radius, eps), max_step), step);
     omega = lane_select(overshot | leaving, 1, omega);
-    previous_radius = radius;
+    previous_radius = lane_select(overshot, previous_radius, radius);
     mask_t reached = active & !overshot & ((leaving & (dist < -eps)) | (!leaving & (dist < eps)));
     leaving &= dist < eps;
     /* The best candidate so far; the surface a lane is leaving is not one. */

@@ -6,7 +6,7 @@
  * status (FR_RAY_* in march.cl), the unit surface normal and the surface's albedo (both zero for
  * a miss): the passes an OpenEXR file carries for compositing.
  *
- * Optional stages (lens.cl, glow.cl, ao.cl, shadow.cl, fog.cl, reflect.cl) are pasted in only
+ * Optional stages (lens.cl, cone.cl, glow.cl, ao.cl, shadow.cl, fog.cl, reflect.cl) are pasted in only
  * when the scene needs them and they are switched on; each defines its hook, and a hook with no
  * stage does nothing, so none of that stage's code is in the kernel. */
 
@@ -24,6 +24,9 @@
 #endif
 #ifndef FR_APPLY_FOG
 #define FR_APPLY_FOG(color, t)
+#endif
+#ifndef FR_CONE_START
+#define FR_CONE_START(t, ao_steps)
 #endif
 #ifndef FR_MAX_BOUNCES
 #define FR_MAX_BOUNCES(fc) 0
@@ -47,7 +50,8 @@ __kernel void fr_render(__constant const fr_frame_constants* fc,
                         __global float* depth, __global float* steps_out,
                         __global float* factors_out, __global uchar* status_out,
                         __global float* normal_out, __global float* albedo_out,
-                        __global uint* counts_out) {
+                        __global uint* counts_out, __global const float* cone_t,
+                        __global const float* cone_ao_steps) {
   FR_COUNTS_BEGIN;
   const int tile_x = get_global_id(0) * FR_TILE_W;
   const int tile_y = get_global_id(1) * FR_TILE_H;
@@ -64,10 +68,14 @@ __kernel void fr_render(__constant const fr_frame_constants* fc,
   real_t first_depth = (real_t)INFINITY, first_steps = (real_t)0, first_status = (real_t)0;
   real_t first_ao = (real_t)1, first_shadow = (real_t)1;
   vec3_t first_normal = v3s(0, 0, 0), first_albedo = v3s(0, 0, 0);
+  /* Where the cone pre-pass (cone.cl) lets the primary ray start, and the AO steps it saved. */
+  real_t cone_from = (real_t)0, cone_ao = (real_t)0;
+  FR_CONE_START(cone_from, cone_ao);
   const int bounces = FR_MAX_BOUNCES(fc);
   for (int bounce = 0; bounce <= bounces; ++bounce) {
     FR_COUNT_BOUNCE(bounce);
-    march_result_t m = march(ray, path_t, fc, params FR_COUNTS_ARG);
+    march_result_t m = march(ray, path_t, bounce == 0 ? cone_from : (real_t)0, fc, params FR_COUNTS_ARG);
+    if (bounce == 0) m.ao_steps += cone_ao;
     const mask_t hit = active & m.hit;
     const mask_t miss = active & !m.hit & !m.inside;
     vec3_t segment = sky_color(ray.dir, fc);

@@ -97,7 +97,8 @@ TEST(SweepPlan, OneKnobAtATimeAroundTheDefaults) {
   info.features = FR_FEATURE_AO;
   EXPECT_EQ(knob_names(info),
             (std::vector<std::string>{"precision", "hit_threshold_k", "max_steps", "refine_steps",
-                                      "relaxation", "normals", "samples", "lanes", "ao"}));
+                                      "relaxation", "adaptive_relaxation", "cone_prepass",
+                                      "normals", "samples", "lanes", "ao"}));
   const RenderSettings defaults;
   const auto configs = plan_sweep(info, defaults, {"max_steps", "relaxation"});
   ASSERT_EQ(configs.size(), 1u + 4 + 3) << "the default's own values are the default row";

@@ -100,11 +100,21 @@ int command_sweep(const std::vector<std::string>& args, std::ostream& out, std::
   specs.push_back({"out", "DIR", false,
                    "folder for sweep.csv, sweep.json, sweep.svg "
                    "(default sweep-SCENE)"});
-  specs.push_back({"knobs", "LIST", false,
-                   "comma-separated knobs to sweep (default: all that apply): precision,\n"
-                   "                                 hit_threshold_k, max_steps, refine_steps, "
-                   "relaxation, normals,\n                                 samples, lanes, ao, "
-                   "shadow_steps"});
+  // The knob list comes from the sweep plan, so help never lags behind it.
+  static const std::string knobs_help = [] {
+    std::string text = "comma-separated knobs to sweep (default: all that apply):";
+    size_t column = text.size();
+    for (const auto& k : all_knob_names()) {
+      if (column + k.size() > 60) {
+        text += "\n                                ";
+        column = 0;
+      }
+      text += (column == 0 || &k == &all_knob_names().front() ? " " : ", ") + k;
+      column += k.size() + 2;
+    }
+    return text;
+  }();
+  specs.push_back({"knobs", "LIST", false, knobs_help.c_str()});
   specs.push_back({"frames", "N", false,
                    "timing rounds: frames timed per configuration, interleaved (default 9)"});
   specs.push_back(

@@ -17,6 +17,8 @@ std::string kind_name(int kind) {
       return "surface colour";
     case FR_COUNT_AO:
       return "ao";
+    case FR_COUNT_CONE:
+      return "cone pre-pass";
     default:
       return "shadow light " + std::to_string(kind - FR_COUNT_SHADOW + 1);
   }

@@ -14,7 +14,7 @@ static_assert(FR_MAX_LIGHTS == FR_MAX_SCENE_LIGHTS,
 
 // The kernels read this struct with OpenCL C's layout rules; with only 4-byte fields both sides
 // agree, and these checks keep it so.
-static_assert(sizeof(fr_frame_constants) == 896, "fr_frame_constants layout changed");
+static_assert(sizeof(fr_frame_constants) == 912, "fr_frame_constants layout changed");
 static_assert(sizeof(fr_frame_constants) % 16 == 0);
 static_assert(offsetof(fr_frame_constants, eye) == 0);
 static_assert(offsetof(fr_frame_constants, light_vector) == 112);
@@ -89,6 +89,11 @@ fr_frame_constants make_frame_constants(const CameraRays& rays, const SceneState
   put_hi_lo(fc.start_scale, fc.start_scale_lo, scale);
   fc.ao_reference_steps = static_cast<float>(s.ao_reference_steps);
   fc.refine_steps = s.refine_steps;
+  // Cone blocks on the whole image's grid (a window's offset into its first block is the phase).
+  fc.cone_phase_x = s.window.full_width_px > 0 ? s.window.x0_px % FR_CONE_BLOCK : 0;
+  fc.cone_phase_y = s.window.full_width_px > 0 ? s.window.y0_px % FR_CONE_BLOCK : 0;
+  fc.cone_blocks_x = (s.width_px + fc.cone_phase_x + FR_CONE_BLOCK - 1) / FR_CONE_BLOCK;
+  fc.cone_blocks_y = (s.height_px + fc.cone_phase_y + FR_CONE_BLOCK - 1) / FR_CONE_BLOCK;
   put(fc.camera_right, rays.right);
   put(fc.camera_up, rays.up);
   put(fc.camera_forward, rays.forward);

@@ -38,6 +38,7 @@ const PipelineFile kRenderPipeline[] = {
     {kStageDepthOfField, "lens.cl"},
     {FR_FEATURE_GLOW, "glow.cl"},
     {0, "march.cl"},
+    {kStageCone, "cone.cl"},
     {0, "normals.cl"},
     {FR_FEATURE_AO, "ao.cl"},
     {0, "lights.cl"},
@@ -190,6 +191,8 @@ void append_scene_prefix(std::ostringstream& out, const SceneInfo& info,
   define_choice(out, "FR_FOG", config.fog_method);
   out << "#define FR_HAS_SURFACE " << (has_surface ? 1 : 0) << "\n";
   out << "#define FR_COUNT_EVALS " << (config.count_evaluations ? 1 : 0) << "\n";
+  out << "#define FR_RELAX_ADAPTIVE " << (config.adaptive_relaxation ? 1 : 0) << "\n";
+  out << "#define FR_STAGE_CONE " << ((config.stages & kStageCone) ? 1 : 0) << "\n";
   append_file(out, "frame_constants.h", kernel_source("frame_constants.h"));
   append_file(out, "prelude.cl", kernel_source("prelude.cl"));
   append_params(out, info, values, config.precision);
@@ -214,6 +217,7 @@ AssembledKernel finish(std::ostringstream& out, const SceneInfo& info, const Ker
                   std::to_string(config.lanes) + ", " +
                   (config.precision == Precision::Double ? "double" : "float") +
                   ", stages: " + stage_names(config.stages) +
+                  ((config.stages & kStageCone) ? ", cone pre-pass" : "") +
                   (config.count_evaluations ? ", counting DE evaluations" : "") + ")";
   return k;
 }
@@ -244,6 +248,9 @@ KernelConfig make_kernel_config(const SceneInfo& info, const RenderSettings& s, 
   c.stages = enabled_stages(info, s.disabled_stages);
   if (s.aperture_radius > 0 && !(s.disabled_stages & kStageDepthOfField))
     c.stages |= kStageDepthOfField;
+  // The lens moves every ray's origin: the block's rays no longer share a cone.
+  else if (s.cone_prepass)
+    c.stages |= kStageCone;
   c.shading = s.shading;
   c.normals = s.normals;
   c.ao_method = s.ao_method;
@@ -251,6 +258,7 @@ KernelConfig make_kernel_config(const SceneInfo& info, const RenderSettings& s, 
   c.fog_method = s.fog_method;
   c.fast_math = s.fast_math;
   c.count_evaluations = s.count_evaluations;
+  c.adaptive_relaxation = s.adaptive_relaxation;
   return c;
 }
 

@@ -20,18 +20,22 @@ namespace fr {
 // Host-only stage bit beside the ABI's FR_FEATURE_* bits: depth of field is the user's choice,
 // not a scene's need.
 constexpr fr_features kStageDepthOfField = 1ull << 32;
+// Host-only and not an effect: the cone pre-pass (kernels/cone.cl), a faster way to the same
+// primary hits. On unless the user switched it off (render.cone_prepass) or the lens is on.
+constexpr fr_features kStageCone = 1ull << 33;
 
 struct KernelConfig {
   int lanes = 16;
   Precision precision = Precision::Float;
-  fr_features stages = 0;  // FR_FEATURE_* and kStageDepthOfField that are compiled in
+  fr_features stages = 0;  // FR_FEATURE_*, kStageDepthOfField and kStageCone compiled in
   ShadingModel shading = ShadingModel::BlinnPhong;
   NormalMethod normals = NormalMethod::Tetrahedron;
   AoMethod ao_method = AoMethod::StepCount;
   ShadowMethod shadow_method = ShadowMethod::Soft;
   FogMethod fog_method = FogMethod::Exponential;
   bool fast_math = false;  // -cl-fast-relaxed-math (off by default, see kernel_assembly.cpp)
-  bool count_evaluations = false;  // FR_COUNT_EVALS: per-stage DE counters (eval_counts.cl)
+  bool count_evaluations = false;   // FR_COUNT_EVALS: per-stage DE counters (eval_counts.cl)
+  bool adaptive_relaxation = true;  // FR_RELAX_ADAPTIVE: march.cl's omega follows the DE's slope
 };
 
 // The kernel configuration a frame with these settings compiles for this scene.

@@ -112,8 +112,14 @@ struct RenderSettings {
   int ao_samples = 5;
   float hit_threshold_k = 0.5f;  // epsilon = k * t * pixel angle
   float step_scale = 1.0f;
-  float relaxation = 1.3f;  // over-relaxed sphere tracing's omega; 1 is plain sphere tracing
-  bool fast_math = false;   // build with -cl-fast-relaxed-math (finite-math-only, relaxed trig)
+  // Over-relaxed sphere tracing's largest omega; 1 is plain sphere tracing. 1.6 with the
+  // adaptive omega: on the sweep's front for the benchmark scene (1.3 fixed was the default).
+  float relaxation = 1.6f;
+  // The march's omega follows the DE's slope along the ray, up to `relaxation` (march.cl); off:
+  // `relaxation` throughout, plain after the first overshoot.
+  bool adaptive_relaxation = true;
+  bool cone_prepass = true;  // one cone per 8x8 pixels skips the empty space first (cone.cl)
+  bool fast_math = false;    // build with -cl-fast-relaxed-math (finite-math-only, relaxed trig)
   // Diagnostics, not a quality knob: build the kernel with the per-stage DE counters
   // (render/eval_counts.hpp; Renderer::eval_counts reads them). Changes no pixel.
   bool count_evaluations = false;

@@ -6,6 +6,10 @@
 #include "render/kernel_sources.hpp"
 #include "render/precision.hpp"
 
+extern "C" {
+#include "frame_constants.h"
+}
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -88,7 +92,9 @@ void Renderer::render_sample(const SceneInfo& info, const SceneState& state,
   last_precision_ = settings.precision;
   const int lanes = lanes_for(settings);
   std::string description;
-  cl_kernel kernel = render_kernel(info, state, settings, lanes, &description);
+  const cl_program program = render_program(info, state, settings, lanes, &description);
+  cl_kernel kernel = runtime_.kernel(program, "fr_render");
+  const bool cone = make_kernel_config(info, settings, lanes).stages & kStageCone;
 
   const int w = settings.width_px, h = settings.height_px;
   const size_t n = static_cast<size_t>(w) * h;
@@ -121,30 +127,47 @@ void Renderer::render_sample(const SceneInfo& info, const SceneState& state,
     }
     ++counted_samples_;
   }
-  const cl_mem args[] = {constants_.get(), params_.get(),  hdr_.get(),    depth_.get(),
-                         steps_.get(),     factors_.get(), status_.get(), normal_.get(),
-                         albedo_.get(),    counts_.get()};
-  for (cl_uint i = 0; i < std::size(args); ++i) set_arg(kernel, i, args[i]);
+  const size_t blocks = static_cast<size_t>(fc.cone_blocks_x) * fc.cone_blocks_y;
+  if (blocks > cone_blocks_) {
+    cone_t_ = make_buffer(runtime_.context(), CL_MEM_READ_WRITE, blocks * sizeof(float),
+                          "the cone pre-pass's starts");
+    cone_ao_ = make_buffer(runtime_.context(), CL_MEM_READ_WRITE, blocks * sizeof(float),
+                           "the cone pre-pass's AO steps");
+    cone_blocks_ = blocks;
+  }
   const TileShape tile = tile_shape(lanes);
-  const size_t global[2] = {round_up_div(w, tile.width_px), round_up_div(h, tile.height_px)};
   // On CPU devices, one work-item per work-group: PoCL otherwise picks groups of thousands of
   // work-items and keeps all their private packets (a few KB each) on one thread's stack, which
   // overflowed at 640x360. The packets are the parallelism; groups add nothing here.
   const size_t one[2] = {1, 1};
   const size_t* local = (runtime_.device().type & CL_DEVICE_TYPE_CPU) ? one : nullptr;
+  if (cone) {
+    cl_kernel cone_kernel = runtime_.kernel(program, "fr_cone");
+    const cl_mem cone_args[] = {constants_.get(), params_.get(), cone_t_.get(), cone_ao_.get(),
+                                counts_.get()};
+    for (cl_uint i = 0; i < std::size(cone_args); ++i) set_arg(cone_kernel, i, cone_args[i]);
+    const size_t cone_global[2] = {round_up_div(fc.cone_blocks_x, tile.width_px),
+                                   round_up_div(fc.cone_blocks_y, tile.height_px)};
+    cl_check(
+        clEnqueueNDRangeKernel(q, cone_kernel, 2, nullptr, cone_global, local, 0, nullptr, nullptr),
+        "clEnqueueNDRangeKernel", "the cone pre-pass of " + description);
+  }
+  const cl_mem args[] = {constants_.get(), params_.get(),  hdr_.get(),    depth_.get(),
+                         steps_.get(),     factors_.get(), status_.get(), normal_.get(),
+                         albedo_.get(),    counts_.get(),  cone_t_.get(), cone_ao_.get()};
+  for (cl_uint i = 0; i < std::size(args); ++i) set_arg(kernel, i, args[i]);
+  const size_t global[2] = {round_up_div(w, tile.width_px), round_up_div(h, tile.height_px)};
   cl_check(clEnqueueNDRangeKernel(q, kernel, 2, nullptr, global, local, 0, nullptr, nullptr),
            "clEnqueueNDRangeKernel", "rendering " + description);
 }
 
-cl_kernel Renderer::render_kernel(const SceneInfo& info, const SceneState& state,
-                                  const RenderSettings& settings, int lanes,
-                                  std::string* description) {
+cl_program Renderer::render_program(const SceneInfo& info, const SceneState& state,
+                                    const RenderSettings& settings, int lanes,
+                                    std::string* description) {
   const AssembledKernel assembled =
       assemble_render_kernel(info, state.params, make_kernel_config(info, settings, lanes));
   *description = assembled.description;
-  return runtime_.kernel(
-      runtime_.program(assembled.source, assembled.build_options, assembled.description),
-      "fr_render");
+  return runtime_.program(assembled.source, assembled.build_options, assembled.description);
 }
 
 Precision Renderer::prepare(const SceneInfo& info, const SceneState& state,
@@ -152,7 +175,7 @@ Precision Renderer::prepare(const SceneInfo& info, const SceneState& state,
   RenderSettings settings = requested;
   settings.precision = resolve_precision(runtime_, info, state, requested);
   std::string description;
-  render_kernel(info, state, settings, lanes_for(settings), &description);
+  render_program(info, state, settings, lanes_for(settings), &description);
   post_kernel();
   return settings.precision;
 }

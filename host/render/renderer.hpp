@@ -88,9 +88,10 @@ class Renderer {
 
  private:
   void ensure_buffers(size_t pixel_count);
-  // The render kernel for `settings` (precision already resolved); *description names it.
-  cl_kernel render_kernel(const SceneInfo& info, const SceneState& state,
-                          const RenderSettings& settings, int lanes, std::string* description);
+  // The render program for `settings` (precision already resolved; kernels fr_render and, with
+  // the cone pre-pass, fr_cone); *description names it.
+  cl_program render_program(const SceneInfo& info, const SceneState& state,
+                            const RenderSettings& settings, int lanes, std::string* description);
   cl_kernel post_kernel();
 
   ClRuntime& runtime_;
@@ -101,8 +102,10 @@ class Renderer {
   ClBufferHandle constants_, params_, hdr_, depth_, steps_, factors_, status_, normal_, albedo_,
       rgba8_;
   size_t params_bytes_ = 0;
-  ClBufferHandle counts_;    // uint[FR_COUNT_SLOTS][FR_COUNT_CELLS][2], kernels/eval_counts.cl
-  int counted_samples_ = 0;  // samples counted into counts_ since it was last cleared
+  ClBufferHandle counts_;  // uint[FR_COUNT_SLOTS][FR_COUNT_CELLS][2], kernels/eval_counts.cl
+  ClBufferHandle cone_t_, cone_ao_;  // per cone block (kernels/cone.cl)
+  size_t cone_blocks_ = 0;           // capacity of the cone buffers
+  int counted_samples_ = 0;          // samples counted into counts_ since it was last cleared
 };
 
 }  // namespace fr

@@ -222,10 +222,19 @@ std::vector<SettingSpec> make_table() {
   t.push_back(in_overlay(
       number_setting<&S::render, &R::relaxation>(
           "render.relaxation", 1, 1.95, false,
-          "Over-relaxation of the march (Keinert et al. 2014), in [1, 1.95]: steps are this times "
-          "the DE,\nwith a fallback to plain steps where that overshoots; 1 is plain sphere "
-          "tracing."),
+          "Over-relaxation of the march (Keinert et al. 2014), in [1, 1.95]: steps are up to this "
+          "times the\nDE, with a step back where that overshoots; 1 is plain sphere tracing."),
       "Relaxation", 1, 1.95));
+  t.push_back(bool_setting<&S::render, &R::adaptive_relaxation>(
+      "render.adaptive_relaxation",
+      "Adapt the over-relaxation to the DE's slope along each ray (up to render.relaxation), and "
+      "relax\nagain after a step back (Bán and Valasek 2023); false: render.relaxation "
+      "throughout, plain\nsteps after the first overshoot."));
+  t.push_back(bool_setting<&S::render, &R::cone_prepass>(
+      "render.cone_prepass",
+      "Cone pre-pass: one cone per 8x8 pixels marches through the empty space first, and the "
+      "pixels'\nrays start where it stopped (the same hits for fewer DE evaluations; off with "
+      "depth of field)."));
   t.push_back(bool_setting<&S::render, &R::fast_math>(
       "render.fast_math",
       "Build the kernels with -cl-fast-relaxed-math (finite-math-only, relaxed trigonometry): "

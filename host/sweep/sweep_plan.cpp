@@ -18,6 +18,14 @@ std::string number(double v) {
   return s.str();
 }
 
+// "sampled-5": sampled AO with that many samples.
+std::string sampled_ao_label(int samples) {
+  std::string label = enum_name(AoMethod::Sampled);
+  label += '-';
+  label += number(samples);
+  return label;
+}
+
 // Each knob's values, and how the default spells its value (to recognise the default row).
 std::vector<KnobValue> knob_values(const std::string& knob, const RenderSettings& d,
                                    std::string* default_value) {
@@ -42,6 +50,14 @@ std::vector<KnobValue> knob_values(const std::string& knob, const RenderSettings
     *default_value = number(d.relaxation);
     for (float w : {1.0f, 1.3f, 1.6f, 1.9f})
       v.push_back({number(w), [w](RenderSettings& s) { s.relaxation = w; }});
+  } else if (knob == "adaptive_relaxation") {
+    *default_value = d.adaptive_relaxation ? "on" : "off";
+    for (bool on : {false, true})
+      v.push_back({on ? "on" : "off", [on](RenderSettings& s) { s.adaptive_relaxation = on; }});
+  } else if (knob == "cone_prepass") {
+    *default_value = d.cone_prepass ? "on" : "off";
+    for (bool on : {false, true})
+      v.push_back({on ? "on" : "off", [on](RenderSettings& s) { s.cone_prepass = on; }});
   } else if (knob == "normals") {
     *default_value = enum_name(d.normals);
     for (NormalMethod m : {NormalMethod::Tetrahedron, NormalMethod::CentralDifferences})
@@ -56,11 +72,11 @@ std::vector<KnobValue> knob_values(const std::string& knob, const RenderSettings
   } else if (knob == "ao") {
     *default_value = d.ao_method == AoMethod::StepCount
                          ? std::string(enum_name(AoMethod::StepCount))
-                         : enum_name(AoMethod::Sampled) + ("-" + number(d.ao_samples));
+                         : sampled_ao_label(d.ao_samples);
     v.push_back({enum_name(AoMethod::StepCount),
                  [](RenderSettings& s) { s.ao_method = AoMethod::StepCount; }});
     for (int n : {3, 5, 8})
-      v.push_back({enum_name(AoMethod::Sampled) + ("-" + number(n)), [n](RenderSettings& s) {
+      v.push_back({sampled_ao_label(n), [n](RenderSettings& s) {
                      s.ao_method = AoMethod::Sampled;
                      s.ao_samples = n;
                    }});
@@ -79,9 +95,12 @@ std::vector<KnobValue> knob_values(const std::string& knob, const RenderSettings
 }  // namespace
 
 const std::vector<std::string>& all_knob_names() {
-  static const std::vector<std::string> names = {
-      "precision", "hit_threshold_k", "max_steps", "refine_steps", "relaxation",
-      "normals",   "samples",         "lanes",     "ao",           "shadow_steps"};
+  static const std::vector<std::string> names = {"precision",    "hit_threshold_k",
+                                                 "max_steps",    "refine_steps",
+                                                 "relaxation",   "adaptive_relaxation",
+                                                 "cone_prepass", "normals",
+                                                 "samples",      "lanes",
+                                                 "ao",           "shadow_steps"};
   return names;
 }
 

@@ -127,6 +127,7 @@ SweepReference make_reference(Renderer& renderer, const SceneInfo& info, const S
   RenderSettings ref = settings;
   ref.precision = Precision::Double;
   ref.relaxation = 1;
+  ref.cone_prepass = false;  // every ray marches from its own origin
   ref.max_steps = 5000;
   ref.shadow_max_steps = std::max(ref.shadow_max_steps, 1024);
   ref.normals = NormalMethod::CentralDifferences;
