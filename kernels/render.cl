@@ -168,16 +168,22 @@ __kernel void fr_render(__constant const fr_frame_constants* fc,
       hdr_rgba[4 * i + 2] = b[lane];
     }
     hdr_rgba[4 * i + 3] = 1.0f;
-    depth[i] = d[lane];
+    /* The passes the host will read (FR_OUTPUTS, renderer.hpp's Readback); the rest are not
+     * written at all. */
+#if FR_OUTPUTS >= 1
     steps_out[i] = s[lane];
+    status_out[i] = (uchar)st[lane];
+#endif
+#if FR_OUTPUTS >= 2
+    depth[i] = d[lane];
     factors_out[2 * i + 0] = o[lane];
     factors_out[2 * i + 1] = sh[lane];
-    status_out[i] = (uchar)st[lane];
     normal_out[3 * i + 0] = nx[lane];
     normal_out[3 * i + 1] = ny[lane];
     normal_out[3 * i + 2] = nz[lane];
     albedo_out[3 * i + 0] = ar[lane];
     albedo_out[3 * i + 1] = ag[lane];
     albedo_out[3 * i + 2] = ab[lane];
+#endif
   }
 }

@@ -137,7 +137,9 @@ const FrameImage* Explorer::render(int window_width_px, int window_height_px) {
   SceneSlot& slot = current();
   const auto start = std::chrono::steady_clock::now();
   try {
-    renderer_.render_sample(slot.scene->info, slot.state, s, plan.sample_index);
+    // Steps and ray status on every sample, so that one kernel serves the whole refinement.
+    renderer_.render_sample(slot.scene->info, slot.state, s, plan.sample_index,
+                            Readback::DisplayAndSteps);
     renderer_.finish(s, plan.sample_index == 0 ? Readback::DisplayAndSteps : Readback::Display,
                      last_);
   } catch (const std::exception& e) {

@@ -165,7 +165,7 @@ int command_animate(const std::vector<std::string>& args, std::ostream& out, std
       return 1;
     }
     for (int sample = 0; sample < std::max(1, p.render.samples); ++sample)
-      renderer.render_sample(info, p.state, p.render, sample);
+      renderer.render_sample(info, p.state, p.render, sample, Readback::DisplayAndSteps);
     renderer.finish(p.render, Readback::DisplayAndSteps, image);
     watchdog.kick();
     const RayCounts rays = count_rays(image);

@@ -51,8 +51,10 @@ PosterResult render_poster(ClRuntime& runtime, const SceneInfo& info, const Scen
     RenderSettings s = settings;
     s.height_px = rows;
     s.window = {width, height, 0, y0};
-    for (int i = 0; i < std::max(1, s.samples); ++i) renderer.render_sample(info, state, s, i);
-    renderer.finish(s, exr ? Readback::Everything : Readback::DisplayAndSteps, band);
+    const Readback what = exr ? Readback::Everything : Readback::DisplayAndSteps;
+    for (int i = 0; i < std::max(1, s.samples); ++i)
+      renderer.render_sample(info, state, s, i, what);
+    renderer.finish(s, what, band);
     if (exr)
       exr_stream->write_rows(band);
     else

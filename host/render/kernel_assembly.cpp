@@ -192,6 +192,8 @@ void append_scene_prefix(std::ostringstream& out, const SceneInfo& info,
   out << "#define FR_HAS_SURFACE " << (has_surface ? 1 : 0) << "\n";
   out << "#define FR_COUNT_EVALS " << (config.count_evaluations ? 1 : 0) << "\n";
   out << "#define FR_RELAX_ADAPTIVE " << (config.adaptive_relaxation ? 1 : 0) << "\n";
+  // 0: colour; 1: and steps and ray status; 2: every pass (render.cl).
+  out << "#define FR_OUTPUTS " << static_cast<int>(config.outputs) << "\n";
   out << "#define FR_STAGE_CONE " << ((config.stages & kStageCone) ? 1 : 0) << "\n";
   append_file(out, "frame_constants.h", kernel_source("frame_constants.h"));
   append_file(out, "prelude.cl", kernel_source("prelude.cl"));
@@ -259,6 +261,7 @@ KernelConfig make_kernel_config(const SceneInfo& info, const RenderSettings& s, 
   c.fast_math = s.fast_math;
   c.count_evaluations = s.count_evaluations;
   c.adaptive_relaxation = s.adaptive_relaxation;
+  c.outputs = s.outputs;
   return c;
 }
 

@@ -36,6 +36,7 @@ struct KernelConfig {
   bool fast_math = false;  // -cl-fast-relaxed-math (off by default, see kernel_assembly.cpp)
   bool count_evaluations = false;   // FR_COUNT_EVALS: per-stage DE counters (eval_counts.cl)
   bool adaptive_relaxation = true;  // FR_RELAX_ADAPTIVE: march.cl's omega follows the DE's slope
+  Readback outputs = Readback::Everything;  // FR_OUTPUTS: the passes render.cl writes
 };
 
 // The kernel configuration a frame with these settings compiles for this scene.

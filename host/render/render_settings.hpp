@@ -70,6 +70,15 @@ constexpr std::span<const EnumName<FogMethod>> enum_names(FogMethod) {
   return kFogMethodNames;
 }
 
+// What `Renderer::finish` reads back from the device besides the display image, and so what the
+// render kernel writes (FR_OUTPUTS). Reading everything costs 33 MB of copies per 1280x720
+// frame, so the explorer asks only for steps.
+enum class Readback {
+  Display,          // rgba8 only
+  DisplayAndSteps,  // rgba8, steps and ray status (the DE-evaluations statistic, ray counts)
+  Everything,       // every field of FrameImage
+};
+
 inline const char* precision_name(Precision p) {
   return enum_name(p);
 }
@@ -123,6 +132,9 @@ struct RenderSettings {
   // Diagnostics, not a quality knob: build the kernel with the per-stage DE counters
   // (render/eval_counts.hpp; Renderer::eval_counts reads them). Changes no pixel.
   bool count_evaluations = false;
+  // Which passes the kernel writes besides the colour (renderer.hpp's Readback); the renderer
+  // sets it from what its caller will read back.
+  Readback outputs = Readback::Everything;
   float ao_strength = 2.5f;
   int ao_reference_steps = 160;  // step-count AO: this many march steps is full occlusion
   float ao_distance = 0.1f;      // x bounding radius

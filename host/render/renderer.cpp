@@ -74,14 +74,16 @@ void Renderer::ensure_buffers(size_t n) {
 
 FrameImage Renderer::render(const SceneInfo& info, const SceneState& state,
                             const RenderSettings& settings, bool read_linear) {
-  for (int i = 0; i < std::max(1, settings.samples); ++i) render_sample(info, state, settings, i);
+  const Readback what = read_linear ? Readback::Everything : Readback::Display;
+  for (int i = 0; i < std::max(1, settings.samples); ++i)
+    render_sample(info, state, settings, i, what);
   FrameImage image;
-  finish(settings, read_linear ? Readback::Everything : Readback::Display, image);
+  finish(settings, what, image);
   return image;
 }
 
 void Renderer::render_sample(const SceneInfo& info, const SceneState& state,
-                             const RenderSettings& requested, int sample_index) {
+                             const RenderSettings& requested, int sample_index, Readback outputs) {
   if (requested.precision == Precision::Double && !runtime_.device().has_fp64)
     throw std::runtime_error("device " + runtime_.device().name + " has no double precision");
   // Auto is decided once per accumulation, at its first sample.
@@ -92,6 +94,8 @@ void Renderer::render_sample(const SceneInfo& info, const SceneState& state,
   last_precision_ = settings.precision;
   const int lanes = lanes_for(settings);
   std::string description;
+  settings.outputs = outputs;
+  last_outputs_ = outputs;
   const cl_program program = render_program(info, state, settings, lanes, &description);
   cl_kernel kernel = runtime_.kernel(program, "fr_render");
   const bool cone = make_kernel_config(info, settings, lanes).stages & kStageCone;
@@ -188,6 +192,8 @@ cl_kernel Renderer::post_kernel() {
 }
 
 void Renderer::finish(const RenderSettings& settings, Readback what, FrameImage& img) {
+  if (static_cast<int>(what) > static_cast<int>(last_outputs_))
+    throw std::logic_error("Renderer::finish: reading back passes the samples did not write");
   cl_kernel post = post_kernel();
   const size_t n = frame_pixels_;
   cl_command_queue q = runtime_.queue();

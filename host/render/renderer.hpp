@@ -49,14 +49,6 @@ RayCounts count_rays(const FrameImage& image);
 // `render` warns when more than this percentage of primary rays ran out of steps.
 constexpr double kOutOfStepsWarnPercent = 0.5;
 
-// What `Renderer::finish` reads back from the device besides the display image. Reading
-// everything costs 33 MB of copies per 1280x720 frame, so the explorer asks only for steps.
-enum class Readback {
-  Display,          // rgba8 only
-  DisplayAndSteps,  // rgba8 and steps (for the DE-evaluations statistic)
-  Everything,       // every field of FrameImage
-};
-
 class Renderer {
  public:
   explicit Renderer(ClRuntime& runtime);
@@ -69,9 +61,11 @@ class Renderer {
   // Progressive rendering: adds sample `sample_index` (0 restarts the mean) to the accumulation,
   // then `finish` tonemaps what has accumulated so far into `image`, reusing its vectors'
   // storage (an interactive caller passes the same image every frame: no allocation, no page
-  // faults). Fields that `what` does not ask for are emptied.
+  // faults). Fields that `what` does not ask for are emptied. The kernel writes only the passes
+  // `outputs` names (writing all of them cost about 1.3 ms a 1280x720 frame here); `finish` may
+  // not ask for more than the samples wrote (std::logic_error).
   void render_sample(const SceneInfo& info, const SceneState& state, const RenderSettings& settings,
-                     int sample_index);
+                     int sample_index, Readback outputs = Readback::Everything);
   void finish(const RenderSettings& settings, Readback what, FrameImage& image);
 
   // The DE evaluations of the samples rendered since the last sample 0, when they were rendered
@@ -98,6 +92,7 @@ class Renderer {
   size_t buffer_pixels_ = 0;  // capacity of the buffers
   size_t frame_pixels_ = 0;   // pixels of the frame being rendered
   int last_lanes_ = 0;
+  Readback last_outputs_ = Readback::Everything;  // what the last sample's kernel wrote
   Precision last_precision_ = Precision::Float;
   ClBufferHandle constants_, params_, hdr_, depth_, steps_, factors_, status_, normal_, albedo_,
       rgba8_;
