@@ -12,10 +12,10 @@
  * same); the cone never relaxes. Nothing is skipped for a camera inside or on the surface (the
  * first D is below 2 r), and the pass is off with depth of field (the lens moves every ray).
  *
- * Step-count AO counts the steps a ray took before it came near the surface; the steps the cone
- * saved are estimated as the sum of dt / (omega D) over the cone's steps (what plain relaxed
- * sphere tracing would have spent over the same stretch) and handed to each ray, so occlusion
- * does not change with the pre-pass. */
+ * Step-count AO counts the plain sphere-tracing steps a ray needs before it comes near the
+ * surface (march.cl); the cone's share is estimated as the sum of dt / D over its steps (what
+ * plain sphere tracing would have spent over the same stretch) and handed to each ray, so
+ * occlusion does not change with the pre-pass. */
 
 /* How far apart two block rays at the same t can be: |origin difference| + |direction
  * difference| t, the largest over the block's corners: half a pixel beyond where a jittered
@@ -71,7 +71,6 @@ __kernel void fr_cone(__constant const fr_frame_constants* fc,
   mask_t active = in_bounds & (block_x < (real_t)fc->cone_blocks_x) &
                   (block_y < (real_t)fc->cone_blocks_y);
   real_t ao_steps = (real_t)0;
-  const real_t omega = (real_t)fc->relaxation;
   for (int i = 0; i < fc->max_steps && any_lane(active); ++i) {
     const vec3_t p = v3_mad(ray.origin, ray.dir, t);
     /* Outside the bounds the distance to them is exact, and the DE may over-estimate there
@@ -86,8 +85,7 @@ __kernel void fr_cone(__constant const fr_frame_constants* fc,
     active &= dist > (real_t)2 * r + (real_t)4 * hit_threshold(fc, path_t + t, p);
     const real_t advance = dist - r;
     /* The rays themselves march only inside the bounds. */
-    ao_steps = lane_select(active & (outside <= (real_t)0), ao_steps + advance / (omega * dist),
-                           ao_steps);
+    ao_steps = lane_select(active & (outside <= (real_t)0), ao_steps + advance / dist, ao_steps);
     t = lane_select(active, fmin(t + advance, t_exit), t);
     active &= t < t_exit;
   }

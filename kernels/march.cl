@@ -7,7 +7,8 @@ typedef struct march_result_t {
   mask_t out_of_steps; /* the step budget ended first: t is the best candidate, see below */
   mask_t inside;       /* the ray started inside the solid (DE below -eps at its origin) */
   real_t steps;        /* DE evaluations spent, for statistics */
-  real_t ao_steps;     /* evaluations until the ray first came within a pixel footprint of the
+  real_t ao_steps;     /* plain sphere-tracing steps (a relaxed step counts as its length over the
+                          DE) until the ray first came within a pixel footprint of the
                           surface: step-count AO's measure, the same whatever the hit threshold
                           (the steps after that only refine the hit) and the step budget */
   real_t min_dist;     /* closest approach to the surface (tracked only when glow is on) */
@@ -91,7 +92,9 @@ march_result_t march(ray_t ray, real_t path_t, real_t t_min,
     real_t eps = hit_threshold(fc, path_t + t, p);
     FR_MARCH_TRACK(min_dist, dist, active);
     steps += mask_to_real(active);
-    ao_steps += mask_to_real(active & !near);
+    /* Step-count AO counts the steps plain sphere tracing would have taken (march_result_t), so
+     * that occlusion does not change with the relaxation: below, after the step is known. */
+    const mask_t ao_counting = active & !near;
     near |= dist < (real_t)(0.5f * fc->pixel_angle_rad) * (path_t + t);
     /* The first point is the ray's own origin (not where it entered the bounds from outside):
      * below -eps it is inside the solid; within eps it is on a surface, and the lane is
@@ -139,6 +142,12 @@ march_result_t march(ray_t ray, real_t path_t, real_t t_min,
     mask_t better = active & !overshot & !leaving & (error < best_error);
     best_t = lane_select(better, t, best_t);
     best_error = lane_select(better, error, best_error);
+    /* A step of s over a DE of d is s / d plain steps; a step back is none; the evaluation that
+     * found the surface is one. */
+    const real_t plain_steps = lane_select(
+        reached, 1, lane_select(overshot, 0, fmin(step / fmax(radius, (real_t)FR_SCALAR_MIN),
+                                                  (real_t)fc->relaxation)));
+    ao_steps += lane_select(ao_counting, plain_steps, 0);
     hit |= reached;
     active &= !reached;
     t = lane_select(active, t + step, t);
