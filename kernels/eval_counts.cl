@@ -5,12 +5,15 @@
  * render --counts, the explorer's statistics): otherwise every macro below expands to nothing,
  * so counting costs nothing when off. Stages that evaluate the DE take FR_COUNTS_PARAM in their
  * parameter list and pass FR_COUNTS_ARG on; each evaluation site says FR_COUNT(kind, lanes, n):
- * n evaluations of the whole packet, of which the lanes in `lanes` were wanted. */
+ * n evaluations of the whole packet, of which the lanes in `lanes` were wanted. A packet whose
+ * lanes serve different kinds (shadow.cl's stream of every light's rays) says, per kind,
+ * FR_COUNT_LANES(kind, wanted, held): the lanes that wanted the evaluation, and the lanes it
+ * occupied for that kind. */
 
 #if FR_COUNT_EVALS
 typedef struct eval_counts_t {
   uint active[FR_COUNT_CELLS]; /* evaluations by lanes that wanted them */
-  uint packet[FR_COUNT_CELLS]; /* evaluations of the packet (each is FR_LANES lane evaluations) */
+  uint issued[FR_COUNT_CELLS]; /* lane evaluations made, wanted or not (FR_LANES a packet's) */
   int bounce;                  /* the bounce being rendered: 0 primary */
 } eval_counts_t;
 
@@ -32,7 +35,7 @@ inline uint active_lanes(mask_t m) {
 #define FR_COUNTS_BEGIN                                          \
   eval_counts_t counts_storage;                                  \
   for (int c_ = 0; c_ < FR_COUNT_CELLS; ++c_)                    \
-    counts_storage.active[c_] = counts_storage.packet[c_] = 0u;  \
+    counts_storage.active[c_] = counts_storage.issued[c_] = 0u;  \
   counts_storage.bounce = 0;                                     \
   eval_counts_t* counts = &counts_storage
 #define FR_COUNT_BOUNCE(b) counts->bounce = min((b), FR_COUNT_MAX_BOUNCES)
@@ -40,7 +43,13 @@ inline uint active_lanes(mask_t m) {
   do {                                                                 \
     const int cell_ = counts->bounce * FR_COUNT_KINDS + (kind);        \
     counts->active[cell_] += (uint)(n) * active_lanes(lanes);          \
-    counts->packet[cell_] += (uint)(n);                                \
+    counts->issued[cell_] += (uint)(n) * FR_LANES;                     \
+  } while (0)
+#define FR_COUNT_LANES(kind, wanted, held)                             \
+  do {                                                                 \
+    const int cell_ = counts->bounce * FR_COUNT_KINDS + (kind);        \
+    counts->active[cell_] += active_lanes(wanted);                     \
+    counts->issued[cell_] += active_lanes(held);                       \
   } while (0)
 /* Adds this work-item's sums into its slot of the frame's counters. */
 #define FR_COUNTS_END(out)                                                              \
@@ -49,9 +58,9 @@ inline uint active_lanes(mask_t m) {
                          FR_COUNT_SLOTS;                                                \
     __global uint* cells_ = (out) + slot_ * FR_COUNT_CELLS * 2;                         \
     for (int c_ = 0; c_ < FR_COUNT_CELLS; ++c_) {                                       \
-      if (counts->packet[c_] == 0u) continue;                                           \
+      if (counts->issued[c_] == 0u) continue;                                           \
       atomic_add(&cells_[2 * c_ + 0], counts->active[c_]);                              \
-      atomic_add(&cells_[2 * c_ + 1], counts->packet[c_]);                              \
+      atomic_add(&cells_[2 * c_ + 1], counts->issued[c_]);                              \
     }                                                                                   \
   } while (0)
 #else
@@ -60,5 +69,6 @@ inline uint active_lanes(mask_t m) {
 #define FR_COUNTS_BEGIN
 #define FR_COUNT_BOUNCE(b)
 #define FR_COUNT(kind, lanes, n)
+#define FR_COUNT_LANES(kind, wanted, held)
 #define FR_COUNTS_END(out)
 #endif

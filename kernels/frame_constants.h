@@ -11,8 +11,8 @@
 /* DE-evaluation counters (kernels/eval_counts.cl), filled only by kernels built to count. One cell
  * per (bounce, kind): bounce 0 is the primary ray, 1..FR_COUNT_MAX_BOUNCES the mirror bounces;
  * kind is one of the FR_COUNT_* below, the shadow kind plus the light's index. Each cell holds two
- * uints: evaluations by active lanes, and evaluations by the packet (lanes x packet evaluations is
- * the work the SIMD unit did). Work-item w adds its sums to slot w % FR_COUNT_SLOTS, so no 32-bit
+ * uints: evaluations by lanes that wanted them, and lane evaluations made (a packet evaluation
+ * makes FR_LANES: the work the SIMD unit did). Work-item w adds its sums to slot w % FR_COUNT_SLOTS, so no 32-bit
  * cell overflows below 2^32 x FR_COUNT_SLOTS evaluations of one kind in a frame; the host adds the
  * slots up in 64 bits. Buffer layout: uint counts[FR_COUNT_SLOTS][FR_COUNT_CELLS][2]. */
 #define FR_COUNT_MARCH 0

@@ -9,7 +9,7 @@
  * Linear RGB, unbounded (tonemapped in post.cl). */
 
 #ifndef FR_APPLY_SHADOWS
-#define FR_APPLY_SHADOWS(shadow, p, n, h, light, light_index, lanes)
+#define FR_APPLY_SHADOWS(shadow, p, n, h, lights, facing, count)
 #endif
 
 vec3_t sky_color(vec3_t dir, __constant const fr_frame_constants* fc) {
@@ -66,21 +66,24 @@ vec3_t shade_surface(vec3_t p, vec3_t n, vec3_t view_dir, surface_t surface, rea
                      real_t* first_shadow FR_COUNTS_PARAM) {
   vec3_t to_eye = v3_neg(view_dir);
   vec3_t color = v3_mul(surface.albedo, v3_scale(v3_from_float4(fc->ambient_color), ao));
+  light_sample_t lights[FR_MAX_LIGHTS];
+  mask_t facing[FR_MAX_LIGHTS];
+  real_t shadow[FR_MAX_LIGHTS];
+  const int count = min(fc->light_count, FR_MAX_LIGHTS);
+  for (int i = 0; i < count; ++i) {
+    lights[i] = sample_light(i, p, fc);
+    facing[i] = lanes & (v3_dot(n, lights[i].to_light) > (real_t)0);
+    shadow[i] = (real_t)1;
+  }
+  FR_APPLY_SHADOWS(shadow, p, n, h, lights, facing, count);
   *first_shadow = (real_t)1;
-  for (int i = 0; i < fc->light_count; ++i) {
-    light_sample_t light = sample_light(i, p, fc);
-    real_t n_dot_l = v3_dot(n, light.to_light);
-    mask_t facing = lanes & (n_dot_l > (real_t)0);
-    if (!any_lane(facing)) {
-      if (i == 0) *first_shadow = (real_t)0;
-      continue;
-    }
-    real_t shadow = (real_t)1;
-    FR_APPLY_SHADOWS(shadow, p, n, h, light, i, facing);
-    shadow = lane_select(facing, shadow, 0);
-    if (i == 0) *first_shadow = shadow;
-    vec3_t reflected = brdf_cos(n, light.to_light, to_eye, surface.albedo, n_dot_l, fc);
-    color = v3_add(color, v3_scale(v3_mul(reflected, light.radiance), shadow));
+  for (int i = 0; i < count; ++i) {
+    const real_t lit = lane_select(facing[i], shadow[i], 0);
+    if (i == 0) *first_shadow = lit;
+    if (!any_lane(facing[i])) continue;
+    const real_t n_dot_l = v3_dot(n, lights[i].to_light);
+    vec3_t reflected = brdf_cos(n, lights[i].to_light, to_eye, surface.albedo, n_dot_l, fc);
+    color = v3_add(color, v3_scale(v3_mul(reflected, lights[i].radiance), lit));
   }
   return color;
 }

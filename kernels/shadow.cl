@@ -1,39 +1,79 @@
-/* shadow.cl — how much of a light reaches a surface point: march from just off the surface
+/* shadow.cl — how much of each light reaches a surface point: march from just off the surface
  * towards the light (up to the light's distance, and out of the bounding sphere). FR_SHADOW picks:
  *   FR_SHADOW_HARD  hard: 0 as soon as the ray reaches the surface, else 1
  *   FR_SHADOW_SOFT  soft: the penumbra estimate, the smallest k * d / t along the ray (k = shadow_softness)
- * The result is clamped to [0, 1]: 1 is fully lit. */
+ * The result is clamped to [0, 1]: 1 is fully lit.
+ *
+ * One stream for all the lights: each lane marches its own point's shadow rays one after another
+ * (the lights it faces, in order), starting the next as soon as one ends, so the packet runs
+ * until the lane with the most shadow work is done — not, light after light, until the slowest
+ * lane for that light is. Every ray takes exactly the steps it took when the lights went one at a
+ * time (its own t, lit and step count), so the factors are the same. */
 
-real_t shadow_factor(vec3_t origin, vec3_t to_light, real_t t_start, real_t light_distance,
-                     __constant const fr_frame_constants* fc,
-                     __constant const scene_params_t* params, mask_t lanes,
-                     int light_index FR_COUNTS_PARAM) {
+void shadow_factors(vec3_t p, vec3_t n, real_t h, const light_sample_t* lights,
+                    const mask_t* facing, int light_count, real_t* shadow,
+                    __constant const fr_frame_constants* fc,
+                    __constant const scene_params_t* params FR_COUNTS_PARAM) {
+  /* Start just off the surface, along the normal. */
   ray_t ray;
-  ray.origin = origin;
-  ray.dir = to_light;
-  real_t t_enter, t_exit;
-  intersect_bounds(ray, fc->bounding_radius, &t_enter, &t_exit);
-  t_exit = fmin(t_exit, light_distance);
-  real_t t = t_start;
-  real_t lit = (real_t)1;
-  mask_t active = lanes & (t < t_exit);
-  for (int i = 0; i < fc->shadow_max_steps && any_lane(active); ++i) {
-    vec3_t p = v3_mad(origin, to_light, t);
-    real_t dist = scene_de(p, params);
-    FR_COUNT(FR_COUNT_SHADOW + light_index, active, 1);
+  ray.origin = v3_mad(p, n, 2 * h);
+  const real_t t_start = 4 * h;
+  real_t t_exit[FR_MAX_LIGHTS];
+  for (int l = 0; l < light_count; ++l) {
+    ray.dir = lights[l].to_light;
+    real_t t_enter;
+    intersect_bounds(ray, fc->bounding_radius, &t_enter, &t_exit[l]);
+    t_exit[l] = fmin(t_exit[l], lights[l].distance);
+    shadow[l] = (real_t)1;
+  }
+  /* Per lane: the light of the ray it marches (or last marched; -1 before the first). */
+  real_t light = (real_t)-1, t = (real_t)0, lit = (real_t)1, steps = (real_t)0, exit = (real_t)0;
+  mask_t active = FR_MASK_FALSE, more = FR_MASK_TRUE;
+  const int most = light_count * (fc->shadow_max_steps + 1);
+  for (int i = 0; i < most; ++i) {
+    /* Lanes between rays take their next light (a ray that starts at its end is lit at once). */
+    while (any_lane(!active & more)) {
+      const mask_t idle = !active & more;
+      real_t next = (real_t)FR_MAX_LIGHTS;
+      for (int l = light_count - 1; l >= 0; --l)
+        next = lane_select(idle & facing[l] & ((real_t)l > light), (real_t)l, next);
+      const mask_t starts = idle & (next < (real_t)FR_MAX_LIGHTS);
+      more &= !(idle & !starts);
+      light = lane_select(starts, next, light);
+      for (int l = 0; l < light_count; ++l) {
+        const mask_t mine = starts & (light == (real_t)l);
+        ray.dir = v3_select(mine, lights[l].to_light, ray.dir);
+        exit = lane_select(mine, t_exit[l], exit);
+      }
+      t = lane_select(starts, t_start, t);
+      lit = lane_select(starts, 1, lit);
+      steps = lane_select(starts, 0, steps);
+      active |= starts & (t < exit);
+    }
+    if (!any_lane(active)) break;
+    const real_t dist = scene_de(v3_mad(ray.origin, ray.dir, t), params);
+    /* A lane that has no shadow ray at all idles on the first light's account. */
+    for (int l = 0; l < light_count; ++l)
+      FR_COUNT_LANES(FR_COUNT_SHADOW + l, active & (light == (real_t)l),
+                     (light == (real_t)l) | (l == 0 ? light < (real_t)0 : FR_MASK_FALSE));
 #if FR_SHADOW == FR_SHADOW_SOFT
     lit = lane_select(active, fmin(lit, (real_t)fc->shadow_softness * dist / t), lit);
 #else
     lit = lane_select(active & (dist < t_start * (real_t)0.5), 0, lit);
 #endif
-    active &= (lit > (real_t)0.001) & (dist > (real_t)0);
-    t = lane_select(active, t + fmax(dist, t_start * (real_t)0.5), t);
-    active &= t < t_exit;
+    steps += mask_to_real(active);
+    mask_t going = active & (lit > (real_t)0.001) & (dist > (real_t)0);
+    t = lane_select(going, t + fmax(dist, t_start * (real_t)0.5), t);
+    going &= (t < exit) & (steps < (real_t)fc->shadow_max_steps);
+    /* Rays that ended: their light's factor. */
+    const mask_t ended = active & !going;
+    for (int l = 0; l < light_count; ++l)
+      shadow[l] = lane_select(ended & (light == (real_t)l), clamp(lit, (real_t)0, (real_t)1),
+                              shadow[l]);
+    active = going;
   }
-  return clamp(lit, (real_t)0, (real_t)1);
 }
 
-/* The renderer's hook (shade.cl): start just off the surface, along the normal. */
-#define FR_APPLY_SHADOWS(shadow, p, n, h, light, light_index, lanes)                         \
-  shadow = shadow_factor(v3_mad(p, n, 2 * (h)), (light).to_light, 4 * (h), (light).distance, \
-                         fc, params, lanes, light_index FR_COUNTS_ARG)
+/* The renderer's hook (shade.cl). */
+#define FR_APPLY_SHADOWS(shadow, p, n, h, lights, facing, count) \
+  shadow_factors(p, n, h, lights, facing, count, shadow, fc, params FR_COUNTS_ARG)

@@ -52,7 +52,7 @@ struct StageMarker {
   const char* code;
 };
 const StageMarker kStageMarkers[] = {
-    {FR_FEATURE_SHADOWS, "shadows", "shadow_factor("},
+    {FR_FEATURE_SHADOWS, "shadows", "shadow_factors("},
     {FR_FEATURE_AO, "ao", "_ao(real_t"},
     {FR_FEATURE_GLOW, "glow", "add_glow("},
     {FR_FEATURE_FOG, "fog", "fog_amount("},
@@ -99,7 +99,7 @@ TEST(KernelAssembly, MandelbulbHasNoShadowStage) {
   const auto state = make_default_state(info);
   const auto k =
       assemble_render_kernel(info, state.params, make_kernel_config(info, RenderSettings{}, 16));
-  EXPECT_FALSE(contains(k.source, "shadow_factor"));
+  EXPECT_FALSE(contains(k.source, "shadow_factors"));
   EXPECT_FALSE(contains(k.source, "#line 1 \"shadow.cl\""));
   EXPECT_TRUE(contains(k.source, "#define FR_STAGE_SHADOWS 0"));
   EXPECT_TRUE(contains(k.source, "step_count_ao"));
@@ -140,11 +140,11 @@ TEST(KernelAssembly, StageSwitchedOffByUserIsAbsent) {
   const auto values = make_default_state(info).params;
   RenderSettings settings;
   const auto all = assemble_render_kernel(info, values, make_kernel_config(info, settings, 1));
-  EXPECT_TRUE(contains(all.source, "shadow_factor"));
+  EXPECT_TRUE(contains(all.source, "shadow_factors"));
   EXPECT_TRUE(contains(all.source, "step_count_ao"));
   settings.disabled_stages = FR_FEATURE_AO;
   const auto no_ao = assemble_render_kernel(info, values, make_kernel_config(info, settings, 1));
-  EXPECT_TRUE(contains(no_ao.source, "shadow_factor"));
+  EXPECT_TRUE(contains(no_ao.source, "shadow_factors"));
   EXPECT_FALSE(contains(no_ao.source, "step_count_ao"));
   EXPECT_TRUE(contains(no_ao.description, "stages: shadows"));
 }

@@ -29,8 +29,8 @@ double per_pixel(const EvalCounts& c, uint64_t evals) {
   return samples_px > 0 ? static_cast<double>(evals) / samples_px : 0.0;
 }
 
-double utilisation(const EvalCounts& c, uint64_t active, uint64_t packet) {
-  return packet > 0 ? static_cast<double>(active) / (static_cast<double>(packet) * c.lanes) : 0.0;
+double utilisation(uint64_t active, uint64_t issued) {
+  return issued > 0 ? static_cast<double>(active) / static_cast<double>(issued) : 0.0;
 }
 
 std::string bounce_name(int bounce) {
@@ -48,7 +48,7 @@ EvalCounts sum_eval_counts(const std::vector<uint32_t>& slots, int lanes, uint64
   for (size_t slot = 0; slot < slots.size() / (2 * FR_COUNT_CELLS); ++slot)
     for (int cell = 0; cell < FR_COUNT_CELLS; ++cell) {
       c.active[cell] += slots[(slot * FR_COUNT_CELLS + cell) * 2 + 0];
-      c.packet[cell] += slots[(slot * FR_COUNT_CELLS + cell) * 2 + 1];
+      c.issued[cell] += slots[(slot * FR_COUNT_CELLS + cell) * 2 + 1];
     }
   return c;
 }
@@ -56,7 +56,7 @@ EvalCounts sum_eval_counts(const std::vector<uint32_t>& slots, int lanes, uint64
 void add_eval_counts(EvalCounts& a, const EvalCounts& b) {
   for (int cell = 0; cell < FR_COUNT_CELLS; ++cell) {
     a.active[cell] += b.active[cell];
-    a.packet[cell] += b.packet[cell];
+    a.issued[cell] += b.issued[cell];
   }
   a.lanes = b.lanes;
   a.pixels = b.pixels;
@@ -68,9 +68,9 @@ std::vector<StageCount> stage_counts(const EvalCounts& c) {
   for (int bounce = 0; bounce <= FR_COUNT_MAX_BOUNCES; ++bounce)
     for (int kind = 0; kind < FR_COUNT_KINDS; ++kind) {
       const int cell = bounce * FR_COUNT_KINDS + kind;
-      if (c.packet[cell] == 0) continue;
+      if (c.issued[cell] == 0) continue;
       rows.push_back({bounce, kind_name(kind), per_pixel(c, c.active[cell]),
-                      utilisation(c, c.active[cell], c.packet[cell])});
+                      utilisation(c.active[cell], c.issued[cell])});
     }
   return rows;
 }
@@ -82,12 +82,12 @@ double total_evals_per_pixel(const EvalCounts& c) {
 }
 
 double total_utilisation(const EvalCounts& c) {
-  uint64_t active = 0, packet = 0;
+  uint64_t active = 0, issued = 0;
   for (int cell = 0; cell < FR_COUNT_CELLS; ++cell) {
     active += c.active[cell];
-    packet += c.packet[cell];
+    issued += c.issued[cell];
   }
-  return utilisation(c, active, packet);
+  return utilisation(active, issued);
 }
 
 std::string format_eval_counts(const EvalCounts& c) {

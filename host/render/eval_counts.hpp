@@ -16,7 +16,7 @@ namespace fr {
 // A frame's counters, summed over the device's slots and over the samples rendered.
 struct EvalCounts {
   std::array<uint64_t, FR_COUNT_CELLS> active{};  // evaluations lanes asked for
-  std::array<uint64_t, FR_COUNT_CELLS> packet{};  // packet evaluations (x lanes: lane work done)
+  std::array<uint64_t, FR_COUNT_CELLS> issued{};  // lane evaluations made (lanes x packets)
   int lanes = 1;
   uint64_t pixels = 0;  // of the frame
   int samples = 0;      // samples counted (their evaluations are all in the sums)
@@ -34,7 +34,7 @@ struct StageCount {
   int bounce = 0;  // 0: primary rays; 1, 2, ...: mirror bounces
   std::string stage;
   double evals_per_pixel = 0;  // per pixel per sample, by the lanes that wanted them
-  double utilisation = 0;      // active-lane evaluations / (lanes x packet evaluations), in [0, 1]
+  double utilisation = 0;      // evaluations wanted / lane evaluations made, in [0, 1]
 };
 
 // The stages that evaluated the DE at all, bounce by bounce, in pipeline order.
