@@ -15,29 +15,62 @@
 namespace fr {
 namespace {
 
-const char* kUsage =
-    "fractalis — real-time explorer and renderer of distance-estimated 3D fractals\n"
-    "\n"
-    "usage: fractalis <command> [options]\n"
-    "\n"
-    "commands:\n"
-    "  explore   open the explorer window and fly through a scene\n"
-    "  render    render a scene to a PNG file (or a poster of up to 65535 pixels a side)\n"
-    "  animate   render a scene along a camera path to a video or a folder of PNGs\n"
-    "  bench     time frames of a scene (median, min, max)\n"
-    "  sweep     measure image error against frame time over the quality knobs\n"
-    "  list      list scene plugins, their parameters, or why they failed to load\n"
-    "  devices   list OpenCL platforms and devices\n"
-    "  check     run the conformance checks on a scene plugin (for scene authors)\n"
-    "  cache     show fractalis's cache folders and their sizes; --clear empties them\n"
-    "\n"
-    "  fractalis <command> --help   options of a command\n"
-    "  fractalis --version          versions of fractalis and its scene ABI\n"
-    "\n"
-    "options of every command (before or after its name):\n"
-    "  -v, --verbose      also say what is done step by step (debug messages)\n"
-    "  -q, --quiet        say errors only\n"
-    "  --log-file FILE    append every message, time-stamped, to FILE as well\n";
+using CommandFunction = int (*)(const std::vector<std::string>&, std::ostream&, std::ostream&);
+
+// Every command, once: the dispatch, the usage text and the error for an unknown name read it.
+struct CommandEntry {
+  const char* name;
+  const char* summary;  // nullptr: internal, not listed (vet-scene runs in a child process)
+  CommandFunction run;
+};
+const CommandEntry kCommands[] = {
+    {"explore", "open the explorer window and fly through a scene", command_explore},
+    {"render", "render a scene to a PNG file (or a poster of up to 65535 pixels a side)",
+     command_render},
+    {"animate", "render a scene along a camera path to a video or a folder of PNGs",
+     command_animate},
+    {"bench", "time frames of a scene (median, min, max) and count its DE evaluations",
+     command_bench},
+    {"sweep", "measure image error against frame time over the quality knobs", command_sweep},
+    {"list", "list scene plugins, their parameters, or why they failed to load", command_list},
+    {"devices", "list OpenCL platforms and devices", command_devices},
+    {"check", "run the conformance checks on a scene plugin (for scene authors)", command_check},
+    {"cache", "show fractalis's cache folders and their sizes; --clear empties them",
+     command_cache},
+    {"vet-scene", nullptr, command_vet_scene},
+};
+
+std::string usage_text() {
+  std::string text =
+      "fractalis — real-time explorer and renderer of distance-estimated 3D fractals\n"
+      "\n"
+      "usage: fractalis <command> [options]\n"
+      "\n"
+      "commands:\n";
+  for (const CommandEntry& c : kCommands)
+    if (c.summary) text += "  " + (c.name + std::string(10, ' ')).substr(0, 10) + c.summary + "\n";
+  text +=
+      "\n"
+      "  fractalis <command> --help   options of a command\n"
+      "  fractalis --version          versions of fractalis and its scene ABI\n"
+      "\n"
+      "options of every command (before or after its name):\n"
+      "  -v, --verbose      also say what is done step by step (debug messages)\n"
+      "  -q, --quiet        say errors only\n"
+      "  --log-file FILE    append every message, time-stamped, to FILE as well\n";
+  return text;
+}
+
+// "explore, render, ... or cache": the listed commands.
+std::string command_names() {
+  std::vector<const char*> names;
+  for (const CommandEntry& c : kCommands)
+    if (c.summary) names.push_back(c.name);
+  std::string text;
+  for (size_t i = 0; i < names.size(); ++i)
+    text += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + std::string(names[i]);
+  return text;
+}
 
 // Takes the options every command has out of `args`.
 LogOptions take_log_options(std::vector<std::string>& args) {
@@ -70,18 +103,9 @@ LogOptions take_log_options(std::vector<std::string>& args) {
 int run_command(const std::string& command, const std::vector<std::string>& rest, std::ostream& out,
                 std::ostream& err) {
   try {
-    if (command == "explore") return command_explore(rest, out, err);
-    if (command == "render") return command_render(rest, out, err);
-    if (command == "animate") return command_animate(rest, out, err);
-    if (command == "bench") return command_bench(rest, out, err);
-    if (command == "sweep") return command_sweep(rest, out, err);
-    if (command == "list") return command_list(rest, out, err);
-    if (command == "devices") return command_devices(rest, out, err);
-    if (command == "check") return command_check(rest, out, err);
-    if (command == "cache") return command_cache(rest, out, err);
-    if (command == "vet-scene") return command_vet_scene(rest, out, err);
-    throw UsageError("unknown command '" + echo(command) +
-                     "' (expected explore, render, bench, sweep, list, devices, check or cache)");
+    for (const CommandEntry& c : kCommands)
+      if (command == c.name) return c.run(rest, out, err);
+    throw UsageError("unknown command '" + echo(command) + "' (expected " + command_names() + ")");
   } catch (const UsageError& e) {
     spdlog::error("{}", e.what());
     return 2;
@@ -95,7 +119,7 @@ int run_command(const std::string& command, const std::vector<std::string>& rest
 
 int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
-    (args.empty() ? err : out) << kUsage;
+    (args.empty() ? err : out) << usage_text();
     return args.empty() ? 2 : 0;
   }
   if (args[0] == "--version") {
