@@ -159,7 +159,8 @@ TEST_P(PinnedCounts, NoMoreWorkThanPinned) {
   s.lanes = 16;
   s.precision = Precision::Float;
   const Counted c = render_counted(scene, state, s);
-  const StageCount* march = find_stage(stage_counts(c.counts), 0, "march");
+  const std::vector<StageCount> rows = stage_counts(c.counts);
+  const StageCount* march = find_stage(rows, 0, "march");
   ASSERT_NE(march, nullptr);
   std::printf("%s: %.3f evaluations per pixel, primary march %.3f\n", v.scene,
               total_evals_per_pixel(c.counts), march->evals_per_pixel);
