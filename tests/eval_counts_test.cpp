@@ -3,6 +3,8 @@
 // evaluations a normal costs, one lane per packet — and, per in-tree scene, pinned for a few
 // fixed views so that a change that silently makes rendering do more work fails here, with no
 // timing involved (the counts are deterministic).
+#include "app/explorer.hpp"
+#include "cli/scene_setup.hpp"
 #include "plugin/scene_instance.hpp"
 #include "render/renderer.hpp"
 #include "test_support.hpp"
@@ -130,6 +132,26 @@ TEST(EvalCounts, ActiveEvaluationsDoNotDependOnTheLaneWidth) {
               0.01 * total_evals_per_pixel(one.counts));
   EXPECT_DOUBLE_EQ(total_utilisation(one.counts), 1.0);
   EXPECT_LT(total_utilisation(sixteen.counts), 1.0);
+}
+
+// The explorer's overlay shows the counts of its last full frame while counting is on, and none
+// otherwise (the plain kernel).
+TEST(EvalCounts, ExplorerCountsWhileAsked) {
+  ParsedOptions options;
+  options.values["scene"] = {"mandelbulb"};
+  options.values["size"] = {"64x48"};
+  options.values["plugins"] = {SCENE_PLUGIN_DIR};
+  ExplorerSetup setup = prepare_explorer(options);
+  Explorer& explorer = *setup.explorer;
+  ASSERT_NE(explorer.render(64, 48), nullptr);
+  EXPECT_EQ(explorer.stats().eval_counts.samples, 0);
+  explorer.set_count_evaluations(true);
+  ASSERT_NE(explorer.render(64, 48), nullptr);
+  EXPECT_GT(total_evals_per_pixel(explorer.stats().eval_counts), 1.0);
+  const std::vector<StageCount> rows = stage_counts(explorer.stats().eval_counts);
+  EXPECT_NE(find_stage(rows, 0, "normals"), nullptr);
+  explorer.set_count_evaluations(false);
+  EXPECT_EQ(explorer.stats().eval_counts.samples, 0);
 }
 
 // The work each in-tree scene's frames take, pinned: a view of the scene's default camera at
