@@ -2,6 +2,7 @@
 
 #include "io/atomic_file.hpp"
 #include "io/echo.hpp"
+#include "io/fnv1a.hpp"
 
 #include <cmath>
 #include <cstdint>
@@ -38,14 +39,7 @@ std::string frame_file_name(int frame) {
 }
 
 std::string digest_hex(const std::string& bytes) {
-  uint64_t h = 1469598103934665603ull;
-  for (const unsigned char c : bytes) {
-    h ^= c;
-    h *= 1099511628211ull;
-  }
-  char text[17];
-  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(h));
-  return text;
+  return hex16(fnv1a(bytes));
 }
 
 namespace {

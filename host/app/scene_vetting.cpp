@@ -1,6 +1,7 @@
 #include "app/scene_vetting.hpp"
 
 #include "io/cache_dirs.hpp"
+#include "io/fnv1a.hpp"
 #include "plugin/plugin_files.hpp"
 #include "plugin/scan_cache.hpp"
 
@@ -125,14 +126,11 @@ uint64_t VettedScenes::content_hash(const std::filesystem::path& file) {
   std::string error;
   const int fd = open_plugin_file(file, true, &error);  // never blocks, regular files only
   if (fd < 0) return 0;
-  uint64_t h = 1469598103934665603ull;  // FNV-1a
+  uint64_t h = kFnv1aOffset;
   char buffer[1 << 16];
   ssize_t n;
   while ((n = read(fd, buffer, sizeof buffer)) > 0)
-    for (ssize_t i = 0; i < n; ++i) {
-      h ^= static_cast<uint8_t>(buffer[i]);
-      h *= 1099511628211ull;
-    }
+    h = fnv1a(std::string_view(buffer, static_cast<size_t>(n)), h);
   close(fd);
   return n < 0 ? 0 : h;
 }

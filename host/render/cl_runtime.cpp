@@ -1,16 +1,10 @@
 #include "render/cl_runtime.hpp"
 
+#include "io/fnv1a.hpp"
+
 #include <vector>
 
 namespace fr {
-
-uint64_t hash_bytes(std::string_view data, uint64_t h) {
-  for (unsigned char c : data) {
-    h ^= c;
-    h *= 1099511628211ull;
-  }
-  return h;
-}
 
 ClRuntime::ClRuntime(const DeviceInfo& device) : device_(device) {
   cl_int err = CL_SUCCESS;
@@ -24,10 +18,9 @@ ClRuntime::ClRuntime(const DeviceInfo& device) : device_(device) {
 
 cl_program ClRuntime::program(const std::string& source, const std::string& options,
                               const std::string& description) {
-  uint64_t key = hash_bytes(source);
-  key = hash_bytes(options, key);
-  key =
-      hash_bytes(device_.name + '\n' + device_.driver_version + '\n' + device_.platform_name, key);
+  uint64_t key = fnv1a(source);
+  key = fnv1a(options, key);
+  key = fnv1a(device_.name + '\n' + device_.driver_version + '\n' + device_.platform_name, key);
   if (auto it = programs_.find(key); it != programs_.end()) return it->second.get();
 
   cl_int err = CL_SUCCESS;

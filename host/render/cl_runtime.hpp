@@ -46,7 +46,4 @@ class ClRuntime {
   size_t programs_built_ = 0;
 };
 
-// 64-bit FNV-1a, the program cache's key.
-uint64_t hash_bytes(std::string_view data, uint64_t seed = 1469598103934665603ull);
-
 }  // namespace fr

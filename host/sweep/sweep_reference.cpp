@@ -1,6 +1,7 @@
 #include "sweep/sweep_reference.hpp"
 
 #include "io/atomic_file.hpp"
+#include "io/fnv1a.hpp"
 #include "render/camera.hpp"
 #include "render/kernel_assembly.hpp"
 
@@ -14,13 +15,6 @@ namespace fr {
 namespace {
 
 constexpr char kMagic[8] = {'F', 'R', 'S', 'W', 'R', 'E', 'F', '1'};
-
-// FNV-1a, 64 bits: a stable key across runs and machines (std::hash is neither).
-uint64_t fnv1a(const std::string& text) {
-  uint64_t h = 1469598103934665603ULL;
-  for (unsigned char c : text) h = (h ^ c) * 1099511628211ULL;
-  return h;
-}
 
 template <typename T>
 void append(std::string& out, const T& v) {
@@ -110,9 +104,7 @@ std::string reference_key(const SceneInfo& info, const SceneState& state, const 
     for (float v : *a) k << ' ' << v;
   // The kernel source itself: a changed renderer or DE is a new reference.
   k << '\n' << assemble_render_kernel(info, state.params, make_kernel_config(info, s, 1)).source;
-  char hex[17];
-  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(fnv1a(k.str())));
-  return hex;
+  return hex16(fnv1a(k.str()));
 }
 
 SweepReference make_reference(Renderer& renderer, const SceneInfo& info, const SceneState& state,
