@@ -32,8 +32,8 @@ void shadow_factors(vec3_t p, vec3_t n, real_t h, const light_sample_t* lights,
   const int most = light_count * (fc->shadow_max_steps + 1);
   for (int i = 0; i < most; ++i) {
     /* Lanes between rays take their next light (a ray that starts at its end is lit at once). */
-    while (any_lane(!active & more)) {
-      const mask_t idle = !active & more;
+    while (any_lane((!active) & more)) {
+      const mask_t idle = (!active) & more;
       real_t next = (real_t)FR_MAX_LIGHTS;
       for (int l = light_count - 1; l >= 0; --l)
         next = lane_select(idle & facing[l] & ((real_t)l > light), (real_t)l, next);

@@ -194,7 +194,6 @@ void append_scene_prefix(std::ostringstream& out, const SceneInfo& info,
   out << "#define FR_RELAX_ADAPTIVE " << (config.adaptive_relaxation ? 1 : 0) << "\n";
   // 0: colour; 1: and steps and ray status; 2: every pass (render.cl).
   out << "#define FR_OUTPUTS " << static_cast<int>(config.outputs) << "\n";
-  out << "#define FR_STAGE_CONE " << ((config.stages & kStageCone) ? 1 : 0) << "\n";
   append_file(out, "frame_constants.h", kernel_source("frame_constants.h"));
   append_file(out, "prelude.cl", kernel_source("prelude.cl"));
   append_params(out, info, values, config.precision);
