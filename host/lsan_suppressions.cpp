@@ -14,5 +14,7 @@ extern "C" const char* __lsan_default_suppressions() {
          "leak:libLLVM\n";
 }
 // Without the table of what was suppressed at every exit: it is the same table each time.
-extern "C" const char* __lsan_default_options() { return "print_suppressions=0"; }
+extern "C" const char* __lsan_default_options() {
+  return "print_suppressions=0";
+}
 #endif

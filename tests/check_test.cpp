@@ -9,6 +9,7 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <vector>
 
 namespace fr {
 namespace {
@@ -55,13 +56,47 @@ TEST(Check, EveryInTreeScenePasses) {
     const CheckRun r =
         run_check(std::filesystem::path(SCENE_PLUGIN_DIR) / (std::string(scene) + ".so"));
     EXPECT_EQ(r.exit_code, 0) << r.out;
-    for (const char* check :
-         {"descriptor", "de-compiles", "de-returns", "de-finite", "de-lipschitz", "de-bounded",
-          "lanes-agree", "update", "create-destroy", "render", "unload"})
+    for (const char* check : {"descriptor", "de-compiles", "de-returns", "de-finite",
+                              "de-lipschitz", "de-overestimate", "de-bounded", "lanes-agree",
+                              "update", "create-destroy", "render", "render-careful", "unload"})
       EXPECT_EQ(status_of(r.out, check), "PASS") << check << "\n" << r.out;
     const auto json = nlohmann::json::parse(r.json);
     EXPECT_EQ(json["result"], "pass") << r.json;
     EXPECT_EQ(json["scene"], scene);
+  }
+}
+
+// The in-tree Menger sponge, whose DE is the exact distance outside the sponge, with that DE
+// multiplied by 1.25, 1.5 and 3 (tests/CMakeLists.txt generates them from plugins/menger):
+// de-overestimate fails each, and the worst over-estimate it reports is the factor (at most the
+// factor over the surface threshold's 99/100); render-careful, coarser, fails the 3x one.
+TEST(Check, OverEstimatingDeFails) {
+  for (const auto& [tag, factor] :
+       std::vector<std::pair<std::string, double>>{{"1_25", 1.25}, {"1_5", 1.5}, {"3", 3.0}}) {
+    SCOPED_TRACE(tag);
+    const CheckRun r = run_check(std::filesystem::path(OVERESTIMATE_PLUGIN_DIR) /
+                                 ("overestimate_menger_x" + tag + ".so"));
+    EXPECT_EQ(r.exit_code, 1) << r.out;
+    EXPECT_EQ(status_of(r.out, "de-overestimate"), "FAIL") << r.out;
+    EXPECT_EQ(status_of(r.out, "render"), "PASS") << "only the DE is wrong\n" << r.out;
+    // The render comparison is coarse (grazing rays count): only three times too long fails it.
+    if (factor == 3) {
+      EXPECT_EQ(status_of(r.out, "render-careful"), "FAIL") << r.out;
+    }
+    const std::string tail = "x too far";
+    const size_t at = r.out.find(tail);
+    ASSERT_NE(at, std::string::npos) << r.out;
+    const size_t start = r.out.rfind(' ', at) + 1;
+    const double worst = std::stod(r.out.substr(start, at - start));
+    EXPECT_GE(worst, 0.99 * factor) << r.out;
+    EXPECT_LE(worst, factor * 100 / 99) << r.out;
+    bool named = false;
+    const auto json = nlohmann::json::parse(r.json);
+    for (const auto& row : json["checks"])
+      if (row["check"] == "de-overestimate")
+        named = row["status"] == "fail" &&
+                row["detail"].get<std::string>().find("over-estimates") != std::string::npos;
+    EXPECT_TRUE(named) << r.json;
   }
 }
 

@@ -9,6 +9,8 @@
 //   de-returns        a test render in a child process finishes within plugins.vet_timeout_s
 //   de-finite         no NaN or Inf at points sampled over the bounding sphere
 //   de-lipschitz      |DE(p) - DE(q)| <= (1 + tol) |p - q| at nearby pairs (worst ratio, where)
+//   de-overestimate   no surface inside the ball of radius DE(p) / (1 + tol) around points p
+//                     outside the surface, found by fixed steps (worst ratio, where)
 //   de-bounded        no surface outside the bounding radius (DE > 0 on shells from R to 2R)
 //   lanes-agree       widths 1 and 16 give the same values
 //   precisions-agree  float and double agree (a chaotic DE may differ at some points: warned)
@@ -17,6 +19,9 @@
 //   create-destroy    repeated without the scene host's heap or threads growing
 //   render            a small render of the default view shows something, has no NaN pixel,
 //                     and few rays run out of steps
+//   render-careful    the same view by plain sphere tracing at full and at quarter steps: the
+//                     share of the quarter steps' hits that the full steps go through (coarse:
+//                     grazing rays count too; warn above 10%, fail above 25%)
 //   unload            destroying every instance and closing the library leaves no thread and
 //                     no mapping behind
 #pragma once
@@ -36,6 +41,9 @@ struct CheckOptions {
   int de_samples = 2048;  // points sampled over the bounding sphere
   // |dDE| <= (1 + tol) |dp|: pass when at most 1% of the sampled pairs exceed it, fail above 5%.
   double lipschitz_tolerance = 0.1;
+  // Surface closer than DE(p) / (1 + tol) to p: pass when at most 1% of the tested points have
+  // it, fail above 5%.
+  double overestimate_tolerance = 0.1;
 };
 
 CheckReport check_scene_plugin(const std::filesystem::path& file, const CheckOptions& options,

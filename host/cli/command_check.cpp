@@ -32,10 +32,10 @@ int command_check(const std::vector<std::string>& args, std::ostream& out, std::
   if (options.has("help")) {
     out << "usage: fractalis check PLUGIN.so [--json FILE] [--device SEL]\n\n"
            "Runs the conformance checks on a scene plugin (in a scene-host process, so a crash "
-           "is a\nfinding): descriptor rules, DE builds, DE values (finite, Lipschitz, bounded, "
-           "the same\nat every lane width and precision), update determinism and parameter "
-           "ranges,\ncreate/destroy leaks, a sanity render, and unloading. Exit 0 when nothing "
-           "failed.\n\n"
+           "is a\nfinding): descriptor rules, DE builds, DE values (finite, Lipschitz, never "
+           "longer than\nthe distance to the surface, bounded, the same at every lane width and "
+           "precision),\nupdate determinism and parameter ranges, create/destroy leaks, a sanity "
+           "render and a\ncareful one, and unloading. Exit 0 when nothing failed.\n\n"
         << format_options(specs);
     return 0;
   }
