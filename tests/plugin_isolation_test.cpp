@@ -402,37 +402,97 @@ TEST(PluginIsolation, RepeatedLoadsLeakNothing) {
   }
 }
 
-// A DE that never returns: `fractalis render` (and `animate`, into a video whose temporary file
-// is open) ends after render.watchdog_s with exit status 3 and an error naming the scene, and
-// leaves nothing behind.
-TEST(PluginIsolation, RenderWatchdogEndsADeThatNeverReturns) {
-  for (const std::string command_out : {"render --out never.png", "animate --out never.mkv"}) {
+// A DE that never returns, in the commands that render one scene. Each first renders the scene
+// at 8x8 in a child process, as the explorer does: `render`, `bench`, `animate` and `sweep` end
+// after plugins.vet_timeout_s (not render.watchdog_s, here far longer) with exit status 3, an
+// error naming the scene, its file and the limit, and nothing left behind. With isolation
+// "none" (one process, for a debugger) there is no child: the watchdog ends them instead.
+TEST(PluginIsolation, DeThatNeverReturnsEndsTheCommand) {
+  struct Case {
+    std::string command_out, extra, expected;
+  };
+  const std::string vetted =
+      "scene 'fixture_de_loop' (PLUGINS/de_loop.so): a test render at 8x8 did not finish within "
+      "2 s (plugins.vet_timeout_s)";
+  const std::string watchdog =
+      "rendering scene 'fixture_de_loop' did not finish within 2 s (render.watchdog_s)";
+  const std::vector<Case> cases = {
+      {"render --out never.png", "--set render.watchdog_s=60", vetted},
+      {"animate --out never.mkv --path path.toml", "--set render.watchdog_s=60", vetted},
+      {"bench --frames 1 --runs 1", "--set render.watchdog_s=60", vetted},
+      {"sweep --out sweep --knobs max_steps", "", vetted},
+      {"render --out never.png", "--set plugins.isolation=none --set render.watchdog_s=2",
+       watchdog},
+      {"animate --out never.mkv --path path.toml",
+       "--set plugins.isolation=none --set render.watchdog_s=2", watchdog},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.command_out + " " + c.extra);
     const auto dir = test::fresh_dir("de_loop_render");
-    std::filesystem::copy_file(hostile("de_loop"), dir / "de_loop.so");
+    const auto plugins = dir / "plugins";
+    std::filesystem::create_directories(plugins);
+    std::filesystem::copy_file(hostile("de_loop"), plugins / "de_loop.so");
     std::ofstream(dir / "path.toml") << "[[keyframe]]\ntime_s = 0\neye = [0, 0, 3]\n"
                                         "target = [0, 0, 0]\n[[keyframe]]\ntime_s = 1\n"
                                         "eye = [0, 1, 3]\ntarget = [0, 0, 0]\n";
     const auto log = dir / "stderr.txt";
-    const std::string command =
-        "cd " + dir.string() + " && " + FRACTALIS_EXECUTABLE + " " + command_out + " --plugins " +
-        dir.string() + " --scene fixture_de_loop --size 16x16 " + "--set render.watchdog_s=2 " +
-        (command_out[0] == 'a' ? "--path path.toml " : "") + "2> " + log.string();
+    // A cache of its own: nothing vetted before.
+    const std::string command = "cd " + dir.string() + " && XDG_CACHE_HOME=" + dir.string() +
+                                "/cache " + FRACTALIS_EXECUTABLE + " " + c.command_out +
+                                " --plugins " + plugins.string() +
+                                " --scene fixture_de_loop --size 16x16 --set "
+                                "plugins.vet_timeout_s=2 " +
+                                c.extra + " 2> " + log.string();
     const int status = std::system(command.c_str());
     ASSERT_TRUE(WIFEXITED(status)) << command;
     EXPECT_EQ(WEXITSTATUS(status), 3) << command;
     std::ifstream in(log);
-    const std::string said((std::istreambuf_iterator<char>(in)), {});
-    EXPECT_NE(said.find("rendering scene 'fixture_de_loop' did not finish within 2 s "
-                        "(render.watchdog_s)"),
-              std::string::npos)
-        << said;
+    std::string said((std::istreambuf_iterator<char>(in)), {});
+    for (size_t at; (at = said.find(plugins.string())) != std::string::npos;)
+      said.replace(at, plugins.string().size(), "PLUGINS");
+    EXPECT_NE(said.find(c.expected), std::string::npos) << said;
     std::vector<std::string> left;
     for (const auto& e : std::filesystem::directory_iterator(dir)) {
       const std::string name = e.path().filename().string();
-      if (name != "stderr.txt" && name != "de_loop.so" && name != "path.toml") left.push_back(name);
+      if (name != "stderr.txt" && name != "plugins" && name != "path.toml" && name != "cache")
+        left.push_back(name);
     }
     EXPECT_TRUE(left.empty()) << command << " left " << left.front();
   }
+}
+
+// A good scene is vetted once per file content: the first `render` leaves one marker in
+// $XDG_CACHE_HOME/fractalis/vetted/, the second adds none, a changed file adds one.
+TEST(PluginIsolation, CommandsVetEachSceneFileOnce) {
+  const auto dir = test::fresh_dir("vet_once");
+  const auto plugins = dir / "plugins";
+  std::filesystem::create_directories(plugins);
+  std::filesystem::copy_file(std::filesystem::path(RELOAD_PLUGIN_DIR) / "reload_a.so",
+                             plugins / "probe.so");
+  const auto markers = dir / "cache" / "fractalis" / "vetted";
+  auto render = [&] {
+    const std::string command = "cd " + dir.string() + " && XDG_CACHE_HOME=" + dir.string() +
+                                "/cache " + FRACTALIS_EXECUTABLE + " render --out x.png --plugins " +
+                                plugins.string() + " --scene reload_probe --size 16x16 -q";
+    return std::system(command.c_str());
+  };
+  auto count = [&] {
+    std::error_code ec;
+    size_t n = 0;
+    for (auto it = std::filesystem::directory_iterator(markers, ec);
+         !ec && it != std::filesystem::directory_iterator(); ++it)
+      ++n;
+    return n;
+  };
+  ASSERT_EQ(render(), 0);
+  EXPECT_EQ(count(), 1u);
+  ASSERT_EQ(render(), 0);
+  EXPECT_EQ(count(), 1u) << "the same bytes are not vetted again";
+  std::filesystem::copy_file(std::filesystem::path(RELOAD_PLUGIN_DIR) / "reload_b.so",
+                             plugins / "probe.so",
+                             std::filesystem::copy_options::overwrite_existing);
+  ASSERT_EQ(render(), 0);
+  EXPECT_EQ(count(), 2u);
 }
 
 // A scan is kept by the file's identity: the second load of an unchanged file reads it back and

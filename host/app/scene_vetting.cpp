@@ -100,6 +100,7 @@ VetResult vet_scene(const std::filesystem::path& file, const RenderSettings& set
   while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
   }
   if (timed_out) {
+    result.timed_out = true;
     std::ostringstream why;
     why << "a test render at 8x8 did not finish within " << timeout_s
         << " s (plugins.vet_timeout_s): its DE may never return";
@@ -164,6 +165,16 @@ void VettedScenes::insert(uint64_t hash, const RenderSettings& s) {
   std::filesystem::permissions(file.parent_path(), std::filesystem::perms::owner_all, ec);
   const int fd = open(file.c_str(), O_WRONLY | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0600);
   if (fd >= 0) close(fd);
+}
+
+VetResult vet_scene_once(const std::filesystem::path& file, const RenderSettings& settings,
+                         const std::string& device, double timeout_s) {
+  VettedScenes vetted;
+  const uint64_t hash = VettedScenes::content_hash(file);
+  if (vetted.contains(hash, settings)) return {true, false, ""};
+  VetResult vet = vet_scene(file, settings, device, timeout_s);
+  if (vet.ok) vetted.insert(hash, settings);
+  return vet;
 }
 
 }  // namespace fr

@@ -19,6 +19,7 @@ namespace fr {
 
 struct VetResult {
   bool ok = false;
+  bool timed_out = false;  // the test render did not finish within the limit
   std::string error;  // why not: the child's error, "crashed (SIGSEGV)", or the time limit
 };
 
@@ -41,6 +42,12 @@ class VettedScenes {
  private:
   std::set<std::tuple<uint64_t, int, int>> vetted_;
 };
+
+// vet_scene for a command that renders one scene (`render`, `bench`, `animate`, `sweep`): once
+// per file content and kernel shape, remembered in the same markers as the explorer's, so a DE
+// that never returns fails in plugins.vet_timeout_s instead of after render.watchdog_s.
+VetResult vet_scene_once(const std::filesystem::path& file, const RenderSettings& settings,
+                         const std::string& device, double timeout_s);
 
 // The fractalis executable: this process when it is fractalis, else the build tree's.
 std::filesystem::path fractalis_executable();

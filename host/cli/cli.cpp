@@ -2,6 +2,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
+#include "cli/watchdog.hpp"
 #include "io/echo.hpp"
 #include "io/log.hpp"
 
@@ -109,6 +110,9 @@ int run_command(const std::string& command, const std::vector<std::string>& rest
   } catch (const UsageError& e) {
     spdlog::error("{}", e.what());
     return 2;
+  } catch (const SceneHangError& e) {
+    spdlog::error("{}", e.what());
+    return kWatchdogExitStatus;
   } catch (const std::exception& e) {
     spdlog::error("{}", e.what());
     return 1;

@@ -1,5 +1,7 @@
 #include "cli/scene_setup.hpp"
 
+#include "app/scene_vetting.hpp"
+#include "cli/watchdog.hpp"
 #include "io/echo.hpp"
 #include "path/camera_path.hpp"
 #include "render/kernel_cache.hpp"
@@ -332,6 +334,19 @@ PreparedScene prepare_scene(const ParsedOptions& options, int max_side) {
   std::string error;
   p.instance = SceneInstance::create(p.scene, &error);
   if (!p.instance) throw std::runtime_error(error);
+  // A DE that never returns would hold this process until render.watchdog_s (nothing cancels a
+  // running kernel): first a test render in a child process, as the explorer does, once per file
+  // content. Not with isolation "none", which keeps everything in one process for a debugger.
+  if (p.settings.plugins.isolation != PluginIsolation::None) {
+    const VetResult vet = vet_scene_once(p.scene->file, p.render, p.device.name,
+                                         p.settings.plugins.vet_timeout_s);
+    if (!vet.ok) {
+      const std::string message = "scene '" + p.scene->info.id + "' (" +
+                                  printable(p.scene->file.string()) + "): " + vet.error;
+      if (vet.timed_out) throw SceneHangError(message);
+      throw std::runtime_error(message);
+    }
+  }
   return p;
 }
 

@@ -11,12 +11,19 @@
 #include <chrono>
 #include <condition_variable>
 #include <mutex>
+#include <stdexcept>
 #include <string>
 #include <thread>
 
 namespace fr {
 
 constexpr int kWatchdogExitStatus = 3;
+
+// A scene whose DE did not return: its test render before the command's own work ran out of
+// time (scene_setup.cpp). Ends the command with kWatchdogExitStatus, as the watchdog would.
+struct SceneHangError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
 
 class Watchdog {
  public:

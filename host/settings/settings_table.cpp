@@ -156,9 +156,9 @@ std::vector<SettingSpec> make_table() {
       number_setting<&S::plugins, &P::call_timeout_s>("plugins.call_timeout_s", 0, 3600, true, ""));
   t.push_back(number_setting<&S::plugins, &P::vet_timeout_s>(
       "plugins.vet_timeout_s", 0, 3600, true,
-      "Seconds the explorer's 8x8 test render of a scene (before its first use; once per file "
-      "content)\nmay take, kernel build included, before the scene is refused as one whose DE may "
-      "never return."));
+      "Seconds the 8x8 test render of a scene (in a child process, before the explorer, "
+      "`render`,\n`bench`, `animate` or `sweep` first use it; once per file content) may take, "
+      "kernel build\nincluded, before the scene is refused as one whose DE may never return."));
   t.push_back(bool_setting<&S::plugins, &P::allow_writable>(
       "plugins.allow_writable",
       "Load plugins from folders or files that users other than you (and root) can write to. "
@@ -203,8 +203,9 @@ std::vector<SettingSpec> make_table() {
                  "Max steps", 16, 1000));
   t.push_back(number_setting<&S::render, &R::watchdog_s>(
       "render.watchdog_s", 0, 1e6, false,
-      "Seconds one image of `render` or `bench` may take before it ends with an error naming\nthe "
-      "scene (a DE that never returns would otherwise hang it forever); 0: no limit."));
+      "Seconds one image of `render`, `bench` or `animate` may take before it ends with an "
+      "error\nnaming the scene (a DE that returns at the test render's pixels but never at "
+      "others would\notherwise hang it forever); 0: no limit."));
   t.push_back(in_overlay(
       int_setting<&S::render, &R::refine_steps>(
           "render.refine_steps", 0, 8,
