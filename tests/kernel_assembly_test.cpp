@@ -256,5 +256,26 @@ TEST(KernelAssembly, EveryStageCombinationRendersTheSphere) {
   EXPECT_EQ(test::runtime().programs_built(), built + 1);
 }
 
+// A scene that defines a macro named like a built-in the host's stages use (fmax: the march
+// takes the larger of two distances with it; PoCL's own header defines it as a macro) renders
+// exactly as without it: the scene's macros are restored after its code
+// (render/scene_source_guard.hpp).
+TEST(KernelAssembly, SceneMacrosDoNotReachTheHostStages) {
+  const SceneInfo plain = sphere_scene(FR_FEATURE_AO | FR_FEATURE_SHADOWS);
+  SceneInfo hostile = plain;
+  hostile.de_source =
+      "#define fmax(a, b) (a)\n#define fmin(a, b) (b)\n#undef sqrt\n" + plain.de_source;
+  const SceneState state = make_default_state(plain);
+  Renderer renderer(test::runtime());
+  RenderSettings settings;
+  settings.width_px = 32;
+  settings.height_px = 24;
+  const FrameImage expected = renderer.render(plain, state, settings, true);
+  const FrameImage got = renderer.render(hostile, state, settings, true);
+  EXPECT_EQ(got.rgba8, expected.rgba8);
+  EXPECT_EQ(got.depth, expected.depth);
+  expect_sphere_frame(got, hostile, "a scene that defines fmax and fmin");
+}
+
 }  // namespace
 }  // namespace fr

@@ -472,8 +472,9 @@ TEST(PluginIsolation, CommandsVetEachSceneFileOnce) {
   const auto markers = dir / "cache" / "fractalis" / "vetted";
   auto render = [&] {
     const std::string command = "cd " + dir.string() + " && XDG_CACHE_HOME=" + dir.string() +
-                                "/cache " + FRACTALIS_EXECUTABLE + " render --out x.png --plugins " +
-                                plugins.string() + " --scene reload_probe --size 16x16 -q";
+                                "/cache " + FRACTALIS_EXECUTABLE +
+                                " render --out x.png --plugins " + plugins.string() +
+                                " --scene reload_probe --size 16x16 -q";
     return std::system(command.c_str());
   };
   auto count = [&] {

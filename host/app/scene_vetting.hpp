@@ -3,8 +3,8 @@
 // A DE that never returns hangs the OpenCL device, and nothing can cancel a running kernel. The
 // explorer must not find that out by freezing, so before it first uses a scene (found at start
 // or arriving by hot reload), `fractalis vet-scene` renders it at 8x8 in a child process with a
-// time limit (plugins.vet_timeout_s). The child's kernel build also warms the OpenCL compiler's cache
-// for the explorer's own build of the same kernel.
+// time limit (plugins.vet_timeout_s). The child's kernel build also warms the OpenCL compiler's
+// cache for the explorer's own build of the same kernel.
 #pragma once
 
 #include "render/render_settings.hpp"
@@ -20,7 +20,7 @@ namespace fr {
 struct VetResult {
   bool ok = false;
   bool timed_out = false;  // the test render did not finish within the limit
-  std::string error;  // why not: the child's error, "crashed (SIGSEGV)", or the time limit
+  std::string error;       // why not: the child's error, "crashed (SIGSEGV)", or the time limit
 };
 
 // Renders `file`'s scene at 8x8 with `settings`' lanes and precision on the device `device`

@@ -338,8 +338,8 @@ PreparedScene prepare_scene(const ParsedOptions& options, int max_side) {
   // running kernel): first a test render in a child process, as the explorer does, once per file
   // content. Not with isolation "none", which keeps everything in one process for a debugger.
   if (p.settings.plugins.isolation != PluginIsolation::None) {
-    const VetResult vet = vet_scene_once(p.scene->file, p.render, p.device.name,
-                                         p.settings.plugins.vet_timeout_s);
+    const VetResult vet =
+        vet_scene_once(p.scene->file, p.render, p.device.name, p.settings.plugins.vet_timeout_s);
     if (!vet.ok) {
       const std::string message = "scene '" + p.scene->info.id + "' (" +
                                   printable(p.scene->file.string()) + "): " + vet.error;

@@ -2,6 +2,7 @@
 
 #include "render/cl_runtime.hpp"
 #include "render/kernel_sources.hpp"
+#include "render/scene_source_guard.hpp"
 
 #include <algorithm>
 #include <set>
@@ -48,6 +49,21 @@ const PipelineFile kRenderPipeline[] = {
     {FR_FEATURE_REFLECTIONS, "reflect.cl"},
     {0, "render.cl"},
 };
+
+// What the host's kernel files define: the prelude and the DE library come before a scene's
+// code, every render stage and the probe after it.
+const HostKernelNames& host_kernel_names() {
+  static const HostKernelNames names = [] {
+    std::vector<std::string_view> before = {kernel_source("frame_constants.h"),
+                                            kernel_source("prelude.cl")};
+    for (const auto& library : kernel_library_files())
+      before.push_back(kernel_source("de/" + library.substr(3)));
+    std::vector<std::string_view> after = {kernel_source("probe.cl")};
+    for (const PipelineFile& f : kRenderPipeline) after.push_back(kernel_source(f.file));
+    return collect_host_names(before, after);
+  }();
+  return names;
+}
 
 // `#define FAMILY_VALUE n` for every value of the enum (numbered by its row in the enum's name
 // table), then `#define FAMILY FAMILY_CHOSEN`: kernels compare names, never numbers.
@@ -197,10 +213,25 @@ void append_scene_prefix(std::ostringstream& out, const SceneInfo& info,
   append_file(out, "frame_constants.h", kernel_source("frame_constants.h"));
   append_file(out, "prelude.cl", kernel_source("prelude.cl"));
   append_params(out, info, values, config.precision);
+  // The scene's own code, kept from the host's (scene_source_guard.hpp): checked first, and
+  // every macro it defines or undefines saved before it and restored after it. (Restored, not
+  // just undefined: the OpenCL implementation's own headers define built-ins such as fmax as
+  // macros, and a scene's `#define fmax` would otherwise take them from the host's code.)
+  std::vector<std::string> scene_macros =
+      guard_scene_source(info.id, info.de_source_name, info.de_source, host_kernel_names());
+  if (has_surface)
+    for (auto& m : guard_scene_source(info.id, info.surface_source_name, info.surface_source,
+                                      host_kernel_names()))
+      scene_macros.push_back(std::move(m));
+  std::sort(scene_macros.begin(), scene_macros.end());
+  scene_macros.erase(std::unique(scene_macros.begin(), scene_macros.end()), scene_macros.end());
+  for (const auto& m : scene_macros) out << "#pragma push_macro(\"" << m << "\")\n";
   std::set<std::string> included;
   append_with_includes(out, info.id, info.de_source_name, info.de_source, included);
   if (has_surface)
     append_with_includes(out, info.id, info.surface_source_name, info.surface_source, included);
+  if (!scene_macros.empty()) out << "/* The scene's macros end with its code. */\n";
+  for (const auto& m : scene_macros) out << "#pragma pop_macro(\"" << m << "\")\n";
 }
 
 AssembledKernel finish(std::ostringstream& out, const SceneInfo& info, const KernelConfig& config,
