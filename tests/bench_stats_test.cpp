@@ -10,6 +10,17 @@
 namespace fr {
 namespace {
 
+// The one percentile (bench's frame times, sweep's pixel errors): nearest rank on the percent
+// scale, 0 for no values.
+TEST(BenchStats, PercentileIsNearestRankOnThePercentScale) {
+  EXPECT_EQ(percentile({5, 1, 4, 2, 3}, 50), 3);
+  EXPECT_EQ(percentile({5, 1, 4, 2, 3}, 95), 5);
+  EXPECT_EQ(percentile({5, 1, 4, 2, 3}, 0), 1);
+  EXPECT_EQ(percentile({5, 1, 4, 2, 3}, 100), 5);
+  EXPECT_EQ(percentile({5, 1, 4, 2, 3}, 40), 2);  // 2 of 5 at or below
+  EXPECT_EQ(percentile({}, 50), 0);
+}
+
 TEST(BenchStats, FakeClockFrameTimes) {
   // A clock that advances by a scripted duration each time a frame renders.
   const std::vector<double> scripted = {20, 10, 40, 30, 50, 10, 20, 30, 20, 70};

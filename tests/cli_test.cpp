@@ -93,6 +93,10 @@ TEST(Cli, LongAndHostileValuesAreEchoedShort) {
   const CliRun escape = run({"render", "--scene", "\x1b]0;owned\x07"});
   EXPECT_EQ(escape.code, 2);
   EXPECT_NE(escape.err.find("unknown scene '\\x1b]0;owned\\x07'"), std::string::npos) << escape.err;
+  // A C1 control (CSI as U+009B, which some terminals obey) and a byte that is not UTF-8.
+  const CliRun c1 = run({"render", "--scene", "a\xc2\x9b" "2Jb\xff"});
+  EXPECT_EQ(c1.code, 2);
+  EXPECT_NE(c1.err.find("unknown scene 'a\\xc2\\x9b" "2Jb\\xff'"), std::string::npos) << c1.err;
 }
 
 // render --path: a keyframe's time renders exactly what that keyframe's view and parameters

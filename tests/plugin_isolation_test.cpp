@@ -3,7 +3,7 @@
 // the reason, and a good scene beside them still loads, updates and renders.
 #include "plugin/plugin_files.hpp"
 #include "plugin/plugin_loader.hpp"
-#include "plugin/plugin_text.hpp"
+#include "io/printable.hpp"
 #include "plugin/scan_cache.hpp"
 #include "plugin/scene_instance.hpp"
 #include "render/renderer.hpp"

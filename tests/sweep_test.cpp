@@ -80,12 +80,6 @@ TEST(SweepMetrics, HandComputedValues) {
   EXPECT_THROW(compare_to_reference(f, ref, 0.01), std::invalid_argument);
 }
 
-TEST(SweepMetrics, PercentileIsNearestRank) {
-  EXPECT_EQ(percentile({5, 1, 4, 2, 3}, 50), 3);
-  EXPECT_EQ(percentile({5, 1, 4, 2, 3}, 95), 5);
-  EXPECT_EQ(percentile({}, 50), 0);
-}
-
 TEST(SweepMetrics, ParetoFront) {
   // time, error: a (1, 9), b (2, 5), c (3, 6) dominated by b, d (4, 1), e (2, 7) dominated by b.
   const std::vector<double> time = {1, 2, 3, 4, 2}, error = {9, 5, 6, 1, 7};

@@ -2,7 +2,7 @@
 
 #include "app/scene_vetting.hpp"
 #include "plugin/plugin_loader.hpp"
-#include "plugin/plugin_text.hpp"
+#include "io/printable.hpp"
 #include "render/kernel_assembly.hpp"
 
 #include <spdlog/spdlog.h>

@@ -6,13 +6,12 @@
 #include <stdexcept>
 
 namespace fr {
-namespace {
-// Nearest rank: the smallest value with at least q of the frames at or below it.
-double percentile(const std::vector<double>& sorted, double q) {
-  const size_t rank = static_cast<size_t>(std::ceil(q * static_cast<double>(sorted.size())));
-  return sorted[std::clamp<size_t>(rank, 1, sorted.size()) - 1];
+double percentile(std::vector<double> values, double percent) {
+  if (values.empty()) return 0;
+  std::sort(values.begin(), values.end());
+  const double rank = std::ceil(percent / 100.0 * double(values.size()));
+  return values[static_cast<size_t>(std::clamp(rank, 1.0, double(values.size()))) - 1];
 }
-}  // namespace
 
 FrameStats summarize_frames(std::vector<double> frame_ms) {
   if (frame_ms.empty()) throw std::invalid_argument("summarize_frames: no frames");
@@ -23,8 +22,8 @@ FrameStats summarize_frames(std::vector<double> frame_ms) {
   s.min_ms = frame_ms.front();
   s.max_ms = frame_ms.back();
   s.mean_ms = s.total_ms / static_cast<double>(s.frames);
-  s.p50_ms = percentile(frame_ms, 0.50);
-  s.p95_ms = percentile(frame_ms, 0.95);
+  s.p50_ms = percentile(frame_ms, 50);
+  s.p95_ms = percentile(frame_ms, 95);
   s.mean_fps = 1000.0 / s.mean_ms;
   s.min_fps = 1000.0 / s.max_ms;
   s.max_fps = 1000.0 / s.min_ms;

@@ -16,6 +16,11 @@ struct FrameStats {
   double min_fps = 0, max_fps = 0;  // 1000 / max_ms and 1000 / min_ms
 };
 
+// Nearest-rank percentile: the smallest value with at least `percent` (0 to 100) of `values` at
+// or below it; 0 for no values. The one percentile of frame times (bench) and of pixel errors
+// (sweep).
+double percentile(std::vector<double> values, double percent);
+
 // Statistics of `frame_ms` (at least one frame).
 FrameStats summarize_frames(std::vector<double> frame_ms);
 

@@ -3,7 +3,7 @@
 #include "app/scene_vetting.hpp"
 #include "check/de_overestimate.hpp"
 #include "plugin/plugin_loader.hpp"
-#include "plugin/plugin_text.hpp"
+#include "io/printable.hpp"
 #include "plugin/scene_code.hpp"
 #include "plugin/scene_instance.hpp"
 #include "render/de_probe.hpp"

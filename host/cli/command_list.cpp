@@ -1,7 +1,7 @@
 #include "cli/commands.hpp"
 #include "cli/scene_setup.hpp"
 #include "io/log.hpp"
-#include "plugin/plugin_text.hpp"
+#include "io/printable.hpp"
 #include "plugin/scene_instance.hpp"
 #include "render/kernel_assembly.hpp"
 

@@ -3,7 +3,7 @@
 // then kills (app/scene_vetting.hpp). Loads the one file, creates, updates at time 0, renders.
 #include "cli/commands.hpp"
 #include "cli/scene_setup.hpp"
-#include "plugin/plugin_text.hpp"
+#include "io/printable.hpp"
 #include "render/renderer.hpp"
 
 #include <spdlog/spdlog.h>

@@ -7,7 +7,7 @@
 #include "render/kernel_cache.hpp"
 #include "render/memory_budget.hpp"
 
-#include "plugin/plugin_text.hpp"
+#include "io/printable.hpp"
 #include "render/camera.hpp"
 
 #include <spdlog/spdlog.h>

@@ -3,7 +3,7 @@
 #include "plugin/descriptor_copy.hpp"
 #include "plugin/plugin_files.hpp"
 #include "plugin/plugin_library.hpp"
-#include "plugin/plugin_text.hpp"
+#include "io/printable.hpp"
 #include "plugin/scene_code.hpp"
 #include "plugin/scene_host_process.hpp"
 

@@ -1,6 +1,6 @@
 #include "plugin/scene_host_process.hpp"
 
-#include "plugin/plugin_text.hpp"
+#include "io/printable.hpp"
 #include "plugin/scan_cache.hpp"
 #include "plugin/scene_checks.hpp"
 #include "plugin/wire_io.hpp"

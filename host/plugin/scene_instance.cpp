@@ -1,6 +1,6 @@
 #include "plugin/scene_instance.hpp"
 
-#include "plugin/plugin_text.hpp"
+#include "io/printable.hpp"
 #include "plugin/scene_checks.hpp"
 #include "plugin/scene_code.hpp"
 

@@ -1,5 +1,7 @@
 #include "sweep/sweep_metrics.hpp"
 
+#include "bench/frame_stats.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -7,14 +9,6 @@
 #include <stdexcept>
 
 namespace fr {
-
-double percentile(std::vector<double> values, double p) {
-  if (values.empty()) return 0;
-  std::sort(values.begin(), values.end());
-  const double rank = std::ceil(p / 100.0 * double(values.size()));
-  const size_t index = static_cast<size_t>(std::clamp(rank, 1.0, double(values.size()))) - 1;
-  return values[index];
-}
 
 FrameImage reference_as_frame(const ReferenceImage& r) {
   FrameImage f;

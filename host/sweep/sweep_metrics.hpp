@@ -44,9 +44,6 @@ constexpr double kOverstepFootprints = 0.25;
 ErrorMetrics compare_to_reference(const FrameImage& image, const ReferenceImage& reference,
                                   double pixel_angle_rad);
 
-// Nearest-rank percentile (p in [0, 100]) of `values`; 0 for none.
-double percentile(std::vector<double> values, double p);
-
 // Indices of the points on the Pareto front of (time, error), both to be small: each is faster
 // than every point with less or equal error. In increasing time.
 std::vector<size_t> pareto_front(const std::vector<double>& time, const std::vector<double>& error);

@@ -1,9 +1,10 @@
-// plugin_text.hpp — checking text that comes from a plugin, and printing text safely.
+// printable.hpp — checking text that comes from outside (a plugin, a file, the command line),
+// and printing it safely. The one escaper: echo.hpp quotes user input through it too.
 //
 // A plugin's strings reach terminals, logs, the overlay and file names. Escape sequences in them
 // could rewrite what the user sees, and invalid UTF-8 breaks every consumer, so the loader refuses
-// such strings (utf8_text_problem) and everything the host prints about a file or a plugin's log
-// goes through printable().
+// such strings (utf8_text_problem) and everything the host prints about a file, a plugin's log or
+// the user's own input goes through printable().
 #pragma once
 
 #include <string>

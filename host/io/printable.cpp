@@ -1,4 +1,4 @@
-#include "plugin/plugin_text.hpp"
+#include "io/printable.hpp"
 
 #include <cstdint>
 #include <cstdio>
