@@ -1,6 +1,7 @@
 #include "app/scene_vetting.hpp"
 
 #include "io/cache_dirs.hpp"
+#include "io/child_process.hpp"
 #include "io/fnv1a.hpp"
 #include "plugin/plugin_files.hpp"
 #include "plugin/scan_cache.hpp"
@@ -8,7 +9,6 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
-#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -40,34 +40,18 @@ VetResult vet_scene(const std::filesystem::path& file, const RenderSettings& set
                                    "--precision", precision_name(settings.precision)};
   if (!device.empty()) args.insert(args.end(), {"--device", device});
   if (settings.lanes == 0) args.erase(args.begin() + 6, args.begin() + 8);
-  std::vector<const char*> argv;
-  for (const auto& a : args) argv.push_back(a.c_str());
-  argv.push_back(nullptr);
-
   int pipe_fds[2];
   if (pipe2(pipe_fds, O_CLOEXEC) != 0) {
     result.error = std::string("cannot start the test render: ") + std::strerror(errno);
     return result;
   }
-  const pid_t parent = getpid();
-  const pid_t pid = fork();
+  std::string error;
+  const pid_t pid = start_child_process(args, {}, pipe_fds[1], &error);
   if (pid < 0) {
     close(pipe_fds[0]);
     close(pipe_fds[1]);
-    result.error = std::string("cannot start the test render: ") + std::strerror(errno);
+    result.error = "cannot start the test render: " + error;
     return result;
-  }
-  if (pid == 0) {  // async-signal-safe calls only, until exec
-    const int null_fd = open("/dev/null", O_RDWR);
-    if (null_fd >= 0) {
-      dup2(null_fd, 0);
-      dup2(null_fd, 1);
-    }
-    dup2(pipe_fds[1], 2);
-    prctl(PR_SET_PDEATHSIG, SIGKILL);
-    if (getppid() != parent) _exit(127);
-    execv(argv[0], const_cast<char* const*>(argv.data()));
-    _exit(127);
   }
   close(pipe_fds[1]);
   // Collect what it says (bounded) until it closes stderr or the time is up.

@@ -1,5 +1,6 @@
 #include "plugin/scene_host_process.hpp"
 
+#include "io/child_process.hpp"
 #include "io/printable.hpp"
 #include "plugin/scan_cache.hpp"
 #include "plugin/scene_checks.hpp"
@@ -7,7 +8,6 @@
 
 #include <fcntl.h>
 #include <signal.h>
-#include <sys/prctl.h>
 #include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -22,7 +22,6 @@
 namespace fr {
 namespace {
 
-constexpr int kExecFailedStatus = 127;
 constexpr int kWireMismatchStatus = 126;
 
 std::string describe_exit(int status) {
@@ -34,7 +33,7 @@ std::string describe_exit(int status) {
            (text ? text : "signal") + ")";
   }
   if (WIFEXITED(status)) {
-    if (WEXITSTATUS(status) == kExecFailedStatus) return "could not be started (exec failed)";
+    if (WEXITSTATUS(status) == kChildExecFailedStatus) return "could not be started (exec failed)";
     if (WEXITSTATUS(status) == kWireMismatchStatus)
       return "is from another build of fractalis (message format differs)";
     return "exited with status " + std::to_string(WEXITSTATUS(status));
@@ -279,39 +278,15 @@ std::unique_ptr<SceneHostProcess> SceneHostProcess::start(int plugin_fd,
     *error = std::string("cannot make a socket for the scene host: ") + std::strerror(errno);
     return nullptr;
   }
-  // Everything the child needs is prepared before fork: between fork and exec a multithreaded
-  // process may only make async-signal-safe calls.
-  const std::string exe_string = exe.string(), wire = std::to_string(kSceneWireVersion),
-                    file_string = file.string();
-  const char* argv[] = {exe_string.c_str(),  "--wire", wire.c_str(), "--file",
-                        file_string.c_str(), nullptr};
   const bool keep_stderr = std::getenv("FRACTALIS_SCENE_HOST_STDERR") != nullptr;
-  const pid_t parent = getpid();
-  const pid_t pid = fork();
+  const pid_t pid = start_child_process(
+      {exe.string(), "--wire", std::to_string(kSceneWireVersion), "--file", file.string()},
+      {{sv[1], 3}, {plugin_fd, 4}}, keep_stderr ? 2 : -1, error);
   if (pid < 0) {
     close(sv[0]);
     close(sv[1]);
-    *error = std::string("cannot start the scene host (fork): ") + std::strerror(errno);
+    *error = "cannot start the scene host: " + *error;
     return nullptr;
-  }
-  if (pid == 0) {
-    const int sock = fcntl(sv[1], F_DUPFD, 10), plugin = fcntl(plugin_fd, F_DUPFD, 10);
-    if (sock < 0 || plugin < 0 || dup2(sock, 3) < 0 || dup2(plugin, 4) < 0)
-      _exit(kExecFailedStatus);
-    const int null_fd = open("/dev/null", O_RDWR);
-    if (null_fd >= 0) {
-      dup2(null_fd, 0);
-      dup2(null_fd, 1);
-      if (!keep_stderr) dup2(null_fd, 2);
-    }
-    close_range(5, ~0U, 0);
-    prctl(PR_SET_PDEATHSIG, SIGKILL);
-    if (getppid() != parent) _exit(kExecFailedStatus);
-    sigset_t none;
-    sigemptyset(&none);
-    sigprocmask(SIG_SETMASK, &none, nullptr);
-    execv(argv[0], const_cast<char* const*>(argv));
-    _exit(kExecFailedStatus);
   }
   close(sv[1]);
   return std::unique_ptr<SceneHostProcess>(new SceneHostProcess(pid, sv[0]));

@@ -1,0 +1,60 @@
+#include "io/child_process.hpp"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+
+namespace fr {
+
+pid_t start_child_process(const std::vector<std::string>& argv,
+                          const std::vector<ChildDescriptor>& descriptors, int stderr_fd,
+                          std::string* error) {
+  if (argv.empty()) {
+    *error = "no program to start";
+    return -1;
+  }
+  std::vector<const char*> args;
+  for (const auto& a : argv) args.push_back(a.c_str());
+  args.push_back(nullptr);
+  int first_free = 3;
+  for (const ChildDescriptor& d : descriptors) first_free = std::max(first_free, d.theirs + 1);
+  // Every descriptor is first copied above all the target numbers, so that placing one cannot
+  // overwrite another that is still to be placed.
+  const int above = first_free + static_cast<int>(descriptors.size()) + 3;
+  const pid_t parent = getpid();
+  const pid_t pid = fork();
+  if (pid < 0) {
+    *error = std::string("fork failed: ") + std::strerror(errno);
+    return -1;
+  }
+  if (pid > 0) return pid;
+
+  // The child: async-signal-safe calls only, until exec.
+  int copies[16];
+  const size_t count = descriptors.size() < 16 ? descriptors.size() : 16;
+  for (size_t i = 0; i < count; ++i)
+    if ((copies[i] = fcntl(descriptors[i].ours, F_DUPFD, above)) < 0) _exit(kChildExecFailedStatus);
+  const int err_copy = stderr_fd >= 0 ? fcntl(stderr_fd, F_DUPFD, above) : -1;
+  for (size_t i = 0; i < count; ++i)
+    if (dup2(copies[i], descriptors[i].theirs) < 0) _exit(kChildExecFailedStatus);
+  const int null_fd = open("/dev/null", O_RDWR);
+  if (null_fd < 0) _exit(kChildExecFailedStatus);
+  dup2(null_fd, 0);
+  dup2(null_fd, 1);
+  dup2(err_copy >= 0 ? err_copy : null_fd, 2);
+  close_range(static_cast<unsigned>(first_free), ~0U, 0);
+  prctl(PR_SET_PDEATHSIG, SIGKILL);
+  if (getppid() != parent) _exit(kChildExecFailedStatus);  // fractalis died before the prctl
+  sigset_t none;
+  sigemptyset(&none);
+  sigprocmask(SIG_SETMASK, &none, nullptr);
+  execv(args[0], const_cast<char* const*>(args.data()));
+  _exit(kChildExecFailedStatus);
+}
+
+}  // namespace fr
