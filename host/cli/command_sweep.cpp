@@ -1,5 +1,6 @@
 #include "bench/frame_stats.hpp"
 #include "cli/commands.hpp"
+#include "cli/progress.hpp"
 #include "cli/scene_setup.hpp"
 #include "io/atomic_file.hpp"
 #include "io/cache_dirs.hpp"
@@ -76,18 +77,6 @@ void check_out_dir(const std::filesystem::path& dir) {
     throw UsageError("--out: folder '" + dir.string() + "' is not writable");
 }
 
-// One line of progress: a bar on a terminal, plain lines otherwise.
-void progress(std::ostream& err, bool terminal, size_t done, size_t total,
-              const std::string& what) {
-  if (!terminal) {
-    err << "sweep: " << done << "/" << total << " " << what << "\n";
-    return;
-  }
-  const int width = 30, filled = total ? static_cast<int>(width * done / total) : width;
-  err << "\r[" << std::string(filled, '#') << std::string(width - filled, '.') << "] " << done
-      << "/" << total << " " << what << "\033[K" << std::flush;
-}
-
 std::string config_name(const SweepConfig& c) {
   return c.knob == "default" ? "default" : c.knob + "=" + c.value;
 }
@@ -158,7 +147,6 @@ int command_sweep(const std::vector<std::string>& args, std::ostream& out, std::
     spdlog::error("{}", error);
     return 1;
   }
-  const bool terminal = isatty(STDERR_FILENO) == 1;
   ClRuntime runtime(p.device);
   Renderer renderer(runtime);
   SweepResult result;
@@ -167,20 +155,20 @@ int command_sweep(const std::vector<std::string>& args, std::ostream& out, std::
   result.width_px = p.render.width_px;
   result.height_px = p.render.height_px;
   result.timed_frames = frames;
-  const size_t total = configs.size() + 2;
+  // Steps: the reference, each configuration's measurement, the timing rounds.
+  Progress progress(err, "step", static_cast<int>(configs.size()) + 2);
   std::string warning;
   result.reference = make_reference(
       renderer, p.scene->info, p.state, p.render, p.device.name,
       options.get("cache").value_or(default_cache_dir().string()),
       [&](double k, int level) {
-        progress(
-            err, terminal, 0, total,
-            "reference: refinement " + std::to_string(level + 1) + ", k = " + std::to_string(k));
+        progress.update(
+            0, "reference: refinement " + std::to_string(level + 1) + ", k = " + std::to_string(k));
         return !g_interrupted;
       },
       &warning);
   if (!warning.empty()) {
-    if (terminal) err << "\n";  // off the progress bar's line
+    progress.finish();  // off the progress bar's line
     spdlog::warn("{}", warning);
   }
   const double pixel_angle =
@@ -196,7 +184,7 @@ int command_sweep(const std::vector<std::string>& args, std::ostream& out, std::
   std::vector<uint8_t> lanes_image[2];
   for (size_t i = 0; i < configs.size() && !g_interrupted; ++i) {
     const SweepConfig& c = configs[i];
-    progress(err, terminal, i + 1, total, "measuring " + config_name(c));
+    progress.update(static_cast<int>(i) + 1, "measuring " + config_name(c));
     renderer.prepare(p.scene->info, p.state, c.settings);
     // The picture with the configuration's samples, and the geometry from centred rays like the
     // reference's (a jittered last sample would count as depth error).
@@ -214,8 +202,8 @@ int command_sweep(const std::vector<std::string>& args, std::ostream& out, std::
   }
   std::vector<std::vector<double>> times(configs.size());
   for (int round = 0; round < frames && !g_interrupted; ++round) {
-    progress(err, terminal, configs.size() + 1, total,
-             "timing, round " + std::to_string(round + 1) + " of " + std::to_string(frames));
+    progress.update(static_cast<int>(configs.size()) + 1,
+                    "timing, round " + std::to_string(round + 1) + " of " + std::to_string(frames));
     for (size_t i = 0; i < configs.size() && !g_interrupted; ++i) {
       const auto t = time_frames(
           1, [&](int) { renderer.render(p.scene->info, p.state, configs[i].settings); }, now_ms);
@@ -224,7 +212,8 @@ int command_sweep(const std::vector<std::string>& args, std::ostream& out, std::
   }
   for (size_t i = 0; i < result.rows.size() && !times[i].empty(); ++i)
     result.rows[i].frame_ms = summarize_frames(times[i]).p50_ms;
-  if (terminal) err << "\n";
+  if (!g_interrupted) progress.update(static_cast<int>(configs.size()) + 2);
+  progress.finish();
   if (g_interrupted) {
     spdlog::warn("sweep interrupted; nothing written");
     return 130;

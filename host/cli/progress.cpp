@@ -8,26 +8,32 @@
 namespace fr {
 
 Progress::Progress(std::ostream& err, std::string noun, int total, int already_done)
+    : Progress(err, std::move(noun), total, already_done, isatty(STDERR_FILENO) != 0) {}
+
+Progress::Progress(std::ostream& err, std::string noun, int total, int already_done, bool terminal)
     : err_(err),
       noun_(std::move(noun)),
       total_(std::max(total, 1)),
       already_done_(already_done),
-      terminal_(isatty(STDERR_FILENO) != 0),
+      terminal_(terminal),
       start_(std::chrono::steady_clock::now()) {}
 
-void Progress::update(int done) {
+void Progress::update(int done, const std::string& detail) {
   const double elapsed_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   const int done_now = done - already_done_;
   const int left_s =
       done_now > 0 ? static_cast<int>(elapsed_s / done_now * (total_ - done) + 0.5) : 0;
   const std::string status = noun_ + " " + std::to_string(done) + "/" + std::to_string(total_) +
-                             ", " + std::to_string(left_s) + " s left";
+                             (detail.empty() ? "" : ": " + detail) + ", " + std::to_string(left_s) +
+                             " s left";
   if (terminal_) {
     constexpr int kBarChars = 30;
-    const int filled = kBarChars * done / total_;
+    const int filled = kBarChars * std::clamp(done, 0, total_) / total_;
+    // Carriage return, the bar, and clear to the end of the line (a shorter status than the last).
     err_ << "\r[" << std::string(filled, '#') << std::string(kBarChars - filled, '.') << "] "
-         << status << "   " << std::flush;
+         << status << "\033[K" << std::flush;
+    bar_drawn_ = true;
   } else if (done >= total_ || last_line_done_ < 0 || done - last_line_done_ >= total_ / 100 ||
              elapsed_s - last_line_s_ >= 10) {
     err_ << status << "\n" << std::flush;
@@ -37,7 +43,8 @@ void Progress::update(int done) {
 }
 
 void Progress::finish() {
-  if (terminal_) err_ << "\n" << std::flush;
+  if (bar_drawn_) err_ << "\n" << std::flush;
+  bar_drawn_ = false;
 }
 
 }  // namespace fr

@@ -10,13 +10,18 @@
 
 namespace fr {
 
+// The one progress display of `render`, `animate` and `sweep`.
 class Progress {
  public:
-  // `noun` names a step ("frame", "band"); `already_done` steps were done before this run (a
-  // resumed sequence) and do not count towards the time-left estimate.
+  // `noun` names a step ("frame", "band", "step"); `already_done` steps were done before this
+  // run (a resumed sequence) and do not count towards the time-left estimate. `terminal`: draw
+  // a bar (the default asks whether stderr is a terminal).
   Progress(std::ostream& err, std::string noun, int total, int already_done = 0);
-  void update(int done);
-  // Ends the bar's line on a terminal.
+  Progress(std::ostream& err, std::string noun, int total, int already_done, bool terminal);
+  // `detail` says what the step is ("measuring max_steps=80").
+  void update(int done, const std::string& detail = "");
+  // Ends the bar's line on a terminal (before a warning, or at the end); the next update draws
+  // a new bar.
   void finish();
 
  private:
@@ -24,6 +29,7 @@ class Progress {
   std::string noun_;
   int total_, already_done_;
   bool terminal_;
+  bool bar_drawn_ = false;
   std::chrono::steady_clock::time_point start_;
   int last_line_done_ = -1;  // the step of the last plain line
   double last_line_s_ = 0;
