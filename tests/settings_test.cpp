@@ -180,6 +180,13 @@ TEST(Settings, EveryKeyRoundTripsThroughSaveAndLoad) {
 
 // Each enum's names come from its table, and the kernel's switch macros are numbered by table
 // row: the defines for the chosen model name that model, whatever the enum's order.
+// A value no table lists is a bug in fractalis: FR_CHECK stops with the place, instead of the
+// first row's name standing in for it.
+TEST(Settings, AnEnumValueWithoutANameIsAnInternalError) {
+  EXPECT_DEATH(enum_name(static_cast<ShadingModel>(99)),
+               "internal error at .*enum_names.hpp:[0-9]+: an enum value has no row");
+}
+
 TEST(Settings, EnumNamesComeFromTheirTables) {
   EXPECT_STREQ(enum_name(ShadingModel::OrenNayar), "oren-nayar");
   EXPECT_EQ(enum_from_name<FogMethod>("power"), FogMethod::PowerLaw);

@@ -4,6 +4,8 @@
 // all read the names from there, so no list of names is kept anywhere else.
 #pragma once
 
+#include "io/check.hpp"
+
 #include <optional>
 #include <span>
 #include <string>
@@ -23,12 +25,13 @@ struct EnumName {
   const char* kernel_define;  // null for enums the kernel never sees
 };
 
-// The row of `value` in its enum's table.
+// The row of `value` in its enum's table (every value is listed: a missing row is a bug).
 template <typename Enum>
 constexpr const EnumName<Enum>& enum_row(Enum value) {
   for (const auto& row : enum_names(value))
     if (row.value == value) return row;
-  return enum_names(value).front();  // unreachable for a value the table lists
+  FR_CHECK(false, "an enum value has no row in its table of names");
+  return enum_names(value).front();  // not reached
 }
 template <typename Enum>
 constexpr const char* enum_name(Enum value) {

@@ -28,15 +28,18 @@ struct KernelConfig {
   int lanes = 16;
   Precision precision = Precision::Float;
   fr_features stages = 0;  // FR_FEATURE_*, kStageDepthOfField and kStageCone compiled in
-  ShadingModel shading = ShadingModel::BlinnPhong;
-  NormalMethod normals = NormalMethod::Tetrahedron;
-  AoMethod ao_method = AoMethod::StepCount;
-  ShadowMethod shadow_method = ShadowMethod::Soft;
-  FogMethod fog_method = FogMethod::Exponential;
-  bool fast_math = false;  // -cl-fast-relaxed-math (off by default, see kernel_assembly.cpp)
-  bool count_evaluations = false;   // FR_COUNT_EVALS: per-stage DE counters (eval_counts.cl)
-  bool adaptive_relaxation = true;  // FR_RELAX_ADAPTIVE: march.cl's omega follows the DE's slope
-  Readback outputs = Readback::Everything;  // FR_OUTPUTS: the passes render.cl writes
+  // The modes, by default the settings' defaults (RenderSettings is their one home).
+  ShadingModel shading = RenderSettings{}.shading;
+  NormalMethod normals = RenderSettings{}.normals;
+  AoMethod ao_method = RenderSettings{}.ao_method;
+  ShadowMethod shadow_method = RenderSettings{}.shadow_method;
+  FogMethod fog_method = RenderSettings{}.fog_method;
+  bool fast_math = RenderSettings{}.fast_math;  // -cl-fast-relaxed-math (kernel_assembly.cpp)
+  // FR_COUNT_EVALS: per-stage DE counters (eval_counts.cl)
+  bool count_evaluations = RenderSettings{}.count_evaluations;
+  // FR_RELAX_ADAPTIVE: march.cl's omega follows the DE's slope
+  bool adaptive_relaxation = RenderSettings{}.adaptive_relaxation;
+  Readback outputs = RenderSettings{}.outputs;  // FR_OUTPUTS: the passes render.cl writes
 };
 
 // The kernel configuration a frame with these settings compiles for this scene.
