@@ -3,8 +3,10 @@
 // (files written whole, the reference cached and reused).
 #include "cli/cli.hpp"
 #include "cli_run.hpp"
+#include "plugin/scene_instance.hpp"
 #include "sweep/sweep_metrics.hpp"
 #include "sweep/sweep_plan.hpp"
+#include "sweep/sweep_reference.hpp"
 #include "sweep/sweep_report.hpp"
 #include "test_support.hpp"
 
@@ -15,7 +17,9 @@
 
 #include <cmath>
 #include <fstream>
+#include <set>
 #include <sstream>
+#include <type_traits>
 
 namespace fr {
 namespace {
@@ -78,6 +82,61 @@ TEST(SweepMetrics, HandComputedValues) {
   EXPECT_EQ(compare_to_reference(f, ref, 0.01).non_finite, 1u);
   f.depth.pop_back();
   EXPECT_THROW(compare_to_reference(f, ref, 0.01), std::invalid_argument);
+}
+
+// The reference cache key sees every field of RenderSettings (visit_render_fields): changing any
+// one that shapes the reference changes the key, and changing one that the reference sets for
+// itself (its precision, march, budgets, what is read back) does not. (The key once left out
+// hit_threshold_k, which the reference starts from.)
+TEST(SweepReference, KeyFollowsEveryFieldThatShapesTheReference) {
+  SceneInfo info;
+  info.id = "sphere";
+  info.de_source =
+      "real_t scene_de(vec3_t p, __constant const scene_params_t* params) {\n"
+      "  return v3_length(p) - to_real(1);\n}\n";
+  info.de_source_name = "sphere.cl";
+  info.bounding_radius = 2;
+  const SceneState state = make_default_state(info);
+  const RenderSettings base;
+  const std::string key = reference_key(info, state, base, "device");
+  EXPECT_EQ(reference_key(info, state, base, "device"), key);
+  EXPECT_NE(reference_key(info, state, base, "another device"), key);
+  const std::set<std::string> set_by_the_reference = {
+      "samples",      "max_steps", "shadow_max_steps",  "refine_steps", "relaxation",
+      "cone_prepass", "fast_math", "count_evaluations", "watchdog_s"};
+  size_t fields = 0;
+  visit_render_fields(base, [&](const char* name, const auto& value) {
+    using T = std::decay_t<decltype(value)>;
+    if constexpr (std::is_enum_v<T>) {
+      return;  // an arbitrary number is no value of the enum: below, one by one
+    } else {
+      ++fields;
+      RenderSettings changed = base;
+      visit_render_fields(changed, [&](const char* n, auto& v) {
+        using U = std::decay_t<decltype(v)>;
+        if constexpr (std::is_same_v<U, T>) {
+          if (std::string(n) != name) return;
+          if constexpr (std::is_same_v<U, bool>)
+            v = !v;
+          else if constexpr (std::is_same_v<U, std::array<float, 3>>)
+            v[1] += 0.125f;
+          else if constexpr (std::is_floating_point_v<U>)
+            v = v * 0.5f + 0.125f;  // down: a step scale above 1 is clamped to 1
+          else
+            v += 1;
+        }
+      });
+      const bool same = reference_key(info, state, changed, "device") == key;
+      EXPECT_EQ(same, set_by_the_reference.count(name) > 0) << name;
+    }
+  });
+  EXPECT_GT(fields, 40u);
+  RenderSettings shading = base;
+  shading.shading = ShadingModel::Lambert;
+  EXPECT_NE(reference_key(info, state, shading, "device"), key);
+  RenderSettings normals = base;
+  normals.normals = NormalMethod::Tetrahedron;
+  EXPECT_EQ(reference_key(info, state, normals, "device"), key) << "the reference picks its own";
 }
 
 TEST(SweepMetrics, ParetoFront) {

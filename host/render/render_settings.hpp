@@ -159,4 +159,81 @@ struct RenderSettings {
   std::array<float, 3> fog_color{0.72f, 0.78f, 0.86f};
 };
 
+// Calls visit(name, field) for every field of `s` (const or not), in declaration order, for code
+// that must see all of them (the sweep reference's cache key). The static_assert below fails
+// when a field is added to RenderSettings (and so must be added to this list).
+template <typename Settings, typename Visit>
+void visit_render_fields(Settings& s, Visit&& visit) {
+  visit("width_px", s.width_px);
+  visit("height_px", s.height_px);
+  visit("window.full_width_px", s.window.full_width_px);
+  visit("window.full_height_px", s.window.full_height_px);
+  visit("window.x0_px", s.window.x0_px);
+  visit("window.y0_px", s.window.y0_px);
+  visit("lanes", s.lanes);
+  visit("precision", s.precision);
+  visit("samples", s.samples);
+  visit("disabled_stages", s.disabled_stages);
+  visit("shading", s.shading);
+  visit("normals", s.normals);
+  visit("ao_method", s.ao_method);
+  visit("shadow_method", s.shadow_method);
+  visit("fog_method", s.fog_method);
+  visit("max_steps", s.max_steps);
+  visit("watchdog_s", s.watchdog_s);
+  visit("refine_steps", s.refine_steps);
+  visit("shadow_max_steps", s.shadow_max_steps);
+  visit("max_bounces", s.max_bounces);
+  visit("ao_samples", s.ao_samples);
+  visit("hit_threshold_k", s.hit_threshold_k);
+  visit("step_scale", s.step_scale);
+  visit("relaxation", s.relaxation);
+  visit("adaptive_relaxation", s.adaptive_relaxation);
+  visit("cone_prepass", s.cone_prepass);
+  visit("fast_math", s.fast_math);
+  visit("count_evaluations", s.count_evaluations);
+  visit("outputs", s.outputs);
+  visit("ao_strength", s.ao_strength);
+  visit("ao_reference_steps", s.ao_reference_steps);
+  visit("ao_distance", s.ao_distance);
+  visit("shadow_softness", s.shadow_softness);
+  visit("specular_strength", s.specular_strength);
+  visit("specular_power", s.specular_power);
+  visit("roughness", s.roughness);
+  visit("fresnel_f0", s.fresnel_f0);
+  visit("exposure", s.exposure);
+  visit("reflectivity", s.reflectivity);
+  visit("fog_density", s.fog_density);
+  visit("fog_scale", s.fog_scale);
+  visit("glow_strength", s.glow_strength);
+  visit("glow_falloff", s.glow_falloff);
+  visit("aperture_radius", s.aperture_radius);
+  visit("focus_distance", s.focus_distance);
+  visit("albedo", s.albedo);
+  visit("ambient", s.ambient);
+  visit("sky_zenith", s.sky_zenith);
+  visit("sky_horizon", s.sky_horizon);
+  visit("glow_color", s.glow_color);
+  visit("fog_color", s.fog_color);
+}
+namespace detail {
+// An aggregate's number of direct members: the most initializers `T{...}` accepts, each an
+// `AnyField` that converts to whatever member it meets.
+struct AnyField {
+  template <typename T>
+  operator T() const;
+};
+template <typename T, typename... Fields>
+constexpr size_t aggregate_member_count() {
+  if constexpr (requires { T{Fields{}..., AnyField{}}; })
+    return aggregate_member_count<T, Fields..., AnyField>();
+  else
+    return sizeof...(Fields);
+}
+}  // namespace detail
+// RenderSettings' direct members (the window counts once): a new field changes the count. List
+// it in visit_render_fields, then update this number.
+static_assert(detail::aggregate_member_count<RenderSettings>() == 48,
+              "RenderSettings changed: list the new field in visit_render_fields");
+
 }  // namespace fr

@@ -6,10 +6,12 @@
 #include "render/kernel_assembly.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <fstream>
 #include <sstream>
+#include <type_traits>
 
 namespace fr {
 namespace {
@@ -76,6 +78,25 @@ std::string cache_bytes(const SweepReference& r) {
 
 }  // namespace
 
+RenderSettings reference_settings(const RenderSettings& base) {
+  RenderSettings ref = base;
+  ref.precision = Precision::Double;
+  ref.relaxation = 1;
+  ref.cone_prepass = false;  // every ray marches from its own origin
+  ref.max_steps = 5000;
+  ref.shadow_max_steps = std::max(ref.shadow_max_steps, 1024);
+  ref.normals = NormalMethod::CentralDifferences;
+  ref.refine_steps = 0;
+  ref.fast_math = false;
+  ref.step_scale = std::min(ref.step_scale, 1.0f);  // a scale above 1 over-steps: never truth
+  ref.samples = kReferenceSamples;  // (the refinements render 1, for geometry, and these)
+  // What only says how the frame is read or watched, not what it shows.
+  ref.outputs = Readback::Everything;
+  ref.count_evaluations = false;
+  ref.watchdog_s = 0;
+  return ref;
+}
+
 std::string reference_key(const SceneInfo& info, const SceneState& state, const RenderSettings& s,
                           const std::string& device_name) {
   std::ostringstream k;
@@ -91,19 +112,21 @@ std::string reference_key(const SceneInfo& info, const SceneState& state, const 
     k << ';';
   }
   k << state.time_s << ',' << state.bounding_radius << '\n';
-  // Everything that shapes the picture except the knobs a sweep turns.
-  k << s.width_px << 'x' << s.height_px << ' ' << int(s.shading) << int(s.shadow_method)
-    << int(s.fog_method) << ' ' << s.disabled_stages << ' ' << s.max_bounces << ' ' << s.ao_strength
-    << ' ' << s.ao_distance << ' ' << s.ao_reference_steps << ' ' << s.shadow_softness << ' '
-    << s.specular_strength << ' ' << s.specular_power << ' ' << s.roughness << ' ' << s.fresnel_f0
-    << ' ' << s.exposure << ' ' << s.reflectivity << ' ' << s.fog_density << ' ' << s.fog_scale
-    << ' ' << s.glow_strength << ' ' << s.glow_falloff << ' ' << s.aperture_radius << ' '
-    << s.focus_distance << ' ' << s.step_scale << ' ' << int(s.ao_method) << ' ' << s.ao_samples;
-  for (const auto* a :
-       {&s.albedo, &s.ambient, &s.sky_zenith, &s.sky_horizon, &s.glow_color, &s.fog_color})
-    for (float v : *a) k << ' ' << v;
+  // Every field of the settings the reference is rendered with.
+  const RenderSettings ref = reference_settings(s);
+  visit_render_fields(ref, [&](const char* name, const auto& value) {
+    k << name << '=';
+    using T = std::decay_t<decltype(value)>;
+    if constexpr (std::is_enum_v<T>)
+      k << static_cast<long long>(value);
+    else if constexpr (std::is_same_v<T, std::array<float, 3>>)
+      k << value[0] << ',' << value[1] << ',' << value[2];
+    else
+      k << value;
+    k << ' ';
+  });
   // The kernel source itself: a changed renderer or DE is a new reference.
-  k << '\n' << assemble_render_kernel(info, state.params, make_kernel_config(info, s, 1)).source;
+  k << '\n' << assemble_render_kernel(info, state.params, make_kernel_config(info, ref, 1)).source;
   return hex16(fnv1a(k.str()));
 }
 
@@ -116,16 +139,7 @@ SweepReference make_reference(Renderer& renderer, const SceneInfo& info, const S
   SweepReference r;
   if (read_cache(file, settings, &r)) return r;
 
-  RenderSettings ref = settings;
-  ref.precision = Precision::Double;
-  ref.relaxation = 1;
-  ref.cone_prepass = false;  // every ray marches from its own origin
-  ref.max_steps = 5000;
-  ref.shadow_max_steps = std::max(ref.shadow_max_steps, 1024);
-  ref.normals = NormalMethod::CentralDifferences;
-  ref.refine_steps = 0;
-  ref.fast_math = false;
-  ref.step_scale = std::min(ref.step_scale, 1.0f);  // a scale above 1 over-steps: never truth
+  RenderSettings ref = reference_settings(settings);
   const double pixel_angle =
       make_camera_rays(state.camera, settings.width_px, settings.height_px).pixel_angle_rad;
   ReferenceImage previous;

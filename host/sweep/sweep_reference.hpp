@@ -27,9 +27,16 @@ struct SweepReference {
 // Samples per pixel of the reference picture.
 constexpr int kReferenceSamples = 16;
 
+// The settings a reference is rendered with, from the sweep's base settings: double precision,
+// plain sphere tracing from every ray's own origin, generous step budgets, central differences,
+// no refinement steps or fast math, never a step scale above 1 (the hit threshold then shrinks
+// from the base's, refinement by refinement).
+RenderSettings reference_settings(const RenderSettings& base);
+
 // A key for the cache: the scene (id, version), its parameter values, camera, lights, time,
-// image size, the settings that change the picture other than the swept knobs, the device, and
-// the assembled kernel source (so a changed renderer or DE never reuses an old reference).
+// every field of reference_settings(settings) (render_settings.hpp's visit_render_fields, so a
+// new field cannot stay out), the device, and the assembled kernel source (so a changed
+// renderer or DE never reuses an old reference).
 std::string reference_key(const SceneInfo& info, const SceneState& state,
                           const RenderSettings& settings, const std::string& device_name);
 
