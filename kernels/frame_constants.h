@@ -6,6 +6,9 @@
 #define FR_FRAME_CONSTANTS_H
 
 #define FR_MAX_LIGHTS 8
+/* light_kind's values: the ABI's FR_LIGHT_DIRECTIONAL and FR_LIGHT_POINT (checked by the host). */
+#define FR_KERNEL_LIGHT_DIRECTIONAL 1
+#define FR_KERNEL_LIGHT_POINT 2
 #define FR_CONE_BLOCK 8 /* pixels a side of the cone pre-pass's blocks (cone.cl) */
 
 /* DE-evaluation counters (kernels/eval_counts.cl), filled only by kernels built to count. One cell
@@ -27,12 +30,12 @@
 #define FR_COUNT_SLOTS 256
 
 typedef struct fr_frame_constants {
-  /* Camera, in the seed model's terms (host/render/camera.hpp): the ray through pixel column x,
+  /* Camera, in the camera model's terms (host/render/camera.hpp): the ray through pixel column x,
    * row y (row 0 at the top) has direction first_pixel_dir + pixel_step_x * (width - 1 - x)
    * + pixel_step_y * (height - 1 - y), normalised. Each of these four vectors is the rounded
    * float of the double value; the *_lo fields further down hold what rounding lost, so the
-   * double kernel rebuilds the double camera as hi + lo ("double end to end"). */
-  float eye[4];
+   * double kernel rebuilds the double camera as hi + lo ("double end to end"). Rays start at
+   * ray_start below, not at the eye. */
   float first_pixel_dir[4]; /* p_1m */
   float pixel_step_x[4];    /* q_x */
   float pixel_step_y[4];    /* q_y */
@@ -40,18 +43,20 @@ typedef struct fr_frame_constants {
   float camera_up[4];
   float camera_forward[4];
 
-  float light_vector[FR_MAX_LIGHTS][4];  /* xyz: direction of travel (directional) or position
-                                            (point); w: kind, 1 directional or 2 point */
-  float light_color[FR_MAX_LIGHTS][4];   /* rgb: colour x intensity; w: attenuation a */
-  float light_falloff[FR_MAX_LIGHTS][4]; /* x: falloff exponent e; yzw: zero */
+  float light_vector[FR_MAX_LIGHTS][4]; /* xyz: direction of travel (directional) or position
+                                           (point); w: zero */
+  float light_color[FR_MAX_LIGHTS][4];  /* rgb: colour x intensity; w: zero */
+  int light_kind[FR_MAX_LIGHTS];        /* FR_KERNEL_LIGHT_DIRECTIONAL or _POINT */
+  float light_attenuation[FR_MAX_LIGHTS]; /* point lights: a of k / (1 + a d^e); else 0 */
+  float light_falloff[FR_MAX_LIGHTS];     /* point lights: e of k / (1 + a d^e); else 0 */
 
   float ambient_color[4];
-  float albedo[4]; /* the material without a scene surface source; w: reflectivity */
+  float albedo[4]; /* the material without a scene surface source; w: zero */
   float sky_zenith[4];
   float sky_horizon[4];
   float sky_up[4];     /* unit "up" of the sky gradient: the camera's up vector */
-  float glow_color[4]; /* rgb; w: strength */
-  float fog_color[4];  /* rgb; w: fogScale of the power-law fog */
+  float glow_color[4]; /* rgb; w: zero */
+  float fog_color[4];  /* rgb; w: zero */
 
   int width;
   int height;
@@ -64,7 +69,6 @@ typedef struct fr_frame_constants {
 
   float pixel_angle_rad;   /* angle between neighbouring pixel centres at the image centre */
   float hit_threshold_k;   /* epsilon = k * t * pixel_angle_rad (the clarity function) */
-  float reserved0;         /* was max_distance: rays now end where they leave the bounds */
   float bounding_radius;   /* the scene's surface lies inside this sphere around the origin */
   float step_scale;        /* multiplies each DE step (< 1 for DEs that over-estimate) */
   float ao_strength;       /* step-count: exponent; sampled: occlusion gain */
@@ -82,9 +86,11 @@ typedef struct fr_frame_constants {
   float jitter_y;
   float accumulate_weight; /* weight of this sample in the running mean: 1 / (sample_index + 1) */
   float relaxation;        /* over-relaxation factor omega of the march, in [1, 2) */
+  float reflectivity;      /* of the material without a scene surface source */
+  float glow_strength;     /* glow = strength * exp(-closest approach / falloff) */
+  float fog_scale;         /* power-law fog: amount = fog_scale * t^0.75 (t in world units) */
 
   /* What float rounding lost of the camera vectors above (double kernels add it back). */
-  float eye_lo[4];
   float first_pixel_dir_lo[4];
   float pixel_step_x_lo[4];
   float pixel_step_y_lo[4];

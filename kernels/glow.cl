@@ -6,7 +6,7 @@
 
 inline vec3_t add_glow(vec3_t color, real_t min_dist, mask_t miss,
                        __constant const fr_frame_constants* fc) {
-  real_t amount = (real_t)fc->glow_color[3] *
+  real_t amount = (real_t)fc->glow_strength *
                   exp(-fmax(min_dist, (real_t)0) / (real_t)fc->glow_falloff);
   return v3_select(miss, v3_mad(color, v3_from_float4(fc->glow_color), amount), color);
 }

@@ -11,7 +11,7 @@ light_sample_t sample_light(int i, vec3_t p, __constant const fr_frame_constants
   light_sample_t s;
   vec3_t v = v3_from_float4(fc->light_vector[i]);
   vec3_t color = v3_from_float4(fc->light_color[i]);
-  if (fc->light_vector[i][3] == 1.0f) {
+  if (fc->light_kind[i] == FR_KERNEL_LIGHT_DIRECTIONAL) {
     s.to_light = v3_normalize(v3_neg(v));
     s.distance = (real_t)FR_SCALAR_MAX; /* shadow rays end where they leave the bounds */
     s.radiance = color;
@@ -19,8 +19,8 @@ light_sample_t sample_light(int i, vec3_t p, __constant const fr_frame_constants
     vec3_t d = v3_sub(v, p);
     s.distance = v3_length(d);
     s.to_light = v3_scale(d, (real_t)1 / fmax(s.distance, (real_t)FR_SCALAR_MIN));
-    real_t a = (real_t)fc->light_color[i][3];
-    real_t falloff = a * pow_nonneg(s.distance, (real_t)fc->light_falloff[i][0]);
+    real_t a = (real_t)fc->light_attenuation[i];
+    real_t falloff = a * pow_nonneg(s.distance, (real_t)fc->light_falloff[i]);
     s.radiance = v3_scale(color, (real_t)1 / ((real_t)1 + falloff));
   }
   return s;

@@ -1,7 +1,7 @@
 /* normals.cl — surface normal from the DE's gradient, with a step h that follows the hit
  * threshold (so it grows with distance like the detail a pixel can resolve). FR_NORMALS picks:
  *   FR_NORMALS_TETRAHEDRON  tetrahedron: four DE evaluations at p + h k_i, k_i the corners of a tetrahedron
- *   FR_NORMALS_CENTRAL      central differences: six evaluations, p +- h along each axis (seed report 9.4) */
+ *   FR_NORMALS_CENTRAL      central differences: six evaluations, p +- h along each axis */
 
 #if FR_NORMALS == FR_NORMALS_CENTRAL
 #define FR_NORMAL_EVALS 6

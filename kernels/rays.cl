@@ -1,4 +1,4 @@
-/* rays.cl — primary rays from the seed camera model (host/render/camera.hpp). */
+/* rays.cl — primary rays from the pinhole camera model (host/render/camera.hpp). */
 
 typedef struct ray_t {
   vec3_t origin;
@@ -13,7 +13,7 @@ inline vec3_t v3_hi_lo(__constant const float* hi, __constant const float* lo) {
 }
 
 /* The ray through pixel (px, py), row 0 at the top; fractional coordinates sample inside a pixel.
- * The seed indexes columns from the right and rows from the bottom (its first pixel p_1m is
+ * The model indexes columns from the right and rows from the bottom (its first pixel p_1m is
  * bottom-right for a right-handed world), hence the flips. The ray starts on the start plane
  * (frame_constants.h), *path_start from the eye: its origin is the start point of the image's
  * centre plus a small offset, so a far camera loses no precision (eye + dir * 1e6 in float would

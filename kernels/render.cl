@@ -39,7 +39,7 @@
 inline surface_t default_surface(__constant const fr_frame_constants* fc) {
   surface_t s;
   s.albedo = v3_from_float4(fc->albedo);
-  s.reflectivity = (real_t)fc->albedo[3];
+  s.reflectivity = (real_t)fc->reflectivity;
   return s;
 }
 #define surface_at(p) default_surface(fc)

@@ -1,4 +1,4 @@
-// The seed camera model against rays computed by hand from its formulas.
+// The pinhole camera model (render/camera.hpp) against rays computed by hand from its formulas.
 #include "render/camera.hpp"
 #include "render/frame_constants.hpp"
 
@@ -91,7 +91,7 @@ TEST(Camera, RejectsDegenerateCameras) {
 }
 
 // Up parallel to the view (looking straight down, or up, the default up axis): no refusal, and a
-// stable perpendicular, +y, at both poles; the image's right then follows from the seed's
+// stable perpendicular, +y, at both poles; the image's right then follows from the model's
 // b = w x t by hand: down (t = -z): b = y x -z = -x, right = -b = +x; up (t = +z): right = -x.
 // A nearly parallel up (1e-9 off) gives the same picture as exactly parallel, not noise.
 TEST(Camera, UpParallelToTheViewTakesAStablePerpendicular) {
@@ -134,7 +134,6 @@ TEST(FrameConstants, CameraSurvivesAsHiLoPairs) {
   const CameraRays rays = make_camera_rays(state.camera, 8, 6);
   const fr_frame_constants fc = make_frame_constants(rays, state, RenderSettings{}, 0);
   for (int a = 0; a < 3; ++a) {
-    EXPECT_NEAR(double(fc.eye[a]) + double(fc.eye_lo[a]), eye[a], 1e-15) << a;
     EXPECT_NEAR(double(fc.ray_start[a]) + double(fc.ray_start_lo[a]), eye[a], 1e-15)
         << a << ": inside the bounds, rays start at the eye";
     EXPECT_NEAR(double(fc.first_pixel_dir[a]) + double(fc.first_pixel_dir_lo[a]),

@@ -1,7 +1,7 @@
 // frame_controller.hpp — holding a frame rate while the view changes, and refining once it stops.
 //
 // While the camera or parameters change, each frame renders one sample at a resolution scale
-// that the controller adjusts towards the target frame time (the seed slides' sub-image
+// that the controller adjusts towards the target frame time (the sub-image
 // rendering: a smaller image, shown scaled up) and with a reduced step budget. Once nothing
 // changes, the scale goes to 1 and further frames accumulate jittered samples into the same image
 // until `full_quality_samples` is reached.

@@ -1,4 +1,4 @@
-// game_loop.hpp — the frame loop in the seed report's order: poll input, update the scene,
+// game_loop.hpp — the frame loop in its fixed order: poll input, update the scene,
 // render. The steps are functions, so tests drive the loop with injected events and a fake clock
 // and check the order; the explorer passes its window and renderer.
 #pragma once

@@ -21,7 +21,7 @@ CameraRays make_camera_rays(const fr_camera& c, int k, int m) {
   r.forward = t_n;
   r.width_px = k;
   r.height_px = m;
-  // A one-pixel-wide image has a single column at the centre (the seed divides by k - 1).
+  // A one-pixel-wide image has a single column at the centre (the model divides by k - 1).
   r.pixel_step_x = k > 1 ? (2.0 * g_x / (k - 1)) * b_n : glm::dvec3(0.0);
   r.pixel_step_y = m > 1 ? (2.0 * g_y / (m - 1)) * v_n : glm::dvec3(0.0);
   r.first_pixel_dir = t_n - (k > 1 ? g_x : 0.0) * b_n - (m > 1 ? g_y : 0.0) * v_n;
@@ -30,7 +30,7 @@ CameraRays make_camera_rays(const fr_camera& c, int k, int m) {
 }
 
 CameraRays window_rays(const CameraRays& full, int x0, int y0, int w, int h) {
-  // The seed counts pixels from the image's far corner (i = W - 1 - x): the window's first
+  // The model counts pixels from the image's far corner (i = W - 1 - x): the window's first
   // pixel direction is the full image's, stepped by the columns and rows beyond the window.
   CameraRays r = full;
   r.first_pixel_dir = full.first_pixel_dir +

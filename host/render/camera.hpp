@@ -1,10 +1,10 @@
-// camera.hpp — the seed camera model: primary rays for a k x m image.
+// camera.hpp — the pinhole camera model below: primary rays for a k x m image.
 //
 // With eye E, target T, up w and horizontal field of view theta:
 //   t = T - E,  b = w x t,  v = t x b           (then normalised: t_n, b_n, v_n)
 //   g_x = tan(theta / 2),  g_y = g_x * m / k     (half-extents of the image plane at distance 1)
 //   q_x = 2 g_x / (k - 1) * b_n,  q_y = 2 g_y / (m - 1) * v_n   (steps between pixel centres)
-//   p_1m = t_n - g_x b_n - g_y v_n               (the seed's first pixel)
+//   p_1m = t_n - g_x b_n - g_y v_n               (the model's first pixel)
 //   ray(i, j) = normalise(p_1m + q_x (i - 1) + q_y (j - 1)),  i in 1..k, j in 1..m
 // In a right-handed world b = w x t points to the viewer's left, so p_1m is the bottom-right
 // pixel; image column x (0 = left) is i - 1 = k - 1 - x and row y (0 = top) is j - 1 = m - 1 - y.
@@ -26,7 +26,7 @@ struct CameraRays {
   glm::dvec3 first_pixel_dir{0.0};  // p_1m
   glm::dvec3 pixel_step_x{0.0};     // q_x
   glm::dvec3 pixel_step_y{0.0};     // q_y
-  glm::dvec3 right{0.0};            // unit: image +x (the seed's -b_n)
+  glm::dvec3 right{0.0};            // unit: image +x (the model's -b_n)
   glm::dvec3 up{0.0};               // unit: image up (v_n)
   glm::dvec3 forward{0.0};          // unit: view direction (t_n)
   int width_px = 0;
@@ -34,7 +34,7 @@ struct CameraRays {
   double pixel_angle_rad = 0;  // angle between neighbouring pixel centres at the image centre
 };
 
-// The seed model's vectors for a width_px x height_px image (each >= 1). The camera must pass
+// The model's vectors for a width_px x height_px image (each >= 1). The camera must pass
 // check_camera (scene/scene_data.hpp).
 CameraRays make_camera_rays(const fr_camera& camera, int width_px, int height_px);
 

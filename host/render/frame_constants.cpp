@@ -12,30 +12,34 @@ namespace fr {
 static_assert(FR_MAX_LIGHTS == FR_MAX_SCENE_LIGHTS,
               "the kernel holds every light a scene may declare");
 
+static_assert(FR_KERNEL_LIGHT_DIRECTIONAL == FR_LIGHT_DIRECTIONAL &&
+              FR_KERNEL_LIGHT_POINT == FR_LIGHT_POINT);
+
 // The kernels read this struct with OpenCL C's layout rules; with only 4-byte fields both sides
 // agree, and these checks keep it so.
-static_assert(sizeof(fr_frame_constants) == 912, "fr_frame_constants layout changed");
-static_assert(sizeof(fr_frame_constants) % 16 == 0);
-static_assert(offsetof(fr_frame_constants, eye) == 0);
-static_assert(offsetof(fr_frame_constants, light_vector) == 112);
-static_assert(offsetof(fr_frame_constants, ambient_color) == 496);
-static_assert(offsetof(fr_frame_constants, width) == 608);
-static_assert(offsetof(fr_frame_constants, pixel_angle_rad) == 640);
-static_assert(offsetof(fr_frame_constants, relaxation) == 716);
-static_assert(offsetof(fr_frame_constants, eye_lo) == 720);
-static_assert(offsetof(fr_frame_constants, ray_start) == 784);
-static_assert(offsetof(fr_frame_constants, start_scale) == 880);
-static_assert(offsetof(fr_frame_constants, ao_reference_steps) == 888);
-
+static_assert(sizeof(fr_frame_constants) == 856, "fr_frame_constants layout changed");
+static_assert(offsetof(fr_frame_constants, first_pixel_dir) == 0);
+static_assert(offsetof(fr_frame_constants, light_vector) == 96);
+static_assert(offsetof(fr_frame_constants, light_kind) == 352);
+static_assert(offsetof(fr_frame_constants, ambient_color) == 448);
+static_assert(offsetof(fr_frame_constants, width) == 560);
+static_assert(offsetof(fr_frame_constants, pixel_angle_rad) == 592);
+static_assert(offsetof(fr_frame_constants, relaxation) == 664);
+static_assert(offsetof(fr_frame_constants, fog_scale) == 676);
+static_assert(offsetof(fr_frame_constants, first_pixel_dir_lo) == 680);
+static_assert(offsetof(fr_frame_constants, ray_start) == 728);
+static_assert(offsetof(fr_frame_constants, start_scale) == 824);
+static_assert(offsetof(fr_frame_constants, ao_reference_steps) == 832);
+static_assert(offsetof(fr_frame_constants, cone_blocks_y) == 852);
 namespace {
-void put(float out[4], glm::dvec3 v, double w = 0) {
+void put(float out[4], glm::dvec3 v) {
   out[0] = static_cast<float>(v.x);
   out[1] = static_cast<float>(v.y);
   out[2] = static_cast<float>(v.z);
-  out[3] = static_cast<float>(w);
+  out[3] = 0;
 }
-void put(float out[4], const std::array<float, 3>& v, double w = 0) {
-  put(out, glm::dvec3(v[0], v[1], v[2]), w);
+void put(float out[4], const std::array<float, 3>& v) {
+  put(out, glm::dvec3(v[0], v[1], v[2]));
 }
 // A double as its rounded float (hi) and what the rounding lost (lo): hi + lo in double is the
 // value to about 48 bits, so the double kernel gets the camera in double. The rounded value
@@ -54,8 +58,9 @@ void put_hi_lo(float hi[4], float lo[4], glm::dvec3 v) {
 
 // The start plane of primary rays (frame_constants.h): the eye's distance along the view to
 // just before the bounding sphere, as a multiple of the direction vectors' component along the
-// view (which the seed's image plane keeps the same for every pixel). 0 (start at the eye) when
-// the eye is within the bounds, or when a thin lens moves ray origins off the eye.
+// view (which the camera's image plane, render/camera.hpp, keeps the same for every pixel). 0
+// (start at the eye) when the eye is within the bounds, or when a thin lens moves ray origins off
+// the eye.
 double start_scale(const CameraRays& rays, double bounding_radius, float aperture_radius) {
   if (aperture_radius > 0) return 0;
   const double ahead = glm::dot(-rays.eye, rays.forward) - 1.001 * bounding_radius;
@@ -75,7 +80,6 @@ std::array<double, 2> sample_jitter(int i) {
 fr_frame_constants make_frame_constants(const CameraRays& rays, const SceneState& state,
                                         const RenderSettings& s, int sample_index) {
   fr_frame_constants fc{};
-  put_hi_lo(fc.eye, fc.eye_lo, rays.eye);
   put_hi_lo(fc.first_pixel_dir, fc.first_pixel_dir_lo, rays.first_pixel_dir);
   put_hi_lo(fc.pixel_step_x, fc.pixel_step_x_lo, rays.pixel_step_x);
   put_hi_lo(fc.pixel_step_y, fc.pixel_step_y_lo, rays.pixel_step_y);
@@ -104,27 +108,34 @@ fr_frame_constants make_frame_constants(const CameraRays& rays, const SceneState
   for (const fr_light& l : state.lights) {
     if (count == FR_MAX_LIGHTS) break;
     const glm::dvec3 color = to_dvec3(l.color) * l.intensity;
-    put(fc.light_vector[count], to_dvec3(l.vector), l.kind == FR_LIGHT_DIRECTIONAL ? 1 : 2);
-    put(fc.light_color[count], color, l.kind == FR_LIGHT_POINT ? l.attenuation : 0);
-    fc.light_falloff[count][0] = static_cast<float>(l.kind == FR_LIGHT_POINT ? l.falloff : 0);
+    const bool point = l.kind == FR_LIGHT_POINT;
+    put(fc.light_vector[count], to_dvec3(l.vector));
+    put(fc.light_color[count], color);
+    fc.light_kind[count] = point ? FR_KERNEL_LIGHT_POINT : FR_KERNEL_LIGHT_DIRECTIONAL;
+    fc.light_attenuation[count] = static_cast<float>(point ? l.attenuation : 0);
+    fc.light_falloff[count] = static_cast<float>(point ? l.falloff : 0);
     ++count;
   }
   if (count == 0) {
-    put(fc.light_vector[0], -rays.forward - rays.up + 0.5 * rays.right, 1);
+    put(fc.light_vector[0], -rays.forward - rays.up + 0.5 * rays.right);
     put(fc.light_color[0], glm::dvec3(1.2));
+    fc.light_kind[0] = FR_KERNEL_LIGHT_DIRECTIONAL;
     count = 1;
   }
   fc.light_count = count;
 
   const double radius = state.bounding_radius;
   put(fc.ambient_color, s.ambient);
-  put(fc.albedo, s.albedo, s.reflectivity);
+  put(fc.albedo, s.albedo);
+  fc.reflectivity = s.reflectivity;
   put(fc.sky_zenith, s.sky_zenith);
   put(fc.sky_horizon, s.sky_horizon);
   put(fc.sky_up, rays.up);
-  put(fc.glow_color, s.glow_color, s.glow_strength);
+  put(fc.glow_color, s.glow_color);
+  fc.glow_strength = s.glow_strength;
   // The power-law fog is fog_scale * (t / R)^0.75 = (fog_scale / R^0.75) * t^0.75.
-  put(fc.fog_color, s.fog_color, s.fog_scale / std::pow(radius, 0.75));
+  put(fc.fog_color, s.fog_color);
+  fc.fog_scale = static_cast<float>(s.fog_scale / std::pow(radius, 0.75));
 
   fc.width = rays.width_px;
   fc.height = rays.height_px;

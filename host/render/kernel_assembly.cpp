@@ -11,20 +11,16 @@
 namespace fr {
 namespace {
 
-// The optional renderer stages: the name users see and the define that switches the stage's
-// code in kernels/render.cl.
+// The optional renderer stages and the names users see. A stage is in the kernel when its file
+// is (kRenderPipeline below): each file defines the hooks render.cl calls (FR_APPLY_AO, ...).
 struct OptionalStage {
   fr_features feature;
   const char* name;
-  const char* define;
 };
 const OptionalStage kOptionalStages[] = {
-    {kStageDepthOfField, "dof", "FR_STAGE_DOF"},
-    {FR_FEATURE_GLOW, "glow", "FR_STAGE_GLOW"},
-    {FR_FEATURE_AO, "ao", "FR_STAGE_AO"},
-    {FR_FEATURE_SHADOWS, "shadows", "FR_STAGE_SHADOWS"},
-    {FR_FEATURE_FOG, "fog", "FR_STAGE_FOG"},
-    {FR_FEATURE_REFLECTIONS, "reflections", "FR_STAGE_REFLECTIONS"},
+    {kStageDepthOfField, "dof"}, {FR_FEATURE_GLOW, "glow"},
+    {FR_FEATURE_AO, "ao"},       {FR_FEATURE_SHADOWS, "shadows"},
+    {FR_FEATURE_FOG, "fog"},     {FR_FEATURE_REFLECTIONS, "reflections"},
 };
 
 // The render kernel's files in the order they are pasted (each uses only what comes before it);
@@ -198,8 +194,6 @@ void append_scene_prefix(std::ostringstream& out, const SceneInfo& info,
       << "'. Generated; see kernels/. */\n";
   out << "#define FR_LANES " << config.lanes << "\n";
   out << "#define FR_DOUBLE " << (config.precision == Precision::Double ? 1 : 0) << "\n";
-  for (const auto& s : kOptionalStages)
-    out << "#define " << s.define << " " << ((config.stages & s.feature) ? 1 : 0) << "\n";
   define_choice(out, "FR_SHADING", config.shading);
   define_choice(out, "FR_NORMALS", config.normals);
   define_choice(out, "FR_AO", config.ao_method);

@@ -300,7 +300,7 @@ std::vector<SettingSpec> make_table() {
   t.push_back(in_overlay(
       choice_setting<&S::render, &R::fog_method>(
           "render.fog_method",
-          "Fog: \"exponential\" (1 - exp(-density t)) or \"power\" (the seed slides' fogScale * "
+          "Fog: \"exponential\" (1 - exp(-density t)) or \"power\" (fog_scale * "
           "t^0.75)."),
       "Fog curve"));
 

@@ -7,7 +7,7 @@
  * Smooth minimum, derived: with h = clamp(1/2 + (b - a) / (2k), 0, 1), the blend
  *   smin(a, b) = mix(b, a, h) - k h (1 - h)
  * equals min(a, b) when |a - b| >= k (h is 0 or 1 and the correction vanishes), is continuous
- * and C1 in between, and reaches min - k/4 at a = b. (The seed's text writes the correction with
+ * and C1 in between, and reaches min - k/4 at a = b. (Some texts write the correction with
  * its blend variable and its width swapped; this is the form used here.) Then
  *   smooth intersection = -smin(-a, -b)  and  smooth subtraction of a from b = -smin(-b, a),
  * which expand to the two functions below. */

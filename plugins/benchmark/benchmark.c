@@ -1,4 +1,4 @@
-/* benchmark.c — the scene the seed report's benchmark (FR-3.1, 5.2) asks for: fractal and
+/* benchmark.c — the scene `fractalis bench` renders by default: fractal and
  * primitive geometry (a Mandelbulb and a Menger sponge on a reflective floor with spheres), two
  * coloured point lights with attenuation, ambient occlusion, soft shadows and reflections. Its
  * fixed camera route is the ordinary camera path config/paths/benchmark.toml, which

@@ -1,4 +1,4 @@
-/* benchmark.cl — the benchmark scene (seed report FR-3.1, 5.2): a Mandelbulb and a Menger sponge
+/* benchmark.cl — the benchmark scene (`fractalis bench`'s default): a Mandelbulb and a Menger sponge
  * on a floor, with three spheres. World y is up. Every shape comes from the DE library. */
 #include "fr/mandelbulb.cl"
 #include "fr/menger.cl"

@@ -42,7 +42,7 @@ typedef uint32_t fr_light_kind;
 #define FR_LIGHT_POINT 2u       /* `vector` is the light's world-space position */
 
 /* A light. A point light at distance d delivers color * intensity / (1 + attenuation * d^falloff)
- * (the seed lighting page's k / (1 + a d^e), with k = intensity); directional lights do not fall
+ * (k / (1 + a d^e): k, a and e below); directional lights do not fall
  * off. */
 typedef struct fr_light {
   uint32_t struct_size; /* sizeof(fr_light) */
