@@ -11,7 +11,10 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <sstream>
 
 namespace fr {
 namespace {
@@ -53,6 +56,66 @@ fr_camera looking_down_minus_z() {
   c.up[1] = 1;
   c.fov_deg = 45;
   return c;
+}
+
+// Labels (the overlay's "(O)", "Fractalis (F1 hides)") name the keys in force: [controls.keys]
+// adds keys over the defaults.
+TEST(Input, LabelsNameTheKeysInForce) {
+  const KeyBindings defaults = KeyBindings::defaults();
+  EXPECT_EQ(defaults.label(Action::ToggleCameraMode), "O");
+  EXPECT_EQ(defaults.label(Action::MoveUp), "E/Space");
+  const KeyBindings extra =
+      KeyBindings::with_extra({{"G", "camera_mode"}, {"H", "no_such_action"}});
+  EXPECT_EQ(extra.label(Action::ToggleCameraMode), "G/O");
+  EXPECT_EQ(extra.keys.count("H"), 0u)
+      << "an unknown action (reported by the settings) binds nothing";
+  EXPECT_EQ(KeyBindings{}.label(Action::Quit), "unbound");
+}
+
+// README's key table lists exactly the default bindings: every default key is in it, and it
+// names no key that is not one (the words between keys are only "or" and "(held)").
+TEST(Input, ReadmeKeyTableIsTheDefaultBindings) {
+  std::ifstream readme(std::string(SOURCE_DIR) + "/README.md");
+  std::string line, first_column;
+  bool in_table = false;
+  while (std::getline(readme, line)) {
+    if (line.rfind("| key / mouse | does |", 0) == 0) {
+      in_table = true;
+      continue;
+    }
+    if (!in_table) continue;
+    if (line.empty() || line[0] != '|') break;
+    if (line.rfind("| ---", 0) == 0) continue;
+    first_column += " " + line.substr(1, line.find('|', 1) - 1) + " ";
+  }
+  ASSERT_FALSE(first_column.empty()) << "README has no key table";
+  std::vector<std::string> keys;
+  for (const auto& [key, action] : KeyBindings::defaults().keys) keys.push_back(key);
+  // Longest first, so that "Left Shift" goes before a "Shift" could.
+  std::sort(keys.begin(), keys.end(),
+            [](const auto& a, const auto& b) { return a.size() > b.size(); });
+  auto is_word_char = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0; };
+  std::string rest = first_column;
+  for (const std::string& key : keys) {
+    bool found = false;
+    for (size_t at = rest.find(key); at != std::string::npos; at = rest.find(key, at + 1)) {
+      const bool starts = at == 0 || !is_word_char(rest[at - 1]);
+      const bool ends = at + key.size() == rest.size() || !is_word_char(rest[at + key.size()]);
+      if (starts && ends) {
+        // Blanked in place (std::string::replace with a shorter text trips GCC 12's -Wrestrict).
+        std::fill(rest.begin() + static_cast<std::ptrdiff_t>(at),
+                  rest.begin() + static_cast<std::ptrdiff_t>(at + key.size()), ' ');
+        found = true;
+      }
+    }
+    EXPECT_TRUE(found) << "README's key table lacks the default key " << key;
+  }
+  std::istringstream words(rest);
+  for (std::string word; words >> word;) {
+    while (!word.empty() && (word.back() == ',' || word.back() == '/')) word.pop_back();
+    if (word.empty() || word == "or" || word == "(held)") continue;
+    ADD_FAILURE() << "README's key table names '" << word << "', which is no default key";
+  }
 }
 
 TEST(CameraController, FlySpeedFollowsTheSurfaceDistance) {

@@ -3,39 +3,6 @@
 #include <algorithm>
 
 namespace fr {
-KeyBindings KeyBindings::defaults() {
-  KeyBindings b;
-  b.keys = {
-      {"W", Action::MoveForward},
-      {"S", Action::MoveBack},
-      {"A", Action::MoveLeft},
-      {"D", Action::MoveRight},
-      {"E", Action::MoveUp},
-      {"Space", Action::MoveUp},
-      {"Q", Action::MoveDown},
-      {"Left Ctrl", Action::MoveDown},
-      {"Left Shift", Action::SpeedUp},
-      {"M", Action::ToggleMouseLook},
-      {"O", Action::ToggleCameraMode},
-      {"F1", Action::ToggleOverlay},
-      {"F11", Action::ToggleFullscreen},
-      {"Tab", Action::NextScene},
-      {"Backspace", Action::PreviousScene},
-      {"F12", Action::Screenshot},
-      {"K", Action::AddKeyframe},
-      {"P", Action::PlayPath},
-      {"Escape", Action::Quit},
-  };
-  return b;
-}
-
-std::vector<std::string> KeyBindings::keys_for(Action action) const {
-  std::vector<std::string> out;
-  for (const auto& [key, a] : keys)
-    if (a == action) out.push_back(key);
-  return out;
-}
-
 bool InputState::was_triggered(Action a) const {
   return std::find(triggered.begin(), triggered.end(), a) != triggered.end();
 }

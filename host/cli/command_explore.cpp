@@ -25,14 +25,17 @@ int command_explore(const std::vector<std::string>& args, std::ostream& out,
   auto options = parse_options("explore", args, specs);
   if (options.has("help")) {
     out << "usage: fractalis explore [--scene ID] [--size WxH] [options]\n\n"
-           "Opens the explorer window. Fly with W/A/S/D, E/Space up, Q/Ctrl down, Shift faster;\n"
-           "M captures the mouse to look around, O switches fly/orbit, Tab/Backspace switch "
-           "scene,\n"
-           "F1 hides the overlay, F11 toggles fullscreen, F12 saves a screenshot, Esc quits.\n"
-           "K adds the view as the next keyframe of a camera path, P plays or stops the path;\n"
-           "the overlay's Camera path section saves it for `fractalis animate` and loads one.\n"
-           "Scenes dropped into the plugin folder appear while it runs; changed ones reload.\n\n"
-        << format_options(specs);
+           "Opens the explorer window. The overlay's Camera path section saves the keyframes\n"
+           "added with the keys below for `fractalis animate`, and loads a path. Scenes dropped\n"
+           "into the plugin folder appear while it runs; changed ones reload.\n\n"
+           "keys (the defaults; [controls.keys] in the settings adds more):\n";
+    const KeyBindings defaults = KeyBindings::defaults();
+    for (const auto& row : kActionNames) {
+      const std::string keys = defaults.label(row.value);
+      out << "  " << keys << std::string(keys.size() < 28 ? 28 - keys.size() : 1, ' ') << row.label
+          << "\n";
+    }
+    out << "\n" << format_options(specs);
     return 0;
   }
   const long max_frames =
@@ -49,9 +52,8 @@ int command_explore(const std::vector<std::string>& args, std::ostream& out,
                 options.has("fullscreen") || settings.explorer.fullscreen);
   OverlayState overlay;
   overlay.settings_file = user_settings_path();
-  KeyBindings bindings = KeyBindings::defaults();
-  for (const auto& [key, action_name] : settings.explorer.key_bindings)
-    if (auto action = action_from_name(action_name)) bindings.keys[key] = *action;
+  const KeyBindings bindings = KeyBindings::with_extra(settings.explorer.key_bindings);
+  overlay.keys = bindings;
   using clock = std::chrono::steady_clock;
   const auto start = clock::now();
   auto now_s = [&] { return std::chrono::duration<double>(clock::now() - start).count(); };

@@ -1,8 +1,8 @@
 #include "settings/settings.hpp"
 
-#include "app/input.hpp"
 #include "io/echo.hpp"
 #include "io/toml_guard.hpp"
+#include "settings/key_bindings.hpp"
 #include "settings/settings_table.hpp"
 
 #include <toml++/toml.h>
@@ -31,17 +31,16 @@ const char* const kDefaultFileHeader =
     "checks\n"
     "that this file is what the table writes.";
 
-// The comment above [controls.keys], with the action names from their table (app/input.hpp).
+// The comment above [controls.keys], with the action names and default keys from their tables
+// (settings/key_bindings.hpp).
 std::string key_bindings_comment() {
   std::string text =
       "Extra key bindings over the defaults, action = \"key name\" (SDL's names: \"W\", \"Left "
-      "Shift\", \"Up\", \"F5\", ...). Actions:";
-  for (const auto& row : kActionNames) text += std::string(" ") + row.name + ",";
+      "Shift\", \"Up\", \"F5\", ...). Actions and their default keys:";
+  const KeyBindings defaults = KeyBindings::defaults();
+  for (const auto& row : kActionNames)
+    text += std::string(" ") + row.name + " (" + defaults.label(row.value) + "),";
   text.back() = '.';
-  text +=
-      " Defaults: W/S/A/D move, E or Space up, Q or Left Ctrl down, Left Shift faster, M mouse "
-      "look, O fly/orbit, Tab/Backspace next/previous scene, F1 overlay, F11 fullscreen, F12 "
-      "screenshot, K add keyframe, P play/stop path, Escape quit.";
   // Wrapped to 96 columns.
   std::string wrapped, line;
   std::istringstream words(text);

@@ -117,7 +117,11 @@ void draw_overlay(Explorer& explorer, OverlayState& overlay) {
   if (!overlay.visible) return;
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(360, 560), ImGuiCond_FirstUseEver);
-  ImGui::Begin("Fractalis (F1 hides)");
+  // Labels name the keys in force ([controls.keys] may add some); "###id" keeps ImGui's ids
+  // the same whatever the label says.
+  const KeyBindings& keys = overlay.keys;
+  const std::string title = "Fractalis (" + keys.label(Action::ToggleOverlay) + " hides)###main";
+  ImGui::Begin(title.c_str());
   const ExplorerStats& st = explorer.stats();
   ImGui::Text("%.1f ms/frame (%.0f fps), scale %.2f, sample %d%s", st.frame_ms,
               st.frame_ms > 0 ? 1000.0 / st.frame_ms : 0.0, st.resolution_scale, st.sample_index,
@@ -197,9 +201,10 @@ void draw_overlay(Explorer& explorer, OverlayState& overlay) {
     fr_camera& c = slot.state.camera;
     ImGui::Text("eye    %.4f, %.4f, %.4f", c.eye[0], c.eye[1], c.eye[2]);
     ImGui::Text("target %.4f, %.4f, %.4f", c.target[0], c.target[1], c.target[2]);
-    ImGui::Text("mode: %s (O), mouse look: %s (M)",
+    ImGui::Text("mode: %s (%s), mouse look: %s (%s)",
                 explorer.camera_mode() == CameraMode::Fly ? "fly" : "orbit",
-                explorer.mouse_look() ? "on" : "off");
+                keys.label(Action::ToggleCameraMode).c_str(), explorer.mouse_look() ? "on" : "off",
+                keys.label(Action::ToggleMouseLook).c_str());
     float fov = static_cast<float>(c.fov_deg);
     if (ImGui::SliderFloat("Field of view", &fov, 10, 120, "%.0f deg")) {
       c.fov_deg = fov;
@@ -223,18 +228,21 @@ void draw_overlay(Explorer& explorer, OverlayState& overlay) {
 
   if (ImGui::CollapsingHeader("Camera path")) {
     PathRecorder& path = explorer.path();
-    const size_t keys = path.scene_id == info.id ? path.keyframes.size() : 0;
-    ImGui::Text("%zu keyframes%s", keys,
+    const size_t keyframes = path.scene_id == info.id ? path.keyframes.size() : 0;
+    ImGui::Text("%zu keyframes%s", keyframes,
                 path.playing ? fmt::format(", playing: {:.1f} s", path.play_s).c_str() : "");
     float spacing = static_cast<float>(path.spacing_s);
     if (ImGui::SliderFloat("Seconds between keyframes", &spacing, 0.1f, 30.0f, "%.1f s",
                            ImGuiSliderFlags_Logarithmic))
       path.spacing_s = spacing;
-    if (ImGui::Button("Add keyframe (K)")) add_keyframe(path, info, slot.state);
+    const std::string add = "Add keyframe (" + keys.label(Action::AddKeyframe) + ")###add";
+    if (ImGui::Button(add.c_str())) add_keyframe(path, info, slot.state);
     ImGui::SameLine();
     if (ImGui::Button("Remove last")) remove_last_keyframe(path);
     ImGui::SameLine();
-    if (ImGui::Button(path.playing ? "Stop (P)" : "Play (P)")) toggle_playback(path, info);
+    const std::string play =
+        std::string(path.playing ? "Stop (" : "Play (") + keys.label(Action::PlayPath) + ")###play";
+    if (ImGui::Button(play.c_str())) toggle_playback(path, info);
     ImGui::InputText("File", overlay.path_file.data(), overlay.path_file.size());
     std::string error;
     if (ImGui::Button("Save path")) {
@@ -259,7 +267,8 @@ void draw_overlay(Explorer& explorer, OverlayState& overlay) {
       ImGui::InputInt2("Size", overlay.screenshot_size.data());
     ImGui::InputText("Screenshot file", overlay.screenshot_file.data(),
                      overlay.screenshot_file.size());
-    if (ImGui::Button("Save screenshot (F12)")) overlay.screenshot_requested = true;
+    const std::string shot = "Save screenshot (" + keys.label(Action::Screenshot) + ")###shot";
+    if (ImGui::Button(shot.c_str())) overlay.screenshot_requested = true;
     ImGui::SameLine();
     ImGui::TextUnformatted(".png, or .exr with passes");
   }

@@ -23,6 +23,7 @@ struct OverlayState {
   bool screenshot_at_window_size = true;
   std::array<char, 1024> path_file{"fractalis-path.toml"};  // the camera path's Save / Load file
   std::filesystem::path settings_file;  // where "Save settings" writes (the user's config.toml)
+  KeyBindings keys = KeyBindings::defaults();  // in force: the labels name these keys
 };
 
 // Builds the panel; changes go straight into the explorer's scene state and settings (and mark
