@@ -1,0 +1,72 @@
+// The host's folders in floors, each including only its own headers and those of the folders
+// below it (DESIGN.md: "a folder depends on the ones below it, never sideways in circles").
+// The order, bottom first, is the one in README's Layout section; an include that reaches up or
+// sideways fails here with the file and line.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace fr {
+namespace {
+
+// Bottom first. A folder may include itself and any folder before it.
+const std::vector<std::string> kFloors = {
+    "scene",     // a scene as plain data
+    "io",        // files, text, processes: no fractalis types
+    "plugin",    // plugin files and code, the scene-host process
+    "render",    // OpenCL, kernels, the renderer, its settings
+    "settings",  // the settings file over RenderSettings and the rest
+    "image",     // PNG, OpenEXR, posters
+    "video",     // the FFmpeg encoder
+    "path",      // camera paths
+    "animate",   // frame plans, PNG sequences
+    "app",       // the explorer core, the scene library
+    "bench",     // frame timing, the explorer benchmark
+    "sweep",     // error against run time
+    "check",     // the conformance checks
+    "ui",        // the SDL window and the overlay
+    "cli",       // the commands
+};
+
+TEST(Layering, NoFolderIncludesOneAboveIt) {
+  const std::filesystem::path host = std::filesystem::path(SOURCE_DIR) / "host";
+  size_t files = 0, includes = 0;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(host)) {
+    const auto& path = entry.path();
+    if (!entry.is_regular_file() || (path.extension() != ".cpp" && path.extension() != ".hpp"))
+      continue;
+    const std::string folder = path.parent_path() == host
+                                   ? "main"  // main.cpp, scene_host_main.cpp: above everything
+                                   : path.parent_path().filename().string();
+    const auto own = std::find(kFloors.begin(), kFloors.end(), folder);
+    if (folder != "main") {
+      ASSERT_NE(own, kFloors.end()) << "host/" << folder << "/ has no floor in this test";
+    }
+    ++files;
+    std::ifstream in(path);
+    std::string line;
+    for (int number = 1; std::getline(in, line); ++number) {
+      const size_t hash = line.find_first_not_of(" \t");
+      if (hash == std::string::npos || line.compare(hash, 10, "#include \"") != 0) continue;
+      const size_t start = hash + 10, slash = line.find('/', start);
+      if (slash == std::string::npos) continue;
+      const std::string target = line.substr(start, slash - start);
+      const auto floor = std::find(kFloors.begin(), kFloors.end(), target);
+      if (floor == kFloors.end()) continue;  // not a host folder (fractalis/, the SDK's)
+      ++includes;
+      if (folder != "main" && floor > own)
+        ADD_FAILURE() << std::filesystem::relative(path, SOURCE_DIR).string() << ":" << number
+                      << ": host/" << folder << "/ includes " << target
+                      << "/, which is above it (or beside it)";
+    }
+  }
+  EXPECT_GT(files, 100u);
+  EXPECT_GT(includes, 300u);
+}
+
+}  // namespace
+}  // namespace fr
