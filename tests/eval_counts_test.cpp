@@ -4,7 +4,7 @@
 // fixed views so that a change that silently makes rendering do more work fails here, with no
 // timing involved (the counts are deterministic).
 #include "app/explorer.hpp"
-#include "cli/scene_setup.hpp"
+#include "cli/explorer_setup.hpp"
 #include "plugin/scene_instance.hpp"
 #include "render/renderer.hpp"
 #include "test_support.hpp"

@@ -2,7 +2,7 @@
 #include "animate/frame_plan.hpp"
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
-#include "cli/scene_setup.hpp"
+#include "cli/prepared_scene.hpp"
 #include "cli/watchdog.hpp"
 #include "image/png_write.hpp"
 #include "render/renderer.hpp"

@@ -1,7 +1,7 @@
 #include "bench/bench_report.hpp"
 #include "bench/explore_bench.hpp"
 #include "cli/commands.hpp"
-#include "cli/scene_setup.hpp"
+#include "cli/explorer_setup.hpp"
 #include "cli/watchdog.hpp"
 #include "io/atomic_file.hpp"
 #include "io/echo.hpp"

@@ -1,6 +1,6 @@
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
-#include "cli/scene_setup.hpp"
+#include "cli/scene_options.hpp"
 #include "io/cache_dirs.hpp"
 #include "render/kernel_cache.hpp"
 #include "render/memory_budget.hpp"

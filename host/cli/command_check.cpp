@@ -3,7 +3,7 @@
 // a check failed, 2 for usage errors.
 #include "check/scene_check.hpp"
 #include "cli/commands.hpp"
-#include "cli/scene_setup.hpp"
+#include "cli/scene_options.hpp"
 #include "io/atomic_file.hpp"
 
 #include <spdlog/spdlog.h>

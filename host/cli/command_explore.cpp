@@ -1,7 +1,7 @@
 #include "app/explorer.hpp"
 #include "app/game_loop.hpp"
 #include "cli/commands.hpp"
-#include "cli/scene_setup.hpp"
+#include "cli/explorer_setup.hpp"
 #include "ui/overlay.hpp"
 #include "ui/window.hpp"
 

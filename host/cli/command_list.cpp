@@ -1,5 +1,5 @@
 #include "cli/commands.hpp"
-#include "cli/scene_setup.hpp"
+#include "cli/scene_options.hpp"
 #include "io/log.hpp"
 #include "io/printable.hpp"
 #include "plugin/scene_instance.hpp"

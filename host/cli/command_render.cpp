@@ -1,6 +1,6 @@
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
-#include "cli/scene_setup.hpp"
+#include "cli/prepared_scene.hpp"
 #include "cli/watchdog.hpp"
 #include "image/exr_write.hpp"
 #include "image/png_write.hpp"

@@ -1,7 +1,7 @@
 #include "bench/frame_stats.hpp"
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
-#include "cli/scene_setup.hpp"
+#include "cli/prepared_scene.hpp"
 #include "io/atomic_file.hpp"
 #include "io/cache_dirs.hpp"
 #include "render/camera.hpp"

@@ -2,7 +2,7 @@
 // in a child process so that a DE that never returns hangs only this process, which the explorer
 // then kills (app/scene_vetting.hpp). Loads the one file, creates, updates at time 0, renders.
 #include "cli/commands.hpp"
-#include "cli/scene_setup.hpp"
+#include "cli/scene_options.hpp"
 #include "io/printable.hpp"
 #include "render/renderer.hpp"
 

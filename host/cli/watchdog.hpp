@@ -20,7 +20,7 @@ namespace fr {
 constexpr int kWatchdogExitStatus = 3;
 
 // A scene whose DE did not return: its test render before the command's own work ran out of
-// time (scene_setup.cpp). Ends the command with kWatchdogExitStatus, as the watchdog would.
+// time (prepared_scene.cpp). Ends the command with kWatchdogExitStatus, as the watchdog would.
 struct SceneHangError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };

@@ -1,8 +1,8 @@
-// scene_setup.hpp — what `render`, `bench` and `list` share: settings, plugin folders, choosing
-// the scene and device, and applying command-line overrides. Bad input becomes a UsageError.
+// scene_options.hpp — from command-line options to what commands share: settings, plugin
+// folders, choosing the scene and device, and applying command-line overrides. Bad input becomes
+// a UsageError.
 #pragma once
 
-#include "app/explorer.hpp"
 #include "cli/options.hpp"
 #include "path/camera_path.hpp"
 #include "plugin/plugin_loader.hpp"
@@ -44,6 +44,9 @@ std::filesystem::path user_scene_folder();
 std::vector<LoadOutcome> load_plugins(const std::vector<std::filesystem::path>& folders,
                                       const PluginPolicy& policy);
 
+// "unknown scene 'ID' (available: a, b)", the id echoed safely.
+UsageError unknown_scene(const std::string& id, const std::vector<std::string>& available);
+
 // The loaded scene with this id, or a UsageError listing the ids there are.
 std::shared_ptr<const LoadedScene> find_scene(const std::vector<LoadOutcome>& outcomes,
                                               const std::string& id);
@@ -57,53 +60,5 @@ RenderSettings render_settings_from(const Settings& settings, const ParsedOption
 
 // The device: --device, else settings' device.select, else the default rule.
 DeviceInfo choose_device(const Settings& settings, const ParsedOptions& options);
-
-}  // namespace fr
-
-namespace fr {
-
-// Everything a rendering command needs, set up from its options.
-struct PreparedScene {
-  Settings settings;
-  std::shared_ptr<const LoadedScene> scene;
-  std::unique_ptr<SceneInstance> instance;
-  SceneState state;
-  RenderSettings render;
-  DeviceInfo device;
-};
-
-// Settings, plugins (failures logged as warnings), scene (--scene, default mandelbulb), overrides,
-// device, and the scene's instance. Throws UsageError for bad input, runtime_error when the
-// scene's create callback fails.
-PreparedScene prepare_scene(const ParsedOptions& options, int max_side = kMaxImageSide);
-
-// The camera path `file` for scene `info`, or a UsageError "--path: FILE:LINE: problem".
-CameraPath load_path_option(const SceneInfo& info, const std::string& file);
-
-// Sets `state`'s camera and parameters from the camera path `file` (path/camera_path.hpp) at
-// the state's time, or at the path's start without --time. Throws a UsageError with the file's
-// FILE:LINE problem.
-void apply_camera_path(const SceneInfo& info, const std::string& file, const ParsedOptions& options,
-                       SceneState& state);
-
-// Throws a UsageError naming the limit when an image of the settings' size cannot be rendered on
-// `device` in this process (render/memory_budget.hpp); `all_passes`: every pass is read back.
-void check_memory(const RenderSettings& render, const DeviceInfo& device, bool all_passes);
-
-}  // namespace fr
-
-namespace fr {
-
-// An explorer session, as `explore` and `bench --explore` start it: settings (leniently: each
-// problem is reported on `err` and in the overlay, and that value keeps its default), window size
-// from --size or the settings, device, the scene library over the plugin folders, and the
-// explorer on --scene with the command line's overrides.
-struct ExplorerSetup {
-  Settings settings;
-  std::unique_ptr<ClRuntime> runtime;
-  std::unique_ptr<SceneLibrary> library;
-  std::unique_ptr<Explorer> explorer;
-};
-ExplorerSetup prepare_explorer(ParsedOptions options);
 
 }  // namespace fr

@@ -1,14 +1,9 @@
-#include "cli/scene_setup.hpp"
+#include "cli/scene_options.hpp"
 
-#include "app/scene_vetting.hpp"
-#include "cli/watchdog.hpp"
 #include "io/echo.hpp"
-#include "path/camera_path.hpp"
-#include "render/kernel_cache.hpp"
-#include "render/memory_budget.hpp"
-
 #include "io/printable.hpp"
 #include "render/camera.hpp"
+#include "render/kernel_cache.hpp"
 
 #include <spdlog/spdlog.h>
 
@@ -148,14 +143,12 @@ std::vector<LoadOutcome> load_plugins(const std::vector<std::filesystem::path>& 
   return outcomes;
 }
 
-namespace {
 UsageError unknown_scene(const std::string& id, const std::vector<std::string>& available) {
   std::string list;
   for (const auto& a : available) list += (list.empty() ? "" : ", ") + a;
   return UsageError("unknown scene '" + echo(id) +
                     "' (available: " + (list.empty() ? "none" : list) + ")");
 }
-}  // namespace
 
 std::shared_ptr<const LoadedScene> find_scene(const std::vector<LoadOutcome>& outcomes,
                                               const std::string& id) {
@@ -282,121 +275,6 @@ DeviceInfo choose_device(const Settings& settings, const ParsedOptions& options)
   auto device = select_device(devices, selector, &error);
   if (!device) throw UsageError(error);
   return *device;
-}
-
-}  // namespace fr
-
-namespace fr {
-
-CameraPath load_path_option(const SceneInfo& info, const std::string& file) {
-  std::vector<PathProblem> problems;
-  auto path = load_camera_path(file, info, &problems);
-  if (!path) {
-    std::string message = "--path: " + problems.front().to_string();
-    if (problems.size() > 1) message += " (and " + std::to_string(problems.size() - 1) + " more)";
-    throw UsageError(message);
-  }
-  return std::move(*path);
-}
-
-void apply_camera_path(const SceneInfo& info, const std::string& file, const ParsedOptions& options,
-                       SceneState& state) {
-  const CameraPath path = load_path_option(info, file);
-  if (!options.has("time")) state.time_s = path.start_s();
-  const PathSample sample = sample_camera_path(path, info, state.time_s);
-  state.camera = sample.camera;
-  state.params = sample.params;
-}
-
-void check_memory(const RenderSettings& render, const DeviceInfo& device, bool all_passes) {
-  const auto need = render_memory_need(render.width_px, render.height_px, all_passes);
-  if (const std::string problem = memory_problem(need, device); !problem.empty())
-    throw UsageError("--size " + std::to_string(render.width_px) + "x" +
-                     std::to_string(render.height_px) + ": " + problem);
-}
-
-PreparedScene prepare_scene(const ParsedOptions& options, int max_side) {
-  PreparedScene p;
-  p.settings = load_settings(options);
-  p.render = render_settings_from(p.settings, options, max_side);
-  const auto folders = plugin_folders(p.settings, options);
-  if (folders.empty())
-    throw std::runtime_error("no plugin folder found (build the plugins, or pass --plugins DIR)");
-  const auto outcomes = load_plugins(folders, p.settings.plugins);
-  p.scene = find_scene(outcomes, options.get("scene").value_or("mandelbulb"));
-  p.state = make_default_state(p.scene->info);
-  if (auto t = options.get("time")) p.state.time_s = parse_finite("--time", *t);
-  if (auto file = options.get("path")) apply_camera_path(p.scene->info, *file, options, p.state);
-  apply_scene_overrides(p.scene->info, options, p.state);
-  p.device = choose_device(p.settings, options);
-  if (p.render.precision == Precision::Double && !p.device.has_fp64)
-    throw UsageError("--precision double: device " + p.device.name + " has no double precision");
-  std::string error;
-  p.instance = SceneInstance::create(p.scene, &error);
-  if (!p.instance) throw std::runtime_error(error);
-  // A DE that never returns would hold this process until render.watchdog_s (nothing cancels a
-  // running kernel): first a test render in a child process, as the explorer does, once per file
-  // content. Not with isolation "none", which keeps everything in one process for a debugger.
-  if (p.settings.plugins.isolation != PluginIsolation::None) {
-    const VetResult vet =
-        vet_scene_once(p.scene->file, p.render, p.device.name, p.settings.plugins.vet_timeout_s);
-    if (!vet.ok) {
-      const std::string message = "scene '" + p.scene->info.id + "' (" +
-                                  printable(p.scene->file.string()) + "): " + vet.error;
-      if (vet.timed_out) throw SceneHangError(message);
-      throw std::runtime_error(message);
-    }
-  }
-  return p;
-}
-
-}  // namespace fr
-
-namespace fr {
-
-ExplorerSetup prepare_explorer(ParsedOptions options) {
-  ExplorerSetup x;
-  std::vector<SettingsProblem> problems;
-  x.settings = load_settings(options, &problems);
-  for (const auto& p : problems) spdlog::warn("{}", p.to_string());
-  if (!options.has("size"))
-    options.values["size"] = {std::to_string(x.settings.explorer.window_width_px) + "x" +
-                              std::to_string(x.settings.explorer.window_height_px)};
-  x.settings.render = render_settings_from(x.settings, options);
-  const auto folders = plugin_folders(x.settings, options);
-  if (folders.empty())
-    throw std::runtime_error("no plugin folder found (build the plugins, or pass --plugins DIR)");
-  const DeviceInfo device = choose_device(x.settings, options);
-  check_memory(x.settings.render, device, false);  // the window's size, at full resolution
-  x.runtime = std::make_unique<ClRuntime>(device);
-  std::vector<SceneEvent> events;
-  x.library = std::make_unique<SceneLibrary>(folders, x.settings.plugins, x.settings.render,
-                                             *x.runtime, &events);
-  // The scenes found at start are listed at debug level (-v): the overlay lists them, and the
-  // terminal says what fails and, later, what changes.
-  for (const SceneEvent& e : events) {
-    if (e.is_failure())
-      log_scene_event(e);
-    else
-      spdlog::debug("{}", e.to_string());
-  }
-  const std::string scene_id = options.get("scene").value_or("mandelbulb");
-  if (x.library->find(scene_id) < 0) {
-    std::vector<std::string> available;
-    for (const auto& slot : x.library->slots()) available.push_back(slot.scene->info.id);
-    throw unknown_scene(scene_id, available);
-  }
-  x.explorer = std::make_unique<Explorer>(x.settings, *x.runtime, *x.library, scene_id);
-  const SceneInfo& info = x.explorer->current().scene->info;
-  apply_scene_overrides(info, options, x.explorer->current().state);
-  if (auto file = options.get("path")) {  // explore --path: play it from the start
-    PathRecorder& recorder = x.explorer->path();
-    recorder.scene_id = info.id;
-    recorder.keyframes = load_path_option(info, *file).keyframes;
-    std::string error;
-    start_playback(recorder, info, &error);
-  }
-  return x;
 }
 
 }  // namespace fr

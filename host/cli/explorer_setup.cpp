@@ -1,0 +1,55 @@
+#include "cli/explorer_setup.hpp"
+
+#include "app/scene_library.hpp"
+#include "io/log.hpp"
+
+#include <spdlog/spdlog.h>
+
+namespace fr {
+
+ExplorerSetup prepare_explorer(ParsedOptions options) {
+  ExplorerSetup x;
+  std::vector<SettingsProblem> problems;
+  x.settings = load_settings(options, &problems);
+  for (const auto& p : problems) spdlog::warn("{}", p.to_string());
+  if (!options.has("size"))
+    options.values["size"] = {std::to_string(x.settings.explorer.window_width_px) + "x" +
+                              std::to_string(x.settings.explorer.window_height_px)};
+  x.settings.render = render_settings_from(x.settings, options);
+  const auto folders = plugin_folders(x.settings, options);
+  if (folders.empty())
+    throw std::runtime_error("no plugin folder found (build the plugins, or pass --plugins DIR)");
+  const DeviceInfo device = choose_device(x.settings, options);
+  check_memory(x.settings.render, device, false);  // the window's size, at full resolution
+  x.runtime = std::make_unique<ClRuntime>(device);
+  std::vector<SceneEvent> events;
+  x.library = std::make_unique<SceneLibrary>(folders, x.settings.plugins, x.settings.render,
+                                             *x.runtime, &events);
+  // The scenes found at start are listed at debug level (-v): the overlay lists them, and the
+  // terminal says what fails and, later, what changes.
+  for (const SceneEvent& e : events) {
+    if (e.is_failure())
+      log_scene_event(e);
+    else
+      spdlog::debug("{}", e.to_string());
+  }
+  const std::string scene_id = options.get("scene").value_or("mandelbulb");
+  if (x.library->find(scene_id) < 0) {
+    std::vector<std::string> available;
+    for (const auto& slot : x.library->slots()) available.push_back(slot.scene->info.id);
+    throw unknown_scene(scene_id, available);
+  }
+  x.explorer = std::make_unique<Explorer>(x.settings, *x.runtime, *x.library, scene_id);
+  const SceneInfo& info = x.explorer->current().scene->info;
+  apply_scene_overrides(info, options, x.explorer->current().state);
+  if (auto file = options.get("path")) {  // explore --path: play it from the start
+    PathRecorder& recorder = x.explorer->path();
+    recorder.scene_id = info.id;
+    recorder.keyframes = load_path_option(info, *file).keyframes;
+    std::string error;
+    start_playback(recorder, info, &error);
+  }
+  return x;
+}
+
+}  // namespace fr

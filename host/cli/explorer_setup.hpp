@@ -1,0 +1,23 @@
+// explorer_setup.hpp — an explorer session as `explore` and `bench --explore` start it.
+#pragma once
+
+#include "app/explorer.hpp"
+#include "cli/prepared_scene.hpp"
+
+#include <memory>
+
+namespace fr {
+
+// An explorer session, as `explore` and `bench --explore` start it: settings (leniently: each
+// problem is reported on `err` and in the overlay, and that value keeps its default), window size
+// from --size or the settings, device, the scene library over the plugin folders, and the
+// explorer on --scene with the command line's overrides.
+struct ExplorerSetup {
+  Settings settings;
+  std::unique_ptr<ClRuntime> runtime;
+  std::unique_ptr<SceneLibrary> library;
+  std::unique_ptr<Explorer> explorer;
+};
+ExplorerSetup prepare_explorer(ParsedOptions options);
+
+}  // namespace fr
