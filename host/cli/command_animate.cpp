@@ -1,8 +1,8 @@
 // `fractalis animate`: a scene along a camera path, to a video or a folder of numbered PNGs.
 #include "animate/frame_plan.hpp"
 #include "cli/commands.hpp"
-#include "cli/progress.hpp"
 #include "cli/prepared_scene.hpp"
+#include "cli/progress.hpp"
 #include "cli/watchdog.hpp"
 #include "image/png_write.hpp"
 #include "render/renderer.hpp"
@@ -16,6 +16,7 @@
 #include <fstream>
 #include <ostream>
 #include <sstream>
+#include <stdexcept>
 
 namespace fr {
 namespace {
@@ -160,10 +161,7 @@ int command_animate(const std::vector<std::string>& args, std::ostream& out, std
     p.state.params = sample.params;
     apply_scene_overrides(info, options, p.state);  // --param and the like hold for every frame
     p.state.time_s = t;
-    if (!p.instance->update(p.state, t, &error)) {
-      spdlog::error("{}", error);
-      return 1;
-    }
+    update_scene(p, t);
     for (int sample = 0; sample < std::max(1, p.render.samples); ++sample)
       renderer.render_sample(info, p.state, p.render, sample, Readback::DisplayAndSteps);
     renderer.finish(p.render, Readback::DisplayAndSteps, image);
@@ -175,14 +173,12 @@ int command_animate(const std::vector<std::string>& args, std::ostream& out, std
                                  : write_png_atomic(out_path / frame_file_name(i), image.width_px,
                                                     image.height_px, image.rgba8, &error);
     if (!written) {
-      spdlog::error("{}", error);
-      return 1;
+      throw std::runtime_error(error);
     }
     progress.update(++done);
   }
   if (encoder && !encoder->finish(&error)) {
-    spdlog::error("{}", error);
-    return 1;
+    throw std::runtime_error(error);
   }
   watchdog.stop();
   progress.finish();

@@ -13,6 +13,7 @@
 #include <chrono>
 #include <cstdio>
 #include <ostream>
+#include <stdexcept>
 
 namespace fr {
 namespace {
@@ -116,7 +117,7 @@ int command_bench(const std::vector<std::string>& args, std::ostream& out, std::
       p.state.params = sample.params;
       apply_scene_overrides(p.scene->info, options, p.state);
     }
-    if (!p.instance->update(p.state, time_s, &error)) throw std::runtime_error(error);
+    update_scene(p, time_s);
     renderer.render(p.scene->info, p.state, p.render);
     watchdog.kick();
   };
@@ -165,8 +166,7 @@ int command_bench(const std::vector<std::string>& args, std::ostream& out, std::
   text << format_bench_text(report);
   if (json_file) {
     if (!write_file_atomic(*json_file, format_bench_json(report), &error)) {
-      spdlog::error("{}", error);
-      return 1;
+      throw std::runtime_error(error);
     }
     text << "wrote " << *json_file << "\n";
   }

@@ -9,6 +9,7 @@
 
 #include <cstdlib>
 #include <ostream>
+#include <stdexcept>
 
 namespace fr {
 
@@ -31,8 +32,7 @@ int command_cache(const std::vector<std::string>& args, std::ostream& out,
   const Settings settings = load_settings(options);
   const auto base = fractalis_cache_dir();
   if (base.empty()) {
-    spdlog::error("no cache folder: neither XDG_CACHE_HOME nor HOME is set");
-    return 1;
+    throw std::runtime_error("no cache folder: neither XDG_CACHE_HOME nor HOME is set");
   }
   const char* pocl = std::getenv("POCL_CACHE_DIR");
   // main() set POCL_CACHE_DIR to ours unless the user had set it: then the kernels are theirs.

@@ -10,6 +10,7 @@
 
 #include <optional>
 #include <ostream>
+#include <stdexcept>
 
 namespace fr {
 
@@ -52,8 +53,7 @@ int command_check(const std::vector<std::string>& args, std::ostream& out, std::
   if (json_file) {
     std::string error;
     if (!write_file_atomic(*json_file, check_report_json(report), &error)) {
-      spdlog::error("{}", error);
-      return 1;
+      throw std::runtime_error(error);
     }
   }
   return report.failed() ? 1 : 0;

@@ -5,6 +5,7 @@
 #include <spdlog/spdlog.h>
 
 #include <ostream>
+#include <stdexcept>
 
 namespace fr {
 
@@ -20,8 +21,7 @@ int command_devices(const std::vector<std::string>& args, std::ostream& out,
   }
   const auto devices = list_devices();
   if (devices.empty()) {
-    spdlog::error("no OpenCL device found (is pocl-opencl-icd installed?)");
-    return 1;
+    throw std::runtime_error("no OpenCL device found (is pocl-opencl-icd installed?)");
   }
   std::string error;
   const auto chosen = select_device(devices, "", &error);

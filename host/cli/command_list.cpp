@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <ostream>
 #include <set>
+#include <stdexcept>
 
 namespace fr {
 namespace {
@@ -74,8 +75,7 @@ int command_list(const std::vector<std::string>& args, std::ostream& out,
   const Settings settings = load_settings(options);
   const auto folders = plugin_folders(settings, options);
   if (folders.empty()) {
-    spdlog::error("no plugin folder found (build the plugins, or pass --plugins DIR)");
-    return 1;
+    throw std::runtime_error("no plugin folder found (build the plugins, or pass --plugins DIR)");
   }
   for (const auto& f : folders) out << "plugin folder: " << f.string() << "\n";
   bool any_failed = false;

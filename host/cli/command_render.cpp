@@ -1,6 +1,6 @@
 #include "cli/commands.hpp"
-#include "cli/progress.hpp"
 #include "cli/prepared_scene.hpp"
+#include "cli/progress.hpp"
 #include "cli/watchdog.hpp"
 #include "image/exr_write.hpp"
 #include "image/png_write.hpp"
@@ -21,6 +21,7 @@
 #include <chrono>
 #include <filesystem>
 #include <ostream>
+#include <stdexcept>
 
 namespace fr {
 namespace {
@@ -134,11 +135,7 @@ int command_render(const std::vector<std::string>& args, std::ostream& out, std:
   PreparedScene p = prepare_scene(options, kMaxPosterSide);
   p.render.count_evaluations = options.has("counts");
 
-  std::string error;
-  if (!p.instance->update(p.state, p.state.time_s, &error)) {
-    spdlog::error("{}", error);
-    return 1;
-  }
+  update_scene(p, p.state.time_s);
   std::ostream& report = is_standard_output(out_file) ? err : out;
   if (static_cast<uint64_t>(p.render.width_px) * p.render.height_px >
       poster_band_pixels(out_file)) {
@@ -164,10 +161,10 @@ int command_render(const std::vector<std::string>& args, std::ostream& out, std:
   FrameImage image = renderer.render(p.scene->info, p.state, p.render, true);
   const double render_ms = ms_since(render_start);
   watchdog.stop();
+  std::string error;
   if (exr ? !write_exr_atomic(out_file, image, &error)
           : !write_png_atomic(out_file, image.width_px, image.height_px, image.rgba8, &error)) {
-    spdlog::error("{}", error);
-    return 1;
+    throw std::runtime_error(error);
   }
   // `--out /dev/stdout | viewer`: the PNG is the output, the report goes to stderr.
   report << "rendered " << p.scene->info.id << " " << image.width_px << "x" << image.height_px

@@ -1,7 +1,7 @@
 #include "bench/frame_stats.hpp"
 #include "cli/commands.hpp"
-#include "cli/progress.hpp"
 #include "cli/prepared_scene.hpp"
+#include "cli/progress.hpp"
 #include "io/atomic_file.hpp"
 #include "io/cache_dirs.hpp"
 #include "render/camera.hpp"
@@ -22,6 +22,7 @@
 #include <cstdlib>
 #include <ostream>
 #include <sstream>
+#include <stdexcept>
 
 namespace fr {
 namespace {
@@ -142,11 +143,7 @@ int command_sweep(const std::vector<std::string>& args, std::ostream& out, std::
   }
   check_out_dir(out_dir);
 
-  std::string error;
-  if (!p.instance->update(p.state, p.state.time_s, &error)) {
-    spdlog::error("{}", error);
-    return 1;
-  }
+  update_scene(p, p.state.time_s);
   ClRuntime runtime(p.device);
   Renderer renderer(runtime);
   SweepResult result;
@@ -248,13 +245,13 @@ int command_sweep(const std::vector<std::string>& args, std::ostream& out, std::
                 result.reference.convergence_mae, result.reference.convergence_depth_px);
   out << line << format_sweep_table(result);
   for (const auto& note : result.notes) out << "note: " << note << "\n";
+  std::string error;
   for (const auto& [file, text] :
        {std::pair<const char*, std::string>{"sweep.csv", format_sweep_csv(result)},
         {"sweep.json", format_sweep_json(result)},
         {"sweep.svg", format_sweep_svg(result)}}) {
     if (!write_file_atomic(out_dir / file, text, &error)) {
-      spdlog::error("{}", error);
-      return 1;
+      throw std::runtime_error(error);
     }
   }
   out << "wrote " << (out_dir / "sweep.csv").string() << ", sweep.json, sweep.svg\n";

@@ -9,6 +9,7 @@
 #include <spdlog/spdlog.h>
 
 #include <ostream>
+#include <stdexcept>
 
 namespace fr {
 
@@ -27,15 +28,13 @@ int command_vet_scene(const std::vector<std::string>& args, std::ostream& out, s
   const Settings settings = load_settings(options);
   const LoadOutcome o = load_scene_plugin(*file, settings.plugins);
   if (!o.scene) {
-    spdlog::error("{}: {}", printable(*file), o.message);
-    return 1;
+    throw std::runtime_error(printable(*file) + ": " + o.message);
   }
   std::string error;
   auto instance = SceneInstance::create(o.scene, &error);
   SceneState state = make_default_state(o.scene->info);
   if (!instance || !instance->update(state, 0, &error)) {
-    spdlog::error("{}", error);
-    return 1;
+    throw std::runtime_error(error);
   }
   ClRuntime runtime(choose_device(settings, options));
   Renderer renderer(runtime);

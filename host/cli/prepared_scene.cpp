@@ -71,4 +71,9 @@ PreparedScene prepare_scene(const ParsedOptions& options, int max_side) {
   return p;
 }
 
+void update_scene(PreparedScene& p, double time_s) {
+  std::string error;
+  if (!p.instance->update(p.state, time_s, &error)) throw std::runtime_error(error);
+}
+
 }  // namespace fr

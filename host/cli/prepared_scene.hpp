@@ -23,6 +23,11 @@ struct PreparedScene {
 // scene's create callback fails.
 PreparedScene prepare_scene(const ParsedOptions& options, int max_side = kMaxImageSide);
 
+// Runs the scene's update callback at `time_s` on p.state; a failure (the plugin's error, or its
+// scene host's crash or time-out) is a std::runtime_error, the one error channel of the commands
+// (cli.cpp prints it and exits 1).
+void update_scene(PreparedScene& p, double time_s);
+
 // The camera path `file` for scene `info`, or a UsageError "--path: FILE:LINE: problem".
 CameraPath load_path_option(const SceneInfo& info, const std::string& file);
 
