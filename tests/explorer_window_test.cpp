@@ -142,6 +142,8 @@ TEST_F(ExplorerWindow, SceneSwitchChangesTheImageAndKeepsState) {
 TEST_F(ExplorerWindow, OverlayDraws) {
   const auto plain = settle();
   OverlayState overlay;
+  // The panel fits its rows: ImGui measures them on its first frame and shows it from the next.
+  window->present(nullptr, [&] { draw_overlay(*explorer, overlay); });
   window->capture_next_frame();
   window->present(nullptr, [&] { draw_overlay(*explorer, overlay); });
   int w = 0, h = 0;
@@ -242,6 +244,48 @@ TEST_F(ExplorerWindow, QuitEndsTheLoop) {
   steps.update = [&](const InputState& in, double dt) { explorer->update(in, dt, 0); };
   steps.render = [&] { window->present(explorer->render(kW, kH), {}); };
   EXPECT_EQ(run_game_loop(steps, 100), 0) << "the quit event ends the loop before any frame";
+}
+
+// The overlay at the window sizes the explorer is made for, every section open: its text grows
+// with the window (a line is at least 13 px per 720 px of height, so a 4K window does not get
+// a postage stamp), and the panel is as wide as its widest row, so no label is cut. At 720p,
+// before the panel fitted its rows, labels were cut ("Colour (deep o"). The pictures are kept
+// in the build folder (overlay_WxH.png) to look at.
+TEST(OverlayOnEveryScreen, ReadableWithNoLabelCut) {
+  ASSERT_TRUE(display_available()) << "run under xvfb-run";
+  std::vector<SceneEvent> events;
+  SceneLibrary library({SCENE_PLUGIN_DIR}, PluginPolicy{}, RenderSettings{}, test::runtime(),
+                       &events);
+  for (const auto& [w, h] : std::vector<std::pair<int, int>>{
+           {1280, 720}, {1366, 768}, {1920, 1080}, {2560, 1440}, {3840, 2160}}) {
+    SCOPED_TRACE(std::to_string(w) + "x" + std::to_string(h));
+    Window window("Fractalis overlay test", w, h, false);
+    ASSERT_EQ(window.height_px(), h) << "the X server's screen must hold the window";
+    for (const char* scene : {"mandelbulb", "benchmark"}) {
+      Explorer explorer(Settings{}, test::runtime(), library, scene);
+      OverlayState overlay;
+      overlay.expand_all = true;
+      for (int frame = 0; frame < 3; ++frame) {  // auto-fit settles over a frame or two
+        if (frame == 2) window.capture_next_frame();
+        window.present(nullptr, [&] { draw_overlay(explorer, overlay); });
+      }
+      const OverlayLayout& l = overlay.layout;
+      EXPECT_GE(l.font_px, 13.0f * std::max(1.0f, h / 720.0f) * 0.99f) << scene;
+      EXPECT_LE(l.content_width_px, l.visible_width_px + 1) << scene << ": a label is cut";
+      EXPECT_LE(l.panel_height_px, h) << scene;
+      EXPECT_LT(l.panel_width_px, 0.75f * w) << scene << ": the panel leaves the view visible";
+      if (std::string(scene) == "benchmark") {
+        int cw = 0, ch = 0;
+        const auto& pixels = window.captured(&cw, &ch);
+        std::string error;
+        EXPECT_TRUE(write_png_atomic(
+            std::filesystem::path(TEST_OUTPUT_DIR) /
+                ("overlay_" + std::to_string(w) + "x" + std::to_string(h) + ".png"),
+            cw, ch, pixels, &error))
+            << error;
+      }
+    }
+  }
 }
 
 }  // namespace

@@ -7,8 +7,10 @@
 #include "settings/settings_table.hpp"
 
 #include <imgui.h>
+#include <imgui_internal.h>
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -115,13 +117,24 @@ bool edit_setting(const SettingSpec& spec, Settings& settings) {
 
 void draw_overlay(Explorer& explorer, OverlayState& overlay) {
   if (!overlay.visible) return;
-  ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(360, 560), ImGuiCond_FirstUseEver);
+  // The panel takes the width its widest row needs (so no label is cut; the window layer scales
+  // text and spacing with the window, ui/window.hpp's overlay_scale) and at most the window's
+  // height, scrolling beyond it.
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  const float margin = 10 * ImGui::GetIO().FontGlobalScale;
+  ImGui::SetNextWindowPos(ImVec2(margin, margin), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(std::max(display.x - 2 * margin, 1.0f),
+                                                           std::max(display.y - 2 * margin, 1.0f)));
   // Labels name the keys in force ([controls.keys] may add some); "###id" keeps ImGui's ids
   // the same whatever the label says.
   const KeyBindings& keys = overlay.keys;
   const std::string title = "Fractalis (" + keys.label(Action::ToggleOverlay) + " hides)###main";
-  ImGui::Begin(title.c_str());
+  ImGui::Begin(title.c_str(), nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+  const bool expand_all = overlay.expand_all;
+  auto section = [expand_all](const char* name, ImGuiTreeNodeFlags flags = 0) {
+    if (expand_all) ImGui::SetNextItemOpen(true, ImGuiCond_Always);
+    return ImGui::CollapsingHeader(name, flags);
+  };
   const ExplorerStats& st = explorer.stats();
   ImGui::Text("%.1f ms/frame (%.0f fps), scale %.2f, sample %d%s", st.frame_ms,
               st.frame_ms > 0 ? 1000.0 / st.frame_ms : 0.0, st.resolution_scale, st.sample_index,
@@ -132,7 +145,7 @@ void draw_overlay(Explorer& explorer, OverlayState& overlay) {
   ImGui::TextColored(many ? ImVec4(1, 0.6f, 0.2f, 1) : ImVec4(0.7f, 0.7f, 0.7f, 1),
                      "%.2f%% of rays out of steps%s; %s", 100 * st.out_of_steps_fraction,
                      many ? " (raise Max steps)" : "", precision_name(st.precision));
-  if (ImGui::CollapsingHeader("DE evaluations by stage")) {
+  if (section("DE evaluations by stage")) {
     bool counting = explorer.count_evaluations();
     if (ImGui::Checkbox("Count them (a slower kernel)", &counting))
       explorer.set_count_evaluations(counting);
@@ -165,8 +178,7 @@ void draw_overlay(Explorer& explorer, OverlayState& overlay) {
   for (int i = 0; i < static_cast<int>(info.params.size()); ++i)
     groups[info.params[i].group].push_back(i);
   for (const auto& [group, indices] : groups) {
-    if (!ImGui::CollapsingHeader(group.empty() ? "Parameters" : group.c_str(),
-                                 ImGuiTreeNodeFlags_DefaultOpen))
+    if (!section(group.empty() ? "Parameters" : group.c_str(), ImGuiTreeNodeFlags_DefaultOpen))
       continue;
     for (int i : indices) {
       ImGui::PushID(i);
@@ -178,7 +190,7 @@ void draw_overlay(Explorer& explorer, OverlayState& overlay) {
     }
   }
 
-  if (ImGui::CollapsingHeader("Rendering")) {
+  if (section("Rendering")) {
     bool changed = false;
     ImGui::TextDisabled("this scene uses: %s", stage_names(info.features).c_str());
     for (const SettingSpec& spec : settings_table())
@@ -197,7 +209,7 @@ void draw_overlay(Explorer& explorer, OverlayState& overlay) {
     }
   }
 
-  if (ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen)) {
+  if (section("Camera", ImGuiTreeNodeFlags_DefaultOpen)) {
     fr_camera& c = slot.state.camera;
     ImGui::Text("eye    %.4f, %.4f, %.4f", c.eye[0], c.eye[1], c.eye[2]);
     ImGui::Text("target %.4f, %.4f, %.4f", c.target[0], c.target[1], c.target[2]);
@@ -226,7 +238,7 @@ void draw_overlay(Explorer& explorer, OverlayState& overlay) {
     }
   }
 
-  if (ImGui::CollapsingHeader("Camera path")) {
+  if (section("Camera path")) {
     PathRecorder& path = explorer.path();
     const size_t keyframes = path.scene_id == info.id ? path.keyframes.size() : 0;
     ImGui::Text("%zu keyframes%s", keyframes,
@@ -261,7 +273,7 @@ void draw_overlay(Explorer& explorer, OverlayState& overlay) {
     }
   }
 
-  if (ImGui::CollapsingHeader("Screenshot")) {
+  if (section("Screenshot")) {
     ImGui::Checkbox("At window size", &overlay.screenshot_at_window_size);
     if (!overlay.screenshot_at_window_size)
       ImGui::InputInt2("Size", overlay.screenshot_size.data());
@@ -274,6 +286,14 @@ void draw_overlay(Explorer& explorer, OverlayState& overlay) {
   }
   // The same messages the terminal shows (io/log.hpp), newest last.
   for (const std::string& m : recent_log_messages(8)) ImGui::TextWrapped("%s", m.c_str());
+  // (CursorMaxPos: the extent of everything laid out, labels past the edge included.)
+  const ImGuiWindow* panel = ImGui::GetCurrentWindow();
+  overlay.layout.font_px = ImGui::GetFontSize();
+  overlay.layout.panel_width_px = panel->Size.x;
+  overlay.layout.panel_height_px = panel->Size.y;
+  overlay.layout.content_width_px =
+      std::max(panel->DC.IdealMaxPos.x, panel->DC.CursorMaxPos.x) - panel->DC.CursorStartPos.x;
+  overlay.layout.visible_width_px = panel->ContentRegionRect.GetWidth();
   ImGui::End();
 }
 

@@ -13,8 +13,19 @@
 
 namespace fr {
 
+// What the last draw_overlay laid out: the tests check from it that the panel is readable at
+// every window size (text height, and no label cut by the panel's edge).
+struct OverlayLayout {
+  float font_px = 0;  // height of a line of text, pixels
+  float panel_width_px = 0, panel_height_px = 0;
+  float content_width_px = 0;  // the widest row laid out (widget and label)
+  float visible_width_px = 0;  // the panel's content area
+};
+
 struct OverlayState {
   bool visible = true;
+  bool expand_all = false;  // every section open (the tests' view of every label)
+  OverlayLayout layout;
   std::vector<fr_camera> bookmarks;
   std::array<int, 2> screenshot_size{1920, 1080};
   // The screenshot's file: a PNG, or an OpenEXR file with its passes when named *.exr.

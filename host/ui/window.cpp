@@ -7,6 +7,7 @@
 #include <backends/imgui_impl_sdlrenderer.h>
 #include <imgui.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <stdexcept>
 
@@ -137,6 +138,18 @@ void Window::present(const FrameImage* image, const std::function<void()>& draw_
     }
     SDL_UpdateTexture(texture_, nullptr, image->rgba8.data(), image->width_px * 4);
   }
+  // The overlay follows the window's size and the display's density.
+  float dpi = 0;
+  if (SDL_GetDisplayDPI(SDL_GetWindowDisplayIndex(window_), &dpi, nullptr, nullptr) != 0) dpi = 0;
+  const float scale = overlay_scale(height_px(), dpi);
+  if (scale != ui_scale_) {
+    ImGuiStyle style;
+    ImGui::StyleColorsDark(&style);
+    style.ScaleAllSizes(scale);
+    ImGui::GetStyle() = style;
+    ImGui::GetIO().FontGlobalScale = scale;
+    ui_scale_ = scale;
+  }
   ImGui_ImplSDLRenderer_NewFrame();
   ImGui_ImplSDL2_NewFrame();
   ImGui::NewFrame();
@@ -155,6 +168,12 @@ void Window::present(const FrameImage* image, const std::function<void()>& draw_
     capture_ = false;
   }
   SDL_RenderPresent(renderer_);
+}
+
+float overlay_scale(int height_px, float dpi) {
+  const float by_size = static_cast<float>(height_px) / 720.0f;
+  const float by_density = dpi > 0 ? dpi / 96.0f : 1.0f;
+  return std::clamp(std::max(by_size, by_density), 1.0f, 4.0f);
 }
 
 }  // namespace fr
