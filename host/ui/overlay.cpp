@@ -113,6 +113,186 @@ bool edit_setting(const SettingSpec& spec, Settings& settings) {
   return true;
 }
 
+// A section's header; every section open when the overlay asks (the tests' view of all labels).
+bool section(const OverlayState& overlay, const char* name, ImGuiTreeNodeFlags flags = 0) {
+  if (overlay.expand_all) ImGui::SetNextItemOpen(true, ImGuiCond_Always);
+  return ImGui::CollapsingHeader(name, flags);
+}
+
+void draw_statistics(Explorer& explorer, const OverlayState& overlay) {
+  const ExplorerStats& st = explorer.stats();
+  ImGui::Text("%.1f ms/frame (%.0f fps), scale %.2f, sample %d%s", st.frame_ms,
+              st.frame_ms > 0 ? 1000.0 / st.frame_ms : 0.0, st.resolution_scale, st.sample_index,
+              st.refined ? " (refined)" : "");
+  ImGui::Text("%.1f DE steps/pixel, surface %.4g away", st.de_steps_per_pixel, st.surface_distance);
+  // Never silent: rays out of steps and the precision in use, in warning colour when it matters.
+  const bool many = 100 * st.out_of_steps_fraction > kOutOfStepsWarnPercent;
+  ImGui::TextColored(many ? ImVec4(1, 0.6f, 0.2f, 1) : ImVec4(0.7f, 0.7f, 0.7f, 1),
+                     "%.2f%% of rays out of steps%s; %s", 100 * st.out_of_steps_fraction,
+                     many ? " (raise Max steps)" : "", precision_name(st.precision));
+  if (!section(overlay, "DE evaluations by stage")) return;
+  bool counting = explorer.count_evaluations();
+  if (ImGui::Checkbox("Count them (a slower kernel)", &counting))
+    explorer.set_count_evaluations(counting);
+  if (counting && st.eval_counts.samples > 0) {
+    ImGui::Text("per pixel, busy lanes (lanes %d)", st.eval_counts.lanes);
+    for (const StageCount& c : stage_counts(st.eval_counts))
+      ImGui::Text("%s %-15s %7.2f %5.1f%%",
+                  c.bounce == 0 ? "primary " : ("bounce " + std::to_string(c.bounce)).c_str(),
+                  c.stage.c_str(), c.evals_per_pixel, 100 * c.utilisation);
+    ImGui::Text("total %24.2f %5.1f%%", total_evals_per_pixel(st.eval_counts),
+                100 * total_utilisation(st.eval_counts));
+  }
+}
+
+// The scene list, the current scene's error, and its parameters grouped as it declares them.
+void draw_scene(Explorer& explorer, const OverlayState& overlay) {
+  auto& slots = explorer.library().slots();
+  if (ImGui::BeginCombo("Scene", explorer.current().scene->info.name.c_str())) {
+    for (int i = 0; i < static_cast<int>(slots.size()); ++i) {
+      std::string label = slots[i].scene->info.name + (slots[i].removed ? " (removed)" : "");
+      if (ImGui::Selectable(label.c_str(), i == explorer.current_index())) explorer.select_scene(i);
+    }
+    ImGui::EndCombo();
+  }
+  SceneSlot& slot = explorer.current();
+  if (!slot.error.empty()) ImGui::TextColored(ImVec4(1, 0.45f, 0.35f, 1), "%s", slot.error.c_str());
+  const SceneInfo& info = slot.scene->info;
+  std::map<std::string, std::vector<int>> groups;
+  for (int i = 0; i < static_cast<int>(info.params.size()); ++i)
+    groups[info.params[i].group].push_back(i);
+  for (const auto& [group, indices] : groups) {
+    if (!section(overlay, group.empty() ? "Parameters" : group.c_str(),
+                 ImGuiTreeNodeFlags_DefaultOpen))
+      continue;
+    for (int i : indices) {
+      ImGui::PushID(i);
+      if (edit_param(info.params[i], slot.state.params[i])) {
+        clamp_params(info, slot.state.params);
+        explorer.mark_changed();
+      }
+      ImGui::PopID();
+    }
+  }
+}
+
+void draw_rendering(Explorer& explorer, const OverlayState& overlay) {
+  if (!section(overlay, "Rendering")) return;
+  bool changed = false;
+  ImGui::TextDisabled("this scene uses: %s",
+                      stage_names(explorer.current().scene->info.features).c_str());
+  for (const SettingSpec& spec : settings_table())
+    if (spec.label) changed |= edit_setting(spec, explorer.settings());
+  if (changed) explorer.mark_changed();
+  // Written atomically (temporary file, then rename): a crash never leaves half a file.
+  if (!overlay.settings_file.empty() && ImGui::Button("Save settings")) {
+    std::error_code ec;
+    std::filesystem::create_directories(overlay.settings_file.parent_path(), ec);
+    std::string error;
+    if (write_file_atomic(overlay.settings_file,
+                          format_settings_toml(explorer.settings(), kSavedFileHeader), &error))
+      spdlog::info("saved settings to {}", overlay.settings_file.string());
+    else
+      spdlog::error("{}", error);
+  }
+}
+
+void draw_camera(Explorer& explorer, OverlayState& overlay) {
+  if (!section(overlay, "Camera", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  const KeyBindings& keys = overlay.keys;
+  fr_camera& c = explorer.current().state.camera;
+  ImGui::Text("eye    %.4f, %.4f, %.4f", c.eye[0], c.eye[1], c.eye[2]);
+  ImGui::Text("target %.4f, %.4f, %.4f", c.target[0], c.target[1], c.target[2]);
+  ImGui::Text("mode: %s (%s), mouse look: %s (%s)",
+              explorer.camera_mode() == CameraMode::Fly ? "fly" : "orbit",
+              keys.label(Action::ToggleCameraMode).c_str(), explorer.mouse_look() ? "on" : "off",
+              keys.label(Action::ToggleMouseLook).c_str());
+  float fov = static_cast<float>(c.fov_deg);
+  if (ImGui::SliderFloat("Field of view", &fov, 10, 120, "%.0f deg")) {
+    c.fov_deg = fov;
+    explorer.mark_changed();
+  }
+  if (ImGui::Button("Bookmark view")) overlay.bookmarks.push_back(c);
+  for (size_t i = 0; i < overlay.bookmarks.size(); ++i) {
+    ImGui::SameLine();
+    ImGui::PushID(static_cast<int>(i));
+    if (ImGui::Button(std::to_string(i + 1).c_str())) {
+      c = overlay.bookmarks[i];
+      explorer.mark_changed();
+    }
+    ImGui::PopID();
+  }
+  if (ImGui::Button("Reset view")) {
+    c = explorer.current().scene->info.camera;
+    explorer.mark_changed();
+  }
+}
+
+void draw_camera_path(Explorer& explorer, OverlayState& overlay) {
+  if (!section(overlay, "Camera path")) return;
+  const KeyBindings& keys = overlay.keys;
+  const SceneInfo& info = explorer.current().scene->info;
+  PathRecorder& path = explorer.path();
+  const size_t keyframes = path.scene_id == info.id ? path.keyframes.size() : 0;
+  ImGui::Text("%zu keyframes%s", keyframes,
+              path.playing ? fmt::format(", playing: {:.1f} s", path.play_s).c_str() : "");
+  float spacing = static_cast<float>(path.spacing_s);
+  if (ImGui::SliderFloat("Seconds between keyframes", &spacing, 0.1f, 30.0f, "%.1f s",
+                         ImGuiSliderFlags_Logarithmic))
+    path.spacing_s = spacing;
+  // Labels name the keys in force; "###id" keeps ImGui's id the same whatever the label says.
+  const std::string add = "Add keyframe (" + keys.label(Action::AddKeyframe) + ")###add";
+  if (ImGui::Button(add.c_str())) add_keyframe(path, info, explorer.current().state);
+  ImGui::SameLine();
+  if (ImGui::Button("Remove last")) remove_last_keyframe(path);
+  ImGui::SameLine();
+  const std::string play =
+      std::string(path.playing ? "Stop (" : "Play (") + keys.label(Action::PlayPath) + ")###play";
+  if (ImGui::Button(play.c_str())) toggle_playback(path, info);
+  ImGui::InputText("File", overlay.path_file.data(), overlay.path_file.size());
+  std::string error;
+  if (ImGui::Button("Save path")) {
+    if (save_recorded_path(path, info, overlay.path_file.data(), &error))
+      spdlog::info("saved the camera path to {}", overlay.path_file.data());
+    else
+      spdlog::error("cannot save the path: {}", error);
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Load path")) {
+    if (load_recorded_path(path, info, overlay.path_file.data(), &error))
+      spdlog::info("loaded {} keyframes from {}", path.keyframes.size(), overlay.path_file.data());
+    else
+      spdlog::error("cannot load the path: {}", error);
+  }
+}
+
+void draw_screenshot(OverlayState& overlay) {
+  if (!section(overlay, "Screenshot")) return;
+  ImGui::Checkbox("At window size", &overlay.screenshot_at_window_size);
+  if (!overlay.screenshot_at_window_size) ImGui::InputInt2("Size", overlay.screenshot_size.data());
+  ImGui::InputText("Screenshot file", overlay.screenshot_file.data(),
+                   overlay.screenshot_file.size());
+  const std::string shot =
+      "Save screenshot (" + overlay.keys.label(Action::Screenshot) + ")###shot";
+  if (ImGui::Button(shot.c_str())) overlay.screenshot_requested = true;
+  ImGui::SameLine();
+  ImGui::TextUnformatted(".png, or .exr with passes");
+}
+
+// What the panel laid out this frame (CursorMaxPos: the extent of everything, labels past the
+// edge included).
+OverlayLayout measure_layout() {
+  const ImGuiWindow* panel = ImGui::GetCurrentWindow();
+  OverlayLayout l;
+  l.font_px = ImGui::GetFontSize();
+  l.panel_width_px = panel->Size.x;
+  l.panel_height_px = panel->Size.y;
+  l.content_width_px =
+      std::max(panel->DC.IdealMaxPos.x, panel->DC.CursorMaxPos.x) - panel->DC.CursorStartPos.x;
+  l.visible_width_px = panel->ContentRegionRect.GetWidth();
+  return l;
+}
+
 }  // namespace
 
 void draw_overlay(Explorer& explorer, OverlayState& overlay) {
@@ -125,175 +305,18 @@ void draw_overlay(Explorer& explorer, OverlayState& overlay) {
   ImGui::SetNextWindowPos(ImVec2(margin, margin), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(std::max(display.x - 2 * margin, 1.0f),
                                                            std::max(display.y - 2 * margin, 1.0f)));
-  // Labels name the keys in force ([controls.keys] may add some); "###id" keeps ImGui's ids
-  // the same whatever the label says.
-  const KeyBindings& keys = overlay.keys;
-  const std::string title = "Fractalis (" + keys.label(Action::ToggleOverlay) + " hides)###main";
+  const std::string title =
+      "Fractalis (" + overlay.keys.label(Action::ToggleOverlay) + " hides)###main";
   ImGui::Begin(title.c_str(), nullptr, ImGuiWindowFlags_AlwaysAutoResize);
-  const bool expand_all = overlay.expand_all;
-  auto section = [expand_all](const char* name, ImGuiTreeNodeFlags flags = 0) {
-    if (expand_all) ImGui::SetNextItemOpen(true, ImGuiCond_Always);
-    return ImGui::CollapsingHeader(name, flags);
-  };
-  const ExplorerStats& st = explorer.stats();
-  ImGui::Text("%.1f ms/frame (%.0f fps), scale %.2f, sample %d%s", st.frame_ms,
-              st.frame_ms > 0 ? 1000.0 / st.frame_ms : 0.0, st.resolution_scale, st.sample_index,
-              st.refined ? " (refined)" : "");
-  ImGui::Text("%.1f DE steps/pixel, surface %.4g away", st.de_steps_per_pixel, st.surface_distance);
-  // Never silent: rays out of steps and the precision in use, in warning colour when it matters.
-  const bool many = 100 * st.out_of_steps_fraction > kOutOfStepsWarnPercent;
-  ImGui::TextColored(many ? ImVec4(1, 0.6f, 0.2f, 1) : ImVec4(0.7f, 0.7f, 0.7f, 1),
-                     "%.2f%% of rays out of steps%s; %s", 100 * st.out_of_steps_fraction,
-                     many ? " (raise Max steps)" : "", precision_name(st.precision));
-  if (section("DE evaluations by stage")) {
-    bool counting = explorer.count_evaluations();
-    if (ImGui::Checkbox("Count them (a slower kernel)", &counting))
-      explorer.set_count_evaluations(counting);
-    if (counting && st.eval_counts.samples > 0) {
-      ImGui::Text("per pixel, busy lanes (lanes %d)", st.eval_counts.lanes);
-      for (const StageCount& c : stage_counts(st.eval_counts))
-        ImGui::Text("%s %-15s %7.2f %5.1f%%",
-                    c.bounce == 0 ? "primary " : ("bounce " + std::to_string(c.bounce)).c_str(),
-                    c.stage.c_str(), c.evals_per_pixel, 100 * c.utilisation);
-      ImGui::Text("total %24.2f %5.1f%%", total_evals_per_pixel(st.eval_counts),
-                  100 * total_utilisation(st.eval_counts));
-    }
-  }
-
-  // Scenes.
-  auto& slots = explorer.library().slots();
-  if (ImGui::BeginCombo("Scene", explorer.current().scene->info.name.c_str())) {
-    for (int i = 0; i < static_cast<int>(slots.size()); ++i) {
-      std::string label = slots[i].scene->info.name + (slots[i].removed ? " (removed)" : "");
-      if (ImGui::Selectable(label.c_str(), i == explorer.current_index())) explorer.select_scene(i);
-    }
-    ImGui::EndCombo();
-  }
-  SceneSlot& slot = explorer.current();
-  if (!slot.error.empty()) ImGui::TextColored(ImVec4(1, 0.45f, 0.35f, 1), "%s", slot.error.c_str());
-
-  // Parameters, grouped as the scene declares them.
-  const SceneInfo& info = slot.scene->info;
-  std::map<std::string, std::vector<int>> groups;
-  for (int i = 0; i < static_cast<int>(info.params.size()); ++i)
-    groups[info.params[i].group].push_back(i);
-  for (const auto& [group, indices] : groups) {
-    if (!section(group.empty() ? "Parameters" : group.c_str(), ImGuiTreeNodeFlags_DefaultOpen))
-      continue;
-    for (int i : indices) {
-      ImGui::PushID(i);
-      if (edit_param(info.params[i], slot.state.params[i])) {
-        clamp_params(info, slot.state.params);
-        explorer.mark_changed();
-      }
-      ImGui::PopID();
-    }
-  }
-
-  if (section("Rendering")) {
-    bool changed = false;
-    ImGui::TextDisabled("this scene uses: %s", stage_names(info.features).c_str());
-    for (const SettingSpec& spec : settings_table())
-      if (spec.label) changed |= edit_setting(spec, explorer.settings());
-    if (changed) explorer.mark_changed();
-    // Written atomically (temporary file, then rename): a crash never leaves half a file.
-    if (!overlay.settings_file.empty() && ImGui::Button("Save settings")) {
-      std::error_code ec;
-      std::filesystem::create_directories(overlay.settings_file.parent_path(), ec);
-      std::string error;
-      if (write_file_atomic(overlay.settings_file,
-                            format_settings_toml(explorer.settings(), kSavedFileHeader), &error))
-        spdlog::info("saved settings to {}", overlay.settings_file.string());
-      else
-        spdlog::error("{}", error);
-    }
-  }
-
-  if (section("Camera", ImGuiTreeNodeFlags_DefaultOpen)) {
-    fr_camera& c = slot.state.camera;
-    ImGui::Text("eye    %.4f, %.4f, %.4f", c.eye[0], c.eye[1], c.eye[2]);
-    ImGui::Text("target %.4f, %.4f, %.4f", c.target[0], c.target[1], c.target[2]);
-    ImGui::Text("mode: %s (%s), mouse look: %s (%s)",
-                explorer.camera_mode() == CameraMode::Fly ? "fly" : "orbit",
-                keys.label(Action::ToggleCameraMode).c_str(), explorer.mouse_look() ? "on" : "off",
-                keys.label(Action::ToggleMouseLook).c_str());
-    float fov = static_cast<float>(c.fov_deg);
-    if (ImGui::SliderFloat("Field of view", &fov, 10, 120, "%.0f deg")) {
-      c.fov_deg = fov;
-      explorer.mark_changed();
-    }
-    if (ImGui::Button("Bookmark view")) overlay.bookmarks.push_back(c);
-    for (size_t i = 0; i < overlay.bookmarks.size(); ++i) {
-      ImGui::SameLine();
-      ImGui::PushID(static_cast<int>(i));
-      if (ImGui::Button(std::to_string(i + 1).c_str())) {
-        c = overlay.bookmarks[i];
-        explorer.mark_changed();
-      }
-      ImGui::PopID();
-    }
-    if (ImGui::Button("Reset view")) {
-      c = info.camera;
-      explorer.mark_changed();
-    }
-  }
-
-  if (section("Camera path")) {
-    PathRecorder& path = explorer.path();
-    const size_t keyframes = path.scene_id == info.id ? path.keyframes.size() : 0;
-    ImGui::Text("%zu keyframes%s", keyframes,
-                path.playing ? fmt::format(", playing: {:.1f} s", path.play_s).c_str() : "");
-    float spacing = static_cast<float>(path.spacing_s);
-    if (ImGui::SliderFloat("Seconds between keyframes", &spacing, 0.1f, 30.0f, "%.1f s",
-                           ImGuiSliderFlags_Logarithmic))
-      path.spacing_s = spacing;
-    const std::string add = "Add keyframe (" + keys.label(Action::AddKeyframe) + ")###add";
-    if (ImGui::Button(add.c_str())) add_keyframe(path, info, slot.state);
-    ImGui::SameLine();
-    if (ImGui::Button("Remove last")) remove_last_keyframe(path);
-    ImGui::SameLine();
-    const std::string play =
-        std::string(path.playing ? "Stop (" : "Play (") + keys.label(Action::PlayPath) + ")###play";
-    if (ImGui::Button(play.c_str())) toggle_playback(path, info);
-    ImGui::InputText("File", overlay.path_file.data(), overlay.path_file.size());
-    std::string error;
-    if (ImGui::Button("Save path")) {
-      if (save_recorded_path(path, info, overlay.path_file.data(), &error))
-        spdlog::info("saved the camera path to {}", overlay.path_file.data());
-      else
-        spdlog::error("cannot save the path: {}", error);
-    }
-    ImGui::SameLine();
-    if (ImGui::Button("Load path")) {
-      if (load_recorded_path(path, info, overlay.path_file.data(), &error))
-        spdlog::info("loaded {} keyframes from {}", path.keyframes.size(),
-                     overlay.path_file.data());
-      else
-        spdlog::error("cannot load the path: {}", error);
-    }
-  }
-
-  if (section("Screenshot")) {
-    ImGui::Checkbox("At window size", &overlay.screenshot_at_window_size);
-    if (!overlay.screenshot_at_window_size)
-      ImGui::InputInt2("Size", overlay.screenshot_size.data());
-    ImGui::InputText("Screenshot file", overlay.screenshot_file.data(),
-                     overlay.screenshot_file.size());
-    const std::string shot = "Save screenshot (" + keys.label(Action::Screenshot) + ")###shot";
-    if (ImGui::Button(shot.c_str())) overlay.screenshot_requested = true;
-    ImGui::SameLine();
-    ImGui::TextUnformatted(".png, or .exr with passes");
-  }
+  draw_statistics(explorer, overlay);
+  draw_scene(explorer, overlay);
+  draw_rendering(explorer, overlay);
+  draw_camera(explorer, overlay);
+  draw_camera_path(explorer, overlay);
+  draw_screenshot(overlay);
   // The same messages the terminal shows (io/log.hpp), newest last.
   for (const std::string& m : recent_log_messages(8)) ImGui::TextWrapped("%s", m.c_str());
-  // (CursorMaxPos: the extent of everything laid out, labels past the edge included.)
-  const ImGuiWindow* panel = ImGui::GetCurrentWindow();
-  overlay.layout.font_px = ImGui::GetFontSize();
-  overlay.layout.panel_width_px = panel->Size.x;
-  overlay.layout.panel_height_px = panel->Size.y;
-  overlay.layout.content_width_px =
-      std::max(panel->DC.IdealMaxPos.x, panel->DC.CursorMaxPos.x) - panel->DC.CursorStartPos.x;
-  overlay.layout.visible_width_px = panel->ContentRegionRect.GetWidth();
+  overlay.layout = measure_layout();
   ImGui::End();
 }
 
