@@ -30,132 +30,113 @@ bool ident_char(char c) {
   return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
 }
 
-SourceScan scan_source(std::string_view s) {
-  SourceScan out;
-  const size_t n = s.size();
+// A position in the text, with its line.
+struct Cursor {
+  std::string_view s;
   size_t i = 0;
   int line = 1;
-  bool line_start = true;
+  bool at_end() const { return i >= s.size(); }
+  bool starts(const char* two) const {
+    return i + 1 < s.size() && s[i] == two[0] && s[i + 1] == two[1];
+  }
+};
+
+// At "/*": past its "*/"; false (and the comment's line noted) when it never closes.
+bool skip_block_comment(Cursor& c, SourceScan& out) {
+  const int start = c.line;
+  c.i += 2;
+  while (c.i + 1 < c.s.size() && !c.starts("*/")) c.line += c.s[c.i++] == '\n';
+  if (c.i + 1 >= c.s.size()) {
+    out.open_comment_line = start;
+    c.i = c.s.size();
+    return false;
+  }
+  c.i += 2;
+  return true;
+}
+
+// At a quote: past the string or character literal (or to the end of its line).
+void skip_quoted(Cursor& c) {
+  const char q = c.s[c.i++];
+  while (!c.at_end() && c.s[c.i] != q && c.s[c.i] != '\n')
+    c.i += (c.s[c.i] == '\\' && c.i + 1 < c.s.size()) ? 2 : 1;
+  if (!c.at_end() && c.s[c.i] == q) ++c.i;
+}
+
+std::string read_identifier(Cursor& c) {
+  std::string word;
+  while (!c.at_end() && ident_char(c.s[c.i])) word += c.s[c.i++];
+  return word;
+}
+
+// At a line's "#": the directive's word and first name, then the rest of its logical line
+// (continuations, comments and quotes in it).
+void scan_directive(Cursor& c, SourceScan& out) {
+  const int line = c.line;
+  auto blanks = [&] {
+    while (!c.at_end() && (c.s[c.i] == ' ' || c.s[c.i] == '\t')) ++c.i;
+  };
+  ++c.i;
+  blanks();
+  const std::string word = read_identifier(c);
+  blanks();
+  const std::string name = read_identifier(c);
+  while (!c.at_end() && c.s[c.i] != '\n') {
+    if (c.starts("\\\n")) {
+      c.i += 2;
+      ++c.line;
+    } else if (c.starts("/*")) {
+      if (!skip_block_comment(c, out)) return;
+    } else if (c.starts("//")) {
+      while (!c.at_end() && c.s[c.i] != '\n') ++c.i;
+    } else if (c.s[c.i] == '"' || c.s[c.i] == '\'') {
+      skip_quoted(c);
+    } else {
+      ++c.i;
+    }
+  }
+  if (word == "if" || word == "ifdef" || word == "ifndef") {
+    out.open_if_lines.push_back(line);
+  } else if (word == "endif") {
+    if (!out.open_if_lines.empty())
+      out.open_if_lines.pop_back();
+    else if (!out.stray_endif_line)
+      out.stray_endif_line = line;
+  } else if ((word == "define" || word == "undef") && !name.empty()) {
+    out.names.push_back({line, word, name});
+  }
+}
+
+// What code at file scope defines: a function is a name, "(...)" and then "{"; a type follows
+// "struct", "union" or "enum", or ends a typedef.
+struct FileScope {
   int brace = 0, paren = 0;
-  int brace_line = 0, paren_line = 0;
-  std::string last_ident, candidate;  // candidate: the name before a file-scope '('
-  bool after_params = false;          // a file-scope ')' just closed the candidate's parameters
-  bool in_typedef = false;
+  int brace_line = 0, paren_line = 0;  // of the outermost open one
+  std::string last_ident, candidate;   // candidate: the name before a file-scope '('
+  bool after_params = false;           // a file-scope ')' just closed the candidate's parameters
+  bool in_typedef = false, after_struct = false;
   std::string statement_last;  // last identifier of the file-scope statement (typedef's name)
-  bool after_struct = false;
 
-  auto skip_block_comment = [&](size_t& k) {  // k at "/*"; returns false if never closed
-    const int start = line;
-    k += 2;
-    while (k + 1 < n && !(s[k] == '*' && s[k + 1] == '/')) line += s[k++] == '\n';
-    if (k + 1 >= n) {
-      out.open_comment_line = start;
-      k = n;
-      return false;
+  void identifier(const std::string& word, int line, SourceScan& out) {
+    if (brace == 0 && paren == 0) {
+      if (word == "typedef") in_typedef = true;
+      if (after_struct) out.names.push_back({line, "type", word});
+      after_struct = word == "struct" || word == "union" || word == "enum";
+      statement_last = word;
     }
-    k += 2;
-    return true;
-  };
-  auto skip_quoted = [&](size_t& k) {  // k at the opening quote; stops at its end or the line's
-    const char q = s[k++];
-    while (k < n && s[k] != q && s[k] != '\n') k += (s[k] == '\\' && k + 1 < n) ? 2 : 1;
-    if (k < n && s[k] == q) ++k;
-  };
+    last_ident = word;
+    after_params = false;
+  }
 
-  while (i < n) {
-    const char c = s[i];
-    if (c == '\n') {
-      ++line;
-      line_start = true;
-      ++i;
-      continue;
-    }
-    if (c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v') {
-      ++i;
-      continue;
-    }
-    if (c == '\\' && i + 1 < n && s[i + 1] == '\n') {  // a continuation outside a directive
-      i += 2;
-      ++line;
-      continue;
-    }
-    if (c == '/' && i + 1 < n && s[i + 1] == '*') {
-      if (!skip_block_comment(i)) break;
-      continue;
-    }
-    if (c == '/' && i + 1 < n && s[i + 1] == '/') {
-      while (i < n && s[i] != '\n') ++i;
-      continue;
-    }
-    if (line_start && c == '#') {
-      // A directive: its word and first name, then the rest of its logical line.
-      const int directive_line = line;
-      ++i;
-      while (i < n && (s[i] == ' ' || s[i] == '\t')) ++i;
-      std::string word, name;
-      while (i < n && ident_char(s[i])) word += s[i++];
-      while (i < n && (s[i] == ' ' || s[i] == '\t')) ++i;
-      while (i < n && ident_char(s[i])) name += s[i++];
-      while (i < n && s[i] != '\n') {
-        if (s[i] == '\\' && i + 1 < n && s[i + 1] == '\n') {
-          i += 2;
-          ++line;
-        } else if (s[i] == '/' && i + 1 < n && s[i + 1] == '*') {
-          if (!skip_block_comment(i)) break;
-        } else if (s[i] == '/' && i + 1 < n && s[i + 1] == '/') {
-          while (i < n && s[i] != '\n') ++i;
-        } else if (s[i] == '"' || s[i] == '\'') {
-          skip_quoted(i);
-        } else {
-          ++i;
-        }
-      }
-      if (word == "if" || word == "ifdef" || word == "ifndef") {
-        out.open_if_lines.push_back(directive_line);
-      } else if (word == "endif") {
-        if (out.open_if_lines.empty()) {
-          if (!out.stray_endif_line) out.stray_endif_line = directive_line;
-        } else {
-          out.open_if_lines.pop_back();
-        }
-      } else if ((word == "define" || word == "undef") && !name.empty()) {
-        out.names.push_back({directive_line, word, name});
-      }
-      continue;
-    }
-    line_start = false;
-    if (c == '"' || c == '\'') {
-      skip_quoted(i);
-      after_params = false;
-      continue;
-    }
-    if (ident_start(c)) {
-      std::string word;
-      while (i < n && ident_char(s[i])) word += s[i++];
-      if (brace == 0 && paren == 0) {
-        if (word == "typedef") in_typedef = true;
-        if (after_struct) out.names.push_back({line, "type", word});
-        after_struct = word == "struct" || word == "union" || word == "enum";
-        statement_last = word;
-      }
-      last_ident = word;
-      after_params = false;
-      continue;
-    }
-    ++i;
-    switch (c) {
+  void punctuation(char ch, int line, SourceScan& out) {
+    bool keep_after_params = false;
+    switch (ch) {
       case '(':
-        if (brace == 0 && paren == 0) {
-          candidate = last_ident;
-          paren_line = line;
-        }
+        if (brace == 0 && paren == 0) candidate = last_ident, paren_line = line;
         ++paren;
         break;
       case ')':
-        if (paren > 0 && --paren == 0 && brace == 0) {
-          after_params = true;
-          continue;  // keep after_params for the next token
-        }
+        if (paren > 0 && --paren == 0 && brace == 0) keep_after_params = true;
         break;
       case '{':
         if (brace == 0) {
@@ -179,12 +160,49 @@ SourceScan scan_source(std::string_view s) {
       default:
         break;
     }
-    after_params = false;
+    after_params = keep_after_params;
     after_struct = false;
     last_ident.clear();
   }
-  if (brace > 0) out.open_brace_line = brace_line;
-  if (paren > 0) out.open_paren_line = paren_line;
+};
+
+SourceScan scan_source(std::string_view text) {
+  SourceScan out;
+  Cursor c{text};
+  FileScope scope;
+  bool line_start = true;
+  while (!c.at_end()) {
+    const char ch = c.s[c.i];
+    if (ch == '\n') {
+      ++c.line;
+      line_start = true;
+      ++c.i;
+    } else if (ch == ' ' || ch == '\t' || ch == '\r' || ch == '\f' || ch == '\v') {
+      ++c.i;
+    } else if (c.starts("\\\n")) {  // a continuation outside a directive
+      c.i += 2;
+      ++c.line;
+    } else if (c.starts("/*")) {
+      if (!skip_block_comment(c, out)) break;
+    } else if (c.starts("//")) {
+      while (!c.at_end() && c.s[c.i] != '\n') ++c.i;
+    } else if (line_start && ch == '#') {
+      scan_directive(c, out);
+    } else {
+      line_start = false;
+      if (ch == '"' || ch == '\'') {
+        skip_quoted(c);
+        scope.after_params = false;
+      } else if (ident_start(ch)) {
+        scope.identifier(read_identifier(c), c.line, out);
+      } else {
+        ++c.i;
+        scope.punctuation(ch, c.line, out);
+      }
+    }
+  }
+  if (scope.brace > 0) out.open_brace_line = scope.brace_line;
+  if (scope.paren > 0) out.open_paren_line = scope.paren_line;
   return out;
 }
 
