@@ -56,9 +56,7 @@ AnimationIdentity identity_of(const PreparedScene& p, const ParsedOptions& optio
   };
 }
 
-}  // namespace
-
-int command_animate(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+std::vector<OptionSpec> animate_option_specs() {
   auto specs = scene_option_specs();
   // The path gives each frame's time.
   specs.erase(std::remove_if(specs.begin(), specs.end(),
@@ -71,6 +69,131 @@ int command_animate(const std::vector<std::string>& args, std::ostream& out, std
   specs.push_back(
       {"force", nullptr, false, "render a PNG folder anew instead of resuming where it stopped"});
   specs.push_back({"help", nullptr, false, "show this help"});
+  return specs;
+}
+
+// One animation, checked before anything is rendered: the scene, the path, the frames, where
+// they go.
+struct AnimateJob {
+  PreparedScene p;
+  std::string path_file;
+  CameraPath path;
+  std::optional<AnimationFrames> plan;
+  int fps = 24;
+  std::filesystem::path out_path;
+  const VideoFormat* video = nullptr;  // null: a folder of PNG frames
+};
+
+AnimateJob plan_animation(const ParsedOptions& options) {
+  AnimateJob job;
+  const auto path_file = options.get("path");
+  if (!path_file) throw UsageError("animate: --path FILE is required (a camera path)");
+  job.path_file = *path_file;
+  const auto out_name = options.get("out");
+  if (!out_name || out_name->empty()) throw UsageError("animate: --out OUT is required");
+  job.fps = static_cast<int>(parse_integer("--fps", options.get("fps").value_or("24"), 1, 240));
+  job.out_path = *out_name;
+  while (job.out_path.has_parent_path() && !job.out_path.has_filename())  // "frames/": "frames"
+    job.out_path = job.out_path.parent_path();
+  job.video = video_format_for(job.out_path);
+  const std::string extension = job.out_path.extension().string();
+  if (!job.video && is_other_media_extension(extension))
+    throw UsageError("--out " + job.out_path.string() + ": fractalis does not write '" + extension +
+                     "' (videos: " + video_extension_list() +
+                     "; any other name is a folder of PNG frames)");
+  if (job.video) {
+    check_output_file("--out", job.out_path.string());
+    if (options.has("force"))
+      throw UsageError("--force: only a PNG folder resumes; a video is always written anew");
+  }
+  job.p = prepare_scene(options, kMaxImageSide);
+  const RenderSettings& r = job.p.render;
+  if (job.video && (r.width_px % 2 != 0 || r.height_px % 2 != 0))
+    throw UsageError("--size " + std::to_string(r.width_px) + "x" + std::to_string(r.height_px) +
+                     ": " + job.video->codec + " video in yuv420p needs an even width and height");
+  job.path = load_path_option(job.p.scene->info, job.path_file);
+  std::string problem;
+  job.plan = plan_frames(job.path.start_s(), job.path.end_s(), job.fps, &problem);
+  if (!job.plan) throw UsageError("--fps " + std::to_string(job.fps) + ": " + problem);
+  if (job.plan->ends_early)
+    spdlog::info(
+        "the path's {:.6g} s are not a whole number of frames at {} fps: the last frame "
+        "shows {:.6g} s, before the closing keyframe",
+        job.path.end_s() - job.path.start_s(), job.fps, job.plan->time_s(job.plan->frames - 1));
+  check_memory(r, job.p.device, false);
+  return job;
+}
+
+// What the frames showed, for the report.
+struct AnimateStats {
+  int rendered = 0;
+  size_t out_of_steps = 0, pixels = 0;
+};
+
+// Renders the frames not there yet, each into the encoder or its PNG, under the watchdog.
+AnimateStats render_frames(AnimateJob& job, const ParsedOptions& options, VideoEncoder* encoder,
+                           const SequenceState* sequence, std::ostream& err) {
+  PreparedScene& p = job.p;
+  const SceneInfo& info = p.scene->info;
+  ClRuntime runtime(p.device);
+  Renderer renderer(runtime);
+  Watchdog watchdog(p.render.watchdog_s, "rendering scene '" + info.id + "'");
+  const int already = sequence ? sequence->done : 0;
+  Progress progress(err, "frame", job.plan->frames, already);
+  AnimateStats stats;
+  FrameImage image;  // reused: no allocation per frame
+  std::string error;
+  for (int i = 0; i < job.plan->frames; ++i) {
+    if (sequence && sequence->frame_done[i]) continue;
+    const double t = job.plan->time_s(i);
+    const PathSample sample = sample_camera_path(job.path, info, t);
+    p.state.camera = sample.camera;
+    p.state.params = sample.params;
+    apply_scene_overrides(info, options, p.state);  // --param and the like hold for every frame
+    p.state.time_s = t;
+    update_scene(p, t);
+    for (int s = 0; s < std::max(1, p.render.samples); ++s)
+      renderer.render_sample(info, p.state, p.render, s, Readback::DisplayAndSteps);
+    renderer.finish(p.render, Readback::DisplayAndSteps, image);
+    watchdog.kick();
+    const RayCounts rays = count_rays(image);
+    stats.out_of_steps += rays.out_of_steps;
+    stats.pixels += image.ray_status.size();
+    const bool written = encoder
+                             ? encoder->add_frame(image.rgba8, &error)
+                             : write_png_atomic(job.out_path / frame_file_name(i), image.width_px,
+                                                image.height_px, image.rgba8, &error);
+    if (!written) throw std::runtime_error(error);
+    ++stats.rendered;
+    progress.update(already + stats.rendered);
+  }
+  if (encoder && !encoder->finish(&error)) throw std::runtime_error(error);
+  watchdog.stop();
+  progress.finish();
+  return stats;
+}
+
+void report_animation(const AnimateJob& job, const AnimateStats& stats, double seconds,
+                      std::ostream& out) {
+  const RenderSettings& r = job.p.render;
+  out << "rendered " << stats.rendered << (stats.rendered == 1 ? " frame of " : " frames of ")
+      << job.p.scene->info.id << " at " << r.width_px << "x" << r.height_px << ", " << job.fps
+      << " fps on " << job.p.device.name << " in " << static_cast<int>(seconds + 0.5)
+      << " s; wrote " << job.out_path.string();
+  if (job.video)
+    out << " (" << job.video->codec << ", " << job.plan->frames
+        << (job.plan->frames == 1 ? " frame, " : " frames, ")
+        << static_cast<double>(job.plan->frames) / job.fps << " s)";
+  out << "\n";
+  if (stats.pixels > 0 && 100.0 * stats.out_of_steps / stats.pixels > kOutOfStepsWarnPercent)
+    spdlog::warn("{:.2f}% of rays ran out of steps (render.max_steps = {}); raise render.max_steps",
+                 100.0 * stats.out_of_steps / stats.pixels, r.max_steps);
+}
+
+}  // namespace
+
+int command_animate(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  const auto specs = animate_option_specs();
   auto options = parse_options("animate", args, specs);
   if (options.has("help")) {
     out << "usage: fractalis animate --path FILE --out OUT [--scene ID] [--fps N] [--size WxH]\n"
@@ -87,116 +210,34 @@ int command_animate(const std::vector<std::string>& args, std::ostream& out, std
         << "  fractalis animate --scene menger --path orbit.toml --fps 24 --out frames/\n";
     return 0;
   }
-  const auto path_file = options.get("path");
-  if (!path_file) throw UsageError("animate: --path FILE is required (a camera path)");
-  const auto out_name = options.get("out");
-  if (!out_name || out_name->empty()) throw UsageError("animate: --out OUT is required");
-  const int fps =
-      static_cast<int>(parse_integer("--fps", options.get("fps").value_or("24"), 1, 240));
-  std::filesystem::path out_path(*out_name);
-  while (out_path.has_parent_path() && !out_path.has_filename())  // "frames/" names "frames"
-    out_path = out_path.parent_path();
-  const VideoFormat* video = video_format_for(out_path);
-  if (!video && is_other_media_extension(out_path.extension().string()))
-    throw UsageError("--out " + out_path.string() + ": fractalis does not write '" +
-                     out_path.extension().string() + "' (videos: " + video_extension_list() +
-                     "; any other name is a folder of PNG frames)");
-  if (video) {
-    check_output_file("--out", out_path.string());
-    if (options.has("force"))
-      throw UsageError("--force: only a PNG folder resumes; a video is always written anew");
-  }
-
-  PreparedScene p = prepare_scene(options, kMaxImageSide);
-  if (video && (p.render.width_px % 2 != 0 || p.render.height_px % 2 != 0))
-    throw UsageError("--size " + std::to_string(p.render.width_px) + "x" +
-                     std::to_string(p.render.height_px) + ": " + video->codec +
-                     " video in yuv420p needs an even width and height");
-  const SceneInfo& info = p.scene->info;
-  const CameraPath path = load_path_option(info, *path_file);
-  std::string problem;
-  const auto plan = plan_frames(path.start_s(), path.end_s(), fps, &problem);
-  if (!plan) throw UsageError("--fps " + std::to_string(fps) + ": " + problem);
-  if (plan->ends_early)
-    spdlog::info(
-        "the path's {:.6g} s are not a whole number of frames at {} fps: the last frame "
-        "shows {:.6g} s, before the closing keyframe",
-        path.end_s() - path.start_s(), fps, plan->time_s(plan->frames - 1));
-  check_memory(p.render, p.device, false);
-
+  AnimateJob job = plan_animation(options);
+  const RenderSettings& r = job.p.render;
   std::optional<SequenceState> sequence;
   std::unique_ptr<VideoEncoder> encoder;
-  std::string error;
-  if (video) {
-    encoder = VideoEncoder::open(out_path, p.render.width_px, p.render.height_px, fps, &error);
+  if (job.video) {
+    std::string error;
+    encoder = VideoEncoder::open(job.out_path, r.width_px, r.height_px, job.fps, &error);
     if (!encoder) throw std::runtime_error(error);
   } else {
-    sequence = prepare_sequence_folder(out_path, identity_of(p, options, *path_file, fps), *plan,
-                                       p.render.width_px, p.render.height_px, options.has("force"),
-                                       &problem);
+    std::string problem;
+    sequence =
+        prepare_sequence_folder(job.out_path, identity_of(job.p, options, job.path_file, job.fps),
+                                *job.plan, r.width_px, r.height_px, options.has("force"), &problem);
     if (!sequence) throw UsageError("--out: " + problem);
-    if (sequence->done == plan->frames) {
-      out << "all " << plan->frames << " frames of " << out_path.string()
+    if (sequence->done == job.plan->frames) {
+      out << "all " << job.plan->frames << " frames of " << job.out_path.string()
           << " are there already (--force renders them anew)\n";
       return 0;
     }
     if (sequence->done > 0)
-      out << "resuming: " << sequence->done << " of " << plan->frames << " frames are there\n";
+      out << "resuming: " << sequence->done << " of " << job.plan->frames << " frames are there\n";
   }
-
-  ClRuntime runtime(p.device);
-  Renderer renderer(runtime);
-  Watchdog watchdog(p.render.watchdog_s, "rendering scene '" + info.id + "'");
   const auto start = std::chrono::steady_clock::now();
-  const int already = sequence ? sequence->done : 0;
-  Progress progress(err, "frame", plan->frames, already);
-  int done = already;
-  FrameImage image;  // reused: no allocation per frame
-  size_t out_of_steps = 0, pixels = 0;
-  for (int i = 0; i < plan->frames; ++i) {
-    if (sequence && sequence->frame_done[i]) continue;
-    const double t = plan->time_s(i);
-    const PathSample sample = sample_camera_path(path, info, t);
-    p.state.camera = sample.camera;
-    p.state.params = sample.params;
-    apply_scene_overrides(info, options, p.state);  // --param and the like hold for every frame
-    p.state.time_s = t;
-    update_scene(p, t);
-    for (int sample = 0; sample < std::max(1, p.render.samples); ++sample)
-      renderer.render_sample(info, p.state, p.render, sample, Readback::DisplayAndSteps);
-    renderer.finish(p.render, Readback::DisplayAndSteps, image);
-    watchdog.kick();
-    const RayCounts rays = count_rays(image);
-    out_of_steps += rays.out_of_steps;
-    pixels += image.ray_status.size();
-    const bool written = encoder ? encoder->add_frame(image.rgba8, &error)
-                                 : write_png_atomic(out_path / frame_file_name(i), image.width_px,
-                                                    image.height_px, image.rgba8, &error);
-    if (!written) {
-      throw std::runtime_error(error);
-    }
-    progress.update(++done);
-  }
-  if (encoder && !encoder->finish(&error)) {
-    throw std::runtime_error(error);
-  }
-  watchdog.stop();
-  progress.finish();
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const int rendered = done - already;
-  out << "rendered " << rendered << (rendered == 1 ? " frame of " : " frames of ") << info.id
-      << " at " << p.render.width_px << "x" << p.render.height_px << ", " << fps << " fps on "
-      << p.device.name << " in " << static_cast<int>(seconds + 0.5) << " s; wrote "
-      << out_path.string();
-  if (video)
-    out << " (" << video->codec << ", " << plan->frames
-        << (plan->frames == 1 ? " frame, " : " frames, ") << static_cast<double>(plan->frames) / fps
-        << " s)";
-  out << "\n";
-  if (pixels > 0 && 100.0 * out_of_steps / pixels > kOutOfStepsWarnPercent)
-    spdlog::warn("{:.2f}% of rays ran out of steps (render.max_steps = {}); raise render.max_steps",
-                 100.0 * out_of_steps / pixels, p.render.max_steps);
+  const AnimateStats stats =
+      render_frames(job, options, encoder.get(), sequence ? &*sequence : nullptr, err);
+  report_animation(job, stats,
+                   std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+                   out);
   return 0;
 }
 
