@@ -46,9 +46,7 @@ int bench_explore(ParsedOptions options, std::ostream& out,
   return 0;
 }
 
-}  // namespace
-
-int command_bench(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+std::vector<OptionSpec> bench_option_specs() {
   auto specs = scene_option_specs();
   specs.push_back({"frames", "N", false, "timed frames per run (default 30)"});
   specs.push_back({"runs", "N", false, "runs of the whole path (default 3)"});
@@ -64,6 +62,113 @@ int command_bench(const std::vector<std::string>& args, std::ostream& out, std::
        "measure the explorer instead: a scripted fly-through at --size (default\n"
        "                                 1280x720), fps while moving, time to full quality"});
   specs.push_back({"help", nullptr, false, "show this help"});
+  return specs;
+}
+
+// A benchmark, checked before it runs: the scene, its path, how many frames, where JSON goes.
+struct BenchJob {
+  PreparedScene p;
+  std::optional<CameraPath> path;
+  int frames = 30, runs = 3;
+  double duration_s = 10;
+  std::optional<std::string> json_file;
+};
+
+BenchJob plan_bench(ParsedOptions& options) {
+  BenchJob job;
+  job.frames =
+      static_cast<int>(parse_integer("--frames", options.get("frames").value_or("30"), 1, 100000));
+  job.runs = static_cast<int>(parse_integer("--runs", options.get("runs").value_or("3"), 1, 1000));
+  job.duration_s = parse_finite("--duration", options.get("duration").value_or("10"));
+  if (!(job.duration_s >= 0))
+    throw UsageError("--duration: expected seconds >= 0, got " + echo(*options.get("duration")));
+  if (!options.has("scene")) options.values["scene"] = {"benchmark"};
+  if (!options.has("path") && options.get("scene") == "benchmark")
+    options.values["path"] = {shipped_path_file("benchmark.toml").string()};
+  job.json_file = options.get("json");
+  // Checked before the benchmark runs, not after.
+  if (job.json_file) check_output_file("--json", *job.json_file);
+  job.p = prepare_scene(options);
+  if (auto file = options.get("path")) job.path = load_path_option(job.p.scene->info, *file);
+  check_memory(job.p.render, job.p.device, false);
+  return job;
+}
+
+// The warm-up frame, the timed runs, then one run again with the counting kernel (untimed).
+BenchReport run_bench(BenchJob& job, const ParsedOptions& options) {
+  PreparedScene& p = job.p;
+  ClRuntime runtime(p.device);
+  Renderer renderer(runtime);
+  Watchdog watchdog(p.render.watchdog_s, "a frame of scene '" + p.scene->info.id + "'");
+  auto frame = [&](double time_s) {
+    if (job.path) {  // run time t is the path's start + t (clamped to its end)
+      const PathSample sample =
+          sample_camera_path(*job.path, p.scene->info, job.path->start_s() + time_s);
+      p.state.camera = sample.camera;
+      p.state.params = sample.params;
+      apply_scene_overrides(p.scene->info, options, p.state);
+    }
+    update_scene(p, time_s);
+    renderer.render(p.scene->info, p.state, p.render);
+    watchdog.kick();
+  };
+  using clock = std::chrono::steady_clock;
+  const auto origin = clock::now();
+  auto now_ms = [&] {
+    return std::chrono::duration<double, std::milli>(clock::now() - origin).count();
+  };
+  BenchReport report;
+  const double warm_start = now_ms();
+  frame(0);  // builds the kernel
+  report.kernel_build_ms = now_ms() - warm_start;
+  std::vector<double> all;
+  const double wall_start = now_ms();
+  for (int run = 0; run < job.runs; ++run) {
+    auto times = time_frames(
+        job.frames, [&](int i) { frame(job.duration_s * i / job.frames); }, now_ms);
+    report.run_mean_ms.push_back(summarize_frames(times).mean_ms);
+    all.insert(all.end(), times.begin(), times.end());
+  }
+  report.wall_s = (now_ms() - wall_start) / 1000.0;
+  // Where the evaluations went: the frames of one run again, with a counting kernel (untimed).
+  p.render.count_evaluations = true;
+  for (int i = 0; i < job.frames; ++i) {
+    frame(job.duration_s * i / job.frames);
+    add_eval_counts(report.counts, renderer.eval_counts());
+  }
+  p.render.count_evaluations = false;
+  report.stats = summarize_frames(all);
+  report.lanes = renderer.lanes_for(p.render);
+  return report;
+}
+
+// The rest of the report (what ran, where), then the text and, with --json, the file.
+void report_bench(const BenchJob& job, BenchReport& report, std::ostream& out, std::ostream& err) {
+  const PreparedScene& p = job.p;
+  report.scene_id = p.scene->info.id;
+  report.scene_version = p.scene->info.version;
+  report.width_px = p.render.width_px;
+  report.height_px = p.render.height_px;
+  report.precision = precision_name(p.render.precision);
+  report.stages = stage_names(make_kernel_config(p.scene->info, p.render, report.lanes).stages);
+  report.runs = job.runs;
+  report.frames_per_run = job.frames;
+  report.path_duration_s = job.duration_s;
+  if (job.path) report.camera_path = job.path->file;
+  report.system = read_system_info(p.device);
+  std::ostream& text = job.json_file && is_standard_output(*job.json_file) ? err : out;
+  text << format_bench_text(report);
+  if (!job.json_file) return;
+  std::string error;
+  if (!write_file_atomic(*job.json_file, format_bench_json(report), &error))
+    throw std::runtime_error(error);
+  text << "wrote " << *job.json_file << "\n";
+}
+
+}  // namespace
+
+int command_bench(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  const auto specs = bench_option_specs();
   auto options = parse_options("bench", args, specs);
   if (options.has("help")) {
     out << "usage: fractalis bench [--scene ID] [--size WxH] [--frames N] [--runs N] [--duration "
@@ -88,88 +193,9 @@ int command_bench(const std::vector<std::string>& args, std::ostream& out, std::
     if (options.has("json")) throw UsageError("--json: not written by bench --explore");
     return bench_explore(options, out, err);
   }
-  const int frames =
-      static_cast<int>(parse_integer("--frames", options.get("frames").value_or("30"), 1, 100000));
-  const int runs =
-      static_cast<int>(parse_integer("--runs", options.get("runs").value_or("3"), 1, 1000));
-  const double duration = parse_finite("--duration", options.get("duration").value_or("10"));
-  if (!(duration >= 0))
-    throw UsageError("--duration: expected seconds >= 0, got " + echo(*options.get("duration")));
-  if (!options.has("scene")) options.values["scene"] = {"benchmark"};
-  if (!options.has("path") && options.get("scene") == "benchmark")
-    options.values["path"] = {shipped_path_file("benchmark.toml").string()};
-  const auto json_file = options.get("json");
-  // Checked before the benchmark runs, not after.
-  if (json_file) check_output_file("--json", *json_file);
-
-  PreparedScene p = prepare_scene(options);
-  std::optional<CameraPath> path;
-  if (auto file = options.get("path")) path = load_path_option(p.scene->info, *file);
-  check_memory(p.render, p.device, false);
-  ClRuntime runtime(p.device);
-  Renderer renderer(runtime);
-  std::string error;
-  Watchdog watchdog(p.render.watchdog_s, "a frame of scene '" + p.scene->info.id + "'");
-  auto frame = [&](double time_s) {
-    if (path) {  // run time t is the path's start + t (clamped to its end)
-      const PathSample sample = sample_camera_path(*path, p.scene->info, path->start_s() + time_s);
-      p.state.camera = sample.camera;
-      p.state.params = sample.params;
-      apply_scene_overrides(p.scene->info, options, p.state);
-    }
-    update_scene(p, time_s);
-    renderer.render(p.scene->info, p.state, p.render);
-    watchdog.kick();
-  };
-  using clock = std::chrono::steady_clock;
-  const auto origin = clock::now();
-  auto now_ms = [&] {
-    return std::chrono::duration<double, std::milli>(clock::now() - origin).count();
-  };
-
-  BenchReport report;
-  const double warm_start = now_ms();
-  frame(0);  // builds the kernel
-  report.kernel_build_ms = now_ms() - warm_start;
-
-  std::vector<double> all;
-  const double wall_start = now_ms();
-  for (int run = 0; run < runs; ++run) {
-    auto times = time_frames(
-        frames, [&](int i) { frame(duration * i / frames); }, now_ms);
-    report.run_mean_ms.push_back(summarize_frames(times).mean_ms);
-    all.insert(all.end(), times.begin(), times.end());
-  }
-  report.wall_s = (now_ms() - wall_start) / 1000.0;
-  // Where the evaluations went: the frames of one run again, with a counting kernel (untimed).
-  p.render.count_evaluations = true;
-  for (int i = 0; i < frames; ++i) {
-    frame(duration * i / frames);
-    add_eval_counts(report.counts, renderer.eval_counts());
-  }
-  p.render.count_evaluations = false;
-  report.stats = summarize_frames(all);
-  report.scene_id = p.scene->info.id;
-  report.scene_version = p.scene->info.version;
-  report.width_px = p.render.width_px;
-  report.height_px = p.render.height_px;
-  report.lanes = renderer.lanes_for(p.render);
-  report.precision = precision_name(p.render.precision);
-  report.stages = stage_names(make_kernel_config(p.scene->info, p.render, report.lanes).stages);
-  report.runs = runs;
-  report.frames_per_run = frames;
-  report.path_duration_s = duration;
-  if (path) report.camera_path = path->file;
-  report.system = read_system_info(p.device);
-
-  std::ostream& text = json_file && is_standard_output(*json_file) ? err : out;
-  text << format_bench_text(report);
-  if (json_file) {
-    if (!write_file_atomic(*json_file, format_bench_json(report), &error)) {
-      throw std::runtime_error(error);
-    }
-    text << "wrote " << *json_file << "\n";
-  }
+  BenchJob job = plan_bench(options);
+  BenchReport report = run_bench(job, options);
+  report_bench(job, report, out, err);
   return 0;
 }
 
