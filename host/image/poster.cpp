@@ -1,11 +1,9 @@
 #include "image/poster.hpp"
 
-#include "image/exr_write.hpp"
-#include "image/png_stream.hpp"
+#include "image/band_writer.hpp"
 #include "render/precision.hpp"
 
 #include <algorithm>
-#include <optional>
 #include <stdexcept>
 
 namespace fr {
@@ -34,16 +32,7 @@ PosterResult render_poster(ClRuntime& runtime, const SceneInfo& info, const Scen
   const int band_rows = poster_band_rows(width, height, band_pixels);
   result.bands = (height + band_rows - 1) / band_rows;
 
-  std::string error;
-  auto out = OutputFile::open(file, &error);
-  if (!out) throw std::runtime_error(error);
-  const bool exr = is_exr_file_name(file);
-  std::optional<PngStream> png;
-  std::optional<ExrStream> exr_stream;
-  if (exr)
-    exr_stream.emplace(*out, width, height);
-  else
-    png.emplace(*out, width, height);
+  BandWriter writer(file, width, height);
   Renderer renderer(runtime);
   FrameImage band;
   for (int b = 0; b < result.bands; ++b) {
@@ -51,14 +40,10 @@ PosterResult render_poster(ClRuntime& runtime, const SceneInfo& info, const Scen
     RenderSettings s = settings;
     s.height_px = rows;
     s.window = {width, height, 0, y0};
-    const Readback what = exr ? Readback::Everything : Readback::DisplayAndSteps;
     for (int i = 0; i < std::max(1, s.samples); ++i)
-      renderer.render_sample(info, state, s, i, what);
-    renderer.finish(s, what, band);
-    if (exr)
-      exr_stream->write_rows(band);
-    else
-      png->write_rows(band.rgba8.data(), rows);
+      renderer.render_sample(info, state, s, i, writer.passes());
+    renderer.finish(s, writer.passes(), band);
+    writer.write_rows(band);
     const RayCounts counts = count_rays(band);
     result.rays.hit += counts.hit;
     result.rays.miss += counts.miss;
@@ -67,10 +52,7 @@ PosterResult render_poster(ClRuntime& runtime, const SceneInfo& info, const Scen
     result.lanes = band.lanes;
     if (progress) progress(b + 1, result.bands);
   }
-  if (exr)
-    exr_stream->finish();
-  else
-    png->finish();
+  writer.finish();
   return result;
 }
 
