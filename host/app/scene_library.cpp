@@ -1,6 +1,6 @@
 #include "app/scene_library.hpp"
 
-#include "app/scene_vetting.hpp"
+#include "render/scene_vetting.hpp"
 #include "plugin/plugin_loader.hpp"
 #include "io/printable.hpp"
 #include "render/kernel_assembly.hpp"

@@ -9,7 +9,7 @@
 #pragma once
 
 #include "app/scene_slot.hpp"
-#include "app/scene_vetting.hpp"
+#include "render/scene_vetting.hpp"
 #include "plugin/plugin_policy.hpp"
 #include "plugin/plugin_watcher.hpp"
 #include "render/cl_runtime.hpp"

@@ -1,6 +1,6 @@
 #include "check/scene_check.hpp"
 
-#include "app/scene_vetting.hpp"
+#include "render/scene_vetting.hpp"
 #include "check/de_overestimate.hpp"
 #include "plugin/plugin_loader.hpp"
 #include "io/printable.hpp"

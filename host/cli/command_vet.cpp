@@ -1,6 +1,6 @@
 // `fractalis vet-scene --file FILE`: the explorer's test render of a new or rebuilt scene, run
 // in a child process so that a DE that never returns hangs only this process, which the explorer
-// then kills (app/scene_vetting.hpp). Loads the one file, creates, updates at time 0, renders.
+// then kills (render/scene_vetting.hpp). Loads the one file, creates, updates at time 0, renders.
 #include "cli/commands.hpp"
 #include "cli/scene_options.hpp"
 #include "io/printable.hpp"

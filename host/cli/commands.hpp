@@ -15,7 +15,7 @@ int command_list(const std::vector<std::string>& args, std::ostream& out, std::o
 int command_explore(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 int command_sweep(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 int command_check(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
-// Hidden: the explorer's test render of a scene in a child process (app/scene_vetting.hpp).
+// Hidden: the explorer's test render of a scene in a child process (render/scene_vetting.hpp).
 int command_vet_scene(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 int command_cache(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 int command_devices(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);

@@ -1,6 +1,6 @@
 #include "cli/prepared_scene.hpp"
 
-#include "app/scene_vetting.hpp"
+#include "render/scene_vetting.hpp"
 #include "cli/watchdog.hpp"
 #include "io/printable.hpp"
 #include "render/memory_budget.hpp"

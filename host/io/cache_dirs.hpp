@@ -17,7 +17,7 @@ struct CacheFolder {
   const char* description;  // what it holds
 };
 // kernels: compiled OpenCL programs (render/kernel_cache.hpp); scenes: plugin scan verdicts
-// (plugin/scan_cache.hpp); vetted: test-render markers (app/scene_vetting.hpp); sweep: reference
+// (plugin/scan_cache.hpp); vetted: test-render markers (render/scene_vetting.hpp); sweep: reference
 // images of `fractalis sweep`.
 const std::vector<CacheFolder>& cache_folders();
 

@@ -1,9 +1,10 @@
 #include "plugin/plugin_loader.hpp"
 
+#include "io/check.hpp"
+#include "io/printable.hpp"
 #include "plugin/descriptor_copy.hpp"
 #include "plugin/plugin_files.hpp"
 #include "plugin/plugin_library.hpp"
-#include "io/printable.hpp"
 #include "plugin/scene_code.hpp"
 #include "plugin/scene_host_process.hpp"
 
@@ -80,7 +81,8 @@ const char* load_result_name(LoadResult result) {
     case LoadResult::Crashed:
       return "crashed";
   }
-  return "unknown";
+  FR_CHECK(false, "a LoadResult without a name");
+  return "unknown";  // not reached
 }
 
 LoadOutcome load_scene_plugin(const std::filesystem::path& file, const PluginPolicy& policy) {

@@ -221,6 +221,13 @@ std::vector<SettingSpec> make_table() {
           "Hit threshold factor k: a ray has hit when the DE < k * distance * pixel angle."),
       "Detail (k)", 0.05, 4, true));
   t.push_back(in_overlay(
+      number_setting<&S::render, &R::step_scale>(
+          "render.step_scale", 0, 1, true,
+          "Multiplies every DE step, in (0, 1]: below 1 for a DE that over-estimates the "
+          "distance (one that\n`fractalis check` flags, or a twisted domain; Fragmentarium's "
+          "fudge factor),\nat the cost of more steps."),
+      "Step scale", 0.05, 1));
+  t.push_back(in_overlay(
       number_setting<&S::render, &R::relaxation>(
           "render.relaxation", 1, 1.95, false,
           "Over-relaxation of the march (Keinert et al. 2014), in [1, 1.95]: steps are up to this "

@@ -64,7 +64,7 @@ inline vec3_t p_repeat(vec3_t p, vec3_t period) {
 }
 
 /* Twist about y by k radians per unit of height. Not distance-preserving: the gradient grows to
- * sqrt(1 + (k r)^2) at radius r, so divide the result by that (or step with step_scale < 1). */
+ * sqrt(1 + (k r)^2) at radius r, so divide the result by that (or render with render.step_scale < 1). */
 inline vec3_t p_twist(vec3_t p, scalar_t k) {
   real_t a = (real_t)k * p.y;
   real_t c = cos(a), s = sin(a);

@@ -1,4 +1,4 @@
-#include "app/scene_vetting.hpp"
+#include "render/scene_vetting.hpp"
 
 #include "io/cache_dirs.hpp"
 #include "io/child_process.hpp"
