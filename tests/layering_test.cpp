@@ -24,10 +24,10 @@ const std::vector<std::string> kFloors = {
     "video",     // the FFmpeg encoder
     "path",      // camera paths
     "animate",   // frame plans, PNG sequences
-    "app",       // the explorer core, the scene library
-    "bench",     // frame timing, the explorer benchmark
+    "bench",     // frame timing and reports
     "sweep",     // error against run time
     "check",     // the conformance checks
+    "app",       // the explorer core, the scene library, the explorer benchmark (drivers)
     "ui",        // the SDL window and the overlay
     "cli",       // the commands
 };

@@ -1,5 +1,5 @@
 #include "bench/bench_report.hpp"
-#include "bench/explore_bench.hpp"
+#include "app/explore_bench.hpp"
 #include "cli/commands.hpp"
 #include "cli/explorer_setup.hpp"
 #include "cli/watchdog.hpp"

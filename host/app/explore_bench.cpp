@@ -1,4 +1,4 @@
-#include "bench/explore_bench.hpp"
+#include "app/explore_bench.hpp"
 
 #include <chrono>
 #include <cmath>
