@@ -93,9 +93,7 @@ int render_in_bands(const PreparedScene& p, const std::string& out_file, std::os
   return 0;
 }
 
-}  // namespace
-
-int command_render(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+std::vector<OptionSpec> render_option_specs() {
   auto specs = scene_option_specs();
   specs.push_back({"out", "FILE", false,
                    "PNG file to write (default fractalis.png); FILE.exr: OpenEXR, linear, with "
@@ -107,43 +105,22 @@ int command_render(const std::vector<std::string>& args, std::ostream& out, std:
                    "also report where the DE evaluations went, per stage (a counting kernel:\n"
                    "                                 slower; the picture is the same)"});
   specs.push_back({"help", nullptr, false, "show this help"});
-  auto options = parse_options("render", args, specs);
-  if (options.has("help")) {
-    out << "usage: fractalis render [--scene ID] [--size WxH] [--out FILE] [options]\n\n"
-           "Renders one frame of a scene and writes it as a PNG (atomically: a temporary file,\n"
-           "then a rename). Sizes go up to 65535 a side; over 8 M pixels the image is rendered\n"
-           "a band of rows at a time and streamed to the PNG, in a band's memory.\n"
-           "An --out ending in .exr gets an OpenEXR file instead: the linear HDR image with\n"
-           "depth (Z), normal (N.x, N.y, N.z), albedo, DE steps and hit mask channels for\n"
-           "compositing; large ones are rendered in bands like a PNG.\n\n"
-        << format_options(specs) << "\nexample:\n"
-        << "  fractalis render --scene mandelbulb --size 1280x720 --param power=6 --out bulb.png\n"
-        << "  fractalis render --scene menger --size 1920x1080 --samples 4 --out sponge.exr\n";
-    return 0;
-  }
-  const std::string out_file = options.get("out").value_or("fractalis.png");
-  // Checked before rendering, so a typo in the folder costs nothing.
-  check_output_file("--out", out_file);
-  const bool exr = is_exr_file_name(out_file);
-  if (exr) {
-    struct stat st {};
-    if (stat(out_file.c_str(), &st) == 0 && (S_ISFIFO(st.st_mode) || S_ISCHR(st.st_mode)))
-      throw UsageError("--out " + out_file +
-                       ": an EXR file cannot go to a pipe or device (OpenEXR seeks back to index "
-                       "its scanlines)");
-  }
-  PreparedScene p = prepare_scene(options, kMaxPosterSide);
-  p.render.count_evaluations = options.has("counts");
+  return specs;
+}
 
-  update_scene(p, p.state.time_s);
-  std::ostream& report = is_standard_output(out_file) ? err : out;
-  if (static_cast<uint64_t>(p.render.width_px) * p.render.height_px >
-      poster_band_pixels(out_file)) {
-    if (p.render.count_evaluations)
-      throw UsageError("--counts: not for images rendered in bands (over " +
-                       std::to_string(poster_band_pixels(out_file)) + " pixels)");
-    return render_in_bands(p, out_file, report, err);
-  }
+// The output file, checked before rendering, so a typo in the folder costs nothing.
+void check_render_output(const std::string& out_file) {
+  check_output_file("--out", out_file);
+  if (!is_exr_file_name(out_file)) return;
+  struct stat st {};
+  if (stat(out_file.c_str(), &st) == 0 && (S_ISFIFO(st.st_mode) || S_ISCHR(st.st_mode)))
+    throw UsageError("--out " + out_file +
+                     ": an EXR file cannot go to a pipe or device (OpenEXR seeks back to index "
+                     "its scanlines)");
+}
+
+// An image that fits in one piece: rendered under the watchdog, written atomically, reported.
+void render_whole(PreparedScene& p, const std::string& out_file, std::ostream& report) {
   check_memory(p.render, p.device, true);
   ClRuntime runtime(p.device);
   Renderer renderer(runtime);
@@ -162,17 +139,51 @@ int command_render(const std::vector<std::string>& args, std::ostream& out, std:
   const double render_ms = ms_since(render_start);
   watchdog.stop();
   std::string error;
-  if (exr ? !write_exr_atomic(out_file, image, &error)
-          : !write_png_atomic(out_file, image.width_px, image.height_px, image.rgba8, &error)) {
+  if (is_exr_file_name(out_file)
+          ? !write_exr_atomic(out_file, image, &error)
+          : !write_png_atomic(out_file, image.width_px, image.height_px, image.rgba8, &error))
     throw std::runtime_error(error);
-  }
-  // `--out /dev/stdout | viewer`: the PNG is the output, the report goes to stderr.
   report << "rendered " << p.scene->info.id << " " << image.width_px << "x" << image.height_px
          << " on " << p.device.name << " (lanes " << image.lanes << ", "
          << precision_name(image.precision) << "): kernel build " << static_cast<int>(build_ms)
          << " ms, render " << static_cast<int>(render_ms) << " ms; wrote " << out_file << "\n";
   report_rays(image, p.state.camera, p.render, report);
   if (p.render.count_evaluations) report << format_eval_counts(renderer.eval_counts());
+}
+
+}  // namespace
+
+int command_render(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  const auto specs = render_option_specs();
+  auto options = parse_options("render", args, specs);
+  if (options.has("help")) {
+    out << "usage: fractalis render [--scene ID] [--size WxH] [--out FILE] [options]\n\n"
+           "Renders one frame of a scene and writes it as a PNG (atomically: a temporary file,\n"
+           "then a rename). Sizes go up to 65535 a side; over 8 M pixels the image is rendered\n"
+           "a band of rows at a time and streamed to the PNG, in a band's memory.\n"
+           "An --out ending in .exr gets an OpenEXR file instead: the linear HDR image with\n"
+           "depth (Z), normal (N.x, N.y, N.z), albedo, DE steps and hit mask channels for\n"
+           "compositing; large ones are rendered in bands like a PNG.\n\n"
+        << format_options(specs) << "\nexample:\n"
+        << "  fractalis render --scene mandelbulb --size 1280x720 --param power=6 --out bulb.png\n"
+        << "  fractalis render --scene menger --size 1920x1080 --samples 4 --out sponge.exr\n";
+    return 0;
+  }
+  const std::string out_file = options.get("out").value_or("fractalis.png");
+  check_render_output(out_file);
+  PreparedScene p = prepare_scene(options, kMaxPosterSide);
+  p.render.count_evaluations = options.has("counts");
+  update_scene(p, p.state.time_s);
+  // `--out /dev/stdout | viewer`: the PNG is the output, the report goes to stderr.
+  std::ostream& report = is_standard_output(out_file) ? err : out;
+  if (static_cast<uint64_t>(p.render.width_px) * p.render.height_px >
+      poster_band_pixels(out_file)) {
+    if (p.render.count_evaluations)
+      throw UsageError("--counts: not for images rendered in bands (over " +
+                       std::to_string(poster_band_pixels(out_file)) + " pixels)");
+    return render_in_bands(p, out_file, report, err);
+  }
+  render_whole(p, out_file, report);
   return 0;
 }
 

@@ -55,6 +55,22 @@ bool skip_block_comment(Cursor& c, SourceScan& out) {
   return true;
 }
 
+// Past a comment or a line continuation at the cursor; false when there is none there. (A block
+// comment that never closes ends the text.)
+bool skip_comment_or_continuation(Cursor& c, SourceScan& out) {
+  if (c.starts("\\\n")) {
+    c.i += 2;
+    ++c.line;
+  } else if (c.starts("/*")) {
+    skip_block_comment(c, out);
+  } else if (c.starts("//")) {
+    while (!c.at_end() && c.s[c.i] != '\n') ++c.i;
+  } else {
+    return false;
+  }
+  return true;
+}
+
 // At a quote: past the string or character literal (or to the end of its line).
 void skip_quoted(Cursor& c) {
   const char q = c.s[c.i++];
@@ -82,18 +98,11 @@ void scan_directive(Cursor& c, SourceScan& out) {
   blanks();
   const std::string name = read_identifier(c);
   while (!c.at_end() && c.s[c.i] != '\n') {
-    if (c.starts("\\\n")) {
-      c.i += 2;
-      ++c.line;
-    } else if (c.starts("/*")) {
-      if (!skip_block_comment(c, out)) return;
-    } else if (c.starts("//")) {
-      while (!c.at_end() && c.s[c.i] != '\n') ++c.i;
-    } else if (c.s[c.i] == '"' || c.s[c.i] == '\'') {
+    if (skip_comment_or_continuation(c, out)) continue;
+    if (c.s[c.i] == '"' || c.s[c.i] == '\'')
       skip_quoted(c);
-    } else {
+    else
       ++c.i;
-    }
   }
   if (word == "if" || word == "ifdef" || word == "ifndef") {
     out.open_if_lines.push_back(line);
@@ -172,6 +181,7 @@ SourceScan scan_source(std::string_view text) {
   FileScope scope;
   bool line_start = true;
   while (!c.at_end()) {
+    if (skip_comment_or_continuation(c, out)) continue;
     const char ch = c.s[c.i];
     if (ch == '\n') {
       ++c.line;
@@ -179,13 +189,6 @@ SourceScan scan_source(std::string_view text) {
       ++c.i;
     } else if (ch == ' ' || ch == '\t' || ch == '\r' || ch == '\f' || ch == '\v') {
       ++c.i;
-    } else if (c.starts("\\\n")) {  // a continuation outside a directive
-      c.i += 2;
-      ++c.line;
-    } else if (c.starts("/*")) {
-      if (!skip_block_comment(c, out)) break;
-    } else if (c.starts("//")) {
-      while (!c.at_end() && c.s[c.i] != '\n') ++c.i;
     } else if (line_start && ch == '#') {
       scan_directive(c, out);
     } else {
