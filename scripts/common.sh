@@ -15,6 +15,7 @@ FRACTALIS_PACKAGES=(
   libavcodec-dev libavformat-dev libavutil-dev libswscale-dev ffmpeg
   libopenexr-dev
   clang libclang-rt-14-dev
+  libopenmpi-dev openmpi-bin
 )
 
 fractalis_missing_packages() {

@@ -17,6 +17,7 @@ namespace {
 const std::vector<std::string> kFloors = {
     "scene",     // a scene as plain data
     "io",        // files, text, processes: no fractalis types
+    "mpi",       // the ranks of an MPI job and the tasks they share
     "plugin",    // plugin files and code, the scene-host process
     "render",    // OpenCL, kernels, the renderer, its settings
     "settings",  // the settings file over RenderSettings and the rest

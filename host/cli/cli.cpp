@@ -5,6 +5,8 @@
 #include "cli/watchdog.hpp"
 #include "io/echo.hpp"
 #include "io/log.hpp"
+#include "mpi/mpi_world.hpp"
+#include "mpi/shared_tasks.hpp"
 
 #include <fractalis/abi.h>
 
@@ -23,13 +25,16 @@ struct CommandEntry {
   const char* name;
   const char* summary;  // nullptr: internal, not listed (vet-scene runs in a child process)
   CommandFunction run;
+  // In an MPI job every rank runs it (it shares its work out); any other command runs on rank
+  // 0 alone (a benchmark or sweep then times one process, undisturbed by the others).
+  bool shared_by_ranks = false;
 };
 const CommandEntry kCommands[] = {
     {"explore", "open the explorer window and fly through a scene", command_explore},
     {"render", "render a scene to a PNG file (or a poster of up to 65535 pixels a side)",
-     command_render},
+     command_render, true},
     {"animate", "render a scene along a camera path to a video or a folder of PNGs",
-     command_animate},
+     command_animate, true},
     {"bench", "time frames of a scene (median, min, max) and count its DE evaluations",
      command_bench},
     {"sweep", "measure image error against frame time over the quality knobs", command_sweep},
@@ -107,21 +112,71 @@ int run_command(const std::string& command, const std::vector<std::string>& rest
     for (const CommandEntry& c : kCommands)
       if (command == c.name) return c.run(rest, out, err);
     throw UsageError("unknown command '" + echo(command) + "' (expected " + command_names() + ")");
-  } catch (const UsageError& e) {
-    spdlog::error("{}", e.what());
-    return 2;
-  } catch (const SceneHangError& e) {
-    spdlog::error("{}", e.what());
-    return kWatchdogExitStatus;
+  } catch (const AlreadyReported& e) {
+    return e.exit_status;
   } catch (const std::exception& e) {
     spdlog::error("{}", e.what());
-    return 1;
+    return exit_status_of(std::current_exception());
   }
+}
+
+bool is_shared_by_ranks(const std::string& command) {
+  for (const CommandEntry& c : kCommands)
+    if (command == c.name) return c.shared_by_ranks;
+  return false;
+}
+
+// In an MPI job, whether this rank runs `command` at all: rank 0 runs everything; the others
+// only a command that shares its work, and not its --help.
+bool runs_on_this_rank(const std::string& command, const std::vector<std::string>& rest) {
+  if (mpi_world().rank == 0) return true;
+  for (const std::string& a : rest)
+    if (a == "--help" || a == "-h") return false;
+  return is_shared_by_ranks(command);
 }
 
 }  // namespace
 
+int exit_status_of(std::exception_ptr failure) {
+  try {
+    std::rethrow_exception(failure);
+  } catch (const UsageError&) {
+    return 2;
+  } catch (const SceneHangError&) {
+    return kWatchdogExitStatus;
+  } catch (const AlreadyReported& e) {
+    return e.exit_status;
+  } catch (...) {
+    return 1;
+  }
+}
+
+void agree_across_ranks(std::exception_ptr failure) {
+  const MpiWorld& world = mpi_world();
+  if (!world.shared()) {
+    if (failure) std::rethrow_exception(failure);
+    return;
+  }
+  const std::vector<int> statuses = gather_from_all_ranks(failure ? exit_status_of(failure) : 0);
+  for (int rank = 0; rank < world.size; ++rank) {
+    if (statuses[rank] == 0) continue;
+    if (rank != world.rank) throw AlreadyReported(statuses[rank]);
+    if (rank == 0) std::rethrow_exception(failure);
+    try {
+      std::rethrow_exception(failure);
+    } catch (const std::exception& e) {
+      spdlog::error("rank {}: {}", rank, e.what());
+    }
+    throw AlreadyReported(statuses[rank]);
+  }
+}
+
 int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  // In an MPI job the usage, the version and errors in them are rank 0's to say.
+  const bool rank_zero = mpi_world().rank == 0;
+  if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help" ||
+      args[0] == "--version")
+    if (!rank_zero) return args.empty() ? 2 : 0;
   if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
     (args.empty() ? err : out) << usage_text();
     return args.empty() ? 2 : 0;
@@ -138,12 +193,16 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
     if (args_left.empty()) throw UsageError("no command given (try fractalis --help)");
     log.emplace(err, log_options);
   } catch (const std::exception& e) {
-    err << "fractalis: error: " << e.what() << "\n";
+    if (rank_zero) err << "fractalis: error: " << e.what() << "\n";
     return 2;
   }
   const std::string command = args_left[0];
-  return run_command(command, std::vector<std::string>(args_left.begin() + 1, args_left.end()), out,
-                     err);
+  const std::vector<std::string> rest(args_left.begin() + 1, args_left.end());
+  if (!runs_on_this_rank(command, rest)) return 0;
+  if (rank_zero && mpi_world().shared() && !is_shared_by_ranks(command))
+    spdlog::info("'{}' runs on rank 0 alone; ranks 1 to {} have nothing to do", echo(command),
+                 mpi_world().size - 1);
+  return run_command(command, rest, out, err);
 }
 
 }  // namespace fr

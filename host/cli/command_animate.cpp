@@ -5,6 +5,8 @@
 #include "cli/progress.hpp"
 #include "cli/watchdog.hpp"
 #include "image/png_write.hpp"
+#include "mpi/mpi_world.hpp"
+#include "mpi/shared_tasks.hpp"
 #include "render/renderer.hpp"
 #include "settings/settings.hpp"
 #include "video/video_encoder.hpp"
@@ -13,7 +15,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstring>
 #include <fstream>
+#include <optional>
 #include <ostream>
 #include <sstream>
 #include <stdexcept>
@@ -130,14 +134,39 @@ struct AnimateStats {
   size_t out_of_steps = 0, pixels = 0;
 };
 
+// Renders frame `i` of the animation into `image`: the path's view, parameters and time, then
+// the scene's update. The frame's number is the scene's frame_index, so a frame is the same
+// whichever process renders it, and in whatever order (a resumed folder, an MPI job).
+void render_frame(AnimateJob& job, const ParsedOptions& options, Renderer& renderer, int i,
+                  FrameImage& image) {
+  PreparedScene& p = job.p;
+  const SceneInfo& info = p.scene->info;
+  const double t = job.plan->time_s(i);
+  const PathSample sample = sample_camera_path(job.path, info, t);
+  p.state.camera = sample.camera;
+  p.state.params = sample.params;
+  apply_scene_overrides(info, options, p.state);  // --param and the like hold for every frame
+  p.state.time_s = t;
+  p.state.frame_index = static_cast<uint64_t>(i);
+  update_scene(p, t);
+  for (int s = 0; s < std::max(1, p.render.samples); ++s)
+    renderer.render_sample(info, p.state, p.render, s, Readback::DisplayAndSteps);
+  renderer.finish(p.render, Readback::DisplayAndSteps, image);
+}
+
+void write_frame_png(const AnimateJob& job, int i, const FrameImage& image) {
+  std::string error;
+  if (!write_png_atomic(job.out_path / frame_file_name(i), image.width_px, image.height_px,
+                        image.rgba8, &error))
+    throw std::runtime_error(error);
+}
+
 // Renders the frames not there yet, each into the encoder or its PNG, under the watchdog.
 AnimateStats render_frames(AnimateJob& job, const ParsedOptions& options, VideoEncoder* encoder,
                            const SequenceState* sequence, std::ostream& err) {
-  PreparedScene& p = job.p;
-  const SceneInfo& info = p.scene->info;
-  ClRuntime runtime(p.device);
+  ClRuntime runtime(job.p.device);
   Renderer renderer(runtime);
-  Watchdog watchdog(p.render.watchdog_s, "rendering scene '" + info.id + "'");
+  Watchdog watchdog(job.p.render.watchdog_s, "rendering scene '" + job.p.scene->info.id + "'");
   const int already = sequence ? sequence->done : 0;
   Progress progress(err, "frame", job.plan->frames, already);
   AnimateStats stats;
@@ -145,25 +174,16 @@ AnimateStats render_frames(AnimateJob& job, const ParsedOptions& options, VideoE
   std::string error;
   for (int i = 0; i < job.plan->frames; ++i) {
     if (sequence && sequence->frame_done[i]) continue;
-    const double t = job.plan->time_s(i);
-    const PathSample sample = sample_camera_path(job.path, info, t);
-    p.state.camera = sample.camera;
-    p.state.params = sample.params;
-    apply_scene_overrides(info, options, p.state);  // --param and the like hold for every frame
-    p.state.time_s = t;
-    update_scene(p, t);
-    for (int s = 0; s < std::max(1, p.render.samples); ++s)
-      renderer.render_sample(info, p.state, p.render, s, Readback::DisplayAndSteps);
-    renderer.finish(p.render, Readback::DisplayAndSteps, image);
+    render_frame(job, options, renderer, i, image);
     watchdog.kick();
     const RayCounts rays = count_rays(image);
     stats.out_of_steps += rays.out_of_steps;
     stats.pixels += image.ray_status.size();
-    const bool written = encoder
-                             ? encoder->add_frame(image.rgba8, &error)
-                             : write_png_atomic(job.out_path / frame_file_name(i), image.width_px,
-                                                image.height_px, image.rgba8, &error);
-    if (!written) throw std::runtime_error(error);
+    if (encoder) {
+      if (!encoder->add_frame(image.rgba8, &error)) throw std::runtime_error(error);
+    } else {
+      write_frame_png(job, i, image);
+    }
     ++stats.rendered;
     progress.update(already + stats.rendered);
   }
@@ -173,13 +193,86 @@ AnimateStats render_frames(AnimateJob& job, const ParsedOptions& options, VideoE
   return stats;
 }
 
+// An MPI job's ranks other than 0 (mpi/shared_tasks.hpp): render the frames rank 0 hands out and
+// send back the counts of their rays and, for a video, the pixels; a PNG frame is written here,
+// where it was rendered.
+void serve_frames(AnimateJob& job, const ParsedOptions& options) {
+  std::optional<ClRuntime> runtime;
+  std::optional<Renderer> renderer;
+  FrameImage image;
+  const int rank = mpi_world().rank;
+  serve_tasks([&](int i) {
+    // Each frame under its own watchdog: waiting for rank 0 between frames is not rendering.
+    Watchdog watchdog(job.p.render.watchdog_s, "rendering scene '" + job.p.scene->info.id +
+                                                   "' (rank " + std::to_string(rank) +
+                                                   ", frame " + std::to_string(i) + ")");
+    if (!renderer) {
+      runtime.emplace(job.p.device);
+      renderer.emplace(*runtime);
+    }
+    render_frame(job, options, *renderer, i, image);
+    const uint64_t counts[2] = {count_rays(image).out_of_steps, image.ray_status.size()};
+    const size_t pixel_bytes = job.video ? image.rgba8.size() : 0;
+    std::vector<uint8_t> bytes(sizeof counts + pixel_bytes);
+    std::memcpy(bytes.data(), counts, sizeof counts);
+    if (job.video)
+      std::memcpy(bytes.data() + sizeof counts, image.rgba8.data(), pixel_bytes);
+    else
+      write_frame_png(job, i, image);
+    return bytes;
+  });
+}
+
+// Rank 0 of an MPI job: hands the frames not there yet to the other ranks and encodes a video's
+// frames in order as they come back.
+AnimateStats lead_frames(const AnimateJob& job, VideoEncoder* encoder,
+                         const SequenceState* sequence, std::ostream& err) {
+  std::vector<int> frames;
+  for (int i = 0; i < job.plan->frames; ++i)
+    if (!sequence || !sequence->frame_done[i]) frames.push_back(i);
+  const int already = sequence ? sequence->done : 0;
+  Progress progress(err, "frame", job.plan->frames, already);
+  AnimateStats stats;
+  TaskSharing how;
+  how.noun = "frame";
+  // A video's frames wait at rank 0 for the ones before them: two per rank at most. PNG frames
+  // are written where they are rendered; only their counts come back.
+  how.window = encoder ? 2 * static_cast<size_t>(mpi_world().size) : 0;
+  how.deadline_s = rank_task_deadline_s(job.p.render.watchdog_s);
+  const size_t frame_bytes = 4 * static_cast<size_t>(job.p.render.width_px) *
+                             static_cast<size_t>(job.p.render.height_px);
+  std::vector<uint8_t> rgba8;
+  std::string error;
+  lead_tasks(frames, how, [&](int i, std::vector<uint8_t>& bytes) {
+    uint64_t counts[2] = {};
+    const size_t expected = sizeof counts + (encoder ? frame_bytes : 0);
+    if (bytes.size() != expected)
+      throw std::runtime_error("frame " + std::to_string(i) + " came back with " +
+                               std::to_string(bytes.size()) + " bytes, not " +
+                               std::to_string(expected));
+    std::memcpy(counts, bytes.data(), sizeof counts);
+    stats.out_of_steps += counts[0];
+    stats.pixels += counts[1];
+    if (encoder) {
+      rgba8.assign(bytes.begin() + sizeof counts, bytes.end());
+      if (!encoder->add_frame(rgba8, &error)) throw std::runtime_error(error);
+    }
+    ++stats.rendered;
+    progress.update(already + stats.rendered);
+  });
+  if (encoder && !encoder->finish(&error)) throw std::runtime_error(error);
+  progress.finish();
+  return stats;
+}
+
 void report_animation(const AnimateJob& job, const AnimateStats& stats, double seconds,
                       std::ostream& out) {
   const RenderSettings& r = job.p.render;
   out << "rendered " << stats.rendered << (stats.rendered == 1 ? " frame of " : " frames of ")
       << job.p.scene->info.id << " at " << r.width_px << "x" << r.height_px << ", " << job.fps
-      << " fps on " << job.p.device.name << " in " << static_cast<int>(seconds + 0.5)
-      << " s; wrote " << job.out_path.string();
+      << " fps on " << job.p.device.name;
+  if (mpi_world().shared()) out << " by " << mpi_world().size - 1 << " ranks";
+  out << " in " << static_cast<int>(seconds + 0.5) << " s; wrote " << job.out_path.string();
   if (job.video)
     out << " (" << job.video->codec << ", " << job.plan->frames
         << (job.plan->frames == 1 ? " frame, " : " frames, ")
@@ -210,31 +303,54 @@ int command_animate(const std::vector<std::string>& args, std::ostream& out, std
         << "  fractalis animate --scene menger --path orbit.toml --fps 24 --out frames/\n";
     return 0;
   }
-  AnimateJob job = plan_animation(options);
+  // Every rank of an MPI job plans the animation; any that fails ends them all.
+  std::optional<AnimateJob> planned;
+  std::exception_ptr failure;
+  try {
+    planned = plan_animation(options);
+  } catch (...) {
+    failure = std::current_exception();
+  }
+  agree_across_ranks(failure);
+  AnimateJob& job = *planned;
+  const MpiWorld& world = mpi_world();
+  if (world.rank != 0) {
+    serve_frames(job, options);
+    return 0;
+  }
   const RenderSettings& r = job.p.render;
   std::optional<SequenceState> sequence;
   std::unique_ptr<VideoEncoder> encoder;
-  if (job.video) {
-    std::string error;
-    encoder = VideoEncoder::open(job.out_path, r.width_px, r.height_px, job.fps, &error);
-    if (!encoder) throw std::runtime_error(error);
-  } else {
-    std::string problem;
-    sequence =
-        prepare_sequence_folder(job.out_path, identity_of(job.p, options, job.path_file, job.fps),
-                                *job.plan, r.width_px, r.height_px, options.has("force"), &problem);
-    if (!sequence) throw UsageError("--out: " + problem);
-    if (sequence->done == job.plan->frames) {
-      out << "all " << job.plan->frames << " frames of " << job.out_path.string()
-          << " are there already (--force renders them anew)\n";
-      return 0;
+  try {
+    if (job.video) {
+      std::string error;
+      encoder = VideoEncoder::open(job.out_path, r.width_px, r.height_px, job.fps, &error);
+      if (!encoder) throw std::runtime_error(error);
+    } else {
+      std::string problem;
+      sequence = prepare_sequence_folder(job.out_path,
+                                         identity_of(job.p, options, job.path_file, job.fps),
+                                         *job.plan, r.width_px, r.height_px, options.has("force"),
+                                         &problem);
+      if (!sequence) throw UsageError("--out: " + problem);
     }
-    if (sequence->done > 0)
-      out << "resuming: " << sequence->done << " of " << job.plan->frames << " frames are there\n";
+  } catch (...) {
+    if (world.shared()) dismiss_ranks(exit_status_of(std::current_exception()));
+    throw;
   }
+  if (sequence && sequence->done == job.plan->frames) {
+    if (world.shared()) dismiss_ranks(0);
+    out << "all " << job.plan->frames << " frames of " << job.out_path.string()
+        << " are there already (--force renders them anew)\n";
+    return 0;
+  }
+  if (sequence && sequence->done > 0)
+    out << "resuming: " << sequence->done << " of " << job.plan->frames << " frames are there\n";
   const auto start = std::chrono::steady_clock::now();
   const AnimateStats stats =
-      render_frames(job, options, encoder.get(), sequence ? &*sequence : nullptr, err);
+      world.shared()
+          ? lead_frames(job, encoder.get(), sequence ? &*sequence : nullptr, err)
+          : render_frames(job, options, encoder.get(), sequence ? &*sequence : nullptr, err);
   report_animation(job, stats,
                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
                    out);

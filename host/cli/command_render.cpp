@@ -5,7 +5,11 @@
 #include "image/exr_write.hpp"
 #include "image/png_write.hpp"
 #include "image/poster.hpp"
+#include "image/band_writer.hpp"
+#include "image/frame_bytes.hpp"
 #include "io/atomic_file.hpp"
+#include "mpi/mpi_world.hpp"
+#include "mpi/shared_tasks.hpp"
 #include "render/camera.hpp"
 #include "render/memory_budget.hpp"
 #include "render/precision.hpp"
@@ -15,6 +19,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <optional>
 
 #include <sys/stat.h>
 #include <unistd.h>
@@ -54,34 +59,111 @@ void report_rays(const FrameImage& image, const fr_camera& camera, const RenderS
   }
 }
 
-// A size over poster_band_pixels: rendered a band of rows at a time and streamed to the PNG or
-// EXR file (image/poster.hpp), with a progress bar on a terminal.
-int render_in_bands(const PreparedScene& p, const std::string& out_file, std::ostream& report,
-                    std::ostream& err) {
+// The ranks of an MPI job share a poster's bands (mpi/shared_tasks.hpp): rank 0 writes them in
+// order as they come back, the others render them. The same bands as one process renders, so
+// the same file.
+PosterResult share_poster_bands(const PreparedScene& p, const std::string& out_file,
+                                int band_rows, Progress& progress) {
   const int width = p.render.width_px, height = p.render.height_px;
-  RenderSettings band = p.render;
-  const uint64_t band_pixels = poster_band_pixels(out_file);
-  band.height_px = poster_band_rows(width, height, band_pixels);
-  check_memory(band, p.device, is_exr_file_name(out_file));
-  ClRuntime runtime(p.device);
-  // The watchdog guards each band: a poster may take longer than render.watchdog_s in all.
-  Watchdog watchdog(p.render.watchdog_s, "rendering scene '" + p.scene->info.id + "'");
+  const int bands = (height + band_rows - 1) / band_rows;
+  const Readback passes = BandWriter::passes_for(out_file);
+  const MpiWorld& world = mpi_world();
+  PosterResult result;
+  result.bands = bands;
+  if (world.rank != 0) {
+    std::optional<ClRuntime> runtime;
+    std::optional<Renderer> renderer;
+    RenderSettings whole;
+    FrameImage band;
+    serve_tasks([&](int b) {
+      // Each band under its own watchdog: waiting for rank 0 between bands is not rendering.
+      Watchdog watchdog(p.render.watchdog_s, "rendering scene '" + p.scene->info.id +
+                                                 "' (rank " + std::to_string(world.rank) +
+                                                 ", band " + std::to_string(b) + ")");
+      if (!renderer) {
+        runtime.emplace(p.device);
+        whole = poster_settings(*runtime, p.scene->info, p.state, p.render);
+        renderer.emplace(*runtime);
+      }
+      render_poster_band(*renderer, p.scene->info, p.state, whole, band_rows, b, passes, band);
+      std::vector<uint8_t> bytes;
+      append_frame_bytes(band, bytes);
+      return bytes;
+    });
+    return result;
+  }
+  std::optional<BandWriter> writer;
+  try {
+    writer.emplace(out_file, width, height);
+  } catch (...) {
+    dismiss_ranks(1);
+    throw;
+  }
+  std::vector<int> tasks(static_cast<size_t>(bands));
+  for (int b = 0; b < bands; ++b) tasks[static_cast<size_t>(b)] = b;
+  TaskSharing how;
+  how.noun = "band";
+  how.window = static_cast<size_t>(world.size);  // bands held at rank 0: memory stays bounded
+  how.deadline_s = rank_task_deadline_s(p.render.watchdog_s);
+  FrameImage band;
+  bool first = true;
+  lead_tasks(tasks, how, [&](int b, std::vector<uint8_t>& bytes) {
+    size_t at = 0;
+    read_frame_bytes(bytes, &at, band);
+    const int rows = std::min(band_rows, height - b * band_rows);
+    if (band.width_px != width || band.height_px != rows)
+      throw std::runtime_error("band " + std::to_string(b) + " came back " +
+                               std::to_string(band.width_px) + "x" +
+                               std::to_string(band.height_px) + ", not " + std::to_string(width) +
+                               "x" + std::to_string(rows));
+    // Auto precision is decided on each rank; bands in different precisions would not match.
+    if (!first && band.precision != result.precision)
+      throw std::runtime_error(
+          "the ranks chose different precisions for the bands (machines that differ?); give "
+          "--precision float or --precision double");
+    first = false;
+    result.precision = band.precision;
+    result.lanes = band.lanes;
+    writer->write_rows(band);
+    add_ray_counts(band, result.rays);
+    progress.update(b + 1);
+  });
+  writer->finish();
+  return result;
+}
+
+// A poster rendered a band of rows at a time and streamed to the PNG or EXR file
+// (image/poster.hpp), with a progress bar on a terminal; in an MPI job, by all its ranks.
+int render_in_bands(const PreparedScene& p, const std::string& out_file, int band_rows,
+                    std::ostream& report, std::ostream& err) {
+  const int width = p.render.width_px, height = p.render.height_px;
+  const MpiWorld& world = mpi_world();
   const auto start = std::chrono::steady_clock::now();
-  Progress progress(err, "band", (height + band.height_px - 1) / band.height_px);
-  const PosterResult r = render_poster(runtime, p.scene->info, p.state, p.render, out_file,
-                                       band_pixels, [&](int done, int) {
-                                         watchdog.kick();
-                                         progress.update(done);
-                                       });
-  watchdog.stop();
+  Progress progress(err, "band", (height + band_rows - 1) / band_rows);  // rank 0's alone
+  PosterResult r;
+  if (world.shared()) {
+    r = share_poster_bands(p, out_file, band_rows, progress);
+    if (world.rank != 0) return 0;
+  } else {
+    ClRuntime runtime(p.device);
+    // The watchdog guards each band: a poster may take longer than render.watchdog_s in all.
+    Watchdog watchdog(p.render.watchdog_s, "rendering scene '" + p.scene->info.id + "'");
+    r = render_poster_in_rows(runtime, p.scene->info, p.state, p.render, out_file, band_rows,
+                              [&](int done, int) {
+                                watchdog.kick();
+                                progress.update(done);
+                              });
+    watchdog.stop();
+  }
   progress.finish();
   auto seconds = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
   report << "rendered " << p.scene->info.id << " " << width << "x" << height << " in " << r.bands
          << " bands on " << p.device.name << " (lanes " << r.lanes << ", "
-         << precision_name(r.precision) << "): " << static_cast<int>(seconds() * 1000)
-         << " ms; wrote " << out_file << "\n";
+         << precision_name(r.precision) << ")";
+  if (world.shared()) report << " by " << world.size - 1 << " ranks";
+  report << ": " << static_cast<int>(seconds() * 1000) << " ms; wrote " << out_file << "\n";
   report << "rays: " << r.rays.hit << " hit, " << r.rays.miss << " missed, " << r.rays.out_of_steps
          << " out of steps, " << r.rays.inside << " started inside the surface\n";
   const double total = static_cast<double>(width) * height;
@@ -101,6 +183,10 @@ std::vector<OptionSpec> render_option_specs() {
   specs.push_back({"path", "FILE", false,
                    "camera path (TOML keyframes): the view and parameters at --time (default: "
                    "its first keyframe); --eye, --param and the like still override"});
+  specs.push_back({"band-rows", "N", false,
+                   "render in bands of N rows, streamed to the file (default: bands of 8 M pixels\n"
+                   "                                 over that size); in an MPI job the ranks share\n"
+                   "                                 the bands"});
   specs.push_back({"counts", nullptr, false,
                    "also report where the DE evaluations went, per stage (a counting kernel:\n"
                    "                                 slower; the picture is the same)"});
@@ -170,19 +256,42 @@ int command_render(const std::vector<std::string>& args, std::ostream& out, std:
     return 0;
   }
   const std::string out_file = options.get("out").value_or("fractalis.png");
-  check_render_output(out_file);
-  PreparedScene p = prepare_scene(options, kMaxPosterSide);
-  p.render.count_evaluations = options.has("counts");
-  update_scene(p, p.state.time_s);
+  // Every rank of an MPI job reads the options and loads the scene; any that fails ends them all.
+  std::optional<PreparedScene> prepared;
+  int band_rows = 0;  // 0: the whole image at once
+  std::exception_ptr failure;
+  try {
+    check_render_output(out_file);
+    prepared = prepare_scene(options, kMaxPosterSide);
+    PreparedScene& p = *prepared;
+    p.render.count_evaluations = options.has("counts");
+    update_scene(p, p.state.time_s);
+    const uint64_t pixels = static_cast<uint64_t>(p.render.width_px) * p.render.height_px;
+    if (const auto rows = options.get("band-rows"))
+      band_rows = static_cast<int>(parse_integer("--band-rows", *rows, 1, kMaxPosterSide));
+    else if (pixels > poster_band_pixels(out_file))
+      band_rows = poster_band_rows(p.render.width_px, p.render.height_px,
+                                   poster_band_pixels(out_file));
+    if (band_rows > 0) {
+      if (p.render.count_evaluations)
+        throw UsageError("--counts: not for images rendered in bands (--band-rows, or over " +
+                         std::to_string(poster_band_pixels(out_file)) + " pixels)");
+      RenderSettings band = p.render;
+      band.height_px = std::min(band_rows, p.render.height_px);
+      check_memory(band, p.device, is_exr_file_name(out_file));
+    }
+  } catch (...) {
+    failure = std::current_exception();
+  }
+  agree_across_ranks(failure);
+  PreparedScene& p = *prepared;
   // `--out /dev/stdout | viewer`: the PNG is the output, the report goes to stderr.
   std::ostream& report = is_standard_output(out_file) ? err : out;
-  if (static_cast<uint64_t>(p.render.width_px) * p.render.height_px >
-      poster_band_pixels(out_file)) {
-    if (p.render.count_evaluations)
-      throw UsageError("--counts: not for images rendered in bands (over " +
-                       std::to_string(poster_band_pixels(out_file)) + " pixels)");
-    return render_in_bands(p, out_file, report, err);
-  }
+  if (band_rows > 0) return render_in_bands(p, out_file, band_rows, report, err);
+  // One picture in one piece is rank 0's alone.
+  if (mpi_world().rank != 0) return 0;
+  if (mpi_world().shared())
+    spdlog::info("one image in one piece renders on rank 0 alone; --band-rows N shares its bands");
   render_whole(p, out_file, report);
   return 0;
 }

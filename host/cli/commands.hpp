@@ -2,11 +2,23 @@
 // (0 success, 1 failure while working, 2 bad usage) and writes only to `out` and `err`.
 #pragma once
 
+#include <exception>
 #include <iosfwd>
 #include <string>
 #include <vector>
 
 namespace fr {
+
+// The exit code a command ends with when it throws `failure`: 2 for bad usage (UsageError), 3
+// for a scene whose DE never returns, the status of an AlreadyReported, otherwise 1.
+int exit_status_of(std::exception_ptr failure);
+
+// In an MPI job (mpi/mpi_world.hpp), every rank says whether it got ready for its part
+// (`failure`: null if it did) and learns whether all did; a command that shares its work calls
+// it once every rank has read its options and scene. When one failed, every rank throws: the
+// lowest failing rank its own error (naming the rank unless it is 0), the others AlreadyReported
+// with that rank's exit status, so the error is said once. Outside MPI it rethrows `failure`.
+void agree_across_ranks(std::exception_ptr failure);
 
 int command_render(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 int command_animate(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);

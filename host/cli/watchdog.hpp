@@ -25,6 +25,14 @@ struct SceneHangError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// In an MPI job (mpi/shared_tasks.hpp), how long rank 0 waits for a frame or band it handed out
+// before it ends the job: the rank's own watchdog ends a task that hangs there after
+// `watchdog_s`, and the launcher then ends the job; this catches the rank that cannot (stopped,
+// its machine gone) a little later. No limit when the watchdog is off (<= 0).
+inline double rank_task_deadline_s(double watchdog_s) {
+  return watchdog_s > 0 ? watchdog_s + 10 : 0;
+}
+
 class Watchdog {
  public:
   // Starts guarding; `limit_s` <= 0 guards nothing. `what` completes "... did not finish

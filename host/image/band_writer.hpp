@@ -19,7 +19,11 @@ class BandWriter {
  public:
   // Opens `file` for a width_px x height_px image; throws std::runtime_error saying why not.
   BandWriter(const std::filesystem::path& file, int width_px, int height_px);
-  // The passes a band must be read back with for this file.
+  // The passes a band must be read back with for `file` (an EXR's every pass).
+  static Readback passes_for(const std::filesystem::path& file) {
+    return is_exr_file_name(file) ? Readback::Everything : Readback::DisplayAndSteps;
+  }
+  // The same for this writer's file.
   Readback passes() const { return exr_ ? Readback::Everything : Readback::DisplayAndSteps; }
   // The next band's rows, as rendered (a window of the whole image).
   void write_rows(const FrameImage& band);

@@ -18,37 +18,59 @@ uint64_t poster_band_pixels(const std::filesystem::path& file) {
   return is_exr_file_name(file) ? kExrPosterBandPixels : kPosterBandPixels;
 }
 
+RenderSettings poster_settings(ClRuntime& runtime, const SceneInfo& info, const SceneState& state,
+                               RenderSettings settings) {
+  if (settings.width_px < 1 || settings.height_px < 1)
+    throw std::runtime_error("image size " + std::to_string(settings.width_px) + "x" +
+                             std::to_string(settings.height_px) + " has no pixels");
+  settings.window = {};
+  settings.precision = resolve_precision(runtime, info, state, settings);
+  return settings;
+}
+
+void render_poster_band(Renderer& renderer, const SceneInfo& info, const SceneState& state,
+                        const RenderSettings& whole, int band_rows, int band, Readback passes,
+                        FrameImage& image) {
+  const int y0 = band * band_rows;
+  RenderSettings s = whole;
+  s.height_px = std::min(band_rows, whole.height_px - y0);
+  s.window = {whole.width_px, whole.height_px, 0, y0};
+  for (int i = 0; i < std::max(1, s.samples); ++i) renderer.render_sample(info, state, s, i, passes);
+  renderer.finish(s, passes, image);
+}
+
+void add_ray_counts(const FrameImage& band, RayCounts& counts) {
+  const RayCounts c = count_rays(band);
+  counts.hit += c.hit;
+  counts.miss += c.miss;
+  counts.out_of_steps += c.out_of_steps;
+  counts.inside += c.inside;
+}
+
 PosterResult render_poster(ClRuntime& runtime, const SceneInfo& info, const SceneState& state,
                            RenderSettings settings, const std::filesystem::path& file,
                            uint64_t band_pixels, const std::function<void(int, int)>& progress) {
-  const int width = settings.width_px, height = settings.height_px;
-  if (width < 1 || height < 1)
-    throw std::runtime_error("image size " + std::to_string(width) + "x" + std::to_string(height) +
-                             " has no pixels");
-  PosterResult result;
-  settings.window = {};
-  settings.precision = resolve_precision(runtime, info, state, settings);
-  result.precision = settings.precision;
-  const int band_rows = poster_band_rows(width, height, band_pixels);
-  result.bands = (height + band_rows - 1) / band_rows;
+  return render_poster_in_rows(runtime, info, state, settings, file,
+                               poster_band_rows(settings.width_px, settings.height_px, band_pixels),
+                               progress);
+}
 
-  BandWriter writer(file, width, height);
+PosterResult render_poster_in_rows(ClRuntime& runtime, const SceneInfo& info,
+                                   const SceneState& state, RenderSettings settings,
+                                   const std::filesystem::path& file, int band_rows,
+                                   const std::function<void(int, int)>& progress) {
+  const RenderSettings whole = poster_settings(runtime, info, state, settings);
+  band_rows = std::max(band_rows, 1);
+  PosterResult result;
+  result.precision = whole.precision;
+  result.bands = (whole.height_px + band_rows - 1) / band_rows;
+  BandWriter writer(file, whole.width_px, whole.height_px);
   Renderer renderer(runtime);
   FrameImage band;
   for (int b = 0; b < result.bands; ++b) {
-    const int y0 = b * band_rows, rows = std::min(band_rows, height - y0);
-    RenderSettings s = settings;
-    s.height_px = rows;
-    s.window = {width, height, 0, y0};
-    for (int i = 0; i < std::max(1, s.samples); ++i)
-      renderer.render_sample(info, state, s, i, writer.passes());
-    renderer.finish(s, writer.passes(), band);
+    render_poster_band(renderer, info, state, whole, band_rows, b, writer.passes(), band);
     writer.write_rows(band);
-    const RayCounts counts = count_rays(band);
-    result.rays.hit += counts.hit;
-    result.rays.miss += counts.miss;
-    result.rays.out_of_steps += counts.out_of_steps;
-    result.rays.inside += counts.inside;
+    add_ray_counts(band, result.rays);
     result.lanes = band.lanes;
     if (progress) progress(b + 1, result.bands);
   }

@@ -27,6 +27,18 @@ uint64_t poster_band_pixels(const std::filesystem::path& file);
 // Rows per band for a width_px x height_px poster: whole rows within band_pixels, at least one.
 int poster_band_rows(int width_px, int height_px, uint64_t band_pixels = kPosterBandPixels);
 
+// The settings every band of a poster renders with: the whole image's, no window, precision
+// decided once for the whole view (never Auto). Throws std::runtime_error for an empty size.
+RenderSettings poster_settings(ClRuntime& runtime, const SceneInfo& info, const SceneState& state,
+                               RenderSettings settings);
+
+// Band `band` of `band_rows` rows (the last may have fewer) of the poster `whole`
+// (poster_settings), rendered with all its samples and read back with `passes` into `image`.
+// The same pixels whichever process renders it: MPI jobs share a poster's bands out this way.
+void render_poster_band(Renderer& renderer, const SceneInfo& info, const SceneState& state,
+                        const RenderSettings& whole, int band_rows, int band, Readback passes,
+                        FrameImage& image);
+
 struct PosterResult {
   RayCounts rays;  // over the whole image
   Precision precision = Precision::Float;
@@ -43,5 +55,13 @@ PosterResult render_poster(ClRuntime& runtime, const SceneInfo& info, const Scen
                            RenderSettings settings, const std::filesystem::path& file,
                            uint64_t band_pixels = kPosterBandPixels,
                            const std::function<void(int, int)>& progress = nullptr);
+// The same with `band_rows` rows a band (at least 1).
+PosterResult render_poster_in_rows(ClRuntime& runtime, const SceneInfo& info,
+                                   const SceneState& state, RenderSettings settings,
+                                   const std::filesystem::path& file, int band_rows,
+                                   const std::function<void(int, int)>& progress = nullptr);
+
+// Adds a band's primary rays to `counts`.
+void add_ray_counts(const FrameImage& band, RayCounts& counts);
 
 }  // namespace fr

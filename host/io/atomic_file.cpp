@@ -5,6 +5,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <chrono>
@@ -41,7 +42,18 @@ void unregister_temp(int slot) {
   if (slot >= 0) g_temp_state[slot] = 0;
 }
 
+// The line the handler writes before the process ends (set_signal_note): two buffers, so that a
+// note being written never is the one the handler reads.
+constexpr size_t kNoteMax = 1024;
+char g_notes[2][kNoteMax];
+std::atomic<int> g_note_current{-1};
+
 void remove_temps_and_die(int sig) {
+  const int note = g_note_current.load();
+  if (note >= 0) {
+    const ssize_t written = write(STDERR_FILENO, g_notes[note], strlen(g_notes[note]));
+    (void)written;
+  }
   remove_temp_files();
   signal(sig, SIG_DFL);
   raise(sig);
@@ -230,6 +242,19 @@ bool write_file_atomic(const std::filesystem::path& path, std::string_view bytes
 void remove_temp_files() {
   for (int i = 0; i < kTempSlots; ++i)
     if (g_temp_state[i].load() == 2) unlink(g_temp_paths[i]);
+}
+
+void set_signal_note(std::string_view note) {
+  if (note.empty()) {
+    g_note_current = -1;
+    return;
+  }
+  const int next = g_note_current.load() == 0 ? 1 : 0;
+  const size_t n = std::min(note.size(), kNoteMax - 2);
+  std::memcpy(g_notes[next], note.data(), n);
+  g_notes[next][n] = '\n';
+  g_notes[next][n + 1] = '\0';
+  g_note_current = next;
 }
 
 void install_temp_file_cleanup() {

@@ -72,6 +72,11 @@ bool write_file_atomic(const std::filesystem::path& path, std::string_view bytes
 // a process about to end abruptly (the watchdog's _exit).
 void remove_temp_files();
 
+// A line those handlers write to stderr before the process ends by a signal (what was in
+// progress: an MPI job's rank 0 names the frames its ranks were rendering); empty: none. Only
+// its first 1022 bytes are kept. Call from one thread.
+void set_signal_note(std::string_view note);
+
 // Installs handlers for SIGINT, SIGTERM and SIGHUP (where their action is the default) that
 // remove the temporary files of writes in progress, then end the process by the same signal.
 // Call once, early in main.

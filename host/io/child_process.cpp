@@ -9,7 +9,20 @@
 #include <cerrno>
 #include <cstring>
 
+extern char** environ;
+
 namespace fr {
+namespace {
+
+// A helper is never a rank of the MPI job its parent may belong to: with the launcher's
+// variables it would start MPI and join the job as a rank the launcher never started.
+bool is_mpi_launcher_variable(const char* entry) {
+  for (const char* prefix : {"OMPI_", "PMIX_", "PMI_"})
+    if (std::strncmp(entry, prefix, std::strlen(prefix)) == 0) return true;
+  return false;
+}
+
+}  // namespace
 
 pid_t start_child_process(const std::vector<std::string>& argv,
                           const std::vector<ChildDescriptor>& descriptors, int stderr_fd,
@@ -21,6 +34,10 @@ pid_t start_child_process(const std::vector<std::string>& argv,
   std::vector<const char*> args;
   for (const auto& a : argv) args.push_back(a.c_str());
   args.push_back(nullptr);
+  std::vector<char*> environment;  // built before fork: the child may not allocate
+  for (char** e = environ; *e; ++e)
+    if (!is_mpi_launcher_variable(*e)) environment.push_back(*e);
+  environment.push_back(nullptr);
   int first_free = 3;
   for (const ChildDescriptor& d : descriptors) first_free = std::max(first_free, d.theirs + 1);
   // Every descriptor is first copied above all the target numbers, so that placing one cannot
@@ -53,7 +70,7 @@ pid_t start_child_process(const std::vector<std::string>& argv,
   sigset_t none;
   sigemptyset(&none);
   sigprocmask(SIG_SETMASK, &none, nullptr);
-  execv(args[0], const_cast<char* const*>(args.data()));
+  execve(args[0], const_cast<char* const*>(args.data()), environment.data());
   _exit(kChildExecFailedStatus);
 }
 

@@ -1,0 +1,188 @@
+#include "mpi/shared_tasks.hpp"
+
+#include "io/atomic_file.hpp"
+#include "mpi/mpi_world.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include <chrono>
+#include <cstring>
+#include <deque>
+#include <map>
+#include <optional>
+#include <thread>
+
+namespace fr {
+namespace {
+
+// Rank to rank 0: the outcome of the task it had (none on its first message) and a request for
+// the next. Rank 0 to a rank: the next task, or a dismissal with an exit status.
+constexpr int kTagDone = 1;
+constexpr int kTagNext = 2;
+
+enum class Outcome : uint8_t { FirstRequest = 0, Result = 1, Failed = 2 };
+
+// A Done message: task (int64), outcome (uint8), then the result's bytes or the failure's text.
+constexpr size_t kDoneHeader = 9;
+// A Next message: task (int64, -1: dismissed) and the exit status (int32) of a dismissal.
+constexpr size_t kNextSize = 12;
+
+void put(std::vector<uint8_t>& out, size_t at, const void* value, size_t n) {
+  std::memcpy(out.data() + at, value, n);
+}
+template <typename T>
+T get(const std::vector<uint8_t>& in, size_t at) {
+  T value{};
+  if (in.size() >= at + sizeof(T)) std::memcpy(&value, in.data() + at, sizeof(T));
+  return value;
+}
+
+std::vector<uint8_t> next_message(int64_t task, int32_t exit_status) {
+  std::vector<uint8_t> m(kNextSize);
+  put(m, 0, &task, 8);
+  put(m, 8, &exit_status, 4);
+  return m;
+}
+
+void send_done(int64_t task, Outcome outcome, const uint8_t* bytes, size_t n) {
+  std::vector<uint8_t> m(kDoneHeader + n);
+  put(m, 0, &task, 8);
+  m[8] = static_cast<uint8_t>(outcome);
+  if (n > 0) std::memcpy(m.data() + kDoneHeader, bytes, n);
+  send_to_rank(0, kTagDone, m);
+}
+
+using Clock = std::chrono::steady_clock;
+
+struct InHand {
+  size_t index = 0;  // into the task list
+  Clock::time_point since;
+};
+
+// What each rank has in hand, for the signal handler's last words.
+void note_tasks_in_hand(const std::map<int, InHand>& in_hand, const std::vector<int>& tasks,
+                        const std::string& noun) {
+  if (in_hand.empty()) {
+    set_signal_note("");
+    return;
+  }
+  std::string note = "fractalis: the job ended while";
+  const char* separator = " ";
+  for (const auto& [rank, hand] : in_hand) {
+    note += separator + std::string("rank ") + std::to_string(rank) + " had " + noun + " " +
+            std::to_string(tasks[hand.index]);
+    separator = ", ";
+  }
+  set_signal_note(note);
+}
+
+}  // namespace
+
+void lead_tasks(const std::vector<int>& tasks, const TaskSharing& how,
+                const std::function<void(int task, std::vector<uint8_t>& result)>& deliver) {
+  const int ranks = mpi_world().size;
+  size_t next = 0;     // the next task to hand out
+  size_t written = 0;  // the next task to deliver
+  std::map<size_t, std::vector<uint8_t>> results;
+  std::map<int, InHand> in_hand;
+  std::deque<int> waiting;  // ranks that asked for a task and have none yet
+  int dismissed = 0;
+  std::optional<std::string> failure;
+
+  while (dismissed < ranks - 1) {
+    bool busy = false;
+    if (auto m = poll_any_rank()) {
+      busy = true;
+      const auto outcome = static_cast<Outcome>(get<uint8_t>(m->bytes, 8));
+      const auto hand = in_hand.find(m->from);
+      if (outcome != Outcome::FirstRequest && hand != in_hand.end()) {
+        const int task = tasks[hand->second.index];
+        if (outcome == Outcome::Result) {
+          m->bytes.erase(m->bytes.begin(), m->bytes.begin() + kDoneHeader);
+          results.emplace(hand->second.index, std::move(m->bytes));
+        } else if (!failure) {
+          failure = "rank " + std::to_string(m->from) + ", " + how.noun + " " +
+                    std::to_string(task) + ": " +
+                    std::string(m->bytes.begin() + kDoneHeader, m->bytes.end());
+        }
+        in_hand.erase(hand);
+      }
+      waiting.push_back(m->from);
+    }
+    // Deliver what is next in order.
+    while (!failure && !results.empty() && results.begin()->first == written) {
+      try {
+        deliver(tasks[written], results.begin()->second);
+      } catch (const std::exception& e) {
+        failure = e.what();
+      }
+      results.erase(results.begin());
+      ++written;
+      busy = true;
+    }
+    // Hand out tasks, within the window; dismiss ranks once there are none (or the job failed).
+    while (!waiting.empty()) {
+      const int rank = waiting.front();
+      if (failure || next == tasks.size()) {
+        send_to_rank(rank, kTagNext, next_message(-1, failure ? 1 : 0));
+        ++dismissed;
+      } else if (how.window == 0 || next < written + how.window) {
+        send_to_rank(rank, kTagNext, next_message(tasks[next], 0));
+        in_hand[rank] = {next++, Clock::now()};
+      } else {
+        break;  // the window is full: results in order come first
+      }
+      waiting.pop_front();
+      busy = true;
+    }
+    note_tasks_in_hand(in_hand, tasks, how.noun);
+    if (how.deadline_s > 0)
+      for (const auto& [rank, hand] : in_hand) {
+        const double held_s = std::chrono::duration<double>(Clock::now() - hand.since).count();
+        if (held_s <= how.deadline_s) continue;
+        spdlog::error(
+            "rank {} has not finished {} {} after {:.0f} s: it died or hangs; ending the job", rank,
+            how.noun, tasks[hand.index], held_s);
+        set_signal_note("");
+        abort_all_ranks(1);
+      }
+    // Rank 0 waits by sleeping, not spinning: on a machine it shares with rendering ranks, a
+    // spinning leader would take a core from them. A millisecond is nothing to a frame.
+    if (!busy) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  set_signal_note("");
+  if (failure) throw std::runtime_error(*failure);
+}
+
+void dismiss_ranks(int exit_status) {
+  for (int dismissed = 0; dismissed < mpi_world().size - 1;) {
+    if (const auto m = poll_any_rank()) {
+      send_to_rank(m->from, kTagNext, next_message(-1, exit_status));
+      ++dismissed;
+    } else {
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+  }
+}
+
+void serve_tasks(const std::function<std::vector<uint8_t>(int task)>& work) {
+  send_done(-1, Outcome::FirstRequest, nullptr, 0);
+  for (;;) {
+    const RankMessage m = receive_from_rank(0);
+    const auto task = get<int64_t>(m.bytes, 0);
+    if (task < 0) {
+      const auto status = get<int32_t>(m.bytes, 8);
+      if (status != 0) throw AlreadyReported(status);
+      return;
+    }
+    try {
+      const std::vector<uint8_t> result = work(static_cast<int>(task));
+      send_done(task, Outcome::Result, result.data(), result.size());
+    } catch (const std::exception& e) {
+      const std::string what = e.what();
+      send_done(task, Outcome::Failed, reinterpret_cast<const uint8_t*>(what.data()), what.size());
+    }
+  }
+}
+
+}  // namespace fr
