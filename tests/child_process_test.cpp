@@ -92,6 +92,32 @@ TEST(ChildProcess, StderrGoesWhereItIsSent) {
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
 }
 
+// A helper of one rank of an MPI job must not start MPI as if it were a rank: the launcher's
+// variables stay behind, everything else goes along.
+TEST(ChildProcess, GetsNoMpiLauncherVariables) {
+  int err[2];
+  ASSERT_EQ(pipe2(err, O_CLOEXEC), 0);
+  setenv("OMPI_COMM_WORLD_SIZE", "3", 1);
+  setenv("PMIX_RANK", "1", 1);
+  setenv("PMI_SIZE", "3", 1);
+  setenv("FRACTALIS_TEST_KEPT", "kept", 1);
+  std::string error;
+  const pid_t shell = start_child_process({"/bin/sh", "-c", "env >&2"}, {}, err[1], &error);
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_SIZE", "FRACTALIS_TEST_KEPT"})
+    unsetenv(name);
+  ASSERT_GT(shell, 0) << error;
+  close(err[1]);
+  std::string environment;
+  char buffer[4096];
+  for (ssize_t n; (n = read(err[0], buffer, sizeof buffer)) > 0;) environment.append(buffer, n);
+  close(err[0]);
+  int status = 0;
+  waitpid(shell, &status, 0);
+  EXPECT_NE(environment.find("FRACTALIS_TEST_KEPT=kept"), std::string::npos) << environment;
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE=", "PMIX_RANK=", "PMI_SIZE="})
+    EXPECT_EQ(environment.find(name), std::string::npos) << name;
+}
+
 TEST(ChildProcess, AMissingProgramIsAnExitStatus) {
   std::string error;
   const pid_t pid = start_child_process({"/no/such/program"}, {}, -1, &error);

@@ -263,6 +263,27 @@ TEST(Mpi, AKilledRankLeavesNoVideo) {
   }
 }
 
+TEST(Mpi, AKilledRankLeavesNoPoster) {
+  const fs::path dir = test_dir("killed_poster");
+  const fs::path poster = dir / "killed_poster.png";
+  BackgroundJob job(dir, mpirun(3) + kFractalis +
+                             " render --scene mandelbulb --size 1600x1200 --samples 4 "
+                             "--band-rows 40 --out " +
+                             poster.string());
+  ASSERT_TRUE(kill_rank_when(2, "killed_poster", SIGKILL, [&] {
+    return file_bytes(job.log).find("band 4/") != std::string::npos;
+  }));
+  const int code = job.wait(60);
+  const std::string log = file_bytes(job.log);
+  EXPECT_NE(code, 0) << log;
+  EXPECT_NE(code, -1) << log;
+  EXPECT_NE(log.find(" had band "), std::string::npos) << log;
+  for (const auto& e : fs::directory_iterator(dir)) {
+    const std::string name = e.path().filename().string();
+    EXPECT_TRUE(name == "job.log" || name == "job.status") << name;
+  }
+}
+
 // A rank that stops answering (SIGSTOP: its own watchdog stops with it) ends the job within the
 // watchdog's time and ten seconds, with a message naming the rank and its frame.
 TEST(Mpi, AStoppedRankEndsTheJobInBoundedTime) {

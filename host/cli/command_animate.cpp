@@ -271,7 +271,7 @@ void report_animation(const AnimateJob& job, const AnimateStats& stats, double s
   out << "rendered " << stats.rendered << (stats.rendered == 1 ? " frame of " : " frames of ")
       << job.p.scene->info.id << " at " << r.width_px << "x" << r.height_px << ", " << job.fps
       << " fps on " << job.p.device.name;
-  if (mpi_world().shared()) out << " by " << mpi_world().size - 1 << " ranks";
+  if (mpi_world().shared()) out << " by " << rendering_ranks_text();
   out << " in " << static_cast<int>(seconds + 0.5) << " s; wrote " << job.out_path.string();
   if (job.video)
     out << " (" << job.video->codec << ", " << job.plan->frames

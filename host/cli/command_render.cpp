@@ -86,6 +86,8 @@ PosterResult share_poster_bands(const PreparedScene& p, const std::string& out_f
         renderer.emplace(*runtime);
       }
       render_poster_band(*renderer, p.scene->info, p.state, whole, band_rows, b, passes, band);
+      // A PNG needs the colours, and the report the rays' ends; the steps stay here.
+      if (passes != Readback::Everything) band.steps.clear();
       std::vector<uint8_t> bytes;
       append_frame_bytes(band, bytes);
       return bytes;
@@ -162,7 +164,7 @@ int render_in_bands(const PreparedScene& p, const std::string& out_file, int ban
   report << "rendered " << p.scene->info.id << " " << width << "x" << height << " in " << r.bands
          << " bands on " << p.device.name << " (lanes " << r.lanes << ", "
          << precision_name(r.precision) << ")";
-  if (world.shared()) report << " by " << world.size - 1 << " ranks";
+  if (world.shared()) report << " by " << rendering_ranks_text();
   report << ": " << static_cast<int>(seconds() * 1000) << " ms; wrote " << out_file << "\n";
   report << "rays: " << r.rays.hit << " hit, " << r.rays.miss << " missed, " << r.rays.out_of_steps
          << " out of steps, " << r.rays.inside << " started inside the surface\n";

@@ -4,8 +4,9 @@
 // only make async-signal-safe calls: everything is prepared before the fork. The child gets
 // /dev/null for stdin and stdout, the descriptors it is given at the numbers it expects, no other
 // descriptor of ours (a plugin must not inherit the window's or another plugin's), an empty
-// signal mask (a mask blocked in one of our threads is inherited through fork), and SIGKILL when
-// fractalis dies, so that no helper outlives it.
+// signal mask (a mask blocked in one of our threads is inherited through fork), SIGKILL when
+// fractalis dies, so that no helper outlives it, and our environment less an MPI launcher's
+// variables (OMPI_*, PMIX_*, PMI_*): a helper of one rank is not a rank of the job.
 #pragma once
 
 #include <sys/types.h>

@@ -78,6 +78,11 @@ void note_tasks_in_hand(const std::map<int, InHand>& in_hand, const std::vector<
 
 }  // namespace
 
+std::string rendering_ranks_text() {
+  const int n = mpi_world().size - 1;
+  return std::to_string(n) + (n == 1 ? " rank" : " ranks");
+}
+
 void lead_tasks(const std::vector<int>& tasks, const TaskSharing& how,
                 const std::function<void(int task, std::vector<uint8_t>& result)>& deliver) {
   const int ranks = mpi_world().size;

@@ -30,6 +30,9 @@ struct TaskSharing {
   double deadline_s = 0;
 };
 
+// "2 ranks": the ranks that render (all but rank 0), for reports.
+std::string rendering_ranks_text();
+
 // Rank 0: shares out `tasks` (task numbers, in the order their results are wanted) until every
 // result is delivered, calling `deliver(task, bytes)` for each in that order, on this thread.
 // Throws std::runtime_error naming the rank and task when a task failed there, or what
