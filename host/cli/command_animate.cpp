@@ -283,6 +283,36 @@ void report_animation(const AnimateJob& job, const AnimateStats& stats, double s
                  100.0 * stats.out_of_steps / stats.pixels, r.max_steps);
 }
 
+// Where the frames go: a video's encoder, or a PNG folder and which of its frames are there.
+struct AnimationOutput {
+  std::unique_ptr<VideoEncoder> encoder;
+  std::optional<SequenceState> sequence;
+};
+
+// Opens the video, or readies the PNG folder (rank 0's job in an MPI job: when it fails, the
+// other ranks are dismissed with its exit status).
+AnimationOutput open_animation_output(const AnimateJob& job, const ParsedOptions& options) {
+  const RenderSettings& r = job.p.render;
+  AnimationOutput output;
+  try {
+    if (job.video) {
+      std::string error;
+      output.encoder = VideoEncoder::open(job.out_path, r.width_px, r.height_px, job.fps, &error);
+      if (!output.encoder) throw std::runtime_error(error);
+    } else {
+      std::string problem;
+      output.sequence = prepare_sequence_folder(
+          job.out_path, identity_of(job.p, options, job.path_file, job.fps), *job.plan,
+          r.width_px, r.height_px, options.has("force"), &problem);
+      if (!output.sequence) throw UsageError("--out: " + problem);
+    }
+  } catch (...) {
+    if (mpi_world().shared()) dismiss_ranks(exit_status_of(std::current_exception()));
+    throw;
+  }
+  return output;
+}
+
 }  // namespace
 
 int command_animate(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
@@ -304,40 +334,15 @@ int command_animate(const std::vector<std::string>& args, std::ostream& out, std
     return 0;
   }
   // Every rank of an MPI job plans the animation; any that fails ends them all.
-  std::optional<AnimateJob> planned;
-  std::exception_ptr failure;
-  try {
-    planned = plan_animation(options);
-  } catch (...) {
-    failure = std::current_exception();
-  }
-  agree_across_ranks(failure);
-  AnimateJob& job = *planned;
+  AnimateJob job = prepare_on_every_rank([&] { return plan_animation(options); });
   const MpiWorld& world = mpi_world();
   if (world.rank != 0) {
     serve_frames(job, options);
     return 0;
   }
-  const RenderSettings& r = job.p.render;
-  std::optional<SequenceState> sequence;
-  std::unique_ptr<VideoEncoder> encoder;
-  try {
-    if (job.video) {
-      std::string error;
-      encoder = VideoEncoder::open(job.out_path, r.width_px, r.height_px, job.fps, &error);
-      if (!encoder) throw std::runtime_error(error);
-    } else {
-      std::string problem;
-      sequence = prepare_sequence_folder(job.out_path,
-                                         identity_of(job.p, options, job.path_file, job.fps),
-                                         *job.plan, r.width_px, r.height_px, options.has("force"),
-                                         &problem);
-      if (!sequence) throw UsageError("--out: " + problem);
-    }
-  } catch (...) {
-    if (world.shared()) dismiss_ranks(exit_status_of(std::current_exception()));
-    throw;
-  }
+  AnimationOutput output = open_animation_output(job, options);
+  std::optional<SequenceState>& sequence = output.sequence;
+  VideoEncoder* encoder = output.encoder.get();
   if (sequence && sequence->done == job.plan->frames) {
     if (world.shared()) dismiss_ranks(0);
     out << "all " << job.plan->frames << " frames of " << job.out_path.string()
@@ -349,8 +354,8 @@ int command_animate(const std::vector<std::string>& args, std::ostream& out, std
   const auto start = std::chrono::steady_clock::now();
   const AnimateStats stats =
       world.shared()
-          ? lead_frames(job, encoder.get(), sequence ? &*sequence : nullptr, err)
-          : render_frames(job, options, encoder.get(), sequence ? &*sequence : nullptr, err);
+          ? lead_frames(job, encoder, sequence ? &*sequence : nullptr, err)
+          : render_frames(job, options, encoder, sequence ? &*sequence : nullptr, err);
   report_animation(job, stats,
                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
                    out);

@@ -239,6 +239,35 @@ void render_whole(PreparedScene& p, const std::string& out_file, std::ostream& r
   if (p.render.count_evaluations) report << format_eval_counts(renderer.eval_counts());
 }
 
+// One picture, checked before anything is rendered: the scene, the output, the bands.
+struct RenderJob {
+  PreparedScene p;
+  int band_rows = 0;  // 0: the whole image at once
+};
+
+RenderJob plan_render(const ParsedOptions& options, const std::string& out_file) {
+  check_render_output(out_file);
+  RenderJob job{prepare_scene(options, kMaxPosterSide)};
+  PreparedScene& p = job.p;
+  p.render.count_evaluations = options.has("counts");
+  update_scene(p, p.state.time_s);
+  const uint64_t pixels = static_cast<uint64_t>(p.render.width_px) * p.render.height_px;
+  if (const auto rows = options.get("band-rows"))
+    job.band_rows = static_cast<int>(parse_integer("--band-rows", *rows, 1, kMaxPosterSide));
+  else if (pixels > poster_band_pixels(out_file))
+    job.band_rows =
+        poster_band_rows(p.render.width_px, p.render.height_px, poster_band_pixels(out_file));
+  if (job.band_rows > 0) {
+    if (p.render.count_evaluations)
+      throw UsageError("--counts: not for images rendered in bands (--band-rows, or over " +
+                       std::to_string(poster_band_pixels(out_file)) + " pixels)");
+    RenderSettings band = p.render;
+    band.height_px = std::min(job.band_rows, p.render.height_px);
+    check_memory(band, p.device, is_exr_file_name(out_file));
+  }
+  return job;
+}
+
 }  // namespace
 
 int command_render(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
@@ -259,34 +288,9 @@ int command_render(const std::vector<std::string>& args, std::ostream& out, std:
   }
   const std::string out_file = options.get("out").value_or("fractalis.png");
   // Every rank of an MPI job reads the options and loads the scene; any that fails ends them all.
-  std::optional<PreparedScene> prepared;
-  int band_rows = 0;  // 0: the whole image at once
-  std::exception_ptr failure;
-  try {
-    check_render_output(out_file);
-    prepared = prepare_scene(options, kMaxPosterSide);
-    PreparedScene& p = *prepared;
-    p.render.count_evaluations = options.has("counts");
-    update_scene(p, p.state.time_s);
-    const uint64_t pixels = static_cast<uint64_t>(p.render.width_px) * p.render.height_px;
-    if (const auto rows = options.get("band-rows"))
-      band_rows = static_cast<int>(parse_integer("--band-rows", *rows, 1, kMaxPosterSide));
-    else if (pixels > poster_band_pixels(out_file))
-      band_rows = poster_band_rows(p.render.width_px, p.render.height_px,
-                                   poster_band_pixels(out_file));
-    if (band_rows > 0) {
-      if (p.render.count_evaluations)
-        throw UsageError("--counts: not for images rendered in bands (--band-rows, or over " +
-                         std::to_string(poster_band_pixels(out_file)) + " pixels)");
-      RenderSettings band = p.render;
-      band.height_px = std::min(band_rows, p.render.height_px);
-      check_memory(band, p.device, is_exr_file_name(out_file));
-    }
-  } catch (...) {
-    failure = std::current_exception();
-  }
-  agree_across_ranks(failure);
-  PreparedScene& p = *prepared;
+  RenderJob job = prepare_on_every_rank([&] { return plan_render(options, out_file); });
+  PreparedScene& p = job.p;
+  const int band_rows = job.band_rows;
   // `--out /dev/stdout | viewer`: the PNG is the output, the report goes to stderr.
   std::ostream& report = is_standard_output(out_file) ? err : out;
   if (band_rows > 0) return render_in_bands(p, out_file, band_rows, report, err);

@@ -4,6 +4,7 @@
 
 #include <exception>
 #include <iosfwd>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,20 @@ int exit_status_of(std::exception_ptr failure);
 // lowest failing rank its own error (naming the rank unless it is 0), the others AlreadyReported
 // with that rank's exit status, so the error is said once. Outside MPI it rethrows `failure`.
 void agree_across_ranks(std::exception_ptr failure);
+
+// `prepare()`'s result on every rank, once every rank has prepared (agree_across_ranks).
+template <typename Prepare>
+auto prepare_on_every_rank(Prepare prepare) -> decltype(prepare()) {
+  std::optional<decltype(prepare())> prepared;
+  std::exception_ptr failure;
+  try {
+    prepared.emplace(prepare());
+  } catch (...) {
+    failure = std::current_exception();
+  }
+  agree_across_ranks(failure);
+  return std::move(*prepared);
+}
 
 int command_render(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 int command_animate(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);

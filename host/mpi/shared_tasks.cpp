@@ -83,80 +83,123 @@ std::string rendering_ranks_text() {
   return std::to_string(n) + (n == 1 ? " rank" : " ranks");
 }
 
-void lead_tasks(const std::vector<int>& tasks, const TaskSharing& how,
-                const std::function<void(int task, std::vector<uint8_t>& result)>& deliver) {
-  const int ranks = mpi_world().size;
-  size_t next = 0;     // the next task to hand out
-  size_t written = 0;  // the next task to deliver
-  std::map<size_t, std::vector<uint8_t>> results;
-  std::map<int, InHand> in_hand;
-  std::deque<int> waiting;  // ranks that asked for a task and have none yet
-  int dismissed = 0;
-  std::optional<std::string> failure;
+namespace {
 
-  while (dismissed < ranks - 1) {
-    bool busy = false;
-    if (auto m = poll_any_rank()) {
-      busy = true;
-      const auto outcome = static_cast<Outcome>(get<uint8_t>(m->bytes, 8));
-      const auto hand = in_hand.find(m->from);
-      if (outcome != Outcome::FirstRequest && hand != in_hand.end()) {
-        const int task = tasks[hand->second.index];
-        if (outcome == Outcome::Result) {
-          m->bytes.erase(m->bytes.begin(), m->bytes.begin() + kDoneHeader);
-          results.emplace(hand->second.index, std::move(m->bytes));
-        } else if (!failure) {
-          failure = "rank " + std::to_string(m->from) + ", " + how.noun + " " +
-                    std::to_string(task) + ": " +
-                    std::string(m->bytes.begin() + kDoneHeader, m->bytes.end());
-        }
-        in_hand.erase(hand);
+// Rank 0's side of a shared job, one step at a time (lead_tasks runs the steps in a loop).
+class TaskLeader {
+ public:
+  using Deliver = std::function<void(int task, std::vector<uint8_t>& result)>;
+  TaskLeader(const std::vector<int>& tasks, const TaskSharing& how, const Deliver& deliver)
+      : tasks_(tasks), how_(how), deliver_(deliver) {}
+
+  // Every rank has been dismissed.
+  bool done() const { return dismissed_ == mpi_world().size - 1; }
+  const std::optional<std::string>& failure() const { return failure_; }
+
+  // Takes one message, if one came: a rank's result or failure, and its request for more.
+  bool take_message() {
+    auto m = poll_any_rank();
+    if (!m) return false;
+    const auto outcome = static_cast<Outcome>(get<uint8_t>(m->bytes, 8));
+    const auto hand = in_hand_.find(m->from);
+    if (outcome != Outcome::FirstRequest && hand != in_hand_.end()) {
+      if (outcome == Outcome::Result) {
+        m->bytes.erase(m->bytes.begin(), m->bytes.begin() + kDoneHeader);
+        results_.emplace(hand->second.index, std::move(m->bytes));
+      } else if (!failure_) {
+        failure_ = "rank " + std::to_string(m->from) + ", " + how_.noun + " " +
+                   std::to_string(tasks_[hand->second.index]) + ": " +
+                   std::string(m->bytes.begin() + kDoneHeader, m->bytes.end());
       }
-      waiting.push_back(m->from);
+      in_hand_.erase(hand);
     }
-    // Deliver what is next in order.
-    while (!failure && !results.empty() && results.begin()->first == written) {
+    waiting_.push_back(m->from);
+    return true;
+  }
+
+  // Delivers the results that are next in order.
+  bool deliver_in_order() {
+    bool delivered = false;
+    while (!failure_ && !results_.empty() && results_.begin()->first == written_) {
       try {
-        deliver(tasks[written], results.begin()->second);
+        deliver_(tasks_[written_], results_.begin()->second);
       } catch (const std::exception& e) {
-        failure = e.what();
+        failure_ = e.what();
       }
-      results.erase(results.begin());
-      ++written;
-      busy = true;
+      results_.erase(results_.begin());
+      ++written_;
+      delivered = true;
     }
-    // Hand out tasks, within the window; dismiss ranks once there are none (or the job failed).
-    while (!waiting.empty()) {
-      const int rank = waiting.front();
-      if (failure || next == tasks.size()) {
-        send_to_rank(rank, kTagNext, next_message(-1, failure ? 1 : 0));
-        ++dismissed;
-      } else if (how.window == 0 || next < written + how.window) {
-        send_to_rank(rank, kTagNext, next_message(tasks[next], 0));
-        in_hand[rank] = {next++, Clock::now()};
+    return delivered;
+  }
+
+  // Hands tasks to the ranks that asked, within the window; dismisses them once there are none
+  // (or the job failed).
+  bool hand_out() {
+    bool handed = false;
+    while (!waiting_.empty()) {
+      const int rank = waiting_.front();
+      if (failure_ || next_ == tasks_.size()) {
+        send_to_rank(rank, kTagNext, next_message(-1, failure_ ? 1 : 0));
+        ++dismissed_;
+      } else if (how_.window == 0 || next_ < written_ + how_.window) {
+        send_to_rank(rank, kTagNext, next_message(tasks_[next_], 0));
+        in_hand_[rank] = {next_++, Clock::now()};
       } else {
         break;  // the window is full: results in order come first
       }
-      waiting.pop_front();
-      busy = true;
+      waiting_.pop_front();
+      handed = true;
     }
-    note_tasks_in_hand(in_hand, tasks, how.noun);
-    if (how.deadline_s > 0)
-      for (const auto& [rank, hand] : in_hand) {
-        const double held_s = std::chrono::duration<double>(Clock::now() - hand.since).count();
-        if (held_s <= how.deadline_s) continue;
-        spdlog::error(
-            "rank {} has not finished {} {} after {:.0f} s: it died or hangs; ending the job", rank,
-            how.noun, tasks[hand.index], held_s);
-        set_signal_note("");
-        abort_all_ranks(1);
-      }
+    return handed;
+  }
+
+  // What each rank has in hand, for the signal handler's last words.
+  void note_in_hand() const { note_tasks_in_hand(in_hand_, tasks_, how_.noun); }
+
+  // Ends the job when a task has been out longer than the deadline.
+  void check_deadlines() const {
+    if (how_.deadline_s <= 0) return;
+    for (const auto& [rank, hand] : in_hand_) {
+      const double held_s = std::chrono::duration<double>(Clock::now() - hand.since).count();
+      if (held_s <= how_.deadline_s) continue;
+      spdlog::error("rank {} has not finished {} {} after {:.0f} s: it died or hangs; ending the job",
+                    rank, how_.noun, tasks_[hand.index], held_s);
+      set_signal_note("");
+      abort_all_ranks(1);
+    }
+  }
+
+ private:
+  const std::vector<int>& tasks_;
+  const TaskSharing& how_;
+  const Deliver& deliver_;
+  size_t next_ = 0;     // the next task to hand out
+  size_t written_ = 0;  // the next task to deliver
+  std::map<size_t, std::vector<uint8_t>> results_;
+  std::map<int, InHand> in_hand_;
+  std::deque<int> waiting_;  // ranks that asked for a task and have none yet
+  int dismissed_ = 0;
+  std::optional<std::string> failure_;
+};
+
+}  // namespace
+
+void lead_tasks(const std::vector<int>& tasks, const TaskSharing& how,
+                const std::function<void(int task, std::vector<uint8_t>& result)>& deliver) {
+  TaskLeader leader(tasks, how, deliver);
+  while (!leader.done()) {
+    const bool took = leader.take_message();
+    const bool delivered = leader.deliver_in_order();
+    const bool handed = leader.hand_out();
+    if (took || handed) leader.note_in_hand();
+    leader.check_deadlines();
     // Rank 0 waits by sleeping, not spinning: on a machine it shares with rendering ranks, a
     // spinning leader would take a core from them. A millisecond is nothing to a frame.
-    if (!busy) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    if (!took && !delivered && !handed) std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
   set_signal_note("");
-  if (failure) throw std::runtime_error(*failure);
+  if (leader.failure()) throw std::runtime_error(*leader.failure());
 }
 
 void dismiss_ranks(int exit_status) {
