@@ -11,14 +11,7 @@
 #if defined(__SANITIZE_ADDRESS__)
 extern "C" const char* __lsan_default_suppressions() {
   return "leak:libpocl.so\n"
-         "leak:libLLVM\n"
-         // Open MPI (ranks of an MPI job) keeps its own state, and its plugins', until exit.
-         "leak:libmpi.so\n"
-         "leak:libopen-pal.so\n"
-         "leak:libopen-rte.so\n"
-         "leak:libpmix.so\n"
-         "leak:libhwloc.so\n"
-         "leak:libevent\n";
+         "leak:libLLVM\n";
 }
 // Without the table of what was suppressed at every exit: it is the same table each time.
 extern "C" const char* __lsan_default_options() {
