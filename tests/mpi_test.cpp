@@ -49,7 +49,8 @@ JobRun run(const std::string& command) {
 }
 
 std::string mpirun(int ranks) {
-  return std::string(MPIEXEC) + " --oversubscribe -np " + std::to_string(ranks) + " ";
+  return std::string(MPIEXEC) + " --oversubscribe --bind-to none -np " + std::to_string(ranks) +
+         " ";
 }
 
 std::string file_bytes(const fs::path& file) {
@@ -233,13 +234,13 @@ TEST(Mpi, AKilledRankEndsTheJobAndTheFolderResumes) {
 
   // The rest, with two ranks: only the missing frames, and the folder is one process's.
   const JobRun rest = run(mpirun(2) + kFractalis + " animate" + kSlowFrames + "--path " + path +
-                       " --out " + folder.string());
+                          " --out " + folder.string());
   ASSERT_EQ(rest.code, 0) << rest.output;
   EXPECT_NE(rest.output.find("resuming: " + std::to_string(kept) + " of 25 frames are there"),
             std::string::npos)
       << rest.output;
   const JobRun one = run(kFractalis + " animate" + kSlowFrames + "--path " + path + " --out " +
-                      (dir / "one").string());
+                         (dir / "one").string());
   ASSERT_EQ(one.code, 0) << one.output;
   EXPECT_EQ(folder_bytes(folder), folder_bytes(dir / "one"));
 }
@@ -310,7 +311,7 @@ TEST(Mpi, AStoppedRankEndsTheJobInBoundedTime) {
 TEST(Mpi, ErrorsAndOtherCommandsComeFromRankZeroAlone) {
   const fs::path dir = test_dir("errors");
   const JobRun bad = run(mpirun(3) + kFractalis + " animate --scene no_such_scene --path " +
-                      write_path(dir).string() + " --out " + (dir / "x").string());
+                         write_path(dir).string() + " --out " + (dir / "x").string());
   EXPECT_EQ(bad.code, 2) << bad.output;
   EXPECT_EQ(count_of(bad.output, "unknown scene 'no_such_scene'"), 1u) << bad.output;
   const JobRun list = run(mpirun(3) + kFractalis + " list");
@@ -325,7 +326,7 @@ TEST(Mpi, ErrorsAndOtherCommandsComeFromRankZeroAlone) {
 TEST(Mpi, WithoutALauncherItIsOneProcess) {
   const fs::path dir = test_dir("alone");
   const JobRun r = run(kFractalis + " render --scene menger --size 64x40 --band-rows 8 --out " +
-                    (dir / "a.png").string());
+                       (dir / "a.png").string());
   EXPECT_EQ(r.code, 0) << r.output;
   EXPECT_EQ(r.output.find("ranks"), std::string::npos) << r.output;
 }

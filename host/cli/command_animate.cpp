@@ -204,8 +204,8 @@ void serve_frames(AnimateJob& job, const ParsedOptions& options) {
   serve_tasks([&](int i) {
     // Each frame under its own watchdog: waiting for rank 0 between frames is not rendering.
     Watchdog watchdog(job.p.render.watchdog_s, "rendering scene '" + job.p.scene->info.id +
-                                                   "' (rank " + std::to_string(rank) +
-                                                   ", frame " + std::to_string(i) + ")");
+                                                   "' (rank " + std::to_string(rank) + ", frame " +
+                                                   std::to_string(i) + ")");
     if (!renderer) {
       runtime.emplace(job.p.device);
       renderer.emplace(*runtime);
@@ -239,8 +239,8 @@ AnimateStats lead_frames(const AnimateJob& job, VideoEncoder* encoder,
   // are written where they are rendered; only their counts come back.
   how.window = encoder ? 2 * static_cast<size_t>(mpi_world().size) : 0;
   how.deadline_s = rank_task_deadline_s(job.p.render.watchdog_s);
-  const size_t frame_bytes = 4 * static_cast<size_t>(job.p.render.width_px) *
-                             static_cast<size_t>(job.p.render.height_px);
+  const size_t frame_bytes =
+      4 * static_cast<size_t>(job.p.render.width_px) * static_cast<size_t>(job.p.render.height_px);
   std::vector<uint8_t> rgba8;
   std::string error;
   lead_tasks(frames, how, [&](int i, std::vector<uint8_t>& bytes) {
@@ -302,8 +302,8 @@ AnimationOutput open_animation_output(const AnimateJob& job, const ParsedOptions
     } else {
       std::string problem;
       output.sequence = prepare_sequence_folder(
-          job.out_path, identity_of(job.p, options, job.path_file, job.fps), *job.plan,
-          r.width_px, r.height_px, options.has("force"), &problem);
+          job.out_path, identity_of(job.p, options, job.path_file, job.fps), *job.plan, r.width_px,
+          r.height_px, options.has("force"), &problem);
       if (!output.sequence) throw UsageError("--out: " + problem);
     }
   } catch (...) {
@@ -353,9 +353,8 @@ int command_animate(const std::vector<std::string>& args, std::ostream& out, std
     out << "resuming: " << sequence->done << " of " << job.plan->frames << " frames are there\n";
   const auto start = std::chrono::steady_clock::now();
   const AnimateStats stats =
-      world.shared()
-          ? lead_frames(job, encoder, sequence ? &*sequence : nullptr, err)
-          : render_frames(job, options, encoder, sequence ? &*sequence : nullptr, err);
+      world.shared() ? lead_frames(job, encoder, sequence ? &*sequence : nullptr, err)
+                     : render_frames(job, options, encoder, sequence ? &*sequence : nullptr, err);
   report_animation(job, stats,
                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
                    out);

@@ -2,11 +2,11 @@
 #include "cli/prepared_scene.hpp"
 #include "cli/progress.hpp"
 #include "cli/watchdog.hpp"
+#include "image/band_writer.hpp"
 #include "image/exr_write.hpp"
+#include "image/frame_bytes.hpp"
 #include "image/png_write.hpp"
 #include "image/poster.hpp"
-#include "image/band_writer.hpp"
-#include "image/frame_bytes.hpp"
 #include "io/atomic_file.hpp"
 #include "mpi/mpi_world.hpp"
 #include "mpi/shared_tasks.hpp"
@@ -62,8 +62,8 @@ void report_rays(const FrameImage& image, const fr_camera& camera, const RenderS
 // The ranks of an MPI job share a poster's bands (mpi/shared_tasks.hpp): rank 0 writes them in
 // order as they come back, the others render them. The same bands as one process renders, so
 // the same file.
-PosterResult share_poster_bands(const PreparedScene& p, const std::string& out_file,
-                                int band_rows, Progress& progress) {
+PosterResult share_poster_bands(const PreparedScene& p, const std::string& out_file, int band_rows,
+                                Progress& progress) {
   const int width = p.render.width_px, height = p.render.height_px;
   const int bands = (height + band_rows - 1) / band_rows;
   const Readback passes = BandWriter::passes_for(out_file);
@@ -77,9 +77,9 @@ PosterResult share_poster_bands(const PreparedScene& p, const std::string& out_f
     FrameImage band;
     serve_tasks([&](int b) {
       // Each band under its own watchdog: waiting for rank 0 between bands is not rendering.
-      Watchdog watchdog(p.render.watchdog_s, "rendering scene '" + p.scene->info.id +
-                                                 "' (rank " + std::to_string(world.rank) +
-                                                 ", band " + std::to_string(b) + ")");
+      Watchdog watchdog(p.render.watchdog_s, "rendering scene '" + p.scene->info.id + "' (rank " +
+                                                 std::to_string(world.rank) + ", band " +
+                                                 std::to_string(b) + ")");
       if (!renderer) {
         runtime.emplace(p.device);
         whole = poster_settings(*runtime, p.scene->info, p.state, p.render);
@@ -185,10 +185,11 @@ std::vector<OptionSpec> render_option_specs() {
   specs.push_back({"path", "FILE", false,
                    "camera path (TOML keyframes): the view and parameters at --time (default: "
                    "its first keyframe); --eye, --param and the like still override"});
-  specs.push_back({"band-rows", "N", false,
-                   "render in bands of N rows, streamed to the file (default: bands of 8 M pixels\n"
-                   "                                 over that size); in an MPI job the ranks share\n"
-                   "                                 the bands"});
+  specs.push_back(
+      {"band-rows", "N", false,
+       "render in bands of N rows, streamed to the file (default: bands of 8 M pixels\n"
+       "                                 over that size); in an MPI job the ranks share\n"
+       "                                 the bands"});
   specs.push_back({"counts", nullptr, false,
                    "also report where the DE evaluations went, per stage (a counting kernel:\n"
                    "                                 slower; the picture is the same)"});

@@ -35,7 +35,8 @@ void render_poster_band(Renderer& renderer, const SceneInfo& info, const SceneSt
   RenderSettings s = whole;
   s.height_px = std::min(band_rows, whole.height_px - y0);
   s.window = {whole.width_px, whole.height_px, 0, y0};
-  for (int i = 0; i < std::max(1, s.samples); ++i) renderer.render_sample(info, state, s, i, passes);
+  for (int i = 0; i < std::max(1, s.samples); ++i)
+    renderer.render_sample(info, state, s, i, passes);
   renderer.finish(s, passes, image);
 }
 

@@ -4,10 +4,14 @@
 #include "io/atomic_file.hpp"
 
 #include <mpi.h>
+#include <sched.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <limits>
+#include <thread>
 
 namespace fr {
 namespace {
@@ -47,12 +51,38 @@ void finish_mpi() {
   MPI_Finalize();
 }
 
-const MpiWorld& mpi_world() { return g_world; }
+const MpiWorld& mpi_world() {
+  return g_world;
+}
 
 std::vector<int> gather_from_all_ranks(int value) {
   std::vector<int> all(static_cast<size_t>(g_world.size), value);
   if (g_started) MPI_Allgather(&value, 1, MPI_INT, all.data(), 1, MPI_INT, MPI_COMM_WORLD);
   return all;
+}
+
+void wait_for_all_ranks() {
+  if (!g_started) return;
+  MPI_Request request;
+  MPI_Ibarrier(MPI_COMM_WORLD, &request);
+  for (int done = 0;;) {
+    MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+    if (done) return;
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+}
+
+std::string core_binding_problem() {
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  if (sched_getaffinity(0, sizeof set, &set) != 0) return "";
+  const int allowed = CPU_COUNT(&set);
+  const long online = sysconf(_SC_NPROCESSORS_ONLN);
+  if (online <= 0 || allowed >= online) return "";
+  return "rank " + std::to_string(g_world.rank) + " may run on " + std::to_string(allowed) +
+         " of this machine's " + std::to_string(online) +
+         " cores (the launcher bound it), and renders on those alone; mpirun --bind-to none "
+         "(or srun --cpu-bind=none) lets each rank use every core";
 }
 
 void abort_all_ranks(int exit_status) {
@@ -87,7 +117,9 @@ RankMessage receive_body(int from, int header_tag) {
   return m;
 }
 
-bool is_header_tag(int tag) { return tag >= kSizeTagOffset; }
+bool is_header_tag(int tag) {
+  return tag >= kSizeTagOffset;
+}
 
 }  // namespace
 
@@ -106,8 +138,14 @@ std::optional<RankMessage> poll_any_rank() {
 }
 
 RankMessage receive_from_rank(int rank) {
+  // Polled, not MPI_Probe: Open MPI's blocking calls spin on a core, and the rank waited for
+  // may be rank 0 encoding on the same machine.
   MPI_Status status;
-  MPI_Probe(rank, MPI_ANY_TAG, MPI_COMM_WORLD, &status);
+  for (int flag = 0;;) {
+    MPI_Iprobe(rank, MPI_ANY_TAG, MPI_COMM_WORLD, &flag, &status);
+    if (flag) break;
+    std::this_thread::sleep_for(std::chrono::microseconds(200));
+  }
   if (!is_header_tag(status.MPI_TAG)) abort_all_ranks(1);
   return receive_body(rank, status.MPI_TAG);
 }

@@ -39,6 +39,15 @@ const MpiWorld& mpi_world();
 // call it, in the same order). A world of one gets its own value back.
 std::vector<int> gather_from_all_ranks(int value);
 
+// When this process may run on fewer cores than the machine has (its CPU affinity: mpirun binds
+// each rank of a small job to one core by default), what to say about it; else empty. A rank
+// renders with every core it may use, as fractalis alone does.
+std::string core_binding_problem();
+
+// Waits until every rank has called it (a collective, like gather_from_all_ranks), by polling:
+// a rank that waits long (its share of the work done) leaves its core to the others.
+void wait_for_all_ranks();
+
 // Ends every process of the job at once with `exit_status` (the launcher reports it). For a
 // rank that died or hangs: nothing else would end the others.
 [[noreturn]] void abort_all_ranks(int exit_status);

@@ -19,7 +19,9 @@ long launched_copies() {
   return 1;
 }
 
-[[noreturn]] void no_mpi() { throw std::logic_error("this fractalis was built without MPI"); }
+[[noreturn]] void no_mpi() {
+  throw std::logic_error("this fractalis was built without MPI");
+}
 
 }  // namespace
 
@@ -35,17 +37,33 @@ bool start_mpi(int*, char***, std::string* problem) {
 
 void finish_mpi() {}
 
-const MpiWorld& mpi_world() { return g_world; }
+const MpiWorld& mpi_world() {
+  return g_world;
+}
 
-std::vector<int> gather_from_all_ranks(int value) { return {value}; }
+std::vector<int> gather_from_all_ranks(int value) {
+  return {value};
+}
+
+void wait_for_all_ranks() {}
+
+std::string core_binding_problem() {
+  return "";
+}
 
 void abort_all_ranks(int exit_status) {
   remove_temp_files();
   std::_Exit(exit_status);
 }
 
-void send_to_rank(int, int, const std::vector<uint8_t>&) { no_mpi(); }
-std::optional<RankMessage> poll_any_rank() { no_mpi(); }
-RankMessage receive_from_rank(int) { no_mpi(); }
+void send_to_rank(int, int, const std::vector<uint8_t>&) {
+  no_mpi();
+}
+std::optional<RankMessage> poll_any_rank() {
+  no_mpi();
+}
+RankMessage receive_from_rank(int) {
+  no_mpi();
+}
 
 }  // namespace fr

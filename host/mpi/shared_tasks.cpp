@@ -163,8 +163,9 @@ class TaskLeader {
     for (const auto& [rank, hand] : in_hand_) {
       const double held_s = std::chrono::duration<double>(Clock::now() - hand.since).count();
       if (held_s <= how_.deadline_s) continue;
-      spdlog::error("rank {} has not finished {} {} after {:.0f} s: it died or hangs; ending the job",
-                    rank, how_.noun, tasks_[hand.index], held_s);
+      spdlog::error(
+          "rank {} has not finished {} {} after {:.0f} s: it died or hangs; ending the job", rank,
+          how_.noun, tasks_[hand.index], held_s);
       set_signal_note("");
       abort_all_ranks(1);
     }
@@ -189,9 +190,10 @@ void lead_tasks(const std::vector<int>& tasks, const TaskSharing& how,
                 const std::function<void(int task, std::vector<uint8_t>& result)>& deliver) {
   TaskLeader leader(tasks, how, deliver);
   while (!leader.done()) {
+    // Hand out before delivering: a rank that asked renders while rank 0 encodes.
     const bool took = leader.take_message();
-    const bool delivered = leader.deliver_in_order();
     const bool handed = leader.hand_out();
+    const bool delivered = leader.deliver_in_order();
     if (took || handed) leader.note_in_hand();
     leader.check_deadlines();
     // Rank 0 waits by sleeping, not spinning: on a machine it shares with rendering ranks, a
@@ -199,6 +201,9 @@ void lead_tasks(const std::vector<int>& tasks, const TaskSharing& how,
     if (!took && !delivered && !handed) std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
   set_signal_note("");
+  // Every rank leaves the job together: a rank dismissed early must not start on whatever comes
+  // next while rank 0 still listens for this job's results.
+  wait_for_all_ranks();
   if (leader.failure()) throw std::runtime_error(*leader.failure());
 }
 
@@ -211,14 +216,18 @@ void dismiss_ranks(int exit_status) {
       std::this_thread::sleep_for(std::chrono::milliseconds(1));
     }
   }
+  wait_for_all_ranks();
 }
 
 void serve_tasks(const std::function<std::vector<uint8_t>(int task)>& work) {
+  if (const std::string problem = core_binding_problem(); !problem.empty())
+    spdlog::warn("{}", problem);
   send_done(-1, Outcome::FirstRequest, nullptr, 0);
   for (;;) {
     const RankMessage m = receive_from_rank(0);
     const auto task = get<int64_t>(m.bytes, 0);
     if (task < 0) {
+      wait_for_all_ranks();  // with rank 0, once every rank is dismissed (lead_tasks)
       const auto status = get<int32_t>(m.bytes, 8);
       if (status != 0) throw AlreadyReported(status);
       return;

@@ -33,6 +33,10 @@ struct TaskSharing {
 // "2 ranks": the ranks that render (all but rank 0), for reports.
 std::string rendering_ranks_text();
 
+// lead_tasks (or dismiss_ranks) on rank 0 and serve_tasks on the others make one job: each
+// returns once every rank has been dismissed, so that one job's messages never mix with the
+// next's.
+
 // Rank 0: shares out `tasks` (task numbers, in the order their results are wanted) until every
 // result is delivered, calling `deliver(task, bytes)` for each in that order, on this thread.
 // Throws std::runtime_error naming the rank and task when a task failed there, or what
