@@ -30,6 +30,10 @@ TEST(Cli, UsageErrors) {
       "unknown scene 'nope' (available: benchmark, julia, mandelbulb, menger, sierpinski)");
   expect_usage_error({"render", "--param", "nokey=1"}, "has no parameter 'nokey'");
   expect_usage_error({"render", "--param", "power"}, "expected KEY=VALUE");
+  expect_usage_error({"render", "--band-rows", "0"}, "--band-rows: 0 is outside [1, 65535]");
+  expect_usage_error({"render", "--band-rows", "12x"}, "--band-rows: '12x' is not a whole number");
+  expect_usage_error({"render", "--size", "64x40", "--band-rows", "8", "--counts"},
+                     "--counts: not for images rendered in bands");
   expect_usage_error({"render", "--param", "power=nan"}, "'nan' is not a finite number");
   expect_usage_error({"render", "--param", "power=inf"}, "is not a finite number");
   expect_usage_error({"render", "--param", "power=abc"}, "'abc' is not a number");
@@ -94,9 +98,14 @@ TEST(Cli, LongAndHostileValuesAreEchoedShort) {
   EXPECT_EQ(escape.code, 2);
   EXPECT_NE(escape.err.find("unknown scene '\\x1b]0;owned\\x07'"), std::string::npos) << escape.err;
   // A C1 control (CSI as U+009B, which some terminals obey) and a byte that is not UTF-8.
-  const CliRun c1 = run({"render", "--scene", "a\xc2\x9b" "2Jb\xff"});
+  const CliRun c1 = run({"render", "--scene",
+                         "a\xc2\x9b"
+                         "2Jb\xff"});
   EXPECT_EQ(c1.code, 2);
-  EXPECT_NE(c1.err.find("unknown scene 'a\\xc2\\x9b" "2Jb\\xff'"), std::string::npos) << c1.err;
+  EXPECT_NE(c1.err.find("unknown scene 'a\\xc2\\x9b"
+                        "2Jb\\xff'"),
+            std::string::npos)
+      << c1.err;
 }
 
 // render --path: a keyframe's time renders exactly what that keyframe's view and parameters

@@ -162,8 +162,8 @@ int render_in_bands(const PreparedScene& p, const std::string& out_file, int ban
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
   report << "rendered " << p.scene->info.id << " " << width << "x" << height << " in " << r.bands
-         << " bands on " << p.device.name << " (lanes " << r.lanes << ", "
-         << precision_name(r.precision) << ")";
+         << (r.bands == 1 ? " band on " : " bands on ") << p.device.name << " (lanes " << r.lanes
+         << ", " << precision_name(r.precision) << ")";
   if (world.shared()) report << " by " << rendering_ranks_text();
   report << ": " << static_cast<int>(seconds() * 1000) << " ms; wrote " << out_file << "\n";
   report << "rays: " << r.rays.hit << " hit, " << r.rays.miss << " missed, " << r.rays.out_of_steps
