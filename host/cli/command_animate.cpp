@@ -106,7 +106,9 @@ AnimateJob plan_animation(const ParsedOptions& options) {
                      "' (videos: " + video_extension_list() +
                      "; any other name is a folder of PNG frames)");
   if (job.video) {
-    check_output_file("--out", job.out_path.string());
+    // Rank 0 writes a video: other ranks of an MPI job, perhaps on machines without that
+    // folder, do not look for it.
+    if (mpi_world().rank == 0) check_output_file("--out", job.out_path.string());
     if (options.has("force"))
       throw UsageError("--force: only a PNG folder resumes; a video is always written anew");
   }

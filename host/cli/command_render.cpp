@@ -59,41 +59,39 @@ void report_rays(const FrameImage& image, const fr_camera& camera, const RenderS
   }
 }
 
-// The ranks of an MPI job share a poster's bands (mpi/shared_tasks.hpp): rank 0 writes them in
-// order as they come back, the others render them. The same bands as one process renders, so
-// the same file.
-PosterResult share_poster_bands(const PreparedScene& p, const std::string& out_file, int band_rows,
-                                Progress& progress) {
+// An MPI job's ranks other than 0 (mpi/shared_tasks.hpp): render the bands rank 0 hands out and
+// send them back, each under its own watchdog (waiting for rank 0 between bands is not
+// rendering).
+void serve_poster_bands(const PreparedScene& p, int band_rows, Readback passes) {
+  std::optional<ClRuntime> runtime;
+  std::optional<Renderer> renderer;
+  RenderSettings whole;
+  FrameImage band;
+  const std::string rank = std::to_string(mpi_world().rank);
+  serve_tasks([&](int b) {
+    Watchdog watchdog(p.render.watchdog_s, "rendering scene '" + p.scene->info.id + "' (rank " +
+                                               rank + ", band " + std::to_string(b) + ")");
+    if (!renderer) {
+      runtime.emplace(p.device);
+      whole = poster_settings(*runtime, p.scene->info, p.state, p.render);
+      renderer.emplace(*runtime);
+    }
+    render_poster_band(*renderer, p.scene->info, p.state, whole, band_rows, b, passes, band);
+    // A PNG needs the colours, and the report the rays' ends; the steps stay here.
+    if (passes != Readback::Everything) band.steps.clear();
+    std::vector<uint8_t> bytes;
+    append_frame_bytes(band, bytes);
+    return bytes;
+  });
+}
+
+// Rank 0 of an MPI job: hands the bands out and writes them in order as they come back. The same
+// bands as one process renders, so the same file.
+PosterResult lead_poster_bands(const PreparedScene& p, const std::string& out_file, int band_rows,
+                               Progress& progress) {
   const int width = p.render.width_px, height = p.render.height_px;
-  const int bands = (height + band_rows - 1) / band_rows;
-  const Readback passes = BandWriter::passes_for(out_file);
-  const MpiWorld& world = mpi_world();
   PosterResult result;
-  result.bands = bands;
-  if (world.rank != 0) {
-    std::optional<ClRuntime> runtime;
-    std::optional<Renderer> renderer;
-    RenderSettings whole;
-    FrameImage band;
-    serve_tasks([&](int b) {
-      // Each band under its own watchdog: waiting for rank 0 between bands is not rendering.
-      Watchdog watchdog(p.render.watchdog_s, "rendering scene '" + p.scene->info.id + "' (rank " +
-                                                 std::to_string(world.rank) + ", band " +
-                                                 std::to_string(b) + ")");
-      if (!renderer) {
-        runtime.emplace(p.device);
-        whole = poster_settings(*runtime, p.scene->info, p.state, p.render);
-        renderer.emplace(*runtime);
-      }
-      render_poster_band(*renderer, p.scene->info, p.state, whole, band_rows, b, passes, band);
-      // A PNG needs the colours, and the report the rays' ends; the steps stay here.
-      if (passes != Readback::Everything) band.steps.clear();
-      std::vector<uint8_t> bytes;
-      append_frame_bytes(band, bytes);
-      return bytes;
-    });
-    return result;
-  }
+  result.bands = (height + band_rows - 1) / band_rows;
   std::optional<BandWriter> writer;
   try {
     writer.emplace(out_file, width, height);
@@ -101,14 +99,13 @@ PosterResult share_poster_bands(const PreparedScene& p, const std::string& out_f
     dismiss_ranks(1);
     throw;
   }
-  std::vector<int> tasks(static_cast<size_t>(bands));
-  for (int b = 0; b < bands; ++b) tasks[static_cast<size_t>(b)] = b;
+  std::vector<int> tasks(static_cast<size_t>(result.bands));
+  for (int b = 0; b < result.bands; ++b) tasks[static_cast<size_t>(b)] = b;
   TaskSharing how;
   how.noun = "band";
-  how.window = static_cast<size_t>(world.size);  // bands held at rank 0: memory stays bounded
+  how.window = static_cast<size_t>(mpi_world().size);  // bands held here: memory stays bounded
   how.deadline_s = rank_task_deadline_s(p.render.watchdog_s);
   FrameImage band;
-  bool first = true;
   lead_tasks(tasks, how, [&](int b, std::vector<uint8_t>& bytes) {
     size_t at = 0;
     read_frame_bytes(bytes, &at, band);
@@ -119,11 +116,10 @@ PosterResult share_poster_bands(const PreparedScene& p, const std::string& out_f
                                std::to_string(band.height_px) + ", not " + std::to_string(width) +
                                "x" + std::to_string(rows));
     // Auto precision is decided on each rank; bands in different precisions would not match.
-    if (!first && band.precision != result.precision)
+    if (b > 0 && band.precision != result.precision)
       throw std::runtime_error(
           "the ranks chose different precisions for the bands (machines that differ?); give "
           "--precision float or --precision double");
-    first = false;
     result.precision = band.precision;
     result.lanes = band.lanes;
     writer->write_rows(band);
@@ -143,9 +139,11 @@ int render_in_bands(const PreparedScene& p, const std::string& out_file, int ban
   const auto start = std::chrono::steady_clock::now();
   Progress progress(err, "band", (height + band_rows - 1) / band_rows);  // rank 0's alone
   PosterResult r;
-  if (world.shared()) {
-    r = share_poster_bands(p, out_file, band_rows, progress);
-    if (world.rank != 0) return 0;
+  if (world.shared() && world.rank != 0) {
+    serve_poster_bands(p, band_rows, BandWriter::passes_for(out_file));
+    return 0;
+  } else if (world.shared()) {
+    r = lead_poster_bands(p, out_file, band_rows, progress);
   } else {
     ClRuntime runtime(p.device);
     // The watchdog guards each band: a poster may take longer than render.watchdog_s in all.
@@ -247,7 +245,9 @@ struct RenderJob {
 };
 
 RenderJob plan_render(const ParsedOptions& options, const std::string& out_file) {
-  check_render_output(out_file);
+  // Rank 0 writes the file: other ranks of an MPI job, perhaps on machines without that folder,
+  // do not look for it.
+  if (mpi_world().rank == 0) check_render_output(out_file);
   RenderJob job{prepare_scene(options, kMaxPosterSide)};
   PreparedScene& p = job.p;
   p.render.count_evaluations = options.has("counts");
