@@ -12,8 +12,8 @@ targets=("$@")
 [ ${#targets[@]} -eq 0 ] && targets=(settings_file set_override command_line scene_descriptor scene_desc_copy camera_path)
 
 FRACTALIS_BUILD="$FRACTALIS_ROOT/build-fuzz"
-# Without MPI: the fuzz targets need none, and so this build is also the one .ci/run checks a
-# fractalis without MPI with.
+# Without MPI: the fuzz targets need none, and so CI also builds the host library without it here
+# (tests/mpi_single_test.cpp checks that world of one process in every build).
 if [ ! -f "$FRACTALIS_BUILD/CMakeCache.txt" ]; then
   CC=clang CXX=clang++ cmake -S "$FRACTALIS_ROOT" -B "$FRACTALIS_BUILD" \
     -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFRACTALIS_FUZZ=ON -DFRACTALIS_TESTS=OFF \
