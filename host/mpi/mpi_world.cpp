@@ -28,7 +28,9 @@ bool launched_by_mpi_launcher() {
 // One message travels as a header (its size) and then pieces of at most kPieceBytes, since MPI
 // counts in int.
 constexpr size_t kPieceBytes = size_t{1} << 30;
-constexpr int kSizeTagOffset = 1 << 20;  // the header's tag: the message's own tag plus this
+// The header's tag: the message's own tag plus this. Tags stay far below 32767, the least upper
+// bound (MPI_TAG_UB) the standard lets an MPI library have.
+constexpr int kSizeTagOffset = 100;
 
 }  // namespace
 

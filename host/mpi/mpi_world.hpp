@@ -52,7 +52,7 @@ void wait_for_all_ranks();
 // rank that died or hangs: nothing else would end the others.
 [[noreturn]] void abort_all_ranks(int exit_status);
 
-// Messages between ranks: a tag and bytes. Sizes over 2 GiB travel in pieces.
+// Messages between ranks: a tag (0 to 99) and bytes. Sizes over 2 GiB travel in pieces.
 struct RankMessage {
   int from = -1;
   int tag = 0;
