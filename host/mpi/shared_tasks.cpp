@@ -76,15 +76,6 @@ void note_tasks_in_hand(const std::map<int, InHand>& in_hand, const std::vector<
   set_signal_note(note);
 }
 
-}  // namespace
-
-std::string rendering_ranks_text() {
-  const int n = mpi_world().size - 1;
-  return std::to_string(n) + (n == 1 ? " rank" : " ranks");
-}
-
-namespace {
-
 // Rank 0's side of a shared job, one step at a time (lead_tasks runs the steps in a loop).
 class TaskLeader {
  public:
@@ -240,6 +231,11 @@ void serve_tasks(const std::function<std::vector<uint8_t>(int task)>& work) {
       send_done(task, Outcome::Failed, reinterpret_cast<const uint8_t*>(what.data()), what.size());
     }
   }
+}
+
+std::string rendering_ranks_text() {
+  const int n = mpi_world().size - 1;
+  return std::to_string(n) + (n == 1 ? " rank" : " ranks");
 }
 
 }  // namespace fr
