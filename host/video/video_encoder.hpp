@@ -1,7 +1,7 @@
 // video_encoder.hpp — frames in, an encoded video file out, through the FFmpeg libraries
 // (libavcodec, libavformat, libswscale).
 //
-// The container follows the file's extension: .mp4 and .mkv hold H.264 (libx264, CRF 18), .webm
+// The container follows the file's extension: .mp4 and .mkv hold H.264 (libx264, CRF 15), .webm
 // holds VP9 (libvpx-vp9, CRF 31, constant quality). Frames are 8-bit sRGB RGBA, converted to
 // yuv420p with the BT.709 matrix in limited range and tagged so, which is what players expect
 // of HD video; yuv420p halves the chroma both ways, so width and height must be even.
