@@ -123,8 +123,8 @@ TEST(OutputSafety, StandardOutputCarriesOnlyThePng) {
 // Runs fractalis with `args` in `dir` (stdout and stderr to /dev/null, SIGINT and SIGTERM at
 // their defaults, as from a terminal: a shell running the tests in the background may have set
 // SIGINT to be ignored, which fractalis rightly leaves alone) and sends `sig` the moment a file
-// whose name starts with `watch_prefix` appears. Returns the exit status; *seen says whether the
-// file appeared.
+// whose name starts with `watch_prefix` appears. Returns the wait status (also when it ended
+// before the file appeared); *seen says whether the file appeared.
 int signal_when_file_appears(const std::filesystem::path& dir, std::vector<std::string> args,
                              const std::string& watch_prefix, int sig, bool* seen) {
   const pid_t pid = fork();
@@ -147,7 +147,8 @@ int signal_when_file_appears(const std::filesystem::path& dir, std::vector<std::
     for (const auto& e : std::filesystem::directory_iterator(dir))
       if (e.path().filename().string().rfind(watch_prefix, 0) == 0) *seen = true;
     if (!*seen) {
-      if (waitpid(pid, nullptr, WNOHANG) == pid) return -1;  // finished before we saw it
+      int early = 0;
+      if (waitpid(pid, &early, WNOHANG) == pid) return early;  // finished before we saw it
       std::this_thread::sleep_for(std::chrono::microseconds(200));
     }
   }
@@ -164,7 +165,9 @@ void kill_during_write(int sig, const std::vector<std::string>& args, const std:
                                       "eye = [0, 1, 3]\ntarget = [0, 0, 0]\n";
   bool seen = false;
   const int status = signal_when_file_appears(dir, args, "." + file + ".", sig, &seen);
-  ASSERT_TRUE(seen) << "the temporary file was never seen";
+  ASSERT_TRUE(seen) << "the temporary file was never seen: fractalis ended first, status "
+                    << status << " (exit " << (WIFEXITED(status) ? WEXITSTATUS(status) : -1)
+                    << ", signal " << (WIFSIGNALED(status) ? WTERMSIG(status) : 0) << ")";
   EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == sig)
       << "ended by the signal, not otherwise (status " << status << ")";
   std::string left;
