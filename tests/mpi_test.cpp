@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -210,6 +211,21 @@ bool kill_rank_when(int rank, const std::string& marker, int sig, Ready ready) {
   return false;
 }
 
+// The job ends within 60 s with a failure, rank 0 saying what the ranks had (`in_hand`), and
+// `dir` holds nothing but `inputs` and the job's own log: no output, no temporary file.
+void expect_failed_leaving_only(BackgroundJob& job, const fs::path& dir, const std::string& in_hand,
+                                const std::set<std::string>& inputs) {
+  const int code = job.wait(60);
+  const std::string log = file_bytes(job.log);
+  EXPECT_NE(code, 0) << log;
+  EXPECT_NE(code, -1) << "the job did not end within 60 s\n" << log;
+  EXPECT_NE(log.find(in_hand), std::string::npos) << log;
+  for (const auto& e : fs::directory_iterator(dir)) {
+    const std::string name = e.path().filename().string();
+    EXPECT_TRUE(inputs.count(name) || e.path() == job.log || e.path() == job.status) << name;
+  }
+}
+
 const std::string kSlowFrames = " --scene mandelbulb --fps 12 --size 480x270 --samples 3 ";
 
 TEST(Mpi, AKilledRankEndsTheJobAndTheFolderResumes) {
@@ -254,14 +270,7 @@ TEST(Mpi, AKilledRankLeavesNoVideo) {
   ASSERT_TRUE(kill_rank_when(1, "killed_video", SIGKILL, [&] {
     return file_bytes(job.log).find("frame 3/") != std::string::npos;
   }));
-  const int code = job.wait(60);
-  const std::string log = file_bytes(job.log);
-  EXPECT_NE(code, 0) << log;
-  EXPECT_NE(code, -1) << log;
-  for (const auto& e : fs::directory_iterator(dir)) {
-    const std::string name = e.path().filename().string();
-    EXPECT_TRUE(name == "orbit.toml" || name == "job.log" || name == "job.status") << name;
-  }
+  expect_failed_leaving_only(job, dir, " had frame ", {"orbit.toml"});
 }
 
 TEST(Mpi, AKilledRankLeavesNoPoster) {
@@ -274,15 +283,7 @@ TEST(Mpi, AKilledRankLeavesNoPoster) {
   ASSERT_TRUE(kill_rank_when(2, "killed_poster", SIGKILL, [&] {
     return file_bytes(job.log).find("band 4/") != std::string::npos;
   }));
-  const int code = job.wait(60);
-  const std::string log = file_bytes(job.log);
-  EXPECT_NE(code, 0) << log;
-  EXPECT_NE(code, -1) << log;
-  EXPECT_NE(log.find(" had band "), std::string::npos) << log;
-  for (const auto& e : fs::directory_iterator(dir)) {
-    const std::string name = e.path().filename().string();
-    EXPECT_TRUE(name == "job.log" || name == "job.status") << name;
-  }
+  expect_failed_leaving_only(job, dir, " had band ", {});
 }
 
 // A rank that stops answering (SIGSTOP: its own watchdog stops with it) ends the job within the
