@@ -36,8 +36,8 @@ class ExplorerWindow : public ::testing::Test {
     window = std::make_unique<Window>("Fractalis test", kW, kH, false);
     library =
         std::make_unique<SceneLibrary>(std::vector<std::filesystem::path>{SCENE_PLUGIN_DIR},
-                                       PluginPolicy{}, RenderSettings{}, test::runtime(), &events);
-    explorer = std::make_unique<Explorer>(Settings{}, test::runtime(), *library, "mandelbulb");
+                                       PluginPolicy{}, RenderSettings{}, test::worker(), &events);
+    explorer = std::make_unique<Explorer>(Settings{}, test::worker(), *library, "mandelbulb");
   }
   // One frame of the loop: poll, update (scene time fixed at 0), render, present.
   void frame(InputState& input, bool capture = false) {
@@ -254,7 +254,7 @@ TEST_F(ExplorerWindow, QuitEndsTheLoop) {
 TEST(OverlayOnEveryScreen, ReadableWithNoLabelCut) {
   ASSERT_TRUE(display_available()) << "run under xvfb-run";
   std::vector<SceneEvent> events;
-  SceneLibrary library({SCENE_PLUGIN_DIR}, PluginPolicy{}, RenderSettings{}, test::runtime(),
+  SceneLibrary library({SCENE_PLUGIN_DIR}, PluginPolicy{}, RenderSettings{}, test::worker(),
                        &events);
   for (const auto& [w, h] : std::vector<std::pair<int, int>>{
            {1280, 720}, {1366, 768}, {1920, 1080}, {2560, 1440}, {3840, 2160}}) {
@@ -262,7 +262,7 @@ TEST(OverlayOnEveryScreen, ReadableWithNoLabelCut) {
     Window window("Fractalis overlay test", w, h, false);
     ASSERT_EQ(window.height_px(), h) << "the X server's screen must hold the window";
     for (const char* scene : {"mandelbulb", "benchmark"}) {
-      Explorer explorer(Settings{}, test::runtime(), library, scene);
+      Explorer explorer(Settings{}, test::worker(), library, scene);
       OverlayState overlay;
       overlay.expand_all = true;
       for (int frame = 0; frame < 3; ++frame) {  // auto-fit settles over a frame or two

@@ -71,7 +71,7 @@ TEST(HotReload, AddChangeBreakRemove) {
   std::optional<LogSession> session(std::in_place, log, LogOptions{});
   const auto folder = test::fresh_dir("hot_reload");
   std::vector<SceneEvent> events;
-  SceneLibrary lib({folder}, PluginPolicy{}, RenderSettings{}, test::runtime(), &events);
+  SceneLibrary lib({folder}, PluginPolicy{}, RenderSettings{}, test::worker(), &events);
   EXPECT_TRUE(lib.slots().empty());
   FrameClock clock;
   std::string m;
@@ -169,7 +169,7 @@ TEST(HotReload, ThousandReloadsLeakNothing) {
   const auto folder = test::fresh_dir("hot_reload_soak");
   drop(reload_plugin("reload_a"), folder, "soak_probe.so");
   std::vector<SceneEvent> events;
-  SceneLibrary lib({folder}, PluginPolicy{}, RenderSettings{}, test::runtime(), &events);
+  SceneLibrary lib({folder}, PluginPolicy{}, RenderSettings{}, test::worker(), &events);
   ASSERT_EQ(lib.slots().size(), 1u);
   FrameClock clock;
   std::string m;
@@ -212,7 +212,7 @@ TEST(HotReload, StartupVetsEveryScene) {
   PluginPolicy policy;
   policy.vet_timeout_s = 8;
   std::vector<SceneEvent> events;
-  SceneLibrary lib({folder}, policy, RenderSettings{}, test::runtime(), &events);
+  SceneLibrary lib({folder}, policy, RenderSettings{}, test::worker(), &events);
   ASSERT_EQ(lib.slots().size(), 1u);
   EXPECT_EQ(lib.slots()[0].scene->info.id, "reload_probe");
   // The good scene is added; the looping one is skipped, with why.
@@ -237,7 +237,7 @@ TEST(HotReload, HostileBuildsNeverReplaceTheRunningScene) {
   policy.load_timeout_s = 2;
   policy.call_timeout_s = 0.5;
   policy.vet_timeout_s = 8;
-  SceneLibrary lib({folder}, policy, RenderSettings{}, test::runtime(), &events);
+  SceneLibrary lib({folder}, policy, RenderSettings{}, test::worker(), &events);
   ASSERT_EQ(lib.slots().size(), 2u);
   FrameClock clock;
   std::string m;

@@ -20,6 +20,7 @@ const std::vector<std::string> kFloors = {
     "mpi",       // the ranks of an MPI job and the tasks they share
     "plugin",    // plugin files and code, the scene-host process
     "render",    // OpenCL, kernels, the renderer, its settings
+    "worker",    // the render worker process that runs scene kernels
     "settings",  // the settings file over RenderSettings and the rest
     "image",     // PNG, OpenEXR, posters
     "video",     // the FFmpeg encoder

@@ -30,7 +30,7 @@ TEST(Poster, BandsJoinWithoutSeams) {
   const FrameImage whole = whole_renderer.render(scene->info, state, s, true);
 
   const auto file = test::fresh_dir("poster") / "bands.png";
-  const PosterResult r = render_poster(test::runtime(), scene->info, state, s, file, 97 * 7);
+  const PosterResult r = render_poster(test::worker(), scene->info, state, s, file, 97 * 7);
   EXPECT_EQ(r.bands, 9);  // 8 bands of 7 rows and one of 5
   int w = 0, h = 0, channels = 0;
   stbi_uc* pixels = stbi_load(file.c_str(), &w, &h, &channels, 4);
@@ -60,7 +60,7 @@ TEST(Poster, ExrBandsJoinWithoutSeams) {
   std::string error;
   ASSERT_TRUE(write_exr_atomic(dir / "whole.exr", whole, &error)) << error;
   const PosterResult r =
-      render_poster(test::runtime(), scene->info, state, s, dir / "bands.exr", 97 * 7);
+      render_poster(test::worker(), scene->info, state, s, dir / "bands.exr", 97 * 7);
   EXPECT_EQ(r.bands, 9);
   const test::ExrImage a = test::read_exr(dir / "whole.exr"), b = test::read_exr(dir / "bands.exr");
   ASSERT_EQ(b.width, 97);
@@ -94,7 +94,7 @@ TEST(Poster, SamplesApplyPerBand) {
   Renderer whole_renderer(test::runtime());
   const FrameImage whole = whole_renderer.render(scene->info, state, s);
   const auto file = test::fresh_dir("poster_samples") / "aa.png";
-  render_poster(test::runtime(), scene->info, state, s, file, 40 * 5);
+  render_poster(test::worker(), scene->info, state, s, file, 40 * 5);
   int w = 0, h = 0, channels = 0;
   stbi_uc* pixels = stbi_load(file.c_str(), &w, &h, &channels, 4);
   ASSERT_NE(pixels, nullptr);
@@ -110,7 +110,7 @@ TEST(Poster, UnwritableTargetLeavesNothing) {
   const auto dir = test::fresh_dir("poster_fail");
   RenderSettings s;
   s.width_px = s.height_px = 8;
-  EXPECT_THROW(render_poster(test::runtime(), scene->info, make_default_state(scene->info), s, dir),
+  EXPECT_THROW(render_poster(test::worker(), scene->info, make_default_state(scene->info), s, dir),
                std::runtime_error);
   EXPECT_TRUE(std::filesystem::is_empty(dir));
 }

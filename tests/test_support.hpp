@@ -4,6 +4,7 @@
 #include "plugin/plugin_loader.hpp"
 #include "render/cl_runtime.hpp"
 #include "render/device.hpp"
+#include "worker/render_worker.hpp"
 
 #include <gtest/gtest.h>
 #include <stb_image.h>
@@ -46,6 +47,13 @@ inline ClRuntime& runtime() {
     return std::make_unique<ClRuntime>(*device);
   }();
   return *rt;
+}
+
+// A render worker (a fractalis-render-worker process) on the same device, started on first use.
+inline RenderWorker& worker() {
+  static std::unique_ptr<RenderWorker> w = std::make_unique<RenderWorker>(
+      runtime().device(), command_worker_limits(PluginPolicy{}, 600));
+  return *w;
 }
 
 // A file's whole content ("" when it cannot be read).

@@ -5,8 +5,6 @@
 #include "render/memory_budget.hpp"
 #include "scene/vec3.hpp"
 
-#include "render/de_probe.hpp"
-
 #include <spdlog/spdlog.h>
 
 #include <chrono>
@@ -25,9 +23,9 @@ bool same_state(const SceneState& a, const SceneState& b) {
 
 }  // namespace
 
-Explorer::Explorer(const Settings& settings, ClRuntime& runtime, SceneLibrary& library,
+Explorer::Explorer(const Settings& settings, RenderWorker& worker, SceneLibrary& library,
                    const std::string& scene_id)
-    : runtime_(runtime), library_(library), renderer_(runtime), settings_(settings) {
+    : worker_(worker), library_(library), settings_(settings) {
   controls_.mouse_sensitivity_deg_per_px = settings.explorer.mouse_sensitivity_deg_per_px;
   controls_.invert_y = settings.explorer.invert_y;
   controls_.speed_per_distance = settings.explorer.speed;
@@ -98,7 +96,10 @@ bool Explorer::update(const InputState& input, double dt_s, double now_s) {
   // The flying speed follows the scene's own DE at the eye, evaluated on the device.
   const std::array<float, 3> eye_f = to_float3(slot.state.camera.eye);
   try {
-    stats_.surface_distance = probe_de(runtime_, slot.scene->info, slot.state.params, {eye_f})[0];
+    stats_.surface_distance = worker_.probe_de(slot.scene->info, slot.state.params, {eye_f})[0];
+  } catch (const RenderWorkerFailure& e) {
+    worker_failed(slot, e);
+    stats_.surface_distance = 0.1;
   } catch (const std::exception& e) {
     slot.error = e.what();
     stats_.surface_distance = 0.1;
@@ -135,19 +136,29 @@ const FrameImage* Explorer::render(int window_width_px, int window_height_px) {
   s.max_steps = std::max(16, static_cast<int>(s.max_steps * plan.step_budget));
   s.count_evaluations = count_evaluations_;
   SceneSlot& slot = current();
+  // What took the worker down is not tried again (a fresh worker each frame) until it changes.
+  if (failed_state_ && failed_scene_id_ == slot.scene->info.id &&
+      same_state(*failed_state_, slot.state))
+    return nullptr;
   const auto start = std::chrono::steady_clock::now();
   try {
     // Steps and ray status on every sample, so that one kernel serves the whole refinement.
-    renderer_.render_sample(slot.scene->info, slot.state, s, plan.sample_index,
-                            Readback::DisplayAndSteps);
-    renderer_.finish(s, plan.sample_index == 0 ? Readback::DisplayAndSteps : Readback::Display,
-                     last_);
+    worker_.render_sample(slot.scene->info, slot.state, s, plan.sample_index,
+                          Readback::DisplayAndSteps);
+    worker_.finish(s, plan.sample_index == 0 ? Readback::DisplayAndSteps : Readback::Display,
+                   last_);
+  } catch (const RenderWorkerFailure& e) {
+    worker_failed(slot, e);
+    return nullptr;
   } catch (const std::exception& e) {
     // Said once, not every frame while it keeps failing.
     if (slot.error != e.what()) spdlog::error("{}", e.what());
     slot.error = e.what();
     return nullptr;
   }
+  good_scene_id_ = slot.scene->info.id;
+  good_state_ = slot.state;
+  failed_state_.reset();
   stats_.frame_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   frames_.report(stats_.frame_ms);
@@ -157,10 +168,27 @@ const FrameImage* Explorer::render(int window_width_px, int window_height_px) {
     stats_.de_steps_per_pixel = total / static_cast<double>(last_.steps.size());
     stats_.out_of_steps_fraction =
         double(count_rays(last_).out_of_steps) / static_cast<double>(last_.steps.size());
-    if (count_evaluations_) stats_.eval_counts = renderer_.eval_counts();
+    if (count_evaluations_) stats_.eval_counts = worker_.eval_counts();
   }
   stats_.precision = last_.precision;
   return &last_;
+}
+
+void Explorer::worker_failed(SceneSlot& slot, const RenderWorkerFailure& failure) {
+  const std::string& id = slot.scene->info.id;
+  spdlog::error("{}", failure.what());
+  slot.error = failure.what();
+  failed_scene_id_ = id;
+  failed_state_ = slot.state;
+  changed_ = true;
+  if (good_state_ && good_scene_id_ == id) {
+    slot.state.params = good_state_->params;  // the parameter that took it down goes back
+    slot.state.camera = good_state_->camera;  // and so does the view that did
+    spdlog::info("scene '{}': back to the last view and parameters that rendered", id);
+  } else if (const int good = library_.find(good_scene_id_); good >= 0 && good != current_) {
+    spdlog::info("back to scene '{}', the last one that rendered", good_scene_id_);
+    select_scene(good);
+  }
 }
 
 void Explorer::set_count_evaluations(bool on) {
@@ -187,14 +215,20 @@ bool Explorer::screenshot(const std::filesystem::path& file, int width_px, int h
   RenderSettings band = s;
   band.height_px = poster_band_rows(width_px, height_px, poster_band_pixels(file));
   const auto need = render_memory_need(band.width_px, band.height_px, is_exr_file_name(file));
-  if (const std::string problem = memory_problem(need, runtime_.device()); !problem.empty()) {
+  if (const std::string problem = memory_problem(need, worker_.device()); !problem.empty()) {
     *error = "screenshot at " + std::to_string(width_px) + "x" + std::to_string(height_px) + ": " +
              problem;
     return false;
   }
+  // The poster's samples replace the view's in the worker: the view refines again afterwards.
+  changed_ = true;
   try {
-    render_poster(runtime_, slot.scene->info, slot.state, s, file, poster_band_pixels(file));
+    render_poster(worker_, slot.scene->info, slot.state, s, file, poster_band_pixels(file));
     return true;
+  } catch (const RenderWorkerFailure& e) {
+    worker_failed(slot, e);
+    *error = e.what();
+    return false;
   } catch (const std::exception& e) {
     *error = e.what();
     return false;

@@ -10,6 +10,7 @@
 #include "app/scene_library.hpp"
 #include "render/renderer.hpp"
 #include "settings/settings.hpp"
+#include "worker/render_worker.hpp"
 
 #include <deque>
 #include <optional>
@@ -32,7 +33,8 @@ struct ExplorerStats {
 
 class Explorer {
  public:
-  Explorer(const Settings& settings, ClRuntime& runtime, SceneLibrary& library,
+  // Renders in `worker` (every scene kernel runs there: worker/render_worker.hpp).
+  Explorer(const Settings& settings, RenderWorker& worker, SceneLibrary& library,
            const std::string& scene_id);
 
   // One frame's update: triggered actions, camera, the scene's update callback at scene time
@@ -72,9 +74,18 @@ class Explorer {
   const std::vector<Action>& pending_window_actions() const { return window_actions_; }
 
  private:
-  ClRuntime& runtime_;
+  // The render worker ended (a DE crashed or hung it): say so, and go back to the last state that
+  // rendered, so that the next frame (in a fresh worker) shows a picture again.
+  void worker_failed(SceneSlot& slot, const RenderWorkerFailure& failure);
+
+  RenderWorker& worker_;
   SceneLibrary& library_;
-  Renderer renderer_;
+  // The last scene and state that rendered; and the state that took the worker down, not tried
+  // again until something changes.
+  std::string good_scene_id_;
+  std::optional<SceneState> good_state_;
+  std::string failed_scene_id_;
+  std::optional<SceneState> failed_state_;
   Settings settings_;
   CameraControls controls_;
   FrameController frames_;

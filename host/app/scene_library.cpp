@@ -1,9 +1,9 @@
 #include "app/scene_library.hpp"
 
-#include "render/scene_vetting.hpp"
-#include "plugin/plugin_loader.hpp"
 #include "io/printable.hpp"
+#include "plugin/plugin_loader.hpp"
 #include "render/kernel_assembly.hpp"
+#include "render/scene_vetting.hpp"
 
 #include <spdlog/spdlog.h>
 
@@ -45,9 +45,9 @@ bool make_slot(std::shared_ptr<const LoadedScene> scene, SceneSlot* slot, std::s
 }
 
 SceneLibrary::SceneLibrary(std::vector<std::filesystem::path> folders, const PluginPolicy& policy,
-                           const RenderSettings& settings, ClRuntime& runtime,
+                           const RenderSettings& settings, RenderWorker& worker,
                            std::vector<SceneEvent>* events)
-    : policy_(policy), runtime_(runtime) {
+    : policy_(policy), worker_(worker) {
   std::vector<LoadOutcome> outcomes = load_scene_folder(folders, policy_);
   // Test renders of the scenes not vetted before, at once (each waits on its own process).
   std::vector<uint64_t> hashes(outcomes.size());
@@ -57,7 +57,7 @@ SceneLibrary::SceneLibrary(std::vector<std::filesystem::path> folders, const Plu
     hashes[i] = VettedScenes::content_hash(outcomes[i].file);
     if (vetted_.contains(hashes[i], settings)) continue;
     vets[i] = std::async(std::launch::async, vet_scene, outcomes[i].file, settings,
-                         runtime_.device().name, policy_.vet_timeout_s);
+                         worker_.device().name, policy_.vet_timeout_s);
   }
   for (size_t i = 0; i < outcomes.size(); ++i) {
     const LoadOutcome& o = outcomes[i];
@@ -79,6 +79,7 @@ SceneLibrary::SceneLibrary(std::vector<std::filesystem::path> folders, const Plu
     SceneSlot slot;
     std::string error;
     if (make_slot(o.scene, &slot, &error)) {
+      worker_.name_scene_file(o.scene->info.id, o.file);
       events->push_back({SceneEvent::Kind::Added, o.scene->info.id, o.file, ""});
       slots_.push_back(std::move(slot));
     } else {
@@ -130,10 +131,11 @@ SceneEvent SceneLibrary::add_or_replace(const std::filesystem::path& file,
   }
   // Build the kernel now, so a scene that does not compile never replaces a working one.
   try {
-    const int lanes = resolve_lanes(settings.lanes, &runtime_.device());
-    const auto k = assemble_render_kernel(o.scene->info, fresh.state.params,
-                                          make_kernel_config(o.scene->info, settings, lanes));
-    runtime_.program(k.source, k.build_options, k.description);
+    const auto k = assemble_render_kernel(
+        o.scene->info, fresh.state.params,
+        make_kernel_config(o.scene->info, settings, worker_.lanes_for(settings)));
+    worker_.name_scene_file(o.scene->info.id, file);
+    worker_.build(o.scene->info, k.source, k.build_options, k.description);
   } catch (const std::exception& e) {
     return keep_old(e.what());
   }
@@ -141,7 +143,7 @@ SceneEvent SceneLibrary::add_or_replace(const std::filesystem::path& file,
   // process with a time limit first (once per file content and kernel shape).
   const uint64_t hash = VettedScenes::content_hash(file);
   if (!vetted_.contains(hash, settings)) {
-    const VetResult vet = vet_scene(file, settings, runtime_.device().name, policy_.vet_timeout_s);
+    const VetResult vet = vet_scene(file, settings, worker_.device().name, policy_.vet_timeout_s);
     if (!vet.ok) return keep_old(vet.error);
     vetted_.insert(hash, settings);
   }

@@ -12,7 +12,7 @@
 #include "render/scene_vetting.hpp"
 #include "plugin/plugin_policy.hpp"
 #include "plugin/plugin_watcher.hpp"
-#include "render/cl_runtime.hpp"
+#include "worker/render_worker.hpp"
 #include "render/render_settings.hpp"
 
 #include <memory>
@@ -48,7 +48,8 @@ class SceneLibrary {
   // Each scene is vetted (scene_vetting.hpp) before it is added, once per file content; the
   // test renders run in parallel.
   SceneLibrary(std::vector<std::filesystem::path> folders, const PluginPolicy& policy,
-               const RenderSettings& settings, ClRuntime& runtime, std::vector<SceneEvent>* events);
+               const RenderSettings& settings, RenderWorker& worker,
+               std::vector<SceneEvent>* events);
 
   std::vector<SceneSlot>& slots() { return slots_; }
   int find(const std::string& id) const;  // slot index or -1
@@ -64,7 +65,7 @@ class SceneLibrary {
 
   PluginPolicy policy_;
   VettedScenes vetted_;
-  ClRuntime& runtime_;
+  RenderWorker& worker_;
   std::vector<SceneSlot> slots_;
   std::vector<std::unique_ptr<PluginWatcher>> watchers_;
 };

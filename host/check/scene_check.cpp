@@ -1,14 +1,13 @@
 #include "check/scene_check.hpp"
 
-#include "render/scene_vetting.hpp"
 #include "check/de_overestimate.hpp"
-#include "plugin/plugin_loader.hpp"
 #include "io/printable.hpp"
+#include "plugin/plugin_loader.hpp"
 #include "plugin/scene_code.hpp"
 #include "plugin/scene_instance.hpp"
-#include "render/de_probe.hpp"
 #include "render/kernel_assembly.hpp"
 #include "render/renderer.hpp"
+#include "render/scene_vetting.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -75,8 +74,8 @@ bool same_state(const SceneState& a, const SceneState& b) {
 
 class Checker {
  public:
-  Checker(const std::filesystem::path& file, const CheckOptions& options, ClRuntime& runtime)
-      : file_(file), options_(options), runtime_(runtime) {
+  Checker(const std::filesystem::path& file, const CheckOptions& options, RenderWorker& worker)
+      : file_(file), options_(options), worker_(worker) {
     report_.file = printable(file.string());
   }
 
@@ -108,6 +107,7 @@ class Checker {
     scene_ = o.scene;
     const SceneInfo& info = scene_->info;
     report_.scene_id = info.id;
+    worker_.name_scene_file(info.id, report_.file);
     add("descriptor", CheckStatus::Pass,
         "'" + info.id + "' " + info.version + ": " + std::to_string(info.params.size()) +
             " parameters, " + std::to_string(info.lights.size()) + " lights; every rule kept");
@@ -119,7 +119,7 @@ class Checker {
     const SceneInfo& info = scene_->info;
     std::vector<std::string> built, failed;
     for (Precision precision : {Precision::Float, Precision::Double}) {
-      if (precision == Precision::Double && !runtime_.device().has_fp64) continue;
+      if (precision == Precision::Double && !worker_.device().has_fp64) continue;
       for (int lanes : {1, 16}) {
         const std::string shape =
             std::string(precision_name(precision)) + " x" + std::to_string(lanes);
@@ -127,7 +127,7 @@ class Checker {
           // Build only: running the DE waits for check_returns.
           const AssembledKernel k =
               assemble_probe_kernel(info, defaults_.params, KernelConfig{lanes, precision});
-          runtime_.program(k.source, k.build_options, k.description);
+          worker_.build(info, k.source, k.build_options, k.description);
           built.push_back(shape);
         } catch (const std::exception& e) {
           failed.push_back(shape + ": " + e.what());
@@ -136,7 +136,7 @@ class Checker {
     }
     if (failed.empty()) {
       try {
-        Renderer renderer(runtime_);
+        RenderWorker& renderer = worker_;
         RenderSettings s = options_.render;
         s.width_px = s.height_px = 8;
         // Float, not Auto: choosing Auto's precision runs the DE, which may not return.
@@ -159,8 +159,8 @@ class Checker {
     }
     std::string list;
     for (const auto& b : built) list += (list.empty() ? "" : ", ") + b;
-    add("de-compiles", runtime_.device().has_fp64 ? CheckStatus::Pass : CheckStatus::Warn,
-        "built " + list + (runtime_.device().has_fp64 ? "" : "; the device has no double"));
+    add("de-compiles", worker_.device().has_fp64 ? CheckStatus::Pass : CheckStatus::Warn,
+        "built " + list + (worker_.device().has_fp64 ? "" : "; the device has no double"));
     return true;
   }
 
@@ -168,7 +168,7 @@ class Checker {
   // child process with a time limit finds it first.
   bool check_returns() {
     const VetResult vet =
-        vet_scene(file_, options_.render, runtime_.device().name, options_.policy.vet_timeout_s);
+        vet_scene(file_, options_.render, worker_.device().name, options_.policy.vet_timeout_s);
     if (vet.ok) {
       add("de-returns", CheckStatus::Pass, "a test render at 8x8 finished in a child process");
       return true;
@@ -186,12 +186,12 @@ class Checker {
     const SceneInfo& info = scene_->info;
     const double r = defaults_.bounding_radius;
     const auto points = ball_points(options_.de_samples, r, 1);
-    const bool fp64 = runtime_.device().has_fp64;
+    const bool fp64 = worker_.device().has_fp64;
     std::vector<float> v16, v1, vd;
     try {
-      v16 = probe_de(runtime_, info, defaults_.params, points, 16, Precision::Float);
-      v1 = probe_de(runtime_, info, defaults_.params, points, 1, Precision::Float);
-      if (fp64) vd = probe_de(runtime_, info, defaults_.params, points, 16, Precision::Double);
+      v16 = worker_.probe_de(info, defaults_.params, points, 16, Precision::Float);
+      v1 = worker_.probe_de(info, defaults_.params, points, 1, Precision::Float);
+      if (fp64) vd = worker_.probe_de(info, defaults_.params, points, 16, Precision::Double);
     } catch (const std::exception& e) {
       add("de-finite", CheckStatus::Fail, std::string("evaluating the DE failed: ") + e.what());
       return;
@@ -228,7 +228,7 @@ class Checker {
                         float(p[2] + z / len * step)});
       }
       const std::vector<float>& base = fp64 ? vd : v16;
-      const auto moved = probe_de(runtime_, info, defaults_.params, near, 16, precision);
+      const auto moved = worker_.probe_de(info, defaults_.params, near, 16, precision);
       // Outside the surface only: inside the solid a DE need not be a distance at all (an
       // escape-time DE is meaningless there), and the marcher never steps by it.
       const double tol = options_.lipschitz_tolerance;
@@ -263,7 +263,7 @@ class Checker {
     {
       const Precision precision = fp64 ? Precision::Double : Precision::Float;
       const DeBatch batch = [&](const std::vector<DePoint>& at) {
-        return probe_de(runtime_, info, defaults_.params, at, 16, precision);
+        return worker_.probe_de(info, defaults_.params, at, 16, precision);
       };
       DeOverestimateOptions o;
       o.tolerance = options_.overestimate_tolerance;
@@ -287,7 +287,7 @@ class Checker {
     // No surface outside the bounding sphere.
     {
       const auto shell = shell_points(options_.de_samples / 2, r * 1.0001, 2 * r, 3);
-      const auto values = probe_de(runtime_, info, defaults_.params, shell, 16, Precision::Float);
+      const auto values = worker_.probe_de(info, defaults_.params, shell, 16, Precision::Float);
       for (size_t i = 0; i < shell.size(); ++i)
         if (!(values[i] > 0)) {
           const double len =
@@ -445,7 +445,7 @@ class Checker {
     s.samples = 1;
     FrameImage image;
     try {
-      Renderer renderer(runtime_);
+      RenderWorker& renderer = worker_;
       image = renderer.render(scene_->info, state, s, true);
     } catch (const std::exception& e) {
       add("render", CheckStatus::Fail, e.what());
@@ -494,7 +494,7 @@ class Checker {
     careful.max_steps = 4 * plain.max_steps;
     FrameImage normal, quarter;
     try {
-      Renderer renderer(runtime_);
+      RenderWorker& renderer = worker_;
       normal = renderer.render(scene_->info, state, plain, true);
       quarter = renderer.render(scene_->info, state, careful, true);
     } catch (const std::exception& e) {
@@ -556,7 +556,7 @@ class Checker {
 
   std::filesystem::path file_;
   CheckOptions options_;
-  ClRuntime& runtime_;
+  RenderWorker& worker_;
   CheckReport report_;
   std::shared_ptr<const LoadedScene> scene_;
   SceneState defaults_;
@@ -565,8 +565,8 @@ class Checker {
 }  // namespace
 
 CheckReport check_scene_plugin(const std::filesystem::path& file, const CheckOptions& options,
-                               ClRuntime& runtime) {
-  return Checker(file, options, runtime).run();
+                               RenderWorker& worker) {
+  return Checker(file, options, worker).run();
 }
 
 }  // namespace fr

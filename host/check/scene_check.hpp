@@ -28,7 +28,7 @@
 
 #include "check/check_report.hpp"
 #include "plugin/plugin_policy.hpp"
-#include "render/cl_runtime.hpp"
+#include "worker/render_worker.hpp"
 #include "render/render_settings.hpp"
 
 #include <filesystem>
@@ -47,6 +47,6 @@ struct CheckOptions {
 };
 
 CheckReport check_scene_plugin(const std::filesystem::path& file, const CheckOptions& options,
-                               ClRuntime& runtime);
+                               RenderWorker& worker);
 
 }  // namespace fr

@@ -139,7 +139,7 @@ struct AnimateStats {
 // Renders frame `i` of the animation into `image`: the path's view, parameters and time, then
 // the scene's update. The frame's number is the scene's frame_index, so a frame is the same
 // whichever process renders it, and in whatever order (a resumed folder, an MPI job).
-void render_frame(AnimateJob& job, const ParsedOptions& options, Renderer& renderer, int i,
+void render_frame(AnimateJob& job, const ParsedOptions& options, RenderWorker& renderer, int i,
                   FrameImage& image) {
   PreparedScene& p = job.p;
   const SceneInfo& info = p.scene->info;
@@ -166,8 +166,7 @@ void write_frame_png(const AnimateJob& job, int i, const FrameImage& image) {
 // Renders the frames not there yet, each into the encoder or its PNG, under the watchdog.
 AnimateStats render_frames(AnimateJob& job, const ParsedOptions& options, VideoEncoder* encoder,
                            const SequenceState* sequence, std::ostream& err) {
-  ClRuntime runtime(job.p.device);
-  Renderer renderer(runtime);
+  RenderWorker& renderer = *job.p.worker;
   Watchdog watchdog(job.p.render.watchdog_s, "rendering scene '" + job.p.scene->info.id + "'");
   const int already = sequence ? sequence->done : 0;
   Progress progress(err, "frame", job.plan->frames, already);
@@ -199,8 +198,6 @@ AnimateStats render_frames(AnimateJob& job, const ParsedOptions& options, VideoE
 // send back the counts of their rays and, for a video, the pixels; a PNG frame is written here,
 // where it was rendered.
 void serve_frames(AnimateJob& job, const ParsedOptions& options) {
-  std::optional<ClRuntime> runtime;
-  std::optional<Renderer> renderer;
   FrameImage image;
   const int rank = mpi_world().rank;
   serve_tasks([&](int i) {
@@ -208,11 +205,7 @@ void serve_frames(AnimateJob& job, const ParsedOptions& options) {
     Watchdog watchdog(job.p.render.watchdog_s, "rendering scene '" + job.p.scene->info.id +
                                                    "' (rank " + std::to_string(rank) + ", frame " +
                                                    std::to_string(i) + ")");
-    if (!renderer) {
-      runtime.emplace(job.p.device);
-      renderer.emplace(*runtime);
-    }
-    render_frame(job, options, *renderer, i, image);
+    render_frame(job, options, *job.p.worker, i, image);
     const uint64_t counts[2] = {count_rays(image).out_of_steps, image.ray_status.size()};
     const size_t pixel_bytes = job.video ? image.rgba8.size() : 0;
     std::vector<uint8_t> bytes(sizeof counts + pixel_bytes);

@@ -1,5 +1,5 @@
-#include "bench/bench_report.hpp"
 #include "app/explore_bench.hpp"
+#include "bench/bench_report.hpp"
 #include "cli/commands.hpp"
 #include "cli/explorer_setup.hpp"
 #include "cli/watchdog.hpp"
@@ -42,7 +42,7 @@ int bench_explore(ParsedOptions options, std::ostream& out,
       r.moving.p50_ms, 1000.0 / r.moving.p50_ms, r.moving.p95_ms, r.moving.min_ms, r.moving.max_ms,
       r.mean_resolution_scale, r.seconds_to_full_resolution,
       setup.settings.explorer.full_quality_samples, r.seconds_to_full_quality, r.refine_frames);
-  out << line << "device " << setup.runtime->device().name << "\n";
+  out << line << "device " << setup.worker->device().name << "\n";
   return 0;
 }
 
@@ -97,8 +97,7 @@ BenchJob plan_bench(ParsedOptions& options) {
 // The warm-up frame, the timed runs, then one run again with the counting kernel (untimed).
 BenchReport run_bench(BenchJob& job, const ParsedOptions& options) {
   PreparedScene& p = job.p;
-  ClRuntime runtime(p.device);
-  Renderer renderer(runtime);
+  RenderWorker& renderer = *p.worker;
   Watchdog watchdog(p.render.watchdog_s, "a frame of scene '" + p.scene->info.id + "'");
   auto frame = [&](double time_s) {
     if (job.path) {  // run time t is the path's start + t (clamped to its end)

@@ -47,8 +47,11 @@ int command_check(const std::vector<std::string>& args, std::ostream& out, std::
   CheckOptions check;
   check.policy = settings.plugins;
   check.render = render_settings_from(settings, options);
-  ClRuntime runtime(choose_device(settings, options));
-  const CheckReport report = check_scene_plugin(*file, check, runtime);
+  // Every kernel of the plugin compiles and runs in a render worker: a DE that crashes it fails
+  // the check it was in, and the next check starts a fresh worker.
+  RenderWorker worker(choose_device(settings, options),
+                      command_worker_limits(settings.plugins, check.render.watchdog_s));
+  const CheckReport report = check_scene_plugin(*file, check, worker);
   write_check_table(report, json_file && is_standard_output(*json_file) ? err : out);
   if (json_file) {
     std::string error;

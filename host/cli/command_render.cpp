@@ -63,20 +63,14 @@ void report_rays(const FrameImage& image, const fr_camera& camera, const RenderS
 // send them back, each under its own watchdog (waiting for rank 0 between bands is not
 // rendering).
 void serve_poster_bands(const PreparedScene& p, int band_rows, Readback passes) {
-  std::optional<ClRuntime> runtime;
-  std::optional<Renderer> renderer;
-  RenderSettings whole;
+  std::optional<RenderSettings> whole;
   FrameImage band;
   const std::string rank = std::to_string(mpi_world().rank);
   serve_tasks([&](int b) {
     Watchdog watchdog(p.render.watchdog_s, "rendering scene '" + p.scene->info.id + "' (rank " +
                                                rank + ", band " + std::to_string(b) + ")");
-    if (!renderer) {
-      runtime.emplace(p.device);
-      whole = poster_settings(*runtime, p.scene->info, p.state, p.render);
-      renderer.emplace(*runtime);
-    }
-    render_poster_band(*renderer, p.scene->info, p.state, whole, band_rows, b, passes, band);
+    if (!whole) whole = poster_settings(*p.worker, p.scene->info, p.state, p.render);
+    render_poster_band(*p.worker, p.scene->info, p.state, *whole, band_rows, b, passes, band);
     // A PNG needs the colours, and the report the rays' ends; the steps stay here.
     if (passes != Readback::Everything) band.steps.clear();
     std::vector<uint8_t> bytes;
@@ -145,10 +139,9 @@ int render_in_bands(const PreparedScene& p, const std::string& out_file, int ban
   } else if (world.shared()) {
     r = lead_poster_bands(p, out_file, band_rows, progress);
   } else {
-    ClRuntime runtime(p.device);
     // The watchdog guards each band: a poster may take longer than render.watchdog_s in all.
     Watchdog watchdog(p.render.watchdog_s, "rendering scene '" + p.scene->info.id + "'");
-    r = render_poster_in_rows(runtime, p.scene->info, p.state, p.render, out_file, band_rows,
+    r = render_poster_in_rows(*p.worker, p.scene->info, p.state, p.render, out_file, band_rows,
                               [&](int done, int) {
                                 watchdog.kick();
                                 progress.update(done);
@@ -209,8 +202,7 @@ void check_render_output(const std::string& out_file) {
 // An image that fits in one piece: rendered under the watchdog, written atomically, reported.
 void render_whole(PreparedScene& p, const std::string& out_file, std::ostream& report) {
   check_memory(p.render, p.device, true);
-  ClRuntime runtime(p.device);
-  Renderer renderer(runtime);
+  RenderWorker& renderer = *p.worker;
   using clock = std::chrono::steady_clock;
   auto ms_since = [](clock::time_point t) {
     return std::chrono::duration<double, std::milli>(clock::now() - t).count();

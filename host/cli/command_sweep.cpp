@@ -151,7 +151,7 @@ SweepJob plan_job(ParsedOptions& options) {
 // Every configuration's picture and geometry against the reference (this also builds its
 // kernel and warms it up). Returns the share of pixels where lane widths 1 and 16 differ, or -1
 // when the lanes knob was not swept.
-double measure_configs(const SweepJob& job, Renderer& renderer, SweepResult& result,
+double measure_configs(const SweepJob& job, RenderWorker& renderer, SweepResult& result,
                        Progress& progress) {
   const PreparedScene& p = job.p;
   const double pixel_angle =
@@ -188,7 +188,7 @@ double measure_configs(const SweepJob& job, Renderer& renderer, SweepResult& res
 
 // The timing, in rounds that render each configuration once, so that the machine's slow moments
 // spread over all of them instead of landing on a few; each row gets its median.
-void time_configs(const SweepJob& job, Renderer& renderer, SweepResult& result,
+void time_configs(const SweepJob& job, RenderWorker& renderer, SweepResult& result,
                   Progress& progress) {
   using clock = std::chrono::steady_clock;
   const auto now_ms = [] {
@@ -255,8 +255,9 @@ int command_sweep(const std::vector<std::string>& args, std::ostream& out, std::
   SweepJob job = plan_job(options);
   PreparedScene& p = job.p;
   update_scene(p, p.state.time_s);
-  ClRuntime runtime(p.device);
-  Renderer renderer(runtime);
+  // No time limit on a sample: the reference's may legitimately take long (Ctrl-C ends a sweep).
+  RenderWorker renderer(p.device, command_worker_limits(p.settings.plugins, 0));
+  renderer.name_scene_file(p.scene->info.id, p.scene->file);
   SweepResult result;
   result.scene_id = p.scene->info.id;
   result.device = p.device.name;

@@ -21,10 +21,10 @@ ExplorerSetup prepare_explorer(ParsedOptions options) {
     throw std::runtime_error("no plugin folder found (build the plugins, or pass --plugins DIR)");
   const DeviceInfo device = choose_device(x.settings, options);
   check_memory(x.settings.render, device, false);  // the window's size, at full resolution
-  x.runtime = std::make_unique<ClRuntime>(device);
+  x.worker = std::make_unique<RenderWorker>(device, explorer_worker_limits(x.settings.plugins));
   std::vector<SceneEvent> events;
   x.library = std::make_unique<SceneLibrary>(folders, x.settings.plugins, x.settings.render,
-                                             *x.runtime, &events);
+                                             *x.worker, &events);
   // The scenes found at start are listed at debug level (-v): the overlay lists them, and the
   // terminal says what fails and, later, what changes.
   for (const SceneEvent& e : events) {
@@ -39,7 +39,7 @@ ExplorerSetup prepare_explorer(ParsedOptions options) {
     for (const auto& slot : x.library->slots()) available.push_back(slot.scene->info.id);
     throw unknown_scene(scene_id, available);
   }
-  x.explorer = std::make_unique<Explorer>(x.settings, *x.runtime, *x.library, scene_id);
+  x.explorer = std::make_unique<Explorer>(x.settings, *x.worker, *x.library, scene_id);
   const SceneInfo& info = x.explorer->current().scene->info;
   apply_scene_overrides(info, options, x.explorer->current().state);
   if (auto file = options.get("path")) {  // explore --path: play it from the start

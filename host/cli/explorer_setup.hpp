@@ -14,7 +14,7 @@ namespace fr {
 // explorer on --scene with the command line's overrides.
 struct ExplorerSetup {
   Settings settings;
-  std::unique_ptr<ClRuntime> runtime;
+  std::unique_ptr<RenderWorker> worker;  // renders for the explorer, on the chosen device
   std::unique_ptr<SceneLibrary> library;
   std::unique_ptr<Explorer> explorer;
 };

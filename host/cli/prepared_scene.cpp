@@ -1,9 +1,9 @@
 #include "cli/prepared_scene.hpp"
 
-#include "render/scene_vetting.hpp"
 #include "cli/watchdog.hpp"
 #include "io/printable.hpp"
 #include "render/memory_budget.hpp"
+#include "render/scene_vetting.hpp"
 
 #include <spdlog/spdlog.h>
 
@@ -68,6 +68,9 @@ PreparedScene prepare_scene(const ParsedOptions& options, int max_side) {
       throw std::runtime_error(message);
     }
   }
+  p.worker = std::make_unique<RenderWorker>(
+      p.device, command_worker_limits(p.settings.plugins, p.render.watchdog_s));
+  p.worker->name_scene_file(p.scene->info.id, printable(p.scene->file.string()));
   return p;
 }
 

@@ -5,6 +5,7 @@
 
 #include "cli/scene_options.hpp"
 #include "path/camera_path.hpp"
+#include "worker/render_worker.hpp"
 
 namespace fr {
 
@@ -16,6 +17,9 @@ struct PreparedScene {
   SceneState state;
   RenderSettings render;
   DeviceInfo device;
+  // Renders on `device` in a render worker process (started on first use), each sample within
+  // render.watchdog_s.
+  std::unique_ptr<RenderWorker> worker;
 };
 
 // Settings, plugins (failures logged as warnings), scene (--scene, default mandelbulb), overrides,

@@ -1,7 +1,6 @@
 #include "image/poster.hpp"
 
 #include "image/band_writer.hpp"
-#include "render/precision.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -18,17 +17,17 @@ uint64_t poster_band_pixels(const std::filesystem::path& file) {
   return is_exr_file_name(file) ? kExrPosterBandPixels : kPosterBandPixels;
 }
 
-RenderSettings poster_settings(ClRuntime& runtime, const SceneInfo& info, const SceneState& state,
+RenderSettings poster_settings(RenderWorker& worker, const SceneInfo& info, const SceneState& state,
                                RenderSettings settings) {
   if (settings.width_px < 1 || settings.height_px < 1)
     throw std::runtime_error("image size " + std::to_string(settings.width_px) + "x" +
                              std::to_string(settings.height_px) + " has no pixels");
   settings.window = {};
-  settings.precision = resolve_precision(runtime, info, state, settings);
+  settings.precision = worker.prepare(info, state, settings);
   return settings;
 }
 
-void render_poster_band(Renderer& renderer, const SceneInfo& info, const SceneState& state,
+void render_poster_band(RenderWorker& renderer, const SceneInfo& info, const SceneState& state,
                         const RenderSettings& whole, int band_rows, int band, Readback passes,
                         FrameImage& image) {
   const int y0 = band * band_rows;
@@ -48,28 +47,27 @@ void add_ray_counts(const FrameImage& band, RayCounts& counts) {
   counts.inside += c.inside;
 }
 
-PosterResult render_poster(ClRuntime& runtime, const SceneInfo& info, const SceneState& state,
+PosterResult render_poster(RenderWorker& worker, const SceneInfo& info, const SceneState& state,
                            RenderSettings settings, const std::filesystem::path& file,
                            uint64_t band_pixels, const std::function<void(int, int)>& progress) {
-  return render_poster_in_rows(runtime, info, state, settings, file,
+  return render_poster_in_rows(worker, info, state, settings, file,
                                poster_band_rows(settings.width_px, settings.height_px, band_pixels),
                                progress);
 }
 
-PosterResult render_poster_in_rows(ClRuntime& runtime, const SceneInfo& info,
+PosterResult render_poster_in_rows(RenderWorker& worker, const SceneInfo& info,
                                    const SceneState& state, RenderSettings settings,
                                    const std::filesystem::path& file, int band_rows,
                                    const std::function<void(int, int)>& progress) {
-  const RenderSettings whole = poster_settings(runtime, info, state, settings);
+  const RenderSettings whole = poster_settings(worker, info, state, settings);
   band_rows = std::max(band_rows, 1);
   PosterResult result;
   result.precision = whole.precision;
   result.bands = (whole.height_px + band_rows - 1) / band_rows;
   BandWriter writer(file, whole.width_px, whole.height_px);
-  Renderer renderer(runtime);
   FrameImage band;
   for (int b = 0; b < result.bands; ++b) {
-    render_poster_band(renderer, info, state, whole, band_rows, b, writer.passes(), band);
+    render_poster_band(worker, info, state, whole, band_rows, b, writer.passes(), band);
     writer.write_rows(band);
     add_ray_counts(band, result.rays);
     result.lanes = band.lanes;

@@ -9,6 +9,7 @@
 #pragma once
 
 #include "render/renderer.hpp"
+#include "worker/render_worker.hpp"
 
 #include <cstdint>
 #include <filesystem>
@@ -29,13 +30,13 @@ int poster_band_rows(int width_px, int height_px, uint64_t band_pixels = kPoster
 
 // The settings every band of a poster renders with: the whole image's, no window, precision
 // decided once for the whole view (never Auto). Throws std::runtime_error for an empty size.
-RenderSettings poster_settings(ClRuntime& runtime, const SceneInfo& info, const SceneState& state,
+RenderSettings poster_settings(RenderWorker& worker, const SceneInfo& info, const SceneState& state,
                                RenderSettings settings);
 
 // Band `band` of `band_rows` rows (the last may have fewer) of the poster `whole`
 // (poster_settings), rendered with all its samples and read back with `passes` into `image`.
 // The same pixels whichever process renders it: MPI jobs share a poster's bands out this way.
-void render_poster_band(Renderer& renderer, const SceneInfo& info, const SceneState& state,
+void render_poster_band(RenderWorker& renderer, const SceneInfo& info, const SceneState& state,
                         const RenderSettings& whole, int band_rows, int band, Readback passes,
                         FrameImage& image);
 
@@ -51,12 +52,12 @@ struct PosterResult {
 // atomically. `progress(done, total)` is
 // called after each band. Throws std::runtime_error (rendering or writing); nothing is left at
 // `file` then.
-PosterResult render_poster(ClRuntime& runtime, const SceneInfo& info, const SceneState& state,
+PosterResult render_poster(RenderWorker& worker, const SceneInfo& info, const SceneState& state,
                            RenderSettings settings, const std::filesystem::path& file,
                            uint64_t band_pixels = kPosterBandPixels,
                            const std::function<void(int, int)>& progress = nullptr);
 // The same with `band_rows` rows a band (at least 1).
-PosterResult render_poster_in_rows(ClRuntime& runtime, const SceneInfo& info,
+PosterResult render_poster_in_rows(RenderWorker& worker, const SceneInfo& info,
                                    const SceneState& state, RenderSettings settings,
                                    const std::filesystem::path& file, int band_rows,
                                    const std::function<void(int, int)>& progress = nullptr);

@@ -5,8 +5,11 @@
 #include <sys/prctl.h>
 #include <unistd.h>
 
+#include <sys/wait.h>
+
 #include <algorithm>
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 
 extern char** environ;
@@ -26,7 +29,7 @@ bool is_mpi_launcher_variable(const char* entry) {
 
 pid_t start_child_process(const std::vector<std::string>& argv,
                           const std::vector<ChildDescriptor>& descriptors, int stderr_fd,
-                          std::string* error) {
+                          std::string* error, int stdout_fd) {
   if (argv.empty()) {
     *error = "no program to start";
     return -1;
@@ -57,12 +60,13 @@ pid_t start_child_process(const std::vector<std::string>& argv,
   for (size_t i = 0; i < count; ++i)
     if ((copies[i] = fcntl(descriptors[i].ours, F_DUPFD, above)) < 0) _exit(kChildExecFailedStatus);
   const int err_copy = stderr_fd >= 0 ? fcntl(stderr_fd, F_DUPFD, above) : -1;
+  const int out_copy = stdout_fd >= 0 ? fcntl(stdout_fd, F_DUPFD, above) : -1;
   for (size_t i = 0; i < count; ++i)
     if (dup2(copies[i], descriptors[i].theirs) < 0) _exit(kChildExecFailedStatus);
   const int null_fd = open("/dev/null", O_RDWR);
   if (null_fd < 0) _exit(kChildExecFailedStatus);
   dup2(null_fd, 0);
-  dup2(null_fd, 1);
+  dup2(out_copy >= 0 ? out_copy : null_fd, 1);
   dup2(err_copy >= 0 ? err_copy : null_fd, 2);
   close_range(static_cast<unsigned>(first_free), ~0U, 0);
   prctl(PR_SET_PDEATHSIG, SIGKILL);
@@ -72,6 +76,37 @@ pid_t start_child_process(const std::vector<std::string>& argv,
   sigprocmask(SIG_SETMASK, &none, nullptr);
   execve(args[0], const_cast<char* const*>(args.data()), environment.data());
   _exit(kChildExecFailedStatus);
+}
+
+std::string describe_child_exit(int status) {
+  if (WIFSIGNALED(status)) {
+    const int sig = WTERMSIG(status);
+    const char* abbrev = sigabbrev_np(sig);
+    const char* text = strsignal(sig);
+    return std::string("crashed (SIG") + (abbrev ? abbrev : std::to_string(sig).c_str()) + ": " +
+           (text ? text : "signal") + ")";
+  }
+  if (WIFEXITED(status)) {
+    if (WEXITSTATUS(status) == kChildExecFailedStatus) return "could not be started (exec failed)";
+    return "exited with status " + std::to_string(WEXITSTATUS(status));
+  }
+  return "ended";
+}
+
+std::filesystem::path helper_executable(const char* name, const char* env_variable,
+                                        const char* build_path) {
+  if (const char* env = std::getenv(env_variable); env && *env) return env;
+  std::error_code ec;
+  const auto self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  std::vector<std::filesystem::path> candidates;
+  if (!ec) {
+    candidates.push_back(self.parent_path() / name);
+    candidates.push_back(self.parent_path().parent_path() / "libexec" / "fractalis" / name);
+  }
+  candidates.emplace_back(build_path);
+  for (const auto& c : candidates)
+    if (access(c.c_str(), X_OK) == 0) return c;
+  return {};
 }
 
 }  // namespace fr

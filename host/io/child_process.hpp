@@ -11,6 +11,7 @@
 
 #include <sys/types.h>
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -24,10 +25,21 @@ struct ChildDescriptor {
   int theirs;  // the number it has in the child (3 and up)
 };
 
-// Starts argv[0] with `argv`. `stderr_fd`: the child's stderr (-1: /dev/null; 2: ours). Returns
-// the child's pid, or -1 with *error saying why.
+// Starts argv[0] with `argv`. `stderr_fd`: the child's stderr (-1: /dev/null; 2: ours);
+// `stdout_fd` likewise its stdout (-1: /dev/null). Returns the child's pid, or -1 with *error
+// saying why.
 pid_t start_child_process(const std::vector<std::string>& argv,
                           const std::vector<ChildDescriptor>& descriptors, int stderr_fd,
-                          std::string* error);
+                          std::string* error, int stdout_fd = -1);
+
+// How a child that waitpid reported with `status` ended: "crashed (SIGSEGV: Segmentation
+// fault)", "exited with status 3", "could not be started (exec failed)".
+std::string describe_child_exit(int status);
+
+// A helper executable of fractalis (the scene host, the render worker): $ENV_VARIABLE when set,
+// else beside the running executable, else in ../libexec/fractalis/ from it, else `build_path`
+// (the build tree's). Empty when none of them exists.
+std::filesystem::path helper_executable(const char* name, const char* env_variable,
+                                        const char* build_path);
 
 }  // namespace fr

@@ -1,5 +1,6 @@
-// plugin_policy.hpp — how the host treats scene plugins: where their code runs, how long each of
-// their calls may take, and which files it agrees to load. From the [plugins] settings.
+// plugin_policy.hpp — how the host treats scene plugins: where their code runs (their C code in
+// scene-host processes, their OpenCL code in the render worker), how long each of their calls may
+// take, and which files it agrees to load. From the [plugins] settings.
 #pragma once
 
 #include "io/enum_names.hpp"
@@ -7,8 +8,9 @@
 namespace fr {
 
 enum class PluginIsolation {
-  Process,  // default: plugin code runs only in scene-host processes (scene_host_process.hpp)
-  None,     // dlopen in the host itself: for debugging a plugin under gdb; a crash ends the host
+  Process,  // default: plugin code runs only in scene-host processes (scene_host_process.hpp),
+            // its kernels in the render worker (worker/render_worker.hpp)
+  None,     // both in the host itself: for debugging a plugin under gdb; a crash ends the host
 };
 inline constexpr EnumName<PluginIsolation> kPluginIsolationNames[] = {
     {PluginIsolation::Process, "process", "own process", nullptr},
@@ -24,6 +26,12 @@ struct PluginPolicy {
   double call_timeout_s = 2;    // one create, update or destroy call
   bool allow_writable = false;  // load from folders and files that other users can write to
   double vet_timeout_s = 60;    // the explorer's test render of a new or rebuilt scene
+  // The render worker (worker/render_worker.hpp), which compiles and runs scene kernels:
+  double build_timeout_s = 60;  // one kernel build; a preprocessor bomb ends here
+  double worker_memory_mib = 4096;  // its resident memory
+  // The explorer's first sample of a scene; later samples may take 20 times the slowest time per
+  // pixel the scene has needed so far, and at least 5 s (worker/frame_limit.hpp).
+  double frame_limit_s = 30;
 };
 
 }  // namespace fr

@@ -25,20 +25,9 @@ namespace {
 constexpr int kWireMismatchStatus = 126;
 
 std::string describe_exit(int status) {
-  if (WIFSIGNALED(status)) {
-    const int sig = WTERMSIG(status);
-    const char* abbrev = sigabbrev_np(sig);
-    const char* text = strsignal(sig);
-    return std::string("crashed (SIG") + (abbrev ? abbrev : std::to_string(sig).c_str()) + ": " +
-           (text ? text : "signal") + ")";
-  }
-  if (WIFEXITED(status)) {
-    if (WEXITSTATUS(status) == kChildExecFailedStatus) return "could not be started (exec failed)";
-    if (WEXITSTATUS(status) == kWireMismatchStatus)
-      return "is from another build of fractalis (message format differs)";
-    return "exited with status " + std::to_string(WEXITSTATUS(status));
-  }
-  return "ended";
+  if (WIFEXITED(status) && WEXITSTATUS(status) == kWireMismatchStatus)
+    return "is from another build of fractalis (message format differs)";
+  return describe_child_exit(status);
 }
 
 std::string seconds(double s) {
@@ -248,19 +237,8 @@ void attach_code(LoadOutcome& outcome, const FileIdentity& identity, const std::
 }  // namespace
 
 std::filesystem::path scene_host_executable() {
-  if (const char* env = std::getenv("FRACTALIS_SCENE_HOST"); env && *env) return env;
-  std::error_code ec;
-  const auto self = std::filesystem::read_symlink("/proc/self/exe", ec);
-  std::vector<std::filesystem::path> candidates;
-  if (!ec) {
-    candidates.push_back(self.parent_path() / "fractalis-scene-host");
-    candidates.push_back(self.parent_path().parent_path() / "libexec" / "fractalis" /
-                         "fractalis-scene-host");
-  }
-  candidates.emplace_back(FRACTALIS_SCENE_HOST_BUILD_PATH);
-  for (const auto& c : candidates)
-    if (access(c.c_str(), X_OK) == 0) return c;
-  return {};
+  return helper_executable("fractalis-scene-host", "FRACTALIS_SCENE_HOST",
+                           FRACTALIS_SCENE_HOST_BUILD_PATH);
 }
 
 std::unique_ptr<SceneHostProcess> SceneHostProcess::start(int plugin_fd,

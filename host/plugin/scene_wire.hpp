@@ -64,6 +64,8 @@ class WireReader {
   uint64_t u64() { return fixed<uint64_t>(); }
   double f64() { return fixed<double>(); }
   std::string str(size_t cap);
+  // Copies the next `n` bytes to `out` (what WireWriter::raw wrote); false when fewer are left.
+  bool raw(void* out, size_t n) { return take(out, n); }
   bool failed() const { return failed_; }
   bool at_end() const { return at_ == bytes_.size(); }
   std::string_view rest() const { return bytes_.substr(at_); }

@@ -105,4 +105,21 @@ ReadStatus read_frame(int fd, double timeout_s, WireKind* kind, std::string* pay
   return ReadStatus::Ok;
 }
 
+ReadStatus read_frame_exact(int fd, double timeout_s, WireKind* kind, std::string* payload) {
+  const bool forever = timeout_s < 0;
+  const auto deadline =
+      Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                         std::chrono::duration<double>(forever ? 0.0 : timeout_s));
+  uint32_t header[2];
+  ReadStatus s =
+      read_exactly(fd, reinterpret_cast<char*>(header), sizeof header, deadline, forever);
+  if (s != ReadStatus::Ok) return s;
+  if (header[1] > kMaxFrameBytes) return ReadStatus::Malformed;
+  payload->resize(header[1]);
+  s = read_exactly(fd, payload->data(), payload->size(), deadline, forever);
+  if (s != ReadStatus::Ok) return s;
+  *kind = static_cast<WireKind>(header[0]);
+  return ReadStatus::Ok;
+}
+
 }  // namespace fr

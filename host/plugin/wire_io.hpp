@@ -13,6 +13,10 @@ bool write_frame(int fd, WireKind kind, const std::string& payload);
 enum class ReadStatus { Ok, Closed, TimedOut, Malformed, Failed };
 
 // Reads one frame, waiting at most `timeout_s` in total (a negative timeout waits forever).
+// Takes whatever has arrived with the frame (one request, one answer: nothing else can have).
 ReadStatus read_frame(int fd, double timeout_s, WireKind* kind, std::string* payload);
+// The same, reading no byte past the frame: for a peer that may send several frames in a row
+// (the render worker's progress messages before its answer).
+ReadStatus read_frame_exact(int fd, double timeout_s, WireKind* kind, std::string* payload);
 
 }  // namespace fr

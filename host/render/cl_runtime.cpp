@@ -28,7 +28,9 @@ cl_program ClRuntime::program(const std::string& source, const std::string& opti
   const size_t length = source.size();
   ClProgramHandle program(clCreateProgramWithSource(context_.get(), 1, &text, &length, &err));
   cl_check(err, "clCreateProgramWithSource", "building " + description);
+  if (on_build) on_build(&description);
   err = clBuildProgram(program.get(), 1, &device_.device, options.c_str(), nullptr, nullptr);
+  if (on_build) on_build(nullptr);
   if (err != CL_SUCCESS) {
     size_t log_size = 0;
     clGetProgramBuildInfo(program.get(), device_.device, CL_PROGRAM_BUILD_LOG, 0, nullptr,

@@ -5,6 +5,7 @@
 #include "render/cl.hpp"
 #include "render/device.hpp"
 
+#include <functional>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -36,6 +37,10 @@ class ClRuntime {
   cl_kernel kernel(cl_program program, const char* name);
 
   size_t programs_built() const { return programs_built_; }
+  // Called with the program's description just before a build (not for a cached program) and
+  // with null when it has ended, built or not: the render worker tells fractalis, which allows a
+  // build more time than a frame (worker/render_worker.hpp).
+  std::function<void(const std::string* building)> on_build;
 
  private:
   DeviceInfo device_;

@@ -191,9 +191,50 @@ cl_kernel Renderer::post_kernel() {
                          "fr_post");
 }
 
+FramePassPointers size_frame_image(FrameImage& img, int width_px, int height_px, Readback what) {
+  const size_t n = static_cast<size_t>(width_px) * height_px;
+  img.width_px = width_px;
+  img.height_px = height_px;
+  const bool steps = what != Readback::Display, all = what == Readback::Everything;
+  img.rgba8.resize(n * 4);
+  img.steps.resize(steps ? n : 0);
+  img.ray_status.resize(steps ? n : 0);
+  img.linear_rgba.resize(all ? n * 4 : 0);
+  img.depth.resize(all ? n : 0);
+  img.occlusion.resize(all ? n : 0);
+  img.shadow.resize(all ? n : 0);
+  img.normal.resize(all ? n * 3 : 0);
+  img.albedo.resize(all ? n * 3 : 0);
+  FramePassPointers p;
+  p.rgba8 = img.rgba8.data();
+  if (steps) {
+    p.steps = img.steps.data();
+    p.ray_status = img.ray_status.data();
+  }
+  if (all) {
+    p.linear_rgba = img.linear_rgba.data();
+    p.depth = img.depth.data();
+    p.occlusion = img.occlusion.data();
+    p.shadow = img.shadow.data();
+    p.normal = img.normal.data();
+    p.albedo = img.albedo.data();
+  }
+  return p;
+}
+
 void Renderer::finish(const RenderSettings& settings, Readback what, FrameImage& img) {
+  const FinishedFrame f = finish_into(
+      settings, what, size_frame_image(img, settings.width_px, settings.height_px, what));
+  img.lanes = f.lanes;
+  img.precision = f.precision;
+}
+
+Renderer::FinishedFrame Renderer::finish_into(const RenderSettings& settings, Readback what,
+                                              const FramePassPointers& out) {
   if (static_cast<int>(what) > static_cast<int>(last_outputs_))
     throw std::logic_error("Renderer::finish: reading back passes the samples did not write");
+  if (static_cast<size_t>(settings.width_px) * settings.height_px != frame_pixels_)
+    throw std::logic_error("Renderer::finish: the size differs from the samples'");
   cl_kernel post = post_kernel();
   const size_t n = frame_pixels_;
   cl_command_queue q = runtime_.queue();
@@ -213,63 +254,32 @@ void Renderer::finish(const RenderSettings& settings, Readback what, FrameImage&
       clEnqueueNDRangeKernel(q, post, 1, nullptr, &post_global, &post_local, 0, nullptr, nullptr),
       "clEnqueueNDRangeKernel", "post-processing");
 
-  img.width_px = settings.width_px;
-  img.height_px = settings.height_px;
-  img.lanes = last_lanes_;
-  img.precision = last_precision_;
-  img.rgba8.resize(n * 4);
-  cl_check(clEnqueueReadBuffer(q, out8, CL_FALSE, 0, n * 4, img.rgba8.data(), 0, nullptr, nullptr),
-           "clEnqueueReadBuffer", "reading the image");
-  img.steps.clear();
-  img.linear_rgba.clear();
-  img.depth.clear();
-  img.occlusion.clear();
-  img.shadow.clear();
-  img.ray_status.clear();
-  img.normal.clear();
-  img.albedo.clear();
-  std::vector<float> factors;
+  const auto read = [&](cl_mem from, size_t bytes, void* to, const char* what_read) {
+    cl_check(clEnqueueReadBuffer(q, from, CL_FALSE, 0, bytes, to, 0, nullptr, nullptr),
+             "clEnqueueReadBuffer", what_read);
+  };
+  read(out8, n * 4, out.rgba8, "reading the image");
   if (what != Readback::Display) {
-    img.steps.resize(n);
-    img.ray_status.resize(n);
-    cl_check(clEnqueueReadBuffer(q, steps_.get(), CL_FALSE, 0, n * 4, img.steps.data(), 0, nullptr,
-                                 nullptr),
-             "clEnqueueReadBuffer", "reading DE step counts");
-    cl_check(clEnqueueReadBuffer(q, status_.get(), CL_FALSE, 0, n, img.ray_status.data(), 0,
-                                 nullptr, nullptr),
-             "clEnqueueReadBuffer", "reading ray status");
+    read(steps_.get(), n * 4, out.steps, "reading DE step counts");
+    read(status_.get(), n, out.ray_status, "reading ray status");
   }
+  std::vector<float> factors;
   if (what == Readback::Everything) {
-    img.linear_rgba.resize(n * 4);
-    img.depth.resize(n);
     factors.resize(n * 2);
-    cl_check(clEnqueueReadBuffer(q, hdr, CL_FALSE, 0, n * 16, img.linear_rgba.data(), 0, nullptr,
-                                 nullptr),
-             "clEnqueueReadBuffer", "reading the linear image");
-    cl_check(clEnqueueReadBuffer(q, depth_.get(), CL_FALSE, 0, n * 4, img.depth.data(), 0, nullptr,
-                                 nullptr),
-             "clEnqueueReadBuffer", "reading depths");
-    cl_check(clEnqueueReadBuffer(q, factors_.get(), CL_FALSE, 0, n * 8, factors.data(), 0, nullptr,
-                                 nullptr),
-             "clEnqueueReadBuffer", "reading occlusion and shadow factors");
-    img.normal.resize(n * 3);
-    cl_check(clEnqueueReadBuffer(q, normal_.get(), CL_FALSE, 0, n * 12, img.normal.data(), 0,
-                                 nullptr, nullptr),
-             "clEnqueueReadBuffer", "reading normals");
-    img.albedo.resize(n * 3);
-    cl_check(clEnqueueReadBuffer(q, albedo_.get(), CL_FALSE, 0, n * 12, img.albedo.data(), 0,
-                                 nullptr, nullptr),
-             "clEnqueueReadBuffer", "reading albedos");
+    read(hdr, n * 16, out.linear_rgba, "reading the linear image");
+    read(depth_.get(), n * 4, out.depth, "reading depths");
+    read(factors_.get(), n * 8, factors.data(), "reading occlusion and shadow factors");
+    read(normal_.get(), n * 12, out.normal, "reading normals");
+    read(albedo_.get(), n * 12, out.albedo, "reading albedos");
   }
   cl_check(clFinish(q), "clFinish", "reading back the frame");
   if (what == Readback::Everything) {
-    img.occlusion.resize(n);
-    img.shadow.resize(n);
     for (size_t i = 0; i < n; ++i) {
-      img.occlusion[i] = factors[2 * i];
-      img.shadow[i] = factors[2 * i + 1];
+      out.occlusion[i] = factors[2 * i];
+      out.shadow[i] = factors[2 * i + 1];
     }
   }
+  return {last_lanes_, last_precision_};
 }
 
 EvalCounts Renderer::eval_counts() {

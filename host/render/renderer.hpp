@@ -41,6 +41,24 @@ enum class RayStatus : uint8_t {
   Inside = 3,      // started inside the solid: black
 };
 
+// Where Renderer::finish_into puts a frame's passes, width x height pixels each, laid out as
+// FrameImage's vectors; a pointer is null for a pass that is not read back.
+struct FramePassPointers {
+  uint8_t* rgba8 = nullptr;
+  float* steps = nullptr;
+  uint8_t* ray_status = nullptr;
+  float* linear_rgba = nullptr;
+  float* depth = nullptr;
+  float* occlusion = nullptr;
+  float* shadow = nullptr;
+  float* normal = nullptr;
+  float* albedo = nullptr;
+};
+
+// Sizes `image`'s vectors for `what` at `width_px` x `height_px` (emptying the others) and
+// returns pointers to them.
+FramePassPointers size_frame_image(FrameImage& image, int width_px, int height_px, Readback what);
+
 struct RayCounts {
   size_t miss = 0, hit = 0, out_of_steps = 0, inside = 0;
 };
@@ -67,6 +85,15 @@ class Renderer {
   void render_sample(const SceneInfo& info, const SceneState& state, const RenderSettings& settings,
                      int sample_index, Readback outputs = Readback::Everything);
   void finish(const RenderSettings& settings, Readback what, FrameImage& image);
+  // `finish` into memory the caller owns (the render worker's shared frame): every pointer that
+  // `what` names must hold width x height pixels of its pass. Returns the lanes and precision
+  // the samples ran with; FrameImage's other fields.
+  struct FinishedFrame {
+    int lanes = 0;
+    Precision precision = Precision::Float;
+  };
+  FinishedFrame finish_into(const RenderSettings& settings, Readback what,
+                            const FramePassPointers& out);
 
   // The DE evaluations of the samples rendered since the last sample 0, when they were rendered
   // with settings.count_evaluations (otherwise all zero). Waits for the device.

@@ -146,8 +146,9 @@ std::vector<SettingSpec> make_table() {
   t.push_back(choice_setting<&S::plugins, &P::isolation>(
       "plugins.isolation",
       "Where plugin code runs: \"process\" (each scene in a fractalis-scene-host process of its "
-      "own, so\na plugin that crashes, hangs or throws fails alone) or \"none\" (in fractalis "
-      "itself: only for\ndebugging a plugin in gdb; a crash in the plugin ends fractalis)."));
+      "own, its\nkernels in a fractalis-render-worker process, so a plugin that crashes, hangs or "
+      "throws fails\nalone) or \"none\" (in fractalis itself: only for debugging a plugin in "
+      "gdb; a crash in the\nplugin ends fractalis)."));
   t.push_back(number_setting<&S::plugins, &P::load_timeout_s>(
       "plugins.load_timeout_s", 0, 3600, true,
       "Seconds a plugin may take to load (its constructors and descriptor), and to answer one "
@@ -159,6 +160,18 @@ std::vector<SettingSpec> make_table() {
       "Seconds the 8x8 test render of a scene (in a child process, before the explorer, "
       "`render`,\n`bench`, `animate` or `sweep` first use it; once per file content) may take, "
       "kernel build\nincluded, before the scene is refused as one whose DE may never return."));
+  t.push_back(number_setting<&S::plugins, &P::build_timeout_s>(
+      "plugins.build_timeout_s", 1, 3600, true,
+      "Seconds one kernel build of a scene may take in the render worker (the process that "
+      "compiles and\nruns scene kernels) before the worker is ended and the scene reported."));
+  t.push_back(number_setting<&S::plugins, &P::worker_memory_mib>(
+      "plugins.worker_memory_mib", 64, 1048576, true,
+      "MiB of memory the render worker may use before it is ended and the scene reported."));
+  t.push_back(number_setting<&S::plugins, &P::frame_limit_s>(
+      "plugins.frame_limit_s", 1, 3600, true,
+      "Seconds the explorer's first sample of a scene may take in the render worker; later "
+      "samples may\ntake 20 times the slowest time per pixel the scene has needed so far, and at "
+      "least 5 s. (Commands\nuse render.watchdog_s.)"));
   t.push_back(bool_setting<&S::plugins, &P::allow_writable>(
       "plugins.allow_writable",
       "Load plugins from folders or files that users other than you (and root) can write to. "

@@ -130,7 +130,7 @@ std::string reference_key(const SceneInfo& info, const SceneState& state, const 
   return hex16(fnv1a(k.str()));
 }
 
-SweepReference make_reference(Renderer& renderer, const SceneInfo& info, const SceneState& state,
+SweepReference make_reference(RenderWorker& renderer, const SceneInfo& info, const SceneState& state,
                               const RenderSettings& settings, const std::string& device_name,
                               const std::filesystem::path& cache_dir,
                               const std::function<bool(double, int)>& progress,

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "render/renderer.hpp"
+#include "worker/render_worker.hpp"
 #include "scene/scene_data.hpp"
 #include "sweep/sweep_metrics.hpp"
 
@@ -44,7 +45,7 @@ std::string reference_key(const SceneInfo& info, const SceneState& state,
 // (progress(k, refinement) is called before each render; returning false abandons the
 // reference: nothing is cached and the result is empty) and stored there atomically. A cache
 // file that cannot be read is recomputed; one that cannot be written is reported on *warning.
-SweepReference make_reference(Renderer& renderer, const SceneInfo& info, const SceneState& state,
+SweepReference make_reference(RenderWorker& renderer, const SceneInfo& info, const SceneState& state,
                               const RenderSettings& settings, const std::string& device_name,
                               const std::filesystem::path& cache_dir,
                               const std::function<bool(double, int)>& progress,

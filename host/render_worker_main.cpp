@@ -1,0 +1,32 @@
+// fractalis-render-worker: compiles and runs scene kernels on behalf of fractalis, which starts
+// it with a socket on descriptor 3 and the shared frame on descriptor 4 (see
+// worker/render_worker.hpp). Not meant to be run by hand.
+#include "worker/render_wire.hpp"
+#include "worker/render_worker.hpp"
+
+#include <cstdio>
+#include <cstring>
+#include <string>
+
+int main(int argc, char** argv) {
+  std::string wire, device;
+  for (int i = 1; i + 1 < argc; i += 2) {
+    if (std::strcmp(argv[i], "--wire") == 0) wire = argv[i + 1];
+    if (std::strcmp(argv[i], "--device") == 0) device = argv[i + 1];
+  }
+  if (wire.empty()) {
+    std::fprintf(stderr,
+                 "fractalis-render-worker renders scenes for fractalis; it is started by it.\n");
+    return 2;
+  }
+  if (wire != std::to_string(fr::kRenderWireVersion)) return 126;
+  return fr::run_render_worker(3, 4, device);
+}
+
+#if defined(__SANITIZE_ADDRESS__)
+// The worker runs scene kernels, whose crashes are findings for fractalis to report ("crashed
+// (SIGSEGV)"), not reports for AddressSanitizer to turn into exit status 1.
+extern "C" const char* __asan_default_options() {
+  return "handle_segv=0:handle_abort=0:handle_sigbus=0:detect_leaks=0";
+}
+#endif

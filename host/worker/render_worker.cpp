@@ -1,0 +1,467 @@
+#include "worker/render_worker.hpp"
+
+#include "io/child_process.hpp"
+#include "io/fnv1a.hpp"
+#include "io/printable.hpp"
+#include "plugin/wire_io.hpp"
+#include "render/de_probe.hpp"
+#include "worker/render_wire.hpp"
+#include "worker/shared_frame.hpp"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/socket.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <thread>
+
+namespace fr {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+std::string seconds_text(double s) {
+  std::ostringstream out;
+  out << s << " s";
+  return out.str();
+}
+
+// Resident memory of process `pid` in bytes (0 when it cannot be read).
+uint64_t resident_bytes(pid_t pid) {
+  std::ifstream statm("/proc/" + std::to_string(pid) + "/statm");
+  uint64_t size_pages = 0, resident_pages = 0;
+  if (!(statm >> size_pages >> resident_pages)) return 0;
+  return resident_pages * static_cast<uint64_t>(sysconf(_SC_PAGESIZE));
+}
+
+constexpr const char* kFrameStage = "rendering";
+
+}  // namespace
+
+RenderWorkerLimits command_worker_limits(const PluginPolicy& policy, double frame_s) {
+  RenderWorkerLimits l;
+  l.in_process = policy.isolation == PluginIsolation::None;
+  l.build_s = policy.build_timeout_s;
+  l.memory_bytes = static_cast<uint64_t>(policy.worker_memory_mib) << 20;
+  l.frame.adaptive = false;
+  l.frame.first_s = frame_s;
+  return l;
+}
+
+RenderWorkerLimits explorer_worker_limits(const PluginPolicy& policy) {
+  RenderWorkerLimits l = command_worker_limits(policy, policy.frame_limit_s);
+  l.frame.adaptive = true;
+  return l;
+}
+
+// The worker process and what it has been sent.
+struct RenderWorker::Process {
+  pid_t pid = -1;
+  int socket = -1;
+  int output = -1;  // its stdout (a DE's printf), ours to read; -1 once it closed
+  SharedFrame frame;
+  std::set<uint64_t> scenes;  // keys it holds
+  std::string partial_line;   // output not yet ended by a newline
+
+  ~Process() {
+    if (socket >= 0) close(socket);
+    if (output >= 0) close(output);
+  }
+  // Ends the process (SIGKILL unless it has exited by itself within `grace_ms`) and reaps it;
+  // returns how it ended when it ended by itself.
+  std::string end(int grace_ms) {
+    if (pid <= 0) return "";
+    int status = 0;
+    pid_t r = 0;
+    for (int waited = 0; waited < grace_ms && (r = waitpid(pid, &status, WNOHANG)) == 0;
+         waited += 2)
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    std::string how;
+    if (r == pid) {
+      how = describe_child_exit(status);
+    } else {
+      kill(pid, SIGKILL);
+      while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+      }
+    }
+    pid = -1;
+    return how;
+  }
+};
+
+// plugins.isolation = "none": the device in this process.
+struct RenderWorker::Local {
+  explicit Local(const DeviceInfo& device) : runtime(device), renderer(runtime) {}
+  ClRuntime runtime;
+  Renderer renderer;
+};
+
+RenderWorker::RenderWorker(const DeviceInfo& device, const RenderWorkerLimits& limits)
+    : device_(device), limits_(limits), frame_limit_(limits.frame) {}
+
+RenderWorker::~RenderWorker() {
+  if (process_) {
+    write_frame(process_->socket, static_cast<WireKind>(RenderWireKind::Quit), "");
+    shutdown(process_->socket, SHUT_RDWR);
+    process_->end(200);
+  }
+}
+
+pid_t RenderWorker::pid() const {
+  return process_ ? process_->pid : 0;
+}
+
+void RenderWorker::name_scene_file(const std::string& scene_id, const std::filesystem::path& file) {
+  scene_files_[scene_id] = file;
+}
+
+int RenderWorker::lanes_for(const RenderSettings& settings) const {
+  return resolve_lanes(settings.lanes, &device_);
+}
+
+std::string RenderWorker::scene_label(const std::string& scene) const {
+  if (scene.empty()) return "the render worker";
+  std::string label = "scene '" + scene + "'";
+  if (const auto it = scene_files_.find(scene); it != scene_files_.end())
+    label += " (" + it->second.string() + ")";
+  return label;
+}
+
+void RenderWorker::fail(const std::string& scene, const char* stage, const std::string& reason,
+                        bool timed_out) {
+  if (process_) {
+    drain_output(scene);
+    process_->end(0);
+    process_.reset();
+  }
+  const std::string who =
+      scene.empty() ? "the render worker" : scene_label(scene) + ": the render worker";
+  const bool started = std::string_view(stage) != "starting";
+  throw RenderWorkerFailure(
+      who + " " + reason + " while " + stage +
+          (started ? "; it was ended (the next render starts a fresh one)" : ""),
+      timed_out);
+}
+
+void RenderWorker::ensure_started() {
+  if (limits_.in_process) {
+    if (!local_) local_ = std::make_unique<Local>(device_);
+    return;
+  }
+  if (process_) return;
+  const std::filesystem::path exe = helper_executable(
+      "fractalis-render-worker", "FRACTALIS_RENDER_WORKER", FRACTALIS_RENDER_WORKER_BUILD_PATH);
+  if (exe.empty())
+    throw std::runtime_error(
+        "the render worker executable fractalis-render-worker was not found (beside fractalis, "
+        "in ../libexec/fractalis, or $FRACTALIS_RENDER_WORKER)");
+  auto p = std::make_unique<Process>();
+  int sv[2], out[2];
+  if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, sv) != 0)
+    throw std::runtime_error(std::string("cannot make a socket for the render worker: ") +
+                             std::strerror(errno));
+  if (pipe2(out, O_CLOEXEC) != 0) {
+    close(sv[0]);
+    close(sv[1]);
+    throw std::runtime_error(std::string("cannot make a pipe for the render worker: ") +
+                             std::strerror(errno));
+  }
+  p->socket = sv[0];
+  p->output = out[0];
+  fcntl(p->output, F_SETFL, O_NONBLOCK);
+  std::string error;
+  p->pid = start_child_process(
+      {exe.string(), "--wire", std::to_string(kRenderWireVersion), "--device", device_.selector()},
+      {{sv[1], 3}, {p->frame.fd(), 4}}, 2, &error, out[1]);
+  close(sv[1]);
+  close(out[1]);
+  if (p->pid < 0) throw std::runtime_error("cannot start the render worker: " + error);
+  process_ = std::move(p);
+  ++starts_;
+  call(static_cast<uint32_t>(RenderWireKind::Ready), "", "", "starting", limits_.start_s);
+}
+
+void RenderWorker::drain_output(const std::string& scene) {
+  if (!process_ || process_->output < 0) return;
+  char buffer[65536];
+  for (;;) {
+    const ssize_t got = read(process_->output, buffer, sizeof buffer);
+    if (got < 0 && errno == EINTR) continue;
+    if (got <= 0) {
+      if (got == 0) {  // the worker closed its stdout (it is ending)
+        close(process_->output);
+        process_->output = -1;
+      }
+      return;
+    }
+    size_t& shown = printed_lines_[scene];
+    for (ssize_t i = 0; i < got; ++i) {
+      std::string& line = process_->partial_line;
+      const bool end = buffer[i] == '\n';
+      if (!end) line.push_back(buffer[i]);
+      if (!end && line.size() < 240) continue;
+      if (shown < limits_.printed_lines)
+        spdlog::warn("{} printed: {}", scene_label(scene), printable(line));
+      else if (shown == limits_.printed_lines)
+        spdlog::warn("{} printed more than {} lines; the rest of its output is not shown",
+                     scene_label(scene), limits_.printed_lines);
+      if (shown <= limits_.printed_lines) ++shown;
+      line.clear();
+    }
+  }
+}
+
+std::string RenderWorker::call(uint32_t kind, const std::string& request, const std::string& scene,
+                               const char* stage, double limit_s) {
+  Process& p = *process_;
+  const auto ended = [&](const std::string& fallback) {
+    const std::string how = process_->end(500);
+    fail(scene, stage, how.empty() ? fallback : how, false);
+  };
+  if (kind != static_cast<uint32_t>(RenderWireKind::Ready) &&
+      !write_frame(p.socket, static_cast<WireKind>(kind), request))
+    ended("closed its connection");
+  std::string building;  // the kernel being built, while one is
+  auto deadline = Clock::now();
+  const auto restart_clock = [&](double s) {
+    deadline = s > 0 ? Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                          std::chrono::duration<double>(s))
+                     : Clock::time_point::max();
+  };
+  restart_clock(building.empty() ? limit_s : limits_.build_s);
+  auto last_memory_check = Clock::now();
+  for (;;) {
+    const double left_s = deadline == Clock::time_point::max()
+                              ? 1e9
+                              : std::chrono::duration<double>(deadline - Clock::now()).count();
+    if (left_s <= 0) {
+      if (!building.empty())
+        fail(scene, "compiling",
+             "did not finish compiling " + building + " within " + seconds_text(limits_.build_s) +
+                 " (plugins.build_timeout_s)",
+             true);
+      fail(scene, stage, "did not finish within " + seconds_text(limit_s), true);
+    }
+    pollfd fds[2] = {{p.socket, POLLIN, 0}, {p.output, POLLIN, 0}};
+    // Short waits: the worker's memory is looked at between them.
+    const int wait_ms = static_cast<int>(std::ceil(std::min(left_s, 0.1) * 1000));
+    const int ready = poll(fds, p.output >= 0 ? 2 : 1, wait_ms);
+    if (ready < 0 && errno != EINTR) ended("could not be waited for");
+    if (p.output >= 0 && (fds[1].revents & (POLLIN | POLLHUP))) drain_output(scene);
+    if (limits_.memory_bytes > 0 && seconds_since(last_memory_check) >= 0.1) {
+      last_memory_check = Clock::now();
+      if (resident_bytes(p.pid) > limits_.memory_bytes)
+        fail(scene, building.empty() ? stage : "compiling",
+             "used more than " + std::to_string(limits_.memory_bytes >> 20) +
+                 " MiB of memory (plugins.worker_memory_mib)",
+             false);
+    }
+    if (!(fds[0].revents & (POLLIN | POLLHUP | POLLERR))) continue;
+    WireKind got{};
+    std::string payload;
+    const ReadStatus s = read_frame_exact(p.socket, std::max(1.0, left_s), &got, &payload);
+    if (s == ReadStatus::Closed) ended("closed its connection");
+    if (s == ReadStatus::TimedOut) continue;
+    if (s != ReadStatus::Ok) fail(scene, stage, "sent a malformed message", false);
+    WireReader r(payload);
+    const auto got_kind = static_cast<RenderWireKind>(got);
+    if (got_kind == RenderWireKind::Building) {
+      const bool starts = r.u32() != 0;
+      building = starts ? printable(r.str(kMaxWorkerErrorBytes)) : "";
+      if (r.failed()) fail(scene, stage, "sent a malformed message", false);
+      restart_clock(starts ? limits_.build_s : limit_s);
+      continue;
+    }
+    const bool expected =
+        got_kind == RenderWireKind::Reply ||
+        (kind == static_cast<uint32_t>(RenderWireKind::Ready) && got_kind == RenderWireKind::Ready);
+    if (!expected) fail(scene, stage, "sent a message out of turn", false);
+    const auto status = static_cast<ReplyStatus>(r.u32());
+    const std::string error = r.str(kMaxWorkerErrorBytes);
+    if (r.failed()) fail(scene, stage, "sent a malformed reply", false);
+    drain_output(scene);
+    if (status == ReplyStatus::Ok) return std::string(r.rest());
+    if (kind == static_cast<uint32_t>(RenderWireKind::Ready)) {
+      process_->end(500);
+      process_.reset();
+      throw std::runtime_error("the render worker could not open device " + device_.name + ": " +
+                               error);
+    }
+    if (status == ReplyStatus::BuildFailed) throw KernelBuildError(error);
+    throw std::runtime_error(error);
+  }
+}
+
+uint64_t RenderWorker::send_scene(const SceneInfo& info) {
+  WireWriter scene;
+  write_scene_info(scene, info);
+  const uint64_t key = fnv1a(scene.bytes());
+  if (process_->scenes.count(key)) return key;
+  WireWriter w;
+  w.u64(key);
+  w.raw(scene.bytes().data(), scene.bytes().size());
+  call(static_cast<uint32_t>(RenderWireKind::SetScene), w.bytes(), info.id, "receiving the scene",
+       limits_.start_s);
+  process_->scenes.insert(key);
+  return key;
+}
+
+Precision RenderWorker::prepare(const SceneInfo& info, const SceneState& state,
+                                const RenderSettings& settings) {
+  ensure_started();
+  if (local_) return local_->renderer.prepare(info, state, settings);
+  WireWriter w;
+  w.u64(send_scene(info));
+  write_scene_state(w, state);
+  write_render_settings(w, settings);
+  const std::string reply = call(static_cast<uint32_t>(RenderWireKind::Prepare), w.bytes(), info.id,
+                                 "preparing", limits_.build_s);
+  WireReader r(reply);
+  const uint32_t precision = r.u32();
+  if (r.failed() || precision > static_cast<uint32_t>(Precision::Auto))
+    fail(info.id, "preparing", "sent a malformed reply", false);
+  return static_cast<Precision>(precision);
+}
+
+void RenderWorker::render_sample(const SceneInfo& info, const SceneState& state,
+                                 const RenderSettings& settings, int sample_index,
+                                 Readback outputs) {
+  ensure_started();
+  if (local_) return local_->renderer.render_sample(info, state, settings, sample_index, outputs);
+  const uint64_t key = send_scene(info);
+  WireWriter w;
+  w.u64(key);
+  write_scene_state(w, state);
+  write_render_settings(w, settings);
+  w.i32(sample_index);
+  w.u32(static_cast<uint32_t>(outputs));
+  const double pixels = static_cast<double>(settings.width_px) * settings.height_px;
+  const auto start = Clock::now();
+  call(static_cast<uint32_t>(RenderWireKind::RenderSample), w.bytes(), info.id, kFrameStage,
+       frame_limit_.limit_s(key, pixels));
+  // A sample that included a kernel build says little about the scene's frames; it counts
+  // all the same (it only makes later limits longer).
+  frame_limit_.record(key, pixels, seconds_since(start));
+  last_sample_scene_ = key;
+  last_scene_id_ = info.id;
+  last_sample_pixels_ = pixels;
+}
+
+void RenderWorker::finish(const RenderSettings& settings, Readback what, FrameImage& image) {
+  ensure_started();
+  if (local_) return local_->renderer.finish(settings, what, image);
+  const size_t n = static_cast<size_t>(settings.width_px) * settings.height_px;
+  size_t bytes = 0;
+  frame_passes_at(nullptr, n, what, &bytes);
+  process_->frame.grow(bytes);
+  WireWriter w;
+  write_render_settings(w, settings);
+  w.u32(static_cast<uint32_t>(what));
+  w.u64(bytes);
+  const std::string reply =
+      call(static_cast<uint32_t>(RenderWireKind::Finish), w.bytes(), last_scene_id_,
+           "reading back a frame", frame_limit_.limit_s(last_sample_scene_, last_sample_pixels_));
+  WireReader r(reply);
+  const int lanes = r.i32();
+  const uint32_t precision = r.u32();
+  if (r.failed() || precision > static_cast<uint32_t>(Precision::Double))
+    fail(last_scene_id_, "reading back a frame", "sent a malformed reply", false);
+  const FramePassPointers from = frame_passes_at(process_->frame.data(), n, what, &bytes);
+  const FramePassPointers to = size_frame_image(image, settings.width_px, settings.height_px, what);
+  const auto copy = [](void* dst, const void* src, size_t count) {
+    if (dst && src) std::memcpy(dst, src, count);
+  };
+  copy(to.rgba8, from.rgba8, n * 4);
+  copy(to.steps, from.steps, n * 4);
+  copy(to.ray_status, from.ray_status, n);
+  copy(to.linear_rgba, from.linear_rgba, n * 16);
+  copy(to.depth, from.depth, n * 4);
+  copy(to.occlusion, from.occlusion, n * 4);
+  copy(to.shadow, from.shadow, n * 4);
+  copy(to.normal, from.normal, n * 12);
+  copy(to.albedo, from.albedo, n * 12);
+  image.lanes = lanes;
+  image.precision = static_cast<Precision>(precision);
+}
+
+FrameImage RenderWorker::render(const SceneInfo& info, const SceneState& state,
+                                const RenderSettings& settings, bool read_linear) {
+  const Readback what = read_linear ? Readback::Everything : Readback::Display;
+  for (int i = 0; i < std::max(1, settings.samples); ++i)
+    render_sample(info, state, settings, i, what);
+  FrameImage image;
+  finish(settings, what, image);
+  return image;
+}
+
+EvalCounts RenderWorker::eval_counts() {
+  ensure_started();
+  if (local_) return local_->renderer.eval_counts();
+  static_assert(std::is_trivially_copyable_v<EvalCounts>);
+  const std::string reply = call(static_cast<uint32_t>(RenderWireKind::EvalCounts), "",
+                                 last_scene_id_, "reading the DE counters", limits_.start_s);
+  EvalCounts counts;
+  WireReader r(reply);
+  if (!r.raw(&counts, sizeof counts) || counts.lanes < 1 || counts.lanes > 16)
+    fail(last_scene_id_, "reading the DE counters", "sent a malformed reply", false);
+  return counts;
+}
+
+std::vector<float> RenderWorker::probe_de(const SceneInfo& info,
+                                          const std::vector<fr_value>& params,
+                                          const std::vector<std::array<float, 3>>& points,
+                                          int lanes, Precision precision) {
+  ensure_started();
+  if (local_) return fr::probe_de(local_->runtime, info, params, points, lanes, precision);
+  const uint64_t key = send_scene(info);
+  WireWriter w;
+  w.u64(key);
+  w.u32(static_cast<uint32_t>(params.size()));
+  w.raw(params.data(), params.size() * sizeof(fr_value));
+  w.u32(static_cast<uint32_t>(points.size()));
+  w.raw(points.data(), points.size() * sizeof(points[0]));
+  w.i32(lanes);
+  w.u32(static_cast<uint32_t>(precision));
+  const std::string reply =
+      call(static_cast<uint32_t>(RenderWireKind::Probe), w.bytes(), info.id, "probing the DE",
+           frame_limit_.limit_s(key, static_cast<double>(points.size())));
+  WireReader r(reply);
+  const uint32_t count = r.u32();
+  std::vector<float> values(points.size());
+  if (count != points.size() || !r.raw(values.data(), values.size() * sizeof(float)))
+    fail(info.id, "probing the DE", "sent a malformed reply", false);
+  return values;
+}
+
+void RenderWorker::build(const SceneInfo& info, const std::string& source,
+                         const std::string& options, const std::string& description) {
+  ensure_started();
+  if (local_) {
+    local_->runtime.program(source, options, description);
+    return;
+  }
+  WireWriter w;
+  w.str(source);
+  w.str(options);
+  w.str(description);
+  call(static_cast<uint32_t>(RenderWireKind::Build), w.bytes(), info.id, "compiling",
+       limits_.build_s);
+}
+
+}  // namespace fr

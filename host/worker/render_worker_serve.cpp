@@ -1,0 +1,203 @@
+// The render worker's side of render_worker.hpp: one device, one renderer, requests one at a
+// time. Errors the worker can catch (a kernel that does not compile, a device error, a request it
+// cannot read) are replies; what it cannot catch (a DE's crash, a hang) fractalis sees as the
+// process ending or not answering.
+#include "plugin/wire_io.hpp"
+#include "render/de_probe.hpp"
+#include "worker/render_wire.hpp"
+#include "worker/render_worker.hpp"
+#include "worker/shared_frame.hpp"
+
+#include <map>
+
+namespace fr {
+namespace {
+
+WireKind wire(RenderWireKind k) {
+  return static_cast<WireKind>(k);
+}
+
+bool send_reply(int socket_fd, RenderWireKind kind, ReplyStatus status, const std::string& error,
+                const std::string& result) {
+  WireWriter w;
+  w.u32(static_cast<uint32_t>(status));
+  w.str(error.size() > kMaxWorkerErrorBytes ? error.substr(0, kMaxWorkerErrorBytes) : error);
+  w.raw(result.data(), result.size());
+  return write_frame(socket_fd, wire(kind), w.bytes());
+}
+
+struct BadRequest : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+class Worker {
+ public:
+  Worker(int socket_fd, int frame_fd, const DeviceInfo& device)
+      : socket_(socket_fd), frame_(frame_fd), runtime_(device), renderer_(runtime_) {
+    runtime_.on_build = [this](const std::string* description) {
+      WireWriter w;
+      w.u32(description ? 1 : 0);
+      w.str(description ? *description : "");
+      write_frame(socket_, wire(RenderWireKind::Building), w.bytes());
+    };
+  }
+
+  // Answers one request into *result; throws for an error to send back.
+  void answer(RenderWireKind kind, WireReader& r, WireWriter& result) {
+    switch (kind) {
+      case RenderWireKind::SetScene: {
+        const uint64_t key = r.u64();
+        SceneInfo info;
+        if (!read_scene_info(r, &info)) throw BadRequest("a malformed scene");
+        // The explorer's reloads add scenes; the oldest go (fractalis sends one again if needed).
+        if (scenes_.size() >= 32) scenes_.erase(scenes_.begin());
+        scenes_[key] = std::move(info);
+        return;
+      }
+      case RenderWireKind::Prepare: {
+        const SceneInfo& info = scene(r.u64());
+        const SceneState state = read_state(r, info);
+        const RenderSettings settings = read_render_settings(r);
+        check(r);
+        result.u32(static_cast<uint32_t>(renderer_.prepare(info, state, settings)));
+        return;
+      }
+      case RenderWireKind::RenderSample: {
+        const SceneInfo& info = scene(r.u64());
+        const SceneState state = read_state(r, info);
+        const RenderSettings settings = read_render_settings(r);
+        const int sample = r.i32();
+        const uint32_t outputs = r.u32();
+        check(r);
+        if (outputs > static_cast<uint32_t>(Readback::Everything)) throw BadRequest("bad outputs");
+        renderer_.render_sample(info, state, settings, sample, static_cast<Readback>(outputs));
+        // The sample is done when this answers: fractalis times it, and a DE that never returns
+        // is seen here, not in the next call.
+        cl_check(clFinish(runtime_.queue()), "clFinish", "rendering");
+        return;
+      }
+      case RenderWireKind::Finish: {
+        const RenderSettings settings = read_render_settings(r);
+        const uint32_t what = r.u32();
+        const uint64_t bytes = r.u64();
+        check(r);
+        if (what > static_cast<uint32_t>(Readback::Everything)) throw BadRequest("bad passes");
+        const size_t n = static_cast<size_t>(settings.width_px) * settings.height_px;
+        size_t need = 0;
+        frame_passes_at(nullptr, n, static_cast<Readback>(what), &need);
+        std::string error;
+        if (need > bytes || !frame_.map_at_least(need, &error))
+          throw BadRequest(error.empty() ? "the shared frame is too small" : error);
+        const Renderer::FinishedFrame f = renderer_.finish_into(
+            settings, static_cast<Readback>(what),
+            frame_passes_at(frame_.data(), n, static_cast<Readback>(what), &need));
+        result.i32(f.lanes);
+        result.u32(static_cast<uint32_t>(f.precision));
+        return;
+      }
+      case RenderWireKind::EvalCounts: {
+        const EvalCounts counts = renderer_.eval_counts();
+        result.raw(&counts, sizeof counts);
+        return;
+      }
+      case RenderWireKind::Probe: {
+        const SceneInfo& info = scene(r.u64());
+        const uint32_t param_count = r.u32();
+        if (param_count != info.params.size()) throw BadRequest("wrong parameter count");
+        std::vector<fr_value> params(param_count);
+        r.raw(params.data(), params.size() * sizeof(fr_value));
+        const uint32_t point_count = r.u32();
+        if (point_count > r.rest().size() / sizeof(std::array<float, 3>))
+          throw BadRequest("too many points");
+        std::vector<std::array<float, 3>> points(point_count);
+        r.raw(points.data(), points.size() * sizeof(points[0]));
+        const int lanes = r.i32();
+        const uint32_t precision = r.u32();
+        check(r);
+        if (precision > static_cast<uint32_t>(Precision::Auto)) throw BadRequest("bad precision");
+        const std::vector<float> values =
+            probe_de(runtime_, info, params, points, lanes, static_cast<Precision>(precision));
+        result.u32(static_cast<uint32_t>(values.size()));
+        result.raw(values.data(), values.size() * sizeof(float));
+        return;
+      }
+      case RenderWireKind::Build: {
+        const std::string source = r.str(64u << 20);
+        const std::string options = r.str(1u << 20);
+        const std::string description = r.str(1u << 20);
+        check(r);
+        runtime_.program(source, options, description);
+        return;
+      }
+      default:
+        throw BadRequest("an unknown request " + std::to_string(static_cast<uint32_t>(kind)));
+    }
+  }
+
+ private:
+  const SceneInfo& scene(uint64_t key) const {
+    const auto it = scenes_.find(key);
+    if (it == scenes_.end()) throw BadRequest("a scene it was not sent");
+    return it->second;
+  }
+  static SceneState read_state(WireReader& r, const SceneInfo& info) {
+    SceneState state;
+    if (!read_scene_state(r, info.params.size(), info.lights.size(), &state))
+      throw BadRequest("a malformed scene state");
+    return state;
+  }
+  static void check(const WireReader& r) {
+    if (r.failed()) throw BadRequest("a malformed request");
+  }
+
+  int socket_;
+  SharedFrame frame_;
+  ClRuntime runtime_;
+  Renderer renderer_;
+  std::map<uint64_t, SceneInfo> scenes_;
+};
+
+}  // namespace
+
+int run_render_worker(int socket_fd, int frame_fd, const std::string& device_selector) {
+  std::unique_ptr<Worker> worker;
+  try {
+    std::string error;
+    const std::optional<DeviceInfo> device = select_device(list_devices(), device_selector, &error);
+    if (!device) {
+      send_reply(socket_fd, RenderWireKind::Ready, ReplyStatus::Failed, error, "");
+      return 1;
+    }
+    worker = std::make_unique<Worker>(socket_fd, frame_fd, *device);
+  } catch (const std::exception& e) {
+    send_reply(socket_fd, RenderWireKind::Ready, ReplyStatus::Failed, e.what(), "");
+    return 1;
+  }
+  if (!send_reply(socket_fd, RenderWireKind::Ready, ReplyStatus::Ok, "", "")) return 0;
+  for (;;) {
+    WireKind kind{};
+    std::string payload;
+    if (read_frame(socket_fd, -1, &kind, &payload) != ReadStatus::Ok) return 0;  // fractalis left
+    const auto k = static_cast<RenderWireKind>(kind);
+    if (k == RenderWireKind::Quit) return 0;
+    WireReader r(payload);
+    WireWriter result;
+    ReplyStatus status = ReplyStatus::Ok;
+    std::string error;
+    try {
+      worker->answer(k, r, result);
+    } catch (const KernelBuildError& e) {
+      status = ReplyStatus::BuildFailed;
+      error = e.what();
+    } catch (const BadRequest& e) {
+      status = ReplyStatus::Failed;
+      error = std::string("the render worker was sent ") + e.what();
+    } catch (const std::exception& e) {
+      status = ReplyStatus::Failed;
+      error = e.what();
+    }
+    if (!send_reply(socket_fd, RenderWireKind::Reply, status, error, result.bytes())) return 0;
+  }
+}
+
+}  // namespace fr
