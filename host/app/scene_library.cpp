@@ -57,7 +57,7 @@ SceneLibrary::SceneLibrary(std::vector<std::filesystem::path> folders, const Plu
     hashes[i] = VettedScenes::content_hash(outcomes[i].file);
     if (vetted_.contains(hashes[i], settings)) continue;
     vets[i] = std::async(std::launch::async, vet_scene, outcomes[i].file, settings,
-                         worker_.device().name, policy_.vet_timeout_s);
+                         worker_.device().name, policy_);
   }
   for (size_t i = 0; i < outcomes.size(); ++i) {
     const LoadOutcome& o = outcomes[i];
@@ -143,7 +143,7 @@ SceneEvent SceneLibrary::add_or_replace(const std::filesystem::path& file,
   // process with a time limit first (once per file content and kernel shape).
   const uint64_t hash = VettedScenes::content_hash(file);
   if (!vetted_.contains(hash, settings)) {
-    const VetResult vet = vet_scene(file, settings, worker_.device().name, policy_.vet_timeout_s);
+    const VetResult vet = vet_scene(file, settings, worker_.device().name, policy_);
     if (!vet.ok) return keep_old(vet.error);
     vetted_.insert(hash, settings);
   }

@@ -168,7 +168,7 @@ class Checker {
   // child process with a time limit finds it first.
   bool check_returns() {
     const VetResult vet =
-        vet_scene(file_, options_.render, worker_.device().name, options_.policy.vet_timeout_s);
+        vet_scene(file_, options_.render, worker_.device().name, options_.policy);
     if (vet.ok) {
       add("de-returns", CheckStatus::Pass, "a test render at 8x8 finished in a child process");
       return true;

@@ -4,7 +4,7 @@
 #include "cli/commands.hpp"
 #include "cli/scene_options.hpp"
 #include "io/printable.hpp"
-#include "render/renderer.hpp"
+#include "worker/render_worker.hpp"
 
 #include <spdlog/spdlog.h>
 
@@ -36,8 +36,12 @@ int command_vet_scene(const std::vector<std::string>& args, std::ostream& out, s
   if (!instance || !instance->update(state, 0, &error)) {
     throw std::runtime_error(error);
   }
-  ClRuntime runtime(choose_device(settings, options));
-  Renderer renderer(runtime);
+  // In a render worker of its own, with its build and memory limits (a compiler bomb must not
+  // take this process, or the machine, with it); the parent's plugins.vet_timeout_s is the time
+  // limit of the whole test.
+  RenderWorker renderer(choose_device(settings, options),
+                        command_worker_limits(settings.plugins, 0));
+  renderer.name_scene_file(o.scene->info.id, printable(*file));
   RenderSettings render = render_settings_from(settings, options);
   renderer.render(o.scene->info, state, render);
   return 0;

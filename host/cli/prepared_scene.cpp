@@ -60,7 +60,7 @@ PreparedScene prepare_scene(const ParsedOptions& options, int max_side) {
   // content. Not with isolation "none", which keeps everything in one process for a debugger.
   if (p.settings.plugins.isolation != PluginIsolation::None) {
     const VetResult vet =
-        vet_scene_once(p.scene->file, p.render, p.device.name, p.settings.plugins.vet_timeout_s);
+        vet_scene_once(p.scene->file, p.render, p.device.name, p.settings.plugins);
     if (!vet.ok) {
       const std::string message = "scene '" + p.scene->info.id + "' (" +
                                   printable(p.scene->file.string()) + "): " + vet.error;

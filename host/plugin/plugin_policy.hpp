@@ -27,7 +27,8 @@ struct PluginPolicy {
   bool allow_writable = false;  // load from folders and files that other users can write to
   double vet_timeout_s = 60;    // the explorer's test render of a new or rebuilt scene
   // The render worker (worker/render_worker.hpp), which compiles and runs scene kernels:
-  double build_timeout_s = 60;  // one kernel build; a preprocessor bomb ends here
+  // One kernel build: the in-tree scenes' take under 1 s here, cold; a preprocessor bomb ends here.
+  double build_timeout_s = 20;
   double worker_memory_mib = 4096;  // its resident memory
   // The explorer's first sample of a scene; later samples may take 20 times the slowest time per
   // pixel the scene has needed so far, and at least 5 s (worker/frame_limit.hpp).

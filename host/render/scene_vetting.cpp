@@ -30,7 +30,8 @@ std::filesystem::path fractalis_executable() {
 }
 
 VetResult vet_scene(const std::filesystem::path& file, const RenderSettings& settings,
-                    const std::string& device, double timeout_s) {
+                    const std::string& device, const PluginPolicy& policy) {
+  const double timeout_s = policy.vet_timeout_s;
   VetResult result;
   const std::string exe = fractalis_executable().string();
   std::vector<std::string> args = {exe,           "vet-scene",
@@ -40,6 +41,13 @@ VetResult vet_scene(const std::filesystem::path& file, const RenderSettings& set
                                    "--precision", precision_name(settings.precision)};
   if (!device.empty()) args.insert(args.end(), {"--device", device});
   if (settings.lanes == 0) args.erase(args.begin() + 6, args.begin() + 8);
+  const auto set = [&](const char* key, double value) {
+    std::ostringstream text;
+    text << key << "=" << value;
+    args.insert(args.end(), {"--set", text.str()});
+  };
+  set("plugins.build_timeout_s", policy.build_timeout_s);
+  set("plugins.worker_memory_mib", policy.worker_memory_mib);
   int pipe_fds[2];
   if (pipe2(pipe_fds, O_CLOEXEC) != 0) {
     result.error = std::string("cannot start the test render: ") + std::strerror(errno);
@@ -100,8 +108,12 @@ VetResult vet_scene(const std::filesystem::path& file, const RenderSettings& set
   const size_t line = said.rfind('\n');
   std::string last = line == std::string::npos ? said : said.substr(line + 1);
   if (last.rfind("fractalis: error: ", 0) == 0) last = last.substr(18);
+  // The caller names the scene and its file; the child's error may name them too.
+  if (last.rfind("scene '", 0) == 0)
+    if (const size_t named = last.find("): "); named != std::string::npos)
+      last = last.substr(named + 3);
   if (WIFSIGNALED(status))
-    result.error = "the test render crashed (" + std::string(strsignal(WTERMSIG(status))) + ")";
+    result.error = "the test render " + describe_child_exit(status);
   else
     result.error = "the test render failed: " + (last.empty() ? "no reason given" : last);
   return result;
@@ -152,11 +164,11 @@ void VettedScenes::insert(uint64_t hash, const RenderSettings& s) {
 }
 
 VetResult vet_scene_once(const std::filesystem::path& file, const RenderSettings& settings,
-                         const std::string& device, double timeout_s) {
+                         const std::string& device, const PluginPolicy& policy) {
   VettedScenes vetted;
   const uint64_t hash = VettedScenes::content_hash(file);
   if (vetted.contains(hash, settings)) return {true, false, ""};
-  VetResult vet = vet_scene(file, settings, device, timeout_s);
+  VetResult vet = vet_scene(file, settings, device, policy);
   if (vet.ok) vetted.insert(hash, settings);
   return vet;
 }

@@ -7,6 +7,7 @@
 // cache for the explorer's own build of the same kernel.
 #pragma once
 
+#include "plugin/plugin_policy.hpp"
 #include "render/render_settings.hpp"
 
 #include <cstdint>
@@ -24,9 +25,11 @@ struct VetResult {
 };
 
 // Renders `file`'s scene at 8x8 with `settings`' lanes and precision on the device `device`
-// (a selector as for --device; "" for the default) in a `fractalis vet-scene` process.
+// (a selector as for --device; "" for the default) in a `fractalis vet-scene` process, within
+// policy.vet_timeout_s; the kernel compiles and runs in that process's render worker, under
+// policy's build and memory limits.
 VetResult vet_scene(const std::filesystem::path& file, const RenderSettings& settings,
-                    const std::string& device, double timeout_s);
+                    const std::string& device, const PluginPolicy& policy);
 
 // Scenes already vetted, by the content of their file and the kernel shape: a file that comes
 // back with the same bytes (an undo, a rebuild that changed nothing, the next start of the
@@ -47,7 +50,7 @@ class VettedScenes {
 // per file content and kernel shape, remembered in the same markers as the explorer's, so a DE
 // that never returns fails in plugins.vet_timeout_s instead of after render.watchdog_s.
 VetResult vet_scene_once(const std::filesystem::path& file, const RenderSettings& settings,
-                         const std::string& device, double timeout_s);
+                         const std::string& device, const PluginPolicy& policy);
 
 // The fractalis executable: this process when it is fractalis, else the build tree's.
 std::filesystem::path fractalis_executable();

@@ -143,8 +143,8 @@ std::string RenderWorker::scene_label(const std::string& scene) const {
   return label;
 }
 
-void RenderWorker::fail(const std::string& scene, const char* stage, const std::string& reason,
-                        bool timed_out) {
+void RenderWorker::fail(const std::string& scene, const std::string& stage,
+                        const std::string& reason, bool timed_out) {
   if (process_) {
     drain_output(scene);
     process_->end(0);
@@ -152,7 +152,7 @@ void RenderWorker::fail(const std::string& scene, const char* stage, const std::
   }
   const std::string who =
       scene.empty() ? "the render worker" : scene_label(scene) + ": the render worker";
-  const bool started = std::string_view(stage) != "starting";
+  const bool started = stage != "starting";
   throw RenderWorkerFailure(
       who + " " + reason + " while " + stage +
           (started ? "; it was ended (the next render starts a fresh one)" : ""),
@@ -252,11 +252,16 @@ std::string RenderWorker::call(uint32_t kind, const std::string& request, const 
                               : std::chrono::duration<double>(deadline - Clock::now()).count();
     if (left_s <= 0) {
       if (!building.empty())
-        fail(scene, "compiling",
-             "did not finish compiling " + building + " within " + seconds_text(limits_.build_s) +
-                 " (plugins.build_timeout_s)",
-             true);
-      fail(scene, stage, "did not finish within " + seconds_text(limit_s), true);
+        fail(
+            scene, "compiling " + building,
+            "did not finish within " + seconds_text(limits_.build_s) + " (plugins.build_timeout_s)",
+            true);
+      std::string which;  // the setting behind the limit
+      if (limit_s == limits_.frame.first_s)
+        which = limits_.frame.adaptive ? " (plugins.frame_limit_s)" : " (render.watchdog_s)";
+      else if (limits_.frame.adaptive && stage != std::string("starting"))
+        which = " (the scene's slowest time per pixel so far, times 20)";
+      fail(scene, stage, "did not finish within " + seconds_text(limit_s) + which, true);
     }
     pollfd fds[2] = {{p.socket, POLLIN, 0}, {p.output, POLLIN, 0}};
     // Short waits: the worker's memory is looked at between them.
@@ -267,7 +272,7 @@ std::string RenderWorker::call(uint32_t kind, const std::string& request, const 
     if (limits_.memory_bytes > 0 && seconds_since(last_memory_check) >= 0.1) {
       last_memory_check = Clock::now();
       if (resident_bytes(p.pid) > limits_.memory_bytes)
-        fail(scene, building.empty() ? stage : "compiling",
+        fail(scene, building.empty() ? std::string(stage) : "compiling " + building,
              "used more than " + std::to_string(limits_.memory_bytes >> 20) +
                  " MiB of memory (plugins.worker_memory_mib)",
              false);

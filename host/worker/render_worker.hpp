@@ -52,7 +52,7 @@ class RenderWorkerFailure : public std::runtime_error {
 struct RenderWorkerLimits {
   bool in_process = false;                       // plugins.isolation = "none"
   double start_s = 30;                           // starting the worker and opening the device
-  double build_s = 60;                           // one kernel build (plugins.build_timeout_s)
+  double build_s = 20;                           // one kernel build (plugins.build_timeout_s)
   uint64_t memory_bytes = uint64_t{4096} << 20;  // resident (plugins.worker_memory_mib); 0: none
   FrameLimitRule frame;                          // one sample, one probe
   size_t printed_lines = 20;                     // lines of a scene's printf output shown
@@ -104,8 +104,8 @@ class RenderWorker {
   uint64_t send_scene(const SceneInfo& info);
   std::string call(uint32_t kind, const std::string& request, const std::string& scene_id,
                    const char* stage, double limit_s);
-  [[noreturn]] void fail(const std::string& scene_id, const char* stage, const std::string& reason,
-                         bool timed_out);
+  [[noreturn]] void fail(const std::string& scene_id, const std::string& stage,
+                         const std::string& reason, bool timed_out);
   std::string scene_label(const std::string& scene_id) const;  // "": none
   void drain_output(const std::string& scene_id);
 

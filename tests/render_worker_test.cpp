@@ -1,0 +1,388 @@
+// The render worker (worker/render_worker.hpp): frames that come back through it are the frames
+// this process renders itself, and scene kernels that crash, hang, overrun, bomb the compiler or
+// flood the output end the worker, never fractalis — for `list`, `render`, `bench`, `check` and
+// the explorer, with the file and the reason named and nothing left behind. The hostile kernels
+// are tests/fixtures/plugins/cl_*.c.
+#include "worker/render_worker.hpp"
+#include "app/explorer.hpp"
+#include "render/de_probe.hpp"
+#include "test_support.hpp"
+
+#include <dirent.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+#include <spdlog/sinks/ostream_sink.h>
+#include <spdlog/spdlog.h>
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <regex>
+
+namespace fr {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path kernel_fixture_dir(const std::string& name) {
+  return fs::path(KERNEL_PLUGIN_DIR) / name;
+}
+
+// A link to the worker under a name of this test's own, so that its processes can be counted
+// among everything else that runs on the machine.
+fs::path own_worker_link() {
+  static const fs::path link = [] {
+    const fs::path dir = test::fresh_dir("render_worker_link");
+    const fs::path target =
+        fs::path(FRACTALIS_EXECUTABLE).parent_path() / "fractalis-render-worker";
+    const fs::path l = dir / ("worker-" + std::to_string(getpid()));
+    fs::create_symlink(target, l);
+    return l;
+  }();
+  return link;
+}
+
+// Processes whose argv[0] is `program`.
+int processes_running(const fs::path& program) {
+  int count = 0;
+  DIR* proc = opendir("/proc");
+  while (dirent* e = readdir(proc)) {
+    if (e->d_name[0] < '0' || e->d_name[0] > '9') continue;
+    std::ifstream cmdline(std::string("/proc/") + e->d_name + "/cmdline");
+    std::string argv0;
+    std::getline(cmdline, argv0, '\0');
+    if (argv0 == program.string()) ++count;
+  }
+  closedir(proc);
+  return count;
+}
+
+struct CommandRun {
+  int code = -1;
+  std::string output;  // stdout and stderr
+};
+
+// Runs the fractalis executable (a process of its own: if isolation failed, it, not the test,
+// would die) with the test's worker link.
+CommandRun run_fractalis(const std::string& args) {
+  const std::string command = "FRACTALIS_RENDER_WORKER='" + own_worker_link().string() + "' '" +
+                              FRACTALIS_EXECUTABLE + "' " + args + " 2>&1";
+  CommandRun r;
+  FILE* pipe = popen(command.c_str(), "r");
+  char buffer[4096];
+  size_t got = 0;
+  while ((got = fread(buffer, 1, sizeof buffer, pipe)) > 0) r.output.append(buffer, got);
+  const int status = pclose(pipe);
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  return r;
+}
+
+// Limits short enough for a test: a hang ends in seconds, a compiler bomb in 10 s or 1 GiB.
+const std::string kLimits =
+    "--set render.watchdog_s=5 --set plugins.vet_timeout_s=20 --set plugins.build_timeout_s=10 "
+    "--set plugins.worker_memory_mib=1024";
+
+struct Hostile {
+  const char* name;      // fixture folder, and scene id after "kernel_"
+  const char* extra;     // extra options of render and bench
+  const char* reason;    // a regular expression the error must match
+  bool renders = false;  // the scene renders (its attack is a nuisance, not a failure)
+};
+
+const Hostile kHostile[] = {
+    {"write_everywhere", "", "crashed \\(SIGSEGV"},
+    {"write_some_points", "", "crashed \\(SIGSEGV"},
+    {"write_above_param", "--param danger=1", "crashed \\(SIGSEGV"},
+    {"private_overrun", "", "crashed \\(SIG(SEGV|BUS)"},
+    {"huge_private", "", "crashed \\(SIG|memory|compile"},
+    {"preprocessor_bomb", "", "plugins.build_timeout_s|plugins.worker_memory_mib|did not finish"},
+    {"huge_source", "", "de_source is longer than 1048576 bytes"},
+    {"loop_some_pixels", "", "did not finish"},
+    {"printf_flood", "", "printed more than 20 lines", true},
+    {"macro_collision", "", "fixture.cl:1: .*v3_dot"},
+    {"builtin_macro", "", "rendered kernel_builtin_macro|median", true},
+    {"function_collision", "", "fixture.cl:4: .*march"},
+};
+
+class HostileKernel : public testing::TestWithParam<Hostile> {};
+
+TEST_P(HostileKernel, EveryCommandSurvivesAndNamesTheFileAndReason) {
+  const Hostile& h = GetParam();
+  const fs::path dir = kernel_fixture_dir(h.name);
+  const std::string file = "kernel_" + std::string(h.name) + ".so";
+  const std::string plugins = "--plugins '" + dir.string() + "' ";
+  const std::string scene = plugins + "--scene kernel_" + h.name + " " + kLimits + " " + h.extra;
+  const fs::path out = test::fresh_dir(std::string("render_worker_") + h.name);
+  const std::regex reason(h.reason);
+
+  const CommandRun list = run_fractalis("list " + plugins);
+  // 1: a plugin failed to load (named, with its reason); never a crash of fractalis.
+  EXPECT_TRUE(list.code == 0 || list.code == 1) << list.output;
+  EXPECT_EQ(list.output.find('\033'), std::string::npos) << list.output;
+
+  const CommandRun render =
+      run_fractalis("render " + scene + " --size 64x36 --out '" + (out / "x.png").string() + "'");
+  const CommandRun bench = run_fractalis("bench " + scene + " --size 64x36 --frames 2 --runs 1");
+  for (const CommandRun* r : {&render, &bench}) {
+    SCOPED_TRACE(r->output);
+    if (h.renders) {
+      EXPECT_EQ(r->code, 0);
+    } else {
+      // An error (exit 1, or 3 for a time limit), not a crash of fractalis (128 + signal).
+      EXPECT_TRUE(r->code == 1 || r->code == 3 || r->code == 2) << r->code;
+      EXPECT_NE(r->output.find(file), std::string::npos) << "the file is named";
+    }
+    EXPECT_TRUE(std::regex_search(r->output, reason)) << "the reason: " << h.reason;
+    EXPECT_EQ(r->output.find('\033'), std::string::npos) << "no escape reaches the terminal";
+  }
+  if (!h.renders) {
+    EXPECT_FALSE(fs::exists(out / "x.png"));
+  }
+  size_t left = 0;
+  for (const auto& e : fs::directory_iterator(out))
+    if (e.path().filename() != "x.png") ++left;
+  EXPECT_EQ(left, 0u) << "no temporary file is left";
+
+  const CommandRun check = run_fractalis("check '" + (dir / file).string() + "' " + kLimits +
+                                         " --set plugins.allow_writable=true");
+  SCOPED_TRACE(check.output);
+  EXPECT_TRUE(check.code == 0 || check.code == 1) << check.code;
+  if (!h.renders && std::string(h.name) != "write_above_param" &&
+      std::string(h.name) != "huge_source") {
+    EXPECT_EQ(check.code, 1) << "the check fails";
+  }
+  EXPECT_EQ(processes_running(own_worker_link()), 0) << "no worker outlives fractalis";
+}
+
+INSTANTIATE_TEST_SUITE_P(Fixtures, HostileKernel, testing::ValuesIn(kHostile),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+// The frames that come back through the worker's shared memory are the frames this process
+// renders itself, pass for pass, at growing and shrinking sizes.
+TEST(RenderWorker, FramesAreTheInProcessFrames) {
+  const auto scene = test::mandelbulb();
+  const SceneState state = make_default_state(scene->info);
+  Renderer local(test::runtime());
+  RenderWorker worker(test::runtime().device(), command_worker_limits(PluginPolicy{}, 600));
+  for (const auto& [w, h, what] :
+       {std::tuple{48, 27, Readback::Everything}, std::tuple{160, 90, Readback::DisplayAndSteps},
+        std::tuple{33, 17, Readback::Display}}) {
+    RenderSettings s;
+    s.width_px = w;
+    s.height_px = h;
+    FrameImage mine, theirs;
+    local.render_sample(scene->info, state, s, 0, what);
+    local.finish(s, what, mine);
+    worker.render_sample(scene->info, state, s, 0, what);
+    worker.finish(s, what, theirs);
+    EXPECT_EQ(theirs.width_px, w);
+    EXPECT_EQ(theirs.height_px, h);
+    EXPECT_EQ(theirs.lanes, mine.lanes);
+    EXPECT_EQ(theirs.precision, mine.precision);
+    EXPECT_EQ(theirs.rgba8, mine.rgba8);
+    EXPECT_EQ(theirs.steps, mine.steps);
+    EXPECT_EQ(theirs.ray_status, mine.ray_status);
+    EXPECT_EQ(theirs.linear_rgba, mine.linear_rgba);
+    EXPECT_EQ(theirs.depth, mine.depth);
+    EXPECT_EQ(theirs.occlusion, mine.occlusion);
+    EXPECT_EQ(theirs.shadow, mine.shadow);
+    EXPECT_EQ(theirs.normal, mine.normal);
+    EXPECT_EQ(theirs.albedo, mine.albedo);
+    if (what == Readback::Everything) {
+      EXPECT_GT(std::count(mine.ray_status.begin(), mine.ray_status.end(), 1), 100);
+    }
+  }
+  const std::vector<std::array<float, 3>> points = {{0, 0, 3}, {0.1f, 0.2f, 0.3f}, {5, 5, 5}};
+  EXPECT_EQ(worker.probe_de(scene->info, state.params, points),
+            probe_de(test::runtime(), scene->info, state.params, points));
+  EXPECT_EQ(worker.starts(), 1);
+}
+
+// A kernel build error is an error of the call, not of the worker: it goes on.
+TEST(RenderWorker, ABuildErrorKeepsTheWorker) {
+  const auto scene = test::mandelbulb();
+  RenderWorker worker(test::runtime().device(), command_worker_limits(PluginPolicy{}, 600));
+  EXPECT_THROW(worker.build(scene->info, "kernel void k() { nonsense; }", "", "a broken program"),
+               KernelBuildError);
+  const SceneState state = make_default_state(scene->info);
+  RenderSettings s;
+  s.width_px = s.height_px = 8;
+  EXPECT_NO_THROW(worker.render(scene->info, state, s));
+  EXPECT_EQ(worker.starts(), 1);
+}
+
+std::shared_ptr<const LoadedScene> load_fixture(const std::string& name) {
+  return test::load_or_fail(kernel_fixture_dir(name) / ("kernel_" + name + ".so"));
+}
+
+// A crash names the file, the stage and the signal; the next call starts a fresh worker, which
+// renders a good scene.
+TEST(RenderWorker, ACrashEndsTheWorkerAndTheNextCallStartsAnother) {
+  const auto bad = load_fixture("write_everywhere");
+  const auto good = test::mandelbulb();
+  RenderWorker worker(test::runtime().device(), command_worker_limits(PluginPolicy{}, 600));
+  worker.name_scene_file(bad->info.id, bad->file);
+  RenderSettings s;
+  s.width_px = s.height_px = 16;
+  try {
+    worker.render(bad->info, make_default_state(bad->info), s);
+    ADD_FAILURE() << "the crash went unseen";
+  } catch (const RenderWorkerFailure& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find(bad->file.string()), std::string::npos) << what;
+    EXPECT_NE(what.find("crashed (SIGSEGV"), std::string::npos) << what;
+    EXPECT_NE(what.find("while rendering"), std::string::npos) << what;
+    EXPECT_FALSE(e.timed_out());
+  }
+  const FrameImage image = worker.render(good->info, make_default_state(good->info), s);
+  EXPECT_EQ(image.rgba8.size(), 16u * 16 * 4);
+  EXPECT_EQ(worker.starts(), 2);
+}
+
+// A DE that never returns at some pixels ends at the frame limit, not later; a compiler bomb at
+// the build limit (or the memory limit), in seconds.
+TEST(RenderWorker, HangsAndBombsEndAtTheirLimits) {
+  PluginPolicy policy;
+  policy.build_timeout_s = 5;
+  policy.worker_memory_mib = 1024;
+  RenderWorker worker(test::runtime().device(), command_worker_limits(policy, 2));
+  RenderSettings s;
+  s.width_px = 64;
+  s.height_px = 36;
+  s.precision = Precision::Float;
+  const auto loop = load_fixture("loop_some_pixels");
+  auto start = std::chrono::steady_clock::now();
+  try {
+    worker.render(loop->info, make_default_state(loop->info), s);
+    ADD_FAILURE() << "the hang went unseen";
+  } catch (const RenderWorkerFailure& e) {
+    EXPECT_TRUE(e.timed_out()) << e.what();
+    EXPECT_NE(std::string(e.what()).find("did not finish within 2 s"), std::string::npos)
+        << e.what();
+  }
+  auto seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_LT(seconds, 2 + 5 + 10) << "the limit, a build and a fresh worker's start at most";
+
+  const auto bomb = load_fixture("preprocessor_bomb");
+  start = std::chrono::steady_clock::now();
+  try {
+    worker.render(bomb->info, make_default_state(bomb->info), s);
+    ADD_FAILURE() << "the bomb went unseen";
+  } catch (const std::exception& e) {
+    EXPECT_TRUE(std::regex_search(std::string(e.what()),
+                                  std::regex("plugins.build_timeout_s|plugins.worker_memory_mib")))
+        << e.what();
+  }
+  seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_LT(seconds, 5 + 10);
+}
+
+// A DE's printf output is shown, escaped, attributed to its scene, and capped.
+TEST(RenderWorker, PrintedOutputIsCappedAndAttributed) {
+  std::ostringstream log;
+  auto sink = std::make_shared<spdlog::sinks::ostream_sink_mt>(log);
+  auto previous = spdlog::default_logger();
+  spdlog::set_default_logger(std::make_shared<spdlog::logger>("test", sink));
+  const auto flood = load_fixture("printf_flood");
+  {
+    RenderWorker worker(test::runtime().device(), command_worker_limits(PluginPolicy{}, 600));
+    worker.name_scene_file(flood->info.id, flood->file);
+    RenderSettings s;
+    s.width_px = 64;
+    s.height_px = 36;
+    worker.render(flood->info, make_default_state(flood->info), s);
+    worker.render(flood->info, make_default_state(flood->info), s);
+  }
+  spdlog::set_default_logger(previous);
+  const std::string text = log.str();
+  size_t lines = 0;
+  for (size_t at = 0; (at = text.find("printed", at)) != std::string::npos; ++at) ++lines;
+  EXPECT_EQ(lines, 21u) << "20 lines, then one saying the rest is not shown:\n" << text;
+  EXPECT_NE(text.find("scene 'kernel_printf_flood' (" + flood->file.string() + ") printed: flood"),
+            std::string::npos)
+      << text.substr(0, 2000);
+  EXPECT_EQ(text.find('\033'), std::string::npos) << "escapes are escaped";
+}
+
+// The explorer shows the error of a parameter that crashes the worker, goes back to the last
+// parameters that rendered, and renders them again in a fresh worker.
+TEST(RenderWorker, TheExplorerGoesBackToTheLastGoodParameters) {
+  RenderWorker worker(test::runtime().device(), explorer_worker_limits(PluginPolicy{}));
+  std::vector<SceneEvent> events;
+  SceneLibrary library({kernel_fixture_dir("write_above_param")}, PluginPolicy{}, RenderSettings{},
+                       worker, &events);
+  ASSERT_EQ(library.slots().size(), 1u);
+  Explorer explorer(Settings{}, worker, library, "kernel_write_above_param");
+  InputState input;
+  explorer.update(input, 1.0 / 30, 0);
+  ASSERT_NE(explorer.render(64, 36), nullptr);
+  SceneSlot& slot = explorer.current();
+  slot.state.params[0].v[0] = 1;  // what the overlay's slider does
+  explorer.mark_changed();
+  explorer.update(input, 1.0 / 30, 0);  // the probe at the eye runs the DE: the worker crashes
+  const FrameImage* frame = explorer.render(64, 36);
+  EXPECT_NE(slot.error.find("crashed (SIGSEGV"), std::string::npos) << slot.error;
+  EXPECT_NE(slot.error.find("kernel_write_above_param.so"), std::string::npos) << slot.error;
+  EXPECT_EQ(slot.state.params[0].v[0], 0) << "back to the last value that rendered";
+  for (int i = 0; i < 3 && !frame; ++i) {
+    explorer.update(input, 1.0 / 30, 0);
+    frame = explorer.render(64, 36);
+  }
+  EXPECT_NE(frame, nullptr) << "a fresh worker renders again";
+  EXPECT_GE(worker.starts(), 2);
+}
+
+// A scene that redefines an OpenCL built-in the march uses (fmax) keeps it to itself: its picture
+// is the plain sphere's, pixel for pixel.
+TEST(RenderWorker, ABuiltInMacroStaysInTheScenesCode) {
+  const auto redefined = load_fixture("builtin_macro");
+  const auto plain = test::load_or_fail(fs::path(FIXTURE_PLUGIN_DIR) / "fixture_valid_scene.so");
+  RenderSettings s;
+  s.width_px = 64;
+  s.height_px = 36;
+  const FrameImage a =
+      test::worker().render(redefined->info, make_default_state(redefined->info), s, true);
+  const FrameImage b = test::worker().render(plain->info, make_default_state(plain->info), s, true);
+  EXPECT_EQ(a.rgba8, b.rgba8);
+  EXPECT_EQ(a.depth, b.depth);
+  EXPECT_GT(std::count(a.ray_status.begin(), a.ray_status.end(), 1), 200) << "the sphere is seen";
+}
+
+// Restarting the worker a thousand times leaves no descriptor, child or memory behind.
+TEST(RenderWorker, AThousandRestartsLeakNothing) {
+  const auto scene = test::mandelbulb();
+  const SceneState state = make_default_state(scene->info);
+  RenderWorker worker(test::runtime().device(), command_worker_limits(PluginPolicy{}, 600));
+  const auto count_fds = [] {
+    size_t n = 0;
+    for ([[maybe_unused]] const auto& e : fs::directory_iterator("/proc/self/fd")) ++n;
+    return n;
+  };
+  const auto resident_kib = [] {
+    std::ifstream status("/proc/self/status");
+    std::string line;
+    while (std::getline(status, line))
+      if (line.rfind("VmRSS:", 0) == 0) return std::stol(line.substr(6));
+    return 0L;
+  };
+  const std::vector<std::array<float, 3>> eye = {{0, 0, 3}};
+  worker.probe_de(scene->info, state.params, eye);
+  const size_t fds = count_fds();
+  const long rss = resident_kib();
+  constexpr int kRestarts = 1000;
+  for (int i = 0; i < kRestarts; ++i) {
+    kill(worker.pid(), SIGKILL);
+    EXPECT_THROW(worker.probe_de(scene->info, state.params, eye), RenderWorkerFailure);
+    ASSERT_EQ(worker.probe_de(scene->info, state.params, eye).size(), 1u);
+  }
+  EXPECT_EQ(worker.starts(), kRestarts + 1);
+  EXPECT_EQ(count_fds(), fds);
+  EXPECT_EQ(waitpid(-1, nullptr, WNOHANG), 0) << "no child left unreaped but the live worker";
+  EXPECT_LT(resident_kib() - rss, 8 * 1024) << "KiB grown over the restarts";
+}
+
+}  // namespace
+}  // namespace fr
