@@ -1,8 +1,11 @@
 // fractalis-render-worker: compiles and runs scene kernels on behalf of fractalis, which starts
 // it with a socket on descriptor 3 and the shared frame on descriptor 4 (see
 // worker/render_worker.hpp). Not meant to be run by hand.
+#include "render/kernel_cache.hpp"
 #include "worker/render_wire.hpp"
 #include "worker/render_worker.hpp"
+
+#include <sys/resource.h>
 
 #include <cstdio>
 #include <cstring>
@@ -20,6 +23,12 @@ int main(int argc, char** argv) {
     return 2;
   }
   if (wire != std::to_string(fr::kRenderWireVersion)) return 126;
+  // The only files a worker writes are the compiler's (the kernel cache: a few MB a program). A
+  // preprocessor bomb writes its expansion there as it goes (1.8 GB in 40 s here): past this
+  // size the worker ends with SIGXFSZ instead of filling the disk.
+  const rlimit file_size{fr::kWorkerFileSizeLimitBytes, fr::kWorkerFileSizeLimitBytes};
+  setrlimit(RLIMIT_FSIZE, &file_size);
+  fr::use_kernel_cache_dir();  // as fractalis's (a no-op when fractalis set it already)
   return fr::run_render_worker(3, 4, device);
 }
 

@@ -98,7 +98,7 @@ const Hostile kHostile[] = {
     {"write_above_param", "--param danger=1", "crashed \\(SIGSEGV"},
     {"private_overrun", "", "crashed \\(SIG(SEGV|BUS)"},
     {"huge_private", "", "crashed \\(SIG|memory|compile"},
-    {"preprocessor_bomb", "", "plugins.build_timeout_s|plugins.worker_memory_mib|did not finish"},
+    {"preprocessor_bomb", "", "SIGXFSZ|plugins.build_timeout_s|plugins.worker_memory_mib"},
     {"huge_source", "", "de_source is longer than 1048576 bytes"},
     {"loop_some_pixels", "", "did not finish"},
     {"printf_flood", "", "printed more than 20 lines", true},
@@ -272,8 +272,9 @@ TEST(RenderWorker, HangsAndBombsEndAtTheirLimits) {
     worker.render(bomb->info, make_default_state(bomb->info), s);
     ADD_FAILURE() << "the bomb went unseen";
   } catch (const std::exception& e) {
-    EXPECT_TRUE(std::regex_search(std::string(e.what()),
-                                  std::regex("plugins.build_timeout_s|plugins.worker_memory_mib")))
+    EXPECT_TRUE(
+        std::regex_search(std::string(e.what()),
+                          std::regex("SIGXFSZ|plugins.build_timeout_s|plugins.worker_memory_mib")))
         << e.what();
   }
   seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

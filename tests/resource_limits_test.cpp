@@ -84,8 +84,9 @@ void make_file(const std::filesystem::path& file, size_t bytes, time_t mtime_s) 
   utimensat(AT_FDCWD, file.c_str(), times, 0);
 }
 
-// Programs go least recently used first (by PoCL's last_accessed marker) until the cache fits;
-// empty temporary files go once they are ten minutes old.
+// Programs go least recently used first (by PoCL's last_accessed marker) until the cache fits,
+// never one used in the last two minutes (another process may be loading it); temporary files
+// (a killed build's preprocessed source) go once they are ten minutes old, whatever their size.
 TEST(ResourceLimits, KernelCacheIsTrimmedLeastRecentlyUsedFirst) {
   const auto dir = test::fresh_dir("kernel_cache");
   const time_t now = std::time(nullptr);
@@ -96,12 +97,17 @@ TEST(ResourceLimits, KernelCacheIsTrimmedLeastRecentlyUsedFirst) {
     make_file(dir / programs[i] / "fr_render" / "1-1-1" / "fr_render.so", 100, now);
     make_file(dir / programs[i] / "last_accessed", 0, now - 3600 * (4 - i));
   }
-  make_file(dir / "tempfile_old", 0, now - 3600);
-  make_file(dir / "tempfile_new", 0, now);  // a build may be writing it
-  const KernelCacheTrim trim = trim_kernel_cache(dir, 2500);
-  EXPECT_EQ(trim.bytes_before, 4000u);
-  EXPECT_EQ(trim.bytes_after, 2000u);
-  EXPECT_EQ(trim.programs_removed, 2);
+  make_file(dir / "tempfile_old", 5000, now - 3600);
+  make_file(dir / "tempfile_new", 5000, now);  // a build may be writing it
+  // A fifth program just used, and (last) one used 5 hours ago: only the old one may go.
+  make_file(dir / "GH/NEW" / "program.bc", 1000, now);
+  make_file(dir / "GH/NEW" / "last_accessed", 0, now - 30);
+  make_file(dir / "GH/OLD" / "program.bc", 1000, now);
+  make_file(dir / "GH/OLD" / "last_accessed", 0, now - 5 * 3600);
+  const KernelCacheTrim trim = trim_kernel_cache(dir, 3500);
+  EXPECT_EQ(trim.bytes_before, 6000u) << "temporary files do not count";
+  EXPECT_EQ(trim.bytes_after, 3000u);
+  EXPECT_EQ(trim.programs_removed, 3);
   EXPECT_EQ(trim.temp_files_removed, 1);
   EXPECT_FALSE(std::filesystem::exists(dir / "AB/ZZZ")) << "used longest ago";
   EXPECT_FALSE(std::filesystem::exists(dir / "CD/AAA"));
@@ -109,7 +115,9 @@ TEST(ResourceLimits, KernelCacheIsTrimmedLeastRecentlyUsedFirst) {
   EXPECT_TRUE(std::filesystem::exists(dir / "EF/BBB/program.bc")) << "used last";
   EXPECT_FALSE(std::filesystem::exists(dir / "tempfile_old"));
   EXPECT_TRUE(std::filesystem::exists(dir / "tempfile_new"));
-  EXPECT_EQ(folder_bytes(dir), 2000u);
+  EXPECT_FALSE(std::filesystem::exists(dir / "GH/OLD"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "GH/NEW/program.bc")) << "used half a minute ago";
+  EXPECT_EQ(folder_bytes(dir), 3000u + 5000u);
 }
 
 // The cache's place and `fractalis cache --clear`, from a user's side: a render fills

@@ -75,13 +75,17 @@ KernelCacheTrim trim_kernel_cache(const fs::path& dir, uint64_t max_bytes) {
   for (fs::directory_iterator bucket(kcache, ec), end; !ec && bucket != end; bucket.increment(ec)) {
     std::error_code entry_ec;
     if (!bucket->is_directory(entry_ec)) {
-      // An empty temporary file an interrupted build left (an older one: a build may be running).
+      // A temporary file a build left when its process was ended (a render worker over its build
+      // limit leaves its preprocessed source, up to the worker's file size limit): an older one,
+      // since a build may be running. Younger ones are not counted: removing programs cannot
+      // make room for them.
       const std::string name = bucket->path().filename().string();
-      if (name.rfind("tempfile_", 0) == 0 && bucket->file_size(entry_ec) == 0 && !entry_ec &&
-          now - mtime_s(bucket->path()) > 600 && fs::remove(bucket->path(), entry_ec))
-        ++trim.temp_files_removed;
-      else
+      if (name.rfind("tempfile_", 0) == 0) {
+        if (now - mtime_s(bucket->path()) > 600 && fs::remove(bucket->path(), entry_ec))
+          ++trim.temp_files_removed;
+      } else {
         total += entry_ec ? 0 : bucket->file_size(entry_ec);
+      }
       continue;
     }
     for (fs::directory_iterator prog(bucket->path(), entry_ec), pend; !entry_ec && prog != pend;
@@ -100,6 +104,8 @@ KernelCacheTrim trim_kernel_cache(const fs::path& dir, uint64_t max_bytes) {
             [](const Program& a, const Program& b) { return a.used_s < b.used_s; });
   for (const Program& p : programs) {
     if (total <= max_bytes) break;
+    // Used in the last two minutes: another process may be building or loading it right now.
+    if (now - p.used_s < 120) continue;
     std::error_code remove_ec;
     fs::remove_all(p.dir, remove_ec);
     if (remove_ec) continue;

@@ -68,7 +68,6 @@ void Renderer::ensure_buffers(size_t n) {
   status_ = make_buffer(ctx, CL_MEM_WRITE_ONLY, n, "the ray status buffer");
   normal_ = make_buffer(ctx, CL_MEM_WRITE_ONLY, n * 3 * sizeof(float), "the normal buffer");
   albedo_ = make_buffer(ctx, CL_MEM_WRITE_ONLY, n * 3 * sizeof(float), "the albedo buffer");
-  rgba8_ = make_buffer(ctx, CL_MEM_WRITE_ONLY, padded * 4, "the display image");
   buffer_pixels_ = n;
 }
 
@@ -229,6 +228,11 @@ void Renderer::finish(const RenderSettings& settings, Readback what, FrameImage&
   img.precision = f.precision;
 }
 
+void Renderer::set_display_memory(uint8_t* memory, size_t bytes) {
+  display_memory_ = memory;
+  display_bytes_ = bytes;
+}
+
 Renderer::FinishedFrame Renderer::finish_into(const RenderSettings& settings, Readback what,
                                               const FramePassPointers& out) {
   if (static_cast<int>(what) > static_cast<int>(last_outputs_))
@@ -238,6 +242,25 @@ Renderer::FinishedFrame Renderer::finish_into(const RenderSettings& settings, Re
   cl_kernel post = post_kernel();
   const size_t n = frame_pixels_;
   cl_command_queue q = runtime_.queue();
+  const size_t display_bytes = round_up_div(n, 4) * 16;  // the post kernel writes whole quads
+  const bool in_place =
+      out.rgba8 && out.rgba8 == display_memory_ && display_bytes <= display_bytes_;
+  if (in_place ? rgba8_memory_ != display_memory_ || rgba8_bytes_ != display_bytes_
+               : rgba8_memory_ || rgba8_bytes_ < display_bytes) {
+    rgba8_.reset();
+    rgba8_ = in_place ? [&] {
+      cl_int err = CL_SUCCESS;
+      ClBufferHandle b(clCreateBuffer(runtime_.context(), CL_MEM_WRITE_ONLY | CL_MEM_USE_HOST_PTR,
+                                      display_bytes_, display_memory_, &err));
+      cl_check(err, "clCreateBuffer", "placing the display image in the shared frame");
+      return b;
+    }()
+                      : make_buffer(runtime_.context(), CL_MEM_WRITE_ONLY,
+                                    std::max(display_bytes, buffer_pixels_ * 4 + 16),
+                                    "the display image");
+    rgba8_memory_ = in_place ? display_memory_ : nullptr;
+    rgba8_bytes_ = in_place ? display_bytes_ : std::max(display_bytes, buffer_pixels_ * 4 + 16);
+  }
   const cl_mem hdr = hdr_.get(), out8 = rgba8_.get();
   const cl_float exposure = settings.exposure;
   const cl_int quad_count = static_cast<cl_int>(round_up_div(n, 4));
@@ -258,7 +281,17 @@ Renderer::FinishedFrame Renderer::finish_into(const RenderSettings& settings, Re
     cl_check(clEnqueueReadBuffer(q, from, CL_FALSE, 0, bytes, to, 0, nullptr, nullptr),
              "clEnqueueReadBuffer", what_read);
   };
-  read(out8, n * 4, out.rgba8, "reading the image");
+  if (in_place) {
+    // Mapping a CL_MEM_USE_HOST_PTR buffer makes the host memory current (no copy on PoCL).
+    cl_int err = CL_SUCCESS;
+    void* mapped =
+        clEnqueueMapBuffer(q, out8, CL_FALSE, CL_MAP_READ, 0, n * 4, 0, nullptr, nullptr, &err);
+    cl_check(err, "clEnqueueMapBuffer", "reading the image");
+    cl_check(clEnqueueUnmapMemObject(q, out8, mapped, 0, nullptr, nullptr),
+             "clEnqueueUnmapMemObject", "reading the image");
+  } else {
+    read(out8, n * 4, out.rgba8, "reading the image");
+  }
   if (what != Readback::Display) {
     read(steps_.get(), n * 4, out.steps, "reading DE step counts");
     read(status_.get(), n, out.ray_status, "reading ray status");

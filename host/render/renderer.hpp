@@ -94,6 +94,11 @@ class Renderer {
   };
   FinishedFrame finish_into(const RenderSettings& settings, Readback what,
                             const FramePassPointers& out);
+  // The render worker: `finish_into` whose out.rgba8 is `memory` (the shared frame, `bytes` long)
+  // has the post stage write the display image straight into it, the device using it as the
+  // buffer itself (CL_MEM_USE_HOST_PTR; on PoCL no copy at all). Null: the device's own buffer
+  // and a read-back.
+  void set_display_memory(uint8_t* memory, size_t bytes);
 
   // The DE evaluations of the samples rendered since the last sample 0, when they were rendered
   // with settings.count_evaluations (otherwise all zero). Waits for the device.
@@ -125,6 +130,10 @@ class Renderer {
       rgba8_;
   size_t params_bytes_ = 0;
   ClBufferHandle counts_;  // uint[FR_COUNT_SLOTS][FR_COUNT_CELLS][2], kernels/eval_counts.cl
+  uint8_t* display_memory_ = nullptr;  // set_display_memory
+  size_t display_bytes_ = 0;
+  uint8_t* rgba8_memory_ = nullptr;  // the host memory rgba8_ lies in, when it does
+  size_t rgba8_bytes_ = 0;           // rgba8_'s size
   ClBufferHandle cone_t_, cone_ao_;  // per cone block (kernels/cone.cl)
   size_t cone_blocks_ = 0;           // capacity of the cone buffers
   int counted_samples_ = 0;          // samples counted into counts_ since it was last cleared

@@ -145,6 +145,7 @@ std::string RenderWorker::scene_label(const std::string& scene) const {
 
 void RenderWorker::fail(const std::string& scene, const std::string& stage,
                         const std::string& reason, bool timed_out) {
+  pending_samples_ = 0;
   if (process_) {
     drain_output(scene);
     process_->end(0);
@@ -230,14 +231,17 @@ void RenderWorker::drain_output(const std::string& scene) {
 std::string RenderWorker::call(uint32_t kind, const std::string& request, const std::string& scene,
                                const char* stage, double limit_s) {
   Process& p = *process_;
+  std::string building;  // the kernel being built, while one is
+  const auto now_doing = [&] {
+    return building.empty() ? std::string(stage) : "compiling " + building;
+  };
   const auto ended = [&](const std::string& fallback) {
     const std::string how = process_->end(500);
-    fail(scene, stage, how.empty() ? fallback : how, false);
+    fail(scene, now_doing(), how.empty() ? fallback : how, false);
   };
   if (kind != static_cast<uint32_t>(RenderWireKind::Ready) &&
       !write_frame(p.socket, static_cast<WireKind>(kind), request))
     ended("closed its connection");
-  std::string building;  // the kernel being built, while one is
   auto deadline = Clock::now();
   const auto restart_clock = [&](double s) {
     deadline = s > 0 ? Clock::now() + std::chrono::duration_cast<Clock::duration>(
@@ -264,15 +268,22 @@ std::string RenderWorker::call(uint32_t kind, const std::string& request, const 
       fail(scene, stage, "did not finish within " + seconds_text(limit_s) + which, true);
     }
     pollfd fds[2] = {{p.socket, POLLIN, 0}, {p.output, POLLIN, 0}};
-    // Short waits: the worker's memory is looked at between them.
+    const nfds_t count = p.output >= 0 ? 2 : 1;
+    // A quick answer (a DE probe, a queued sample) comes within tens of microseconds: looking
+    // for it for a moment costs less than sleeping in poll and being woken.
+    int ready = 0;
+    for (const auto spin_until = Clock::now() + std::chrono::microseconds(150);
+         ready == 0 && Clock::now() < spin_until;)
+      ready = poll(fds, count, 0);
+    // Then short waits: the worker's memory is looked at between them.
     const int wait_ms = static_cast<int>(std::ceil(std::min(left_s, 0.1) * 1000));
-    const int ready = poll(fds, p.output >= 0 ? 2 : 1, wait_ms);
+    if (ready == 0) ready = poll(fds, count, wait_ms);
     if (ready < 0 && errno != EINTR) ended("could not be waited for");
     if (p.output >= 0 && (fds[1].revents & (POLLIN | POLLHUP))) drain_output(scene);
     if (limits_.memory_bytes > 0 && seconds_since(last_memory_check) >= 0.1) {
       last_memory_check = Clock::now();
       if (resident_bytes(p.pid) > limits_.memory_bytes)
-        fail(scene, building.empty() ? std::string(stage) : "compiling " + building,
+        fail(scene, now_doing(),
              "used more than " + std::to_string(limits_.memory_bytes >> 20) +
                  " MiB of memory (plugins.worker_memory_mib)",
              false);
@@ -283,7 +294,7 @@ std::string RenderWorker::call(uint32_t kind, const std::string& request, const 
     const ReadStatus s = read_frame_exact(p.socket, std::max(1.0, left_s), &got, &payload);
     if (s == ReadStatus::Closed) ended("closed its connection");
     if (s == ReadStatus::TimedOut) continue;
-    if (s != ReadStatus::Ok) fail(scene, stage, "sent a malformed message", false);
+    if (s != ReadStatus::Ok) fail(scene, now_doing(), "sent a malformed message", false);
     WireReader r(payload);
     const auto got_kind = static_cast<RenderWireKind>(got);
     if (got_kind == RenderWireKind::Building) {
@@ -357,12 +368,12 @@ void RenderWorker::render_sample(const SceneInfo& info, const SceneState& state,
   w.i32(sample_index);
   w.u32(static_cast<uint32_t>(outputs));
   const double pixels = static_cast<double>(settings.width_px) * settings.height_px;
-  const auto start = Clock::now();
+  if (pending_samples_ == 0) samples_started_ = Clock::now();
+  // The worker answers once the sample is queued; this call also waits for the sample before
+  // (its upload is a blocking write), and `finish` for the last: each within one sample's limit.
   call(static_cast<uint32_t>(RenderWireKind::RenderSample), w.bytes(), info.id, kFrameStage,
        frame_limit_.limit_s(key, pixels));
-  // A sample that included a kernel build says little about the scene's frames; it counts
-  // all the same (it only makes later limits longer).
-  frame_limit_.record(key, pixels, seconds_since(start));
+  ++pending_samples_;
   last_sample_scene_ = key;
   last_scene_id_ = info.id;
   last_sample_pixels_ = pixels;
@@ -380,8 +391,13 @@ void RenderWorker::finish(const RenderSettings& settings, Readback what, FrameIm
   w.u32(static_cast<uint32_t>(what));
   w.u64(bytes);
   const std::string reply =
-      call(static_cast<uint32_t>(RenderWireKind::Finish), w.bytes(), last_scene_id_,
-           "reading back a frame", frame_limit_.limit_s(last_sample_scene_, last_sample_pixels_));
+      call(static_cast<uint32_t>(RenderWireKind::Finish), w.bytes(), last_scene_id_, kFrameStage,
+           frame_limit_.limit_s(last_sample_scene_, last_sample_pixels_));
+  // The samples' mean time (kernel builds included: that only makes later limits longer).
+  if (pending_samples_ > 0)
+    frame_limit_.record(last_sample_scene_, last_sample_pixels_,
+                        seconds_since(samples_started_) / pending_samples_);
+  pending_samples_ = 0;
   WireReader r(reply);
   const int lanes = r.i32();
   const uint32_t precision = r.u32();

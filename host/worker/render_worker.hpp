@@ -26,6 +26,7 @@
 #include <sys/types.h>
 
 #include <array>
+#include <chrono>
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -119,8 +120,13 @@ class RenderWorker {
   int starts_ = 0;
   uint64_t last_sample_scene_ = 0;
   double last_sample_pixels_ = 0;
+  int pending_samples_ = 0;  // samples asked for since the last finish
+  std::chrono::steady_clock::time_point samples_started_;
   std::string last_scene_id_;  // of the last sample: the scene a finish reads back
 };
+
+// The largest file a worker may write (RLIMIT_FSIZE): a kernel cache entry is a few MB.
+constexpr uint64_t kWorkerFileSizeLimitBytes = uint64_t{64} << 20;
 
 // The worker side: what fractalis-render-worker runs. Opens the device `device_selector` (as
 // --device takes it), answers on `socket_fd`, reads frames back into the shared frame open at

@@ -71,9 +71,9 @@ class Worker {
         check(r);
         if (outputs > static_cast<uint32_t>(Readback::Everything)) throw BadRequest("bad outputs");
         renderer_.render_sample(info, state, settings, sample, static_cast<Readback>(outputs));
-        // The sample is done when this answers: fractalis times it, and a DE that never returns
-        // is seen here, not in the next call.
-        cl_check(clFinish(runtime_.queue()), "clFinish", "rendering");
+        // Answered once the sample is queued: it runs while the answer travels. The next
+        // sample's upload (a blocking write) or the finish waits for it, so fractalis's limit on
+        // those calls is this sample's limit.
         return;
       }
       case RenderWireKind::Finish: {
@@ -88,6 +88,8 @@ class Worker {
         std::string error;
         if (need > bytes || !frame_.map_at_least(need, &error))
           throw BadRequest(error.empty() ? "the shared frame is too small" : error);
+        // The display image (at the frame's start) is written there by the post stage itself.
+        renderer_.set_display_memory(frame_.data(), (n * 4 + 63) / 64 * 64);
         const Renderer::FinishedFrame f = renderer_.finish_into(
             settings, static_cast<Readback>(what),
             frame_passes_at(frame_.data(), n, static_cast<Readback>(what), &need));
