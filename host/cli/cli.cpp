@@ -7,6 +7,7 @@
 #include "io/log.hpp"
 #include "mpi/mpi_world.hpp"
 #include "mpi/shared_tasks.hpp"
+#include "worker/render_worker.hpp"
 
 #include <fractalis/abi.h>
 
@@ -144,6 +145,8 @@ int exit_status_of(std::exception_ptr failure) {
     return 2;
   } catch (const SceneHangError&) {
     return kWatchdogExitStatus;
+  } catch (const RenderWorkerFailure& e) {  // a DE that never returns, a compile that never ends
+    return e.timed_out() ? kWatchdogExitStatus : 1;
   } catch (const AlreadyReported& e) {
     return e.exit_status;
   } catch (...) {

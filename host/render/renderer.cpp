@@ -73,12 +73,7 @@ void Renderer::ensure_buffers(size_t n) {
 
 FrameImage Renderer::render(const SceneInfo& info, const SceneState& state,
                             const RenderSettings& settings, bool read_linear) {
-  const Readback what = read_linear ? Readback::Everything : Readback::Display;
-  for (int i = 0; i < std::max(1, settings.samples); ++i)
-    render_sample(info, state, settings, i, what);
-  FrameImage image;
-  finish(settings, what, image);
-  return image;
+  return render_all_samples(*this, info, state, settings, read_linear);
 }
 
 void Renderer::render_sample(const SceneInfo& info, const SceneState& state,

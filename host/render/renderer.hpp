@@ -9,6 +9,7 @@
 #include "render/eval_counts.hpp"
 #include "render/render_settings.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -58,6 +59,19 @@ struct FramePassPointers {
 // Sizes `image`'s vectors for `what` at `width_px` x `height_px` (emptying the others) and
 // returns pointers to them.
 FramePassPointers size_frame_image(FrameImage& image, int width_px, int height_px, Readback what);
+
+// A whole image from anything with Renderer's render_sample and finish (the renderer, the render
+// worker): settings.samples samples, then the display image, and with `read_linear` every pass.
+template <typename Frames>
+FrameImage render_all_samples(Frames& frames, const SceneInfo& info, const SceneState& state,
+                              const RenderSettings& settings, bool read_linear) {
+  const Readback what = read_linear ? Readback::Everything : Readback::Display;
+  for (int i = 0; i < std::max(1, settings.samples); ++i)
+    frames.render_sample(info, state, settings, i, what);
+  FrameImage image;
+  frames.finish(settings, what, image);
+  return image;
+}
 
 struct RayCounts {
   size_t miss = 0, hit = 0, out_of_steps = 0, inside = 0;

@@ -423,12 +423,7 @@ void RenderWorker::finish(const RenderSettings& settings, Readback what, FrameIm
 
 FrameImage RenderWorker::render(const SceneInfo& info, const SceneState& state,
                                 const RenderSettings& settings, bool read_linear) {
-  const Readback what = read_linear ? Readback::Everything : Readback::Display;
-  for (int i = 0; i < std::max(1, settings.samples); ++i)
-    render_sample(info, state, settings, i, what);
-  FrameImage image;
-  finish(settings, what, image);
-  return image;
+  return render_all_samples(*this, info, state, settings, read_linear);
 }
 
 EvalCounts RenderWorker::eval_counts() {
