@@ -20,7 +20,6 @@
 #include <chrono>
 #include <cstdio>
 #include <fstream>
-#include <regex>
 
 namespace fr {
 namespace {
@@ -85,26 +84,46 @@ const std::string kLimits =
     "--set render.watchdog_s=5 --set plugins.vet_timeout_s=20 --set plugins.build_timeout_s=10 "
     "--set plugins.worker_memory_mib=1024";
 
+// Whether `text` says one of the alternatives ("a|b"), each a set of parts it must all contain
+// ("a&b").
+bool says_any(const std::string& text, const std::string& alternatives) {
+  size_t at = 0;
+  for (;;) {
+    const size_t bar = alternatives.find('|', at);
+    const std::string alternative = alternatives.substr(at, bar - at);
+    bool all = true;
+    for (size_t part = 0;;) {
+      const size_t amp = alternative.find('&', part);
+      if (text.find(alternative.substr(part, amp - part)) == std::string::npos) all = false;
+      if (amp == std::string::npos) break;
+      part = amp + 1;
+    }
+    if (all) return true;
+    if (bar == std::string::npos) return false;
+    at = bar + 1;
+  }
+}
+
 struct Hostile {
   const char* name;      // fixture folder, and scene id after "kernel_"
   const char* extra;     // extra options of render and bench
-  const char* reason;    // a regular expression the error must match
+  const char* reason;    // what the error must say (says_any)
   bool renders = false;  // the scene renders (its attack is a nuisance, not a failure)
 };
 
 const Hostile kHostile[] = {
-    {"write_everywhere", "", "crashed \\(SIGSEGV"},
-    {"write_some_points", "", "crashed \\(SIGSEGV"},
-    {"write_above_param", "--param danger=1", "crashed \\(SIGSEGV"},
-    {"private_overrun", "", "crashed \\(SIG(SEGV|BUS)"},
-    {"huge_private", "", "crashed \\(SIG|memory|compile"},
+    {"write_everywhere", "", "crashed (SIGSEGV"},
+    {"write_some_points", "", "crashed (SIGSEGV"},
+    {"write_above_param", "--param danger=1", "crashed (SIGSEGV"},
+    {"private_overrun", "", "crashed (SIGSEGV|crashed (SIGBUS"},
+    {"huge_private", "", "crashed (SIG|memory|compil"},
     {"preprocessor_bomb", "", "SIGXFSZ|plugins.build_timeout_s|plugins.worker_memory_mib"},
     {"huge_source", "", "de_source is longer than 1048576 bytes"},
     {"loop_some_pixels", "", "did not finish"},
     {"printf_flood", "", "printed more than 20 lines", true},
-    {"macro_collision", "", "fixture.cl:1: .*v3_dot"},
+    {"macro_collision", "", "fixture.cl:1: &v3_dot"},
     {"builtin_macro", "", "rendered kernel_builtin_macro|median", true},
-    {"function_collision", "", "fixture.cl:4: .*march"},
+    {"function_collision", "", "fixture.cl:4: &march"},
 };
 
 class HostileKernel : public testing::TestWithParam<Hostile> {};
@@ -116,7 +135,6 @@ TEST_P(HostileKernel, EveryCommandSurvivesAndNamesTheFileAndReason) {
   const std::string plugins = "--plugins '" + dir.string() + "' ";
   const std::string scene = plugins + "--scene kernel_" + h.name + " " + kLimits + " " + h.extra;
   const fs::path out = test::fresh_dir(std::string("render_worker_") + h.name);
-  const std::regex reason(h.reason);
 
   const CommandRun list = run_fractalis("list " + plugins);
   // 1: a plugin failed to load (named, with its reason); never a crash of fractalis.
@@ -138,7 +156,7 @@ TEST_P(HostileKernel, EveryCommandSurvivesAndNamesTheFileAndReason) {
         EXPECT_EQ(r->code, 3) << "a time limit: the watchdog's status";
       }
     }
-    EXPECT_TRUE(std::regex_search(r->output, reason)) << "the reason: " << h.reason;
+    EXPECT_TRUE(says_any(r->output, h.reason)) << "the reason: " << h.reason;
     EXPECT_EQ(r->output.find('\033'), std::string::npos) << "no escape reaches the terminal";
   }
   if (!h.renders) {
@@ -275,9 +293,7 @@ TEST(RenderWorker, HangsAndBombsEndAtTheirLimits) {
     worker.render(bomb->info, make_default_state(bomb->info), s);
     ADD_FAILURE() << "the bomb went unseen";
   } catch (const std::exception& e) {
-    EXPECT_TRUE(
-        std::regex_search(std::string(e.what()),
-                          std::regex("SIGXFSZ|plugins.build_timeout_s|plugins.worker_memory_mib")))
+    EXPECT_TRUE(says_any(e.what(), "SIGXFSZ|plugins.build_timeout_s|plugins.worker_memory_mib"))
         << e.what();
   }
   seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
