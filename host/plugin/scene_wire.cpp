@@ -12,6 +12,7 @@ void WireWriter::str(std::string_view s) {
 }
 
 bool WireReader::take(void* out, size_t n) {
+  if (n == 0) return !failed_;  // `out` may be null then (an empty vector's data())
   if (failed_ || bytes_.size() - at_ < n) {
     failed_ = true;
     std::memset(out, 0, n);
