@@ -248,7 +248,7 @@ std::string RenderWorker::call(uint32_t kind, const std::string& request, const 
                                           std::chrono::duration<double>(s))
                      : Clock::time_point::max();
   };
-  restart_clock(building.empty() ? limit_s : limits_.build_s);
+  restart_clock(limit_s);
   auto last_memory_check = Clock::now();
   for (;;) {
     const double left_s = deadline == Clock::time_point::max()
