@@ -7,6 +7,7 @@
 #include "app/explorer.hpp"
 #include "render/de_probe.hpp"
 #include "test_support.hpp"
+#include "worker/render_wire.hpp"
 
 #include <dirent.h>
 #include <signal.h>
@@ -219,6 +220,23 @@ TEST(RenderWorker, FramesAreTheInProcessFrames) {
   const std::vector<std::array<float, 3>> points = {{0, 0, 3}, {0.1f, 0.2f, 0.3f}, {5, 5, 5}};
   EXPECT_EQ(worker.probe_de(scene->info, state.params, points),
             probe_de(test::runtime(), scene->info, state.params, points));
+  EXPECT_EQ(worker.starts(), 1);
+}
+
+// More scenes than a worker holds at once (the explorer's reloads): the oldest make room, and one
+// asked for again is sent again, not refused as unknown.
+TEST(RenderWorker, MoreScenesThanItHoldsStillRender) {
+  const auto scene = test::mandelbulb();
+  const SceneState state = make_default_state(scene->info);
+  RenderWorker worker(test::runtime().device(), command_worker_limits(PluginPolicy{}, 600));
+  const std::vector<std::array<float, 3>> eye = {{0, 0, 3}};
+  const float expected = worker.probe_de(scene->info, state.params, eye)[0];
+  std::vector<SceneInfo> versions(kWorkerSceneCount + 3, scene->info);
+  for (size_t i = 0; i < versions.size(); ++i) {
+    versions[i].version = "reload " + std::to_string(i);  // another scene to the worker
+    EXPECT_EQ(worker.probe_de(versions[i], state.params, eye)[0], expected) << i;
+  }
+  EXPECT_EQ(worker.probe_de(versions[0], state.params, eye)[0], expected) << "the first again";
   EXPECT_EQ(worker.starts(), 1);
 }
 

@@ -25,7 +25,8 @@ constexpr uint32_t kRenderWireVersion = 1;
 // Kinds share the frame header with the scene host's (scene_wire.hpp), numbered apart from them.
 enum class RenderWireKind : uint32_t {
   Ready = 101,         // worker -> fractalis, first: Reply's head (the device opened, or why not)
-  SetScene = 102,      // u64 key, SceneInfo: the scene later messages name by key
+  SetScene = 102,      // u64 key, u64 key to forget (0: none), SceneInfo: the scene later
+                       // messages name by key
   Prepare = 103,       // u64 key, SceneState, RenderSettings; reply: u32 Precision
   RenderSample = 104,  // u64 key, SceneState, RenderSettings, i32 sample, u32 Readback
   Finish = 105,        // RenderSettings, u32 Readback, u64 bytes of the shared frame
@@ -45,6 +46,10 @@ enum class ReplyStatus : uint32_t {
   BuildFailed = 1,  // the kernel did not compile: the error is the compiler's log
   Failed = 2,       // any other error the worker caught (the device's, a bad request)
 };
+
+// Scenes a worker holds at once; fractalis says which one it forgets to make room (the explorer's
+// reloads add scenes), so both ends always agree on what it holds.
+constexpr size_t kWorkerSceneCount = 32;
 
 // Error text and a scene's source are capped on the way back.
 constexpr size_t kMaxWorkerErrorBytes = 64 << 10;

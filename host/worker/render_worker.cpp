@@ -22,8 +22,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <deque>
 #include <fstream>
-#include <set>
 #include <sstream>
 #include <thread>
 
@@ -76,8 +76,8 @@ struct RenderWorker::Process {
   int socket = -1;
   int output = -1;  // its stdout (a DE's printf), ours to read; -1 once it closed
   SharedFrame frame;
-  std::set<uint64_t> scenes;  // keys it holds
-  std::string partial_line;   // output not yet ended by a newline
+  std::deque<uint64_t> scenes;  // keys it holds, oldest first (at most kWorkerSceneCount)
+  std::string partial_line;     // output not yet ended by a newline
 
   ~Process() {
     if (socket >= 0) close(socket);
@@ -328,13 +328,17 @@ uint64_t RenderWorker::send_scene(const SceneInfo& info) {
   WireWriter scene;
   write_scene_info(scene, info);
   const uint64_t key = fnv1a(scene.bytes());
-  if (process_->scenes.count(key)) return key;
+  std::deque<uint64_t>& held = process_->scenes;
+  if (std::find(held.begin(), held.end(), key) != held.end()) return key;
+  const uint64_t forget = held.size() >= kWorkerSceneCount ? held.front() : 0;
   WireWriter w;
   w.u64(key);
+  w.u64(forget);
   w.raw(scene.bytes().data(), scene.bytes().size());
   call(static_cast<uint32_t>(RenderWireKind::SetScene), w.bytes(), info.id, "receiving the scene",
        limits_.start_s);
-  process_->scenes.insert(key);
+  if (forget != 0) held.pop_front();
+  held.push_back(key);
   return key;
 }
 
@@ -350,7 +354,7 @@ Precision RenderWorker::prepare(const SceneInfo& info, const SceneState& state,
                                  "preparing", limits_.build_s);
   WireReader r(reply);
   const uint32_t precision = r.u32();
-  if (r.failed() || precision > static_cast<uint32_t>(Precision::Auto))
+  if (r.failed() || precision > static_cast<uint32_t>(Precision::Double))  // never Auto
     fail(info.id, "preparing", "sent a malformed reply", false);
   return static_cast<Precision>(precision);
 }

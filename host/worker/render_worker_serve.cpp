@@ -47,10 +47,11 @@ class Worker {
     switch (kind) {
       case RenderWireKind::SetScene: {
         const uint64_t key = r.u64();
+        const uint64_t forget = r.u64();
         SceneInfo info;
         if (!read_scene_info(r, &info)) throw BadRequest("a malformed scene");
-        // The explorer's reloads add scenes; the oldest go (fractalis sends one again if needed).
-        if (scenes_.size() >= 32) scenes_.erase(scenes_.begin());
+        if (forget != 0) scenes_.erase(forget);
+        if (scenes_.size() >= kWorkerSceneCount) throw BadRequest("more scenes than it holds");
         scenes_[key] = std::move(info);
         return;
       }
