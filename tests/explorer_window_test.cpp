@@ -43,7 +43,7 @@ class ExplorerWindow : public ::testing::Test {
   void frame(InputState& input, bool capture = false) {
     window->poll(KeyBindings::defaults(), input);
     explorer->update(input, 1.0 / 30, 0.0);
-    const FrameImage* img = explorer->render(window->width_px(), window->height_px());
+    const FrameView* img = explorer->render(window->width_px(), window->height_px());
     if (capture) window->capture_next_frame();
     window->present(img, {});
     input.end_frame();

@@ -223,6 +223,56 @@ TEST(RenderWorker, FramesAreTheInProcessFrames) {
   EXPECT_EQ(worker.starts(), 1);
 }
 
+// The explorer's frame (render_frame: one round trip, read where it lies) is the frame this
+// process renders with render_sample and finish, through the worker and in process, as the size
+// grows and shrinks and the refinement's later samples read the display image only.
+TEST(RenderWorker, ExplorerFramesAreTheInProcessFrames) {
+  const auto scene = test::mandelbulb();
+  const SceneState state = make_default_state(scene->info);
+  Renderer local(test::runtime());
+  for (const bool isolated : {true, false}) {
+    PluginPolicy policy;
+    policy.isolation = isolated ? PluginIsolation::Process : PluginIsolation::None;
+    RenderWorker worker(test::runtime().device(), explorer_worker_limits(policy));
+    for (const auto& [w, h, sample] :
+         {std::tuple{160, 90, 0}, std::tuple{160, 90, 1}, std::tuple{320, 180, 0},
+          std::tuple{33, 17, 0}, std::tuple{33, 17, 2}}) {
+      SCOPED_TRACE(std::to_string(w) + "x" + std::to_string(h) + " sample " +
+                   std::to_string(sample) + (isolated ? " in the worker" : " in process"));
+      RenderSettings s;
+      s.width_px = w;
+      s.height_px = h;
+      const Readback read = sample == 0 ? Readback::DisplayAndSteps : Readback::Display;
+      FrameImage mine;
+      for (int i = 0; i <= sample; ++i)
+        local.render_sample(scene->info, state, s, i, Readback::DisplayAndSteps);
+      local.finish(s, read, mine);
+      for (int i = 0; i < sample; ++i)
+        worker.render_sample(scene->info, state, s, i, Readback::DisplayAndSteps);
+      const FrameView theirs =
+          worker.render_frame(scene->info, state, s, sample, Readback::DisplayAndSteps, read);
+      const size_t n = static_cast<size_t>(w) * h;
+      ASSERT_EQ(theirs.width_px, w);
+      ASSERT_EQ(theirs.height_px, h);
+      EXPECT_EQ(theirs.lanes, mine.lanes);
+      EXPECT_EQ(theirs.precision, mine.precision);
+      ASSERT_NE(theirs.rgba8, nullptr);
+      EXPECT_EQ(std::vector<uint8_t>(theirs.rgba8, theirs.rgba8 + n * 4), mine.rgba8);
+      if (sample == 0) {
+        ASSERT_NE(theirs.steps, nullptr);
+        ASSERT_NE(theirs.ray_status, nullptr);
+        EXPECT_EQ(std::vector<float>(theirs.steps, theirs.steps + n), mine.steps);
+        EXPECT_EQ(std::vector<uint8_t>(theirs.ray_status, theirs.ray_status + n), mine.ray_status);
+        EXPECT_GT(count_rays(theirs).hit, n / 10);
+      } else {
+        EXPECT_EQ(theirs.steps, nullptr);
+        EXPECT_EQ(theirs.ray_status, nullptr);
+      }
+    }
+    EXPECT_EQ(worker.starts(), isolated ? 1 : 0);
+  }
+}
+
 // More scenes than a worker holds at once (the explorer's reloads): the oldest make room, and one
 // asked for again is sent again, not refused as unknown.
 TEST(RenderWorker, MoreScenesThanItHoldsStillRender) {
@@ -361,7 +411,7 @@ TEST(RenderWorker, TheExplorerGoesBackToTheLastGoodParameters) {
   slot.state.params[0].v[0] = 1;  // what the overlay's slider does
   explorer.mark_changed();
   explorer.update(input, 1.0 / 30, 0);  // the probe at the eye runs the DE: the worker crashes
-  const FrameImage* frame = explorer.render(64, 36);
+  const FrameView* frame = explorer.render(64, 36);
   EXPECT_NE(slot.error.find("crashed (SIGSEGV"), std::string::npos) << slot.error;
   EXPECT_NE(slot.error.find("kernel_write_above_param.so"), std::string::npos) << slot.error;
   EXPECT_EQ(slot.state.params[0].v[0], 0) << "back to the last value that rendered";

@@ -122,7 +122,7 @@ bool Explorer::update(const InputState& input, double dt_s, double now_s) {
   return true;
 }
 
-const FrameImage* Explorer::render(int window_width_px, int window_height_px) {
+const FrameView* Explorer::render(int window_width_px, int window_height_px) {
   const FramePlan plan = frames_.plan(changed_);
   changed_ = false;
   stats_.resolution_scale = plan.resolution_scale;
@@ -143,10 +143,9 @@ const FrameImage* Explorer::render(int window_width_px, int window_height_px) {
   const auto start = std::chrono::steady_clock::now();
   try {
     // Steps and ray status on every sample, so that one kernel serves the whole refinement.
-    worker_.render_sample(slot.scene->info, slot.state, s, plan.sample_index,
-                          Readback::DisplayAndSteps);
-    worker_.finish(s, plan.sample_index == 0 ? Readback::DisplayAndSteps : Readback::Display,
-                   last_);
+    last_ = worker_.render_frame(
+        slot.scene->info, slot.state, s, plan.sample_index, Readback::DisplayAndSteps,
+        plan.sample_index == 0 ? Readback::DisplayAndSteps : Readback::Display);
   } catch (const RenderWorkerFailure& e) {
     worker_failed(slot, e);
     return nullptr;
@@ -162,12 +161,12 @@ const FrameImage* Explorer::render(int window_width_px, int window_height_px) {
   stats_.frame_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   frames_.report(stats_.frame_ms);
-  if (plan.sample_index == 0 && !last_.steps.empty()) {
+  if (plan.sample_index == 0 && last_.steps && last_.pixel_count() > 0) {
+    const size_t n = last_.pixel_count();
     double total = 0;
-    for (float v : last_.steps) total += v;
-    stats_.de_steps_per_pixel = total / static_cast<double>(last_.steps.size());
-    stats_.out_of_steps_fraction =
-        double(count_rays(last_).out_of_steps) / static_cast<double>(last_.steps.size());
+    for (size_t i = 0; i < n; ++i) total += last_.steps[i];
+    stats_.de_steps_per_pixel = total / static_cast<double>(n);
+    stats_.out_of_steps_fraction = double(count_rays(last_).out_of_steps) / static_cast<double>(n);
     if (count_evaluations_) stats_.eval_counts = worker_.eval_counts();
   }
   stats_.precision = last_.precision;

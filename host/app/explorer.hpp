@@ -42,8 +42,9 @@ class Explorer {
   bool update(const InputState& input, double dt_s, double now_s);
 
   // Renders what the frame controller plans for a window of this size. Returns null when the
-  // image is already at full quality (nothing new to show).
-  const FrameImage* render(int window_width_px, int window_height_px);
+  // image is already at full quality (nothing new to show). The frame is read where the render
+  // worker left it: valid until the next update() or render().
+  const FrameView* render(int window_width_px, int window_height_px);
 
   // Writes a PNG (or, for a file named *.exr, an OpenEXR file with its passes) of the current
   // view at the given size with full-quality samples, in bands (image/poster.hpp).
@@ -96,7 +97,7 @@ class Explorer {
   bool count_evaluations_ = false;
   ExplorerStats stats_;
   PathRecorder path_;
-  FrameImage last_;
+  FrameView last_;                      // the last frame rendered (see render)
   std::vector<Action> window_actions_;  // overlay, fullscreen, screenshot: for the window layer
 };
 

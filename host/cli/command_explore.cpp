@@ -75,7 +75,7 @@ int command_explore(const std::vector<std::string>& args, std::ostream& out,
     }
   };
   steps.render = [&] {
-    const FrameImage* image = explorer.render(window.width_px(), window.height_px());
+    const FrameView* image = explorer.render(window.width_px(), window.height_px());
     window.present(image, [&] { draw_overlay(explorer, overlay); });
     if (overlay.screenshot_requested) {
       overlay.screenshot_requested = false;

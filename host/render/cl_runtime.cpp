@@ -1,7 +1,5 @@
 #include "render/cl_runtime.hpp"
 
-#include "io/fnv1a.hpp"
-
 #include <vector>
 
 namespace fr {
@@ -18,10 +16,11 @@ ClRuntime::ClRuntime(const DeviceInfo& device) : device_(device) {
 
 cl_program ClRuntime::program(const std::string& source, const std::string& options,
                               const std::string& description) {
-  uint64_t key = fnv1a(source);
-  key = fnv1a(options, key);
-  key = fnv1a(device_.name + '\n' + device_.driver_version + '\n' + device_.platform_name, key);
-  if (auto it = programs_.find(key); it != programs_.end()) return it->second.get();
+  const std::hash<std::string> hash;
+  const size_t key = hash(source) ^ (hash(options) * 0x9e3779b97f4a7c15ull);
+  for (auto [it, end] = programs_.equal_range(key); it != end; ++it)
+    if (it->second.source == source && it->second.options == options)
+      return it->second.program.get();
 
   cl_int err = CL_SUCCESS;
   const char* text = source.c_str();
@@ -44,7 +43,7 @@ cl_program ClRuntime::program(const std::string& source, const std::string& opti
   }
   ++programs_built_;
   cl_program raw = program.get();
-  programs_.emplace(key, std::move(program));
+  programs_.emplace(key, CachedProgram{source, options, std::move(program)});
   return raw;
 }
 

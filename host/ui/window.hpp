@@ -16,7 +16,7 @@ struct SDL_Texture;
 
 namespace fr {
 
-struct FrameImage;
+struct FrameView;
 
 class Window {
  public:
@@ -33,7 +33,7 @@ class Window {
 
   // Uploads a new image (null: keep showing the last one), draws it over the whole window, then
   // the overlay that `draw_overlay` builds with ImGui calls, and presents.
-  void present(const FrameImage* image, const std::function<void()>& draw_overlay);
+  void present(const FrameView* image, const std::function<void()>& draw_overlay);
 
   void set_fullscreen(bool on);
   bool fullscreen() const { return fullscreen_; }

@@ -20,7 +20,7 @@ namespace fr {
 
 // Bumped whenever a message's layout changes; fractalis passes it to the worker, which refuses to
 // talk to another version.
-constexpr uint32_t kRenderWireVersion = 1;
+constexpr uint32_t kRenderWireVersion = 2;
 
 // Kinds share the frame header with the scene host's (scene_wire.hpp), numbered apart from them.
 enum class RenderWireKind : uint32_t {
@@ -39,6 +39,8 @@ enum class RenderWireKind : uint32_t {
   Reply = 110,         // worker -> fractalis: u32 ReplyStatus, str error, then the call's result
   Building = 111,      // worker -> fractalis, during a call: u32 1 and str description when a
                        // kernel build starts, u32 0 when it has ended
+  RenderFrame = 112,   // RenderSample's payload, then u32 Readback, u64 bytes of the shared
+                       // frame: a sample and Finish in one round trip; reply: Finish's
 };
 
 enum class ReplyStatus : uint32_t {

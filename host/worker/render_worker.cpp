@@ -1,7 +1,6 @@
 #include "worker/render_worker.hpp"
 
 #include "io/child_process.hpp"
-#include "io/fnv1a.hpp"
 #include "io/printable.hpp"
 #include "plugin/wire_io.hpp"
 #include "render/de_probe.hpp"
@@ -76,8 +75,10 @@ struct RenderWorker::Process {
   int socket = -1;
   int output = -1;  // its stdout (a DE's printf), ours to read; -1 once it closed
   SharedFrame frame;
-  std::deque<uint64_t> scenes;  // keys it holds, oldest first (at most kWorkerSceneCount)
-  std::string partial_line;     // output not yet ended by a newline
+  // What it holds, oldest first (at most kWorkerSceneCount): each scene's key and bytes, so that
+  // a scene whose key another's hash already took replaces it rather than being mistaken for it.
+  std::deque<std::pair<uint64_t, std::string>> scenes;
+  std::string partial_line;  // output not yet ended by a newline
 
   ~Process() {
     if (socket >= 0) close(socket);
@@ -110,6 +111,7 @@ struct RenderWorker::Local {
   explicit Local(const DeviceInfo& device) : runtime(device), renderer(runtime) {}
   ClRuntime runtime;
   Renderer renderer;
+  FrameImage image;  // render_frame's
 };
 
 RenderWorker::RenderWorker(const DeviceInfo& device, const RenderWorkerLimits& limits)
@@ -325,20 +327,30 @@ std::string RenderWorker::call(uint32_t kind, const std::string& request, const 
 }
 
 uint64_t RenderWorker::send_scene(const SceneInfo& info) {
+  // Every call names its scene, so this runs once a frame or more: std::hash reads a scene's
+  // bytes (its DE source, ~10 KB) eight times faster than FNV-1a.
   WireWriter scene;
   write_scene_info(scene, info);
-  const uint64_t key = fnv1a(scene.bytes());
-  std::deque<uint64_t>& held = process_->scenes;
-  if (std::find(held.begin(), held.end(), key) != held.end()) return key;
-  const uint64_t forget = held.size() >= kWorkerSceneCount ? held.front() : 0;
+  const uint64_t key = std::max<uint64_t>(1, std::hash<std::string>{}(scene.bytes()));  // 0: none
+  auto& held = process_->scenes;
+  const auto same_key =
+      std::find_if(held.begin(), held.end(), [&](const auto& h) { return h.first == key; });
+  if (same_key != held.end() && same_key->second == scene.bytes()) return key;
+  uint64_t forget = 0;
+  if (same_key != held.end()) {
+    forget = key;
+    held.erase(same_key);
+  } else if (held.size() >= kWorkerSceneCount) {
+    forget = held.front().first;
+  }
   WireWriter w;
   w.u64(key);
   w.u64(forget);
   w.raw(scene.bytes().data(), scene.bytes().size());
   call(static_cast<uint32_t>(RenderWireKind::SetScene), w.bytes(), info.id, "receiving the scene",
        limits_.start_s);
-  if (forget != 0) held.pop_front();
-  held.push_back(key);
+  if (forget != 0 && forget != key) held.pop_front();
+  held.emplace_back(key, scene.bytes());
   return key;
 }
 
@@ -359,43 +371,46 @@ Precision RenderWorker::prepare(const SceneInfo& info, const SceneState& state,
   return static_cast<Precision>(precision);
 }
 
-void RenderWorker::render_sample(const SceneInfo& info, const SceneState& state,
-                                 const RenderSettings& settings, int sample_index,
-                                 Readback outputs) {
-  ensure_started();
-  if (local_) return local_->renderer.render_sample(info, state, settings, sample_index, outputs);
+void RenderWorker::write_sample(WireWriter& w, const SceneInfo& info, const SceneState& state,
+                                const RenderSettings& settings, int sample_index,
+                                Readback outputs) {
   const uint64_t key = send_scene(info);
-  WireWriter w;
   w.u64(key);
   write_scene_state(w, state);
   write_render_settings(w, settings);
   w.i32(sample_index);
   w.u32(static_cast<uint32_t>(outputs));
-  const double pixels = static_cast<double>(settings.width_px) * settings.height_px;
   if (pending_samples_ == 0) samples_started_ = Clock::now();
+  last_scene_id_ = info.id;
+  last_sample_pixels_ = static_cast<double>(settings.width_px) * settings.height_px;
+  last_sample_scene_ = key;
+}
+
+void RenderWorker::render_sample(const SceneInfo& info, const SceneState& state,
+                                 const RenderSettings& settings, int sample_index,
+                                 Readback outputs) {
+  ensure_started();
+  if (local_) return local_->renderer.render_sample(info, state, settings, sample_index, outputs);
+  WireWriter w;
+  write_sample(w, info, state, settings, sample_index, outputs);
   // The worker answers once the sample is queued; this call also waits for the sample before
   // (its upload is a blocking write), and `finish` for the last: each within one sample's limit.
   call(static_cast<uint32_t>(RenderWireKind::RenderSample), w.bytes(), info.id, kFrameStage,
-       frame_limit_.limit_s(key, pixels));
+       frame_limit_.limit_s(last_sample_scene_, last_sample_pixels_));
   ++pending_samples_;
-  last_sample_scene_ = key;
-  last_scene_id_ = info.id;
-  last_sample_pixels_ = pixels;
 }
 
-void RenderWorker::finish(const RenderSettings& settings, Readback what, FrameImage& image) {
-  ensure_started();
-  if (local_) return local_->renderer.finish(settings, what, image);
+FramePassPointers RenderWorker::finish_in_place(const RenderSettings& settings, Readback what,
+                                                WireWriter& request, RenderWireKind kind,
+                                                int* lanes, Precision* precision) {
   const size_t n = static_cast<size_t>(settings.width_px) * settings.height_px;
   size_t bytes = 0;
   frame_passes_at(nullptr, n, what, &bytes);
   process_->frame.grow(bytes);
-  WireWriter w;
-  write_render_settings(w, settings);
-  w.u32(static_cast<uint32_t>(what));
-  w.u64(bytes);
+  request.u32(static_cast<uint32_t>(what));
+  request.u64(bytes);
   const std::string reply =
-      call(static_cast<uint32_t>(RenderWireKind::Finish), w.bytes(), last_scene_id_, kFrameStage,
+      call(static_cast<uint32_t>(kind), request.bytes(), last_scene_id_, kFrameStage,
            frame_limit_.limit_s(last_sample_scene_, last_sample_pixels_));
   // The samples' mean time (kernel builds included: that only makes later limits longer).
   if (pending_samples_ > 0)
@@ -403,12 +418,23 @@ void RenderWorker::finish(const RenderSettings& settings, Readback what, FrameIm
                         seconds_since(samples_started_) / pending_samples_);
   pending_samples_ = 0;
   WireReader r(reply);
-  const int lanes = r.i32();
-  const uint32_t precision = r.u32();
-  if (r.failed() || precision > static_cast<uint32_t>(Precision::Double))
+  *lanes = r.i32();
+  const uint32_t p = r.u32();
+  if (r.failed() || p > static_cast<uint32_t>(Precision::Double))  // never Auto
     fail(last_scene_id_, "reading back a frame", "sent a malformed reply", false);
-  const FramePassPointers from = frame_passes_at(process_->frame.data(), n, what, &bytes);
+  *precision = static_cast<Precision>(p);
+  return frame_passes_at(process_->frame.data(), n, what, &bytes);
+}
+
+void RenderWorker::finish(const RenderSettings& settings, Readback what, FrameImage& image) {
+  ensure_started();
+  if (local_) return local_->renderer.finish(settings, what, image);
+  WireWriter w;
+  write_render_settings(w, settings);
+  const FramePassPointers from =
+      finish_in_place(settings, what, w, RenderWireKind::Finish, &image.lanes, &image.precision);
   const FramePassPointers to = size_frame_image(image, settings.width_px, settings.height_px, what);
+  const size_t n = static_cast<size_t>(settings.width_px) * settings.height_px;
   const auto copy = [](void* dst, const void* src, size_t count) {
     if (dst && src) std::memcpy(dst, src, count);
   };
@@ -421,8 +447,31 @@ void RenderWorker::finish(const RenderSettings& settings, Readback what, FrameIm
   copy(to.shadow, from.shadow, n * 4);
   copy(to.normal, from.normal, n * 12);
   copy(to.albedo, from.albedo, n * 12);
-  image.lanes = lanes;
-  image.precision = static_cast<Precision>(precision);
+}
+
+FrameView RenderWorker::render_frame(const SceneInfo& info, const SceneState& state,
+                                     const RenderSettings& settings, int sample_index,
+                                     Readback outputs, Readback read) {
+  if (static_cast<int>(read) > static_cast<int>(outputs) || read == Readback::Everything)
+    throw std::logic_error("RenderWorker::render_frame: reads the display passes the sample wrote");
+  ensure_started();
+  FrameView view;
+  view.width_px = settings.width_px;
+  view.height_px = settings.height_px;
+  if (local_) {
+    local_->renderer.render_sample(info, state, settings, sample_index, outputs);
+    local_->renderer.finish(settings, read, local_->image);
+    return view_of(local_->image);
+  }
+  WireWriter w;
+  write_sample(w, info, state, settings, sample_index, outputs);
+  ++pending_samples_;
+  const FramePassPointers at =
+      finish_in_place(settings, read, w, RenderWireKind::RenderFrame, &view.lanes, &view.precision);
+  view.rgba8 = at.rgba8;
+  view.steps = at.steps;
+  view.ray_status = at.ray_status;
+  return view;
 }
 
 FrameImage RenderWorker::render(const SceneInfo& info, const SceneState& state,

@@ -10,7 +10,8 @@
 // a fresh worker. With plugins.isolation = "none" the same calls run in this process (debugging).
 //
 // Frames come back through shared memory (shared_frame.hpp): the worker reads the device's
-// buffers into it, fractalis copies them into the FrameImage. Output a DE prints (OpenCL printf)
+// buffers into it, fractalis copies them into the FrameImage (or, for the explorer, reads them
+// where they are: render_frame). Output a DE prints (OpenCL printf)
 // goes through a pipe, is attributed to the scene and capped.
 //
 // One RenderWorker is used from one thread, the one that created it (its process is started from
@@ -22,6 +23,7 @@
 #include "render/eval_counts.hpp"
 #include "render/renderer.hpp"
 #include "worker/frame_limit.hpp"
+#include "worker/render_wire.hpp"
 
 #include <sys/types.h>
 
@@ -83,6 +85,13 @@ class RenderWorker {
   void render_sample(const SceneInfo& info, const SceneState& state, const RenderSettings& settings,
                      int sample_index, Readback outputs = Readback::Everything);
   void finish(const RenderSettings& settings, Readback what, FrameImage& image);
+  // A sample and its read-back in one round trip, with no copy: the explorer's frame. `read` is
+  // Display or DisplayAndSteps, within what the sample's `outputs` wrote. The view points into
+  // the shared frame (or this object, in process) and is valid until the next call on this
+  // RenderWorker.
+  FrameView render_frame(const SceneInfo& info, const SceneState& state,
+                         const RenderSettings& settings, int sample_index, Readback outputs,
+                         Readback read);
   FrameImage render(const SceneInfo& info, const SceneState& state, const RenderSettings& settings,
                     bool read_linear = false);
   EvalCounts eval_counts();
@@ -103,6 +112,14 @@ class RenderWorker {
   struct Local;
   void ensure_started();
   uint64_t send_scene(const SceneInfo& info);
+  // A sample's request; notes it as the last sample (its scene, size, the samples' clock).
+  void write_sample(WireWriter& w, const SceneInfo& info, const SceneState& state,
+                    const RenderSettings& settings, int sample_index, Readback outputs);
+  // Ends `request` (a Finish or RenderFrame) with what to read back, sends it, and returns where
+  // the passes lie in the shared frame.
+  FramePassPointers finish_in_place(const RenderSettings& settings, Readback what,
+                                    WireWriter& request, RenderWireKind kind, int* lanes,
+                                    Precision* precision);
   std::string call(uint32_t kind, const std::string& request, const std::string& scene_id,
                    const char* stage, double limit_s);
   [[noreturn]] void fail(const std::string& scene_id, const std::string& stage,

@@ -64,14 +64,9 @@ class Worker {
         return;
       }
       case RenderWireKind::RenderSample: {
-        const SceneInfo& info = scene(r.u64());
-        const SceneState state = read_state(r, info);
-        const RenderSettings settings = read_render_settings(r);
-        const int sample = r.i32();
-        const uint32_t outputs = r.u32();
+        const Sample sample = read_sample(r);
         check(r);
-        if (outputs > static_cast<uint32_t>(Readback::Everything)) throw BadRequest("bad outputs");
-        renderer_.render_sample(info, state, settings, sample, static_cast<Readback>(outputs));
+        render(sample);
         // Answered once the sample is queued: it runs while the answer travels. The next
         // sample's upload (a blocking write) or the finish waits for it, so fractalis's limit on
         // those calls is this sample's limit.
@@ -82,20 +77,16 @@ class Worker {
         const uint32_t what = r.u32();
         const uint64_t bytes = r.u64();
         check(r);
-        if (what > static_cast<uint32_t>(Readback::Everything)) throw BadRequest("bad passes");
-        const size_t n = static_cast<size_t>(settings.width_px) * settings.height_px;
-        size_t need = 0;
-        frame_passes_at(nullptr, n, static_cast<Readback>(what), &need);
-        std::string error;
-        if (need > bytes || !frame_.map_at_least(need, &error))
-          throw BadRequest(error.empty() ? "the shared frame is too small" : error);
-        // The display image (at the frame's start) is written there by the post stage itself.
-        renderer_.set_display_memory(frame_.data(), (n * 4 + 63) / 64 * 64);
-        const Renderer::FinishedFrame f = renderer_.finish_into(
-            settings, static_cast<Readback>(what),
-            frame_passes_at(frame_.data(), n, static_cast<Readback>(what), &need));
-        result.i32(f.lanes);
-        result.u32(static_cast<uint32_t>(f.precision));
+        finish(settings, what, bytes, result);
+        return;
+      }
+      case RenderWireKind::RenderFrame: {
+        const Sample sample = read_sample(r);
+        const uint32_t what = r.u32();
+        const uint64_t bytes = r.u64();
+        check(r);
+        render(sample);
+        finish(sample.settings, what, bytes, result);
         return;
       }
       case RenderWireKind::EvalCounts: {
@@ -138,6 +129,45 @@ class Worker {
   }
 
  private:
+  struct Sample {
+    const SceneInfo* info;
+    SceneState state;
+    RenderSettings settings;
+    int index;
+    uint32_t outputs;
+  };
+  Sample read_sample(WireReader& r) const {
+    Sample s;
+    s.info = &scene(r.u64());
+    s.state = read_state(r, *s.info);
+    s.settings = read_render_settings(r);
+    s.index = r.i32();
+    s.outputs = r.u32();
+    return s;
+  }
+  void render(const Sample& s) {
+    if (s.outputs > static_cast<uint32_t>(Readback::Everything)) throw BadRequest("bad outputs");
+    renderer_.render_sample(*s.info, s.state, s.settings, s.index,
+                            static_cast<Readback>(s.outputs));
+  }
+  // Reads the frame's passes `what` into the shared frame, which fractalis made `bytes` long;
+  // the reply carries the lanes and precision.
+  void finish(const RenderSettings& settings, uint32_t what, uint64_t bytes, WireWriter& result) {
+    if (what > static_cast<uint32_t>(Readback::Everything)) throw BadRequest("bad passes");
+    const size_t n = static_cast<size_t>(settings.width_px) * settings.height_px;
+    size_t need = 0;
+    frame_passes_at(nullptr, n, static_cast<Readback>(what), &need);
+    std::string error;
+    if (need > bytes || !frame_.map_at_least(need, &error))
+      throw BadRequest(error.empty() ? "the shared frame is too small" : error);
+    // The display image (at the frame's start) is written there by the post stage itself.
+    renderer_.set_display_memory(frame_.data(), (n * 4 + 63) / 64 * 64);
+    const Renderer::FinishedFrame f = renderer_.finish_into(
+        settings, static_cast<Readback>(what),
+        frame_passes_at(frame_.data(), n, static_cast<Readback>(what), &need));
+    result.i32(f.lanes);
+    result.u32(static_cast<uint32_t>(f.precision));
+  }
   const SceneInfo& scene(uint64_t key) const {
     const auto it = scenes_.find(key);
     if (it == scenes_.end()) throw BadRequest("a scene it was not sent");
