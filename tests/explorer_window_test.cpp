@@ -251,6 +251,73 @@ TEST_F(ExplorerWindow, QuitEndsTheLoop) {
 // a postage stamp), and the panel is as wide as its widest row, so no label is cut. At 720p,
 // before the panel fitted its rows, labels were cut ("Colour (deep o"). The pictures are kept
 // in the build folder (overlay_WxH.png) to look at.
+SDL_Window* window_titled(const std::string& title) {
+  for (Uint32 id = 1; id < 1000; ++id)
+    if (SDL_Window* w = SDL_GetWindowFromID(id); w && title == SDL_GetWindowTitle(w)) return w;
+  return nullptr;
+}
+
+// A scene whose DE writes through a wild pointer once its parameter `danger` is above 0.5
+// (tests/fixtures/plugins/cl_write_above_param.c), driven as a user drives it: the pointer moved
+// onto the overlay's slider (the X server's pointer, which ImGui reads) and clicked near its right
+// end. The render worker dies, not the explorer: the error names the file and the crash, the
+// parameter goes back to the value that rendered, and the next frames render in a fresh worker.
+TEST(ExplorerWindowHostile, TheOverlaysSliderCrashesOnlyTheRenderWorker) {
+  ASSERT_TRUE(display_available()) << "run under xvfb-run";
+  const std::string title = "Fractalis slider test";
+  Window window(title, kW, kH, false);
+  SDL_Window* sdl_window = window_titled(title);
+  ASSERT_NE(sdl_window, nullptr);
+  RenderWorker worker(test::runtime().device(), explorer_worker_limits(PluginPolicy{}));
+  std::vector<SceneEvent> events;
+  SceneLibrary library({std::filesystem::path(KERNEL_PLUGIN_DIR) / "write_above_param"},
+                       PluginPolicy{}, RenderSettings{}, worker, &events);
+  ASSERT_EQ(library.slots().size(), 1u);
+  Explorer explorer(Settings{}, worker, library, "kernel_write_above_param");
+  OverlayState overlay;
+  InputState input;
+  int rendered = 0;
+  const auto frame = [&] {
+    window.poll(KeyBindings::defaults(), input);
+    explorer.update(input, 1.0 / 30, 0.0);
+    const FrameView* image = explorer.render(kW, kH);
+    if (image) ++rendered;
+    window.present(image, [&] { draw_overlay(explorer, overlay); });
+    input.end_frame();
+  };
+  for (int i = 0; i < 3; ++i) frame();
+  ASSERT_GT(rendered, 0) << "the scene renders at danger = 0";
+  const auto& controls = overlay.layout.param_controls;
+  ASSERT_EQ(controls.size(), 1u);
+  const DrawnControl& slider = controls[0];
+  ASSERT_EQ(slider.name, "danger");
+  ASSERT_GT(slider.width_px, 20);
+  const int x = static_cast<int>(slider.x_px + 0.9f * slider.width_px);
+  const int y = static_cast<int>(slider.y_px + 0.5f * slider.height_px);
+  SDL_WarpMouseInWindow(sdl_window, x, y);
+  frame();  // the pointer's move reaches SDL and ImGui
+  SDL_Event press{};
+  press.type = SDL_MOUSEBUTTONDOWN;
+  press.button.windowID = SDL_GetWindowID(sdl_window);
+  press.button.button = SDL_BUTTON_LEFT;
+  press.button.state = SDL_PRESSED;
+  press.button.clicks = 1;
+  press.button.x = x;
+  press.button.y = y;
+  SDL_PushEvent(&press);
+  SceneSlot& slot = explorer.current();
+  // The click sets the value in one frame; the next frame's probe at the eye runs the DE.
+  for (int i = 0; i < 10 && slot.error.empty(); ++i) frame();
+  EXPECT_NE(slot.error.find("crashed (SIGSEGV"), std::string::npos) << slot.error;
+  EXPECT_NE(slot.error.find("kernel_write_above_param.so"), std::string::npos) << slot.error;
+  EXPECT_EQ(slot.state.params[0].v[0], 0) << "back to the last value that rendered";
+  EXPECT_GE(worker.starts(), 2) << "the slider's value ended a worker";
+  const int before = rendered;
+  for (int i = 0; i < 5; ++i) frame();
+  EXPECT_GT(rendered, before) << "a fresh worker renders again";
+  EXPECT_EQ(slot.state.params[0].v[0], 0);
+}
+
 TEST(OverlayOnEveryScreen, ReadableWithNoLabelCut) {
   ASSERT_TRUE(display_available()) << "run under xvfb-run";
   std::vector<SceneEvent> events;

@@ -1,8 +1,9 @@
 // The render worker (worker/render_worker.hpp): frames that come back through it are the frames
 // this process renders itself, and scene kernels that crash, hang, overrun, bomb the compiler or
 // flood the output end the worker, never fractalis — for `list`, `render`, `bench`, `check` and
-// the explorer, with the file and the reason named and nothing left behind. The hostile kernels
-// are tests/fixtures/plugins/cl_*.c.
+// `explore` (in a window under Xvfb), with the file and the reason named and nothing left behind.
+// The hostile kernels are tests/fixtures/plugins/cl_*.c; explorer_window_test drives the overlay's
+// slider into a crash.
 #include "worker/render_worker.hpp"
 #include "app/explorer.hpp"
 #include "render/de_probe.hpp"
@@ -66,10 +67,10 @@ struct CommandRun {
 };
 
 // Runs the fractalis executable (a process of its own: if isolation failed, it, not the test,
-// would die) with the test's worker link.
-CommandRun run_fractalis(const std::string& args) {
-  const std::string command = "FRACTALIS_RENDER_WORKER='" + own_worker_link().string() + "' '" +
-                              FRACTALIS_EXECUTABLE + "' " + args + " 2>&1";
+// would die) with the test's worker link, through `launcher` when there is one.
+CommandRun run_fractalis(const std::string& args, const std::string& launcher = "") {
+  const std::string command = "FRACTALIS_RENDER_WORKER='" + own_worker_link().string() + "' " +
+                              launcher + " '" + FRACTALIS_EXECUTABLE + "' " + args + " 2>&1";
   CommandRun r;
   FILE* pipe = popen(command.c_str(), "r");
   char buffer[4096];
@@ -167,6 +168,20 @@ TEST_P(HostileKernel, EveryCommandSurvivesAndNamesTheFileAndReason) {
   for (const auto& e : fs::directory_iterator(out))
     if (e.path().filename() != "x.png") ++left;
   EXPECT_EQ(left, 0u) << "no temporary file is left";
+
+  // The explorer as a user starts it, in a window (an Xvfb of its own): the scene is skipped at
+  // load with its reason (then status 2: no such scene), or explored, its error shown; never a
+  // crash of fractalis.
+  const CommandRun explore = run_fractalis("explore " + scene + " --frames 10 --size 64x36",
+                                           std::string(XVFB_RUN) + " -a");
+  {
+    SCOPED_TRACE("explore: " + explore.output);
+    EXPECT_TRUE(explore.code == 0 || (!h.renders && explore.code == 2)) << explore.code;
+    if (!h.renders) {
+      EXPECT_NE(explore.output.find(file), std::string::npos) << "the file is named";
+      EXPECT_TRUE(says_any(explore.output, h.reason)) << "the reason: " << h.reason;
+    }
+  }
 
   const CommandRun check = run_fractalis("check '" + (dir / file).string() + "' " + kLimits +
                                          " --set plugins.allow_writable=true");

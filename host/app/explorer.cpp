@@ -96,7 +96,10 @@ bool Explorer::update(const InputState& input, double dt_s, double now_s) {
   // The flying speed follows the scene's own DE at the eye, evaluated on the device.
   const std::array<float, 3> eye_f = to_float3(slot.state.camera.eye);
   try {
-    stats_.surface_distance = worker_.probe_de(slot.scene->info, slot.state.params, {eye_f})[0];
+    stats_.surface_distance =
+        took_the_worker_down(slot)
+            ? 0.1
+            : worker_.probe_de(slot.scene->info, slot.state.params, {eye_f})[0];
   } catch (const RenderWorkerFailure& e) {
     worker_failed(slot, e);
     stats_.surface_distance = 0.1;
@@ -136,10 +139,7 @@ const FrameView* Explorer::render(int window_width_px, int window_height_px) {
   s.max_steps = std::max(16, static_cast<int>(s.max_steps * plan.step_budget));
   s.count_evaluations = count_evaluations_;
   SceneSlot& slot = current();
-  // What took the worker down is not tried again (a fresh worker each frame) until it changes.
-  if (failed_state_ && failed_scene_id_ == slot.scene->info.id &&
-      same_state(*failed_state_, slot.state))
-    return nullptr;
+  if (took_the_worker_down(slot)) return nullptr;
   const auto start = std::chrono::steady_clock::now();
   try {
     // Steps and ray status on every sample, so that one kernel serves the whole refinement.
@@ -171,6 +171,11 @@ const FrameView* Explorer::render(int window_width_px, int window_height_px) {
   }
   stats_.precision = last_.precision;
   return &last_;
+}
+
+bool Explorer::took_the_worker_down(const SceneSlot& slot) const {
+  return failed_state_ && failed_scene_id_ == slot.scene->info.id &&
+         same_state(*failed_state_, slot.state);
 }
 
 void Explorer::worker_failed(SceneSlot& slot, const RenderWorkerFailure& failure) {

@@ -78,6 +78,9 @@ class Explorer {
   // The render worker ended (a DE crashed or hung it): say so, and go back to the last state that
   // rendered, so that the next frame (in a fresh worker) shows a picture again.
   void worker_failed(SceneSlot& slot, const RenderWorkerFailure& failure);
+  // The slot's scene and state are what took the worker down last: not tried again (a fresh
+  // worker and the same error every frame) until one of them changes.
+  bool took_the_worker_down(const SceneSlot& slot) const;
 
   RenderWorker& worker_;
   SceneLibrary& library_;

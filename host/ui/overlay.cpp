@@ -146,7 +146,8 @@ void draw_statistics(Explorer& explorer, const OverlayState& overlay) {
 }
 
 // The scene list, the current scene's error, and its parameters grouped as it declares them.
-void draw_scene(Explorer& explorer, const OverlayState& overlay) {
+void draw_scene(Explorer& explorer, const OverlayState& overlay,
+                std::vector<DrawnControl>* controls) {
   auto& slots = explorer.library().slots();
   if (ImGui::BeginCombo("Scene", explorer.current().scene->info.name.c_str())) {
     for (int i = 0; i < static_cast<int>(slots.size()); ++i) {
@@ -167,10 +168,13 @@ void draw_scene(Explorer& explorer, const OverlayState& overlay) {
       continue;
     for (int i : indices) {
       ImGui::PushID(i);
+      const ImVec2 at = ImGui::GetCursorScreenPos();
+      const float width_px = ImGui::CalcItemWidth();
       if (edit_param(info.params[i], slot.state.params[i])) {
         clamp_params(info, slot.state.params);
         explorer.mark_changed();
       }
+      controls->push_back({info.params[i].key, at.x, at.y, width_px, ImGui::GetItemRectSize().y});
       ImGui::PopID();
     }
   }
@@ -309,7 +313,8 @@ void draw_overlay(Explorer& explorer, OverlayState& overlay) {
       "Fractalis (" + overlay.keys.label(Action::ToggleOverlay) + " hides)###main";
   ImGui::Begin(title.c_str(), nullptr, ImGuiWindowFlags_AlwaysAutoResize);
   draw_statistics(explorer, overlay);
-  draw_scene(explorer, overlay);
+  std::vector<DrawnControl> param_controls;
+  draw_scene(explorer, overlay, &param_controls);
   draw_rendering(explorer, overlay);
   draw_camera(explorer, overlay);
   draw_camera_path(explorer, overlay);
@@ -317,6 +322,7 @@ void draw_overlay(Explorer& explorer, OverlayState& overlay) {
   // The same messages the terminal shows (io/log.hpp), newest last.
   for (const std::string& m : recent_log_messages(8)) ImGui::TextWrapped("%s", m.c_str());
   overlay.layout = measure_layout();
+  overlay.layout.param_controls = std::move(param_controls);
   ImGui::End();
 }
 

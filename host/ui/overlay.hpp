@@ -13,13 +13,21 @@
 
 namespace fr {
 
+// Where a control was drawn: its frame (the label beside it excluded), window pixels.
+struct DrawnControl {
+  std::string name;
+  float x_px = 0, y_px = 0, width_px = 0, height_px = 0;
+};
+
 // What the last draw_overlay laid out: the tests check from it that the panel is readable at
-// every window size (text height, and no label cut by the panel's edge).
+// every window size (text height, and no label cut by the panel's edge), and find the scene's
+// parameter controls to drive them with the mouse as a user does.
 struct OverlayLayout {
   float font_px = 0;  // height of a line of text, pixels
   float panel_width_px = 0, panel_height_px = 0;
-  float content_width_px = 0;  // the widest row laid out (widget and label)
-  float visible_width_px = 0;  // the panel's content area
+  float content_width_px = 0;                // the widest row laid out (widget and label)
+  float visible_width_px = 0;                // the panel's content area
+  std::vector<DrawnControl> param_controls;  // the current scene's, named by parameter key
 };
 
 struct OverlayState {
