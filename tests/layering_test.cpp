@@ -15,6 +15,7 @@ namespace {
 
 // Bottom first. A folder may include itself and any folder before it.
 const std::vector<std::string> kFloors = {
+    "platform",  // what differs between Linux and Windows
     "scene",     // a scene as plain data
     "io",        // files, text, processes: no fractalis types
     "mpi",       // the ranks of an MPI job and the tasks they share
@@ -68,6 +69,39 @@ TEST(Layering, NoFolderIncludesOneAboveIt) {
   }
   EXPECT_GT(files, 100u);
   EXPECT_GT(includes, 300u);
+}
+
+// What differs between Linux and Windows lives in host/platform/ (its README): no other file of
+// the host, the scenes or the SDK's sources asks which system it is built for, and the platform
+// layer picks its implementation by file (NAME_posix.cpp, NAME_windows.cpp), not by #ifdef.
+TEST(Layering, OnlyThePlatformLayerKnowsTheSystem) {
+  const std::filesystem::path root(SOURCE_DIR);
+  size_t files = 0;
+  for (const char* tree : {"host", "plugins"}) {
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(root / tree)) {
+      const auto& path = entry.path();
+      if (!entry.is_regular_file() || (path.extension() != ".cpp" && path.extension() != ".hpp" &&
+                                       path.extension() != ".c" && path.extension() != ".h"))
+        continue;
+      ++files;
+      const bool platform = path.parent_path().filename() == "platform";
+      const std::string stem = path.stem().string();
+      if (!platform && (stem.ends_with("_posix") || stem.ends_with("_windows")))
+        ADD_FAILURE() << std::filesystem::relative(path, root).string()
+                      << ": a per-system file outside host/platform/";
+      std::ifstream in(path);
+      std::string line;
+      for (int number = 1; std::getline(in, line); ++number) {
+        const size_t hash = line.find_first_not_of(" \t");
+        if (hash == std::string::npos || line[hash] != '#') continue;
+        for (const char* system : {"_WIN32", "_WIN64", "__linux__", "__MINGW", "_MSC_VER"})
+          if (line.find(system) != std::string::npos)
+            ADD_FAILURE() << std::filesystem::relative(path, root).string() << ":" << number
+                          << ": asks for " << system << " (" << line << ")";
+      }
+    }
+  }
+  EXPECT_GT(files, 100u);
 }
 
 }  // namespace

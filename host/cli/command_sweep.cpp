@@ -4,6 +4,7 @@
 #include "cli/progress.hpp"
 #include "io/atomic_file.hpp"
 #include "io/cache_dirs.hpp"
+#include "platform/interrupt.hpp"
 #include "render/camera.hpp"
 #include "render/renderer.hpp"
 #include "sweep/sweep_plan.hpp"
@@ -12,11 +13,7 @@
 
 #include <spdlog/spdlog.h>
 
-#include <signal.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -26,31 +23,6 @@
 
 namespace fr {
 namespace {
-
-std::atomic<bool> g_interrupted{false};
-
-// Ctrl-C and SIGTERM stop the sweep between two renders; the results are written only at the
-// end, atomically, so an interrupted sweep leaves no file behind (a reference already cached
-// stays: it is complete). The previous handlers come back when the sweep ends.
-class InterruptGuard {
- public:
-  InterruptGuard() {
-    g_interrupted = false;
-    struct sigaction sa {};
-    sa.sa_handler = [](int) { g_interrupted = true; };
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, &old_int_);
-    sigaction(SIGTERM, &sa, &old_term_);
-  }
-  ~InterruptGuard() {
-    sigaction(SIGINT, &old_int_, nullptr);
-    sigaction(SIGTERM, &old_term_, nullptr);
-  }
-
- private:
-  struct sigaction old_int_ {
-  }, old_term_{};
-};
 
 std::filesystem::path default_cache_dir() {
   const auto base = fractalis_cache_dir();
@@ -157,7 +129,7 @@ double measure_configs(const SweepJob& job, RenderWorker& renderer, SweepResult&
   const double pixel_angle =
       make_camera_rays(p.state.camera, p.render.width_px, p.render.height_px).pixel_angle_rad;
   std::vector<uint8_t> lanes_image[2];
-  for (size_t i = 0; i < job.configs.size() && !g_interrupted; ++i) {
+  for (size_t i = 0; i < job.configs.size() && !InterruptCatcher::interrupted(); ++i) {
     const SweepConfig& c = job.configs[i];
     progress.update(static_cast<int>(i) + 1, "measuring " + config_name(c));
     renderer.prepare(p.scene->info, p.state, c.settings);
@@ -196,11 +168,11 @@ void time_configs(const SweepJob& job, RenderWorker& renderer, SweepResult& resu
   };
   const PreparedScene& p = job.p;
   std::vector<std::vector<double>> times(job.configs.size());
-  for (int round = 0; round < job.frames && !g_interrupted; ++round) {
+  for (int round = 0; round < job.frames && !InterruptCatcher::interrupted(); ++round) {
     progress.update(
         static_cast<int>(job.configs.size()) + 1,
         "timing, round " + std::to_string(round + 1) + " of " + std::to_string(job.frames));
-    for (size_t i = 0; i < job.configs.size() && !g_interrupted; ++i) {
+    for (size_t i = 0; i < job.configs.size() && !InterruptCatcher::interrupted(); ++i) {
       const auto t = time_frames(
           1, [&](int) { renderer.render(p.scene->info, p.state, job.configs[i].settings); },
           now_ms);
@@ -238,7 +210,10 @@ void report_sweep(const SweepJob& job, const SweepResult& result, std::ostream& 
 }  // namespace
 
 int command_sweep(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  InterruptGuard interrupt_guard;  // from the start: a Ctrl-C while loading plugins counts too
+  // Ctrl-C and SIGTERM stop the sweep between two renders; the results are written only at the
+  // end, atomically, so an interrupted sweep leaves no file behind (a reference already cached
+  // stays: it is complete).
+  InterruptCatcher interrupt_catcher;  // from the start: a Ctrl-C while loading plugins counts too
   const auto specs = sweep_option_specs();
   auto options = parse_options("sweep", args, specs);
   if (options.has("help")) {
@@ -272,7 +247,7 @@ int command_sweep(const std::vector<std::string>& args, std::ostream& out, std::
       [&](double k, int level) {
         progress.update(
             0, "reference: refinement " + std::to_string(level + 1) + ", k = " + std::to_string(k));
-        return !g_interrupted;
+        return !InterruptCatcher::interrupted();
       },
       &warning);
   if (!warning.empty()) {
@@ -281,9 +256,9 @@ int command_sweep(const std::vector<std::string>& args, std::ostream& out, std::
   }
   const double lanes_difference = measure_configs(job, renderer, result, progress);
   time_configs(job, renderer, result, progress);
-  if (!g_interrupted) progress.update(static_cast<int>(job.configs.size()) + 2);
+  if (!InterruptCatcher::interrupted()) progress.update(static_cast<int>(job.configs.size()) + 2);
   progress.finish();
-  if (g_interrupted) {
+  if (InterruptCatcher::interrupted()) {
     spdlog::warn("sweep interrupted; nothing written");
     return 130;
   }

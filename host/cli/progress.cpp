@@ -1,6 +1,6 @@
 #include "cli/progress.hpp"
 
-#include <unistd.h>
+#include "platform/terminal.hpp"
 
 #include <algorithm>
 #include <ostream>
@@ -8,7 +8,7 @@
 namespace fr {
 
 Progress::Progress(std::ostream& err, std::string noun, int total, int already_done)
-    : Progress(err, std::move(noun), total, already_done, isatty(STDERR_FILENO) != 0) {}
+    : Progress(err, std::move(noun), total, already_done, stderr_is_terminal()) {}
 
 Progress::Progress(std::ostream& err, std::string noun, int total, int already_done, bool terminal)
     : err_(err),

@@ -2,6 +2,7 @@
 
 #include "io/echo.hpp"
 #include "io/printable.hpp"
+#include "platform/user_folders.hpp"
 #include "render/camera.hpp"
 #include "render/kernel_cache.hpp"
 
@@ -89,6 +90,16 @@ Settings load_settings(const ParsedOptions& options, std::vector<SettingsProblem
   return settings;
 }
 
+namespace {
+
+// Whether the running executable is the build tree's (its scenes and paths are the build's and
+// the source tree's), not an installed one (or the system does not say where it is).
+bool runs_from_build_tree(const std::filesystem::path& exe) {
+  return exe.empty() || exe.string().rfind(std::string(FRACTALIS_BUILD_ROOT) + "/", 0) == 0;
+}
+
+}  // namespace
+
 std::vector<std::filesystem::path> plugin_folders(const Settings& settings,
                                                   const ParsedOptions& options) {
   if (auto dir = options.get("plugins")) {
@@ -106,10 +117,8 @@ std::vector<std::filesystem::path> plugin_folders(const Settings& settings,
   // The scenes built with this executable: the build tree's when it runs from the build tree,
   // else the installed ones, found from the executable (<prefix>/bin/fractalis ->
   // <prefix>/lib/fractalis/plugins), so that any install prefix works.
-  std::error_code ec;
-  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-  const std::string build_root = std::string(FRACTALIS_BUILD_ROOT) + "/";
-  if (ec || exe.string().rfind(build_root, 0) == 0)
+  const std::filesystem::path exe = executable_path();
+  if (runs_from_build_tree(exe))
     add(FRACTALIS_PLUGIN_BUILD_DIR);
   else
     add(exe.parent_path().parent_path() / FRACTALIS_PLUGIN_INSTALL_DIR);
@@ -118,20 +127,14 @@ std::vector<std::filesystem::path> plugin_folders(const Settings& settings,
 }
 
 std::filesystem::path shipped_path_file(const std::string& name) {
-  std::error_code ec;
-  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-  const std::string build_root = std::string(FRACTALIS_BUILD_ROOT) + "/";
-  if (ec || exe.string().rfind(build_root, 0) == 0)
-    return std::filesystem::path(FRACTALIS_PATHS_SOURCE_DIR) / name;
+  const std::filesystem::path exe = executable_path();
+  if (runs_from_build_tree(exe)) return std::filesystem::path(FRACTALIS_PATHS_SOURCE_DIR) / name;
   return exe.parent_path().parent_path() / FRACTALIS_PATHS_INSTALL_DIR / name;
 }
 
 std::filesystem::path user_scene_folder() {
-  if (const char* xdg = std::getenv("XDG_DATA_HOME"); xdg && *xdg)
-    return std::filesystem::path(xdg) / "fractalis" / "scenes";
-  if (const char* home = std::getenv("HOME"); home && *home)
-    return std::filesystem::path(home) / ".local" / "share" / "fractalis" / "scenes";
-  return {};
+  const std::filesystem::path folder = user_folder(UserFolder::Data);
+  return folder.empty() ? folder : folder / "scenes";
 }
 
 std::vector<LoadOutcome> load_plugins(const std::vector<std::filesystem::path>& folders,

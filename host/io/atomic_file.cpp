@@ -1,7 +1,8 @@
 #include "io/atomic_file.hpp"
 
+#include "platform/interrupt.hpp"
+
 #include <fcntl.h>
-#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -48,15 +49,15 @@ constexpr size_t kNoteMax = 1024;
 char g_notes[2][kNoteMax];
 std::atomic<int> g_note_current{-1};
 
-void remove_temps_and_die(int sig) {
+// The last words before an interrupt ends the process (platform/interrupt.hpp): the note, then
+// no temporary file left.
+void say_note_and_remove_temps() {
   const int note = g_note_current.load();
   if (note >= 0) {
     const ssize_t written = write(STDERR_FILENO, g_notes[note], strlen(g_notes[note]));
     (void)written;
   }
   remove_temp_files();
-  signal(sig, SIG_DFL);
-  raise(sig);
 }
 
 // Bits for temporary file names: not secret, only unlikely to repeat.
@@ -258,14 +259,7 @@ void set_signal_note(std::string_view note) {
 }
 
 void install_temp_file_cleanup() {
-  for (const int sig : {SIGINT, SIGTERM, SIGHUP}) {
-    struct sigaction old {};
-    if (sigaction(sig, nullptr, &old) != 0 || old.sa_handler != SIG_DFL) continue;  // e.g. nohup
-    struct sigaction sa {};
-    sa.sa_handler = remove_temps_and_die;
-    sigemptyset(&sa.sa_mask);
-    sigaction(sig, &sa, nullptr);
-  }
+  on_termination_request(say_note_and_remove_temps);
 }
 
 }  // namespace fr

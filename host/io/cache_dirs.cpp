@@ -1,15 +1,11 @@
 #include "io/cache_dirs.hpp"
 
-#include <cstdlib>
+#include "platform/user_folders.hpp"
 
 namespace fr {
 
 std::filesystem::path fractalis_cache_dir() {
-  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg)
-    return std::filesystem::path(xdg) / "fractalis";
-  if (const char* home = std::getenv("HOME"); home && *home)
-    return std::filesystem::path(home) / ".cache" / "fractalis";
-  return {};
+  return user_folder(UserFolder::Cache);
 }
 
 const std::vector<CacheFolder>& cache_folders() {

@@ -1,5 +1,7 @@
 #include "io/child_process.hpp"
 
+#include "platform/user_folders.hpp"
+
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/prctl.h>
@@ -96,10 +98,9 @@ std::string describe_child_exit(int status) {
 std::filesystem::path helper_executable(const char* name, const char* env_variable,
                                         const char* build_path) {
   if (const char* env = std::getenv(env_variable); env && *env) return env;
-  std::error_code ec;
-  const auto self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  const std::filesystem::path self = executable_path();
   std::vector<std::filesystem::path> candidates;
-  if (!ec) {
+  if (!self.empty()) {
     candidates.push_back(self.parent_path() / name);
     candidates.push_back(self.parent_path().parent_path() / "libexec" / "fractalis" / name);
   }

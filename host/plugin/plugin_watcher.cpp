@@ -1,28 +1,17 @@
 #include "plugin/plugin_watcher.hpp"
 
-#include <sys/inotify.h>
-#include <unistd.h>
-
-#include <array>
-
 namespace fr {
 
 PluginWatcher::PluginWatcher(std::filesystem::path folder, double debounce_s,
                              double poll_interval_s)
-    : folder_(std::move(folder)), debounce_s_(debounce_s), poll_interval_s_(poll_interval_s) {
-  inotify_fd_ = inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
-  if (inotify_fd_ >= 0 && inotify_add_watch(inotify_fd_, folder_.c_str(),
-                                            IN_CLOSE_WRITE | IN_MOVED_TO | IN_MOVED_FROM |
-                                                IN_DELETE | IN_CREATE | IN_MODIFY) < 0) {
-    close(inotify_fd_);
-    inotify_fd_ = -1;  // fall back to polling
-  }
+    : folder_(std::move(folder)),
+      debounce_s_(debounce_s),
+      poll_interval_s_(poll_interval_s),
+      watch_(folder_) {
   reported_ = scan();
 }
 
-PluginWatcher::~PluginWatcher() {
-  if (inotify_fd_ >= 0) close(inotify_fd_);
-}
+PluginWatcher::~PluginWatcher() = default;
 
 std::map<std::filesystem::path, PluginWatcher::Stamp> PluginWatcher::scan() const {
   std::map<std::filesystem::path, Stamp> out;
@@ -39,12 +28,9 @@ std::map<std::filesystem::path, PluginWatcher::Stamp> PluginWatcher::scan() cons
 
 std::vector<PluginChange> PluginWatcher::poll(double now_s) {
   bool look = !pending_.empty() || now_s - last_scan_s_ >= poll_interval_s_;
-  if (inotify_fd_ >= 0) {
-    std::array<char, 4096> buffer;
-    bool events = false;
-    while (read(inotify_fd_, buffer.data(), buffer.size()) > 0) events = true;
-    // With inotify, scan on events, while something is settling, and rarely as a safety net.
-    look = events || !pending_.empty() || now_s - last_scan_s_ >= 10 * poll_interval_s_;
+  if (watch_.active()) {
+    // Watched, scan on events, while something is settling, and rarely as a safety net.
+    look = watch_.changed() || !pending_.empty() || now_s - last_scan_s_ >= 10 * poll_interval_s_;
   }
   std::vector<PluginChange> changes;
   if (!look) return changes;

@@ -1,9 +1,12 @@
 // plugin_watcher.hpp — noticing scene plugins that appear in, change in or leave a folder.
 //
-// inotify says when to look (without it, the folder is polled every poll_interval_s); a file is
+// The system's folder watch (platform/folder_watch.hpp: inotify, Windows' change notifications)
+// says when to look (without it, the folder is polled every poll_interval_s); a file is
 // reported only once its size and modification time have stayed the same for debounce_s, so a
 // plugin that is still being copied or linked is never loaded half-written.
 #pragma once
+
+#include "platform/folder_watch.hpp"
 
 #include <cstdint>
 #include <filesystem>
@@ -30,7 +33,7 @@ class PluginWatcher {
   // the watcher starts count as known, not added. Cheap when nothing happened.
   std::vector<PluginChange> poll(double now_s);
 
-  bool uses_inotify() const { return inotify_fd_ >= 0; }
+  bool watched() const { return watch_.active(); }
   const std::filesystem::path& folder() const { return folder_; }
 
  private:
@@ -48,7 +51,7 @@ class PluginWatcher {
 
   std::filesystem::path folder_;
   double debounce_s_, poll_interval_s_;
-  int inotify_fd_ = -1;
+  FolderWatch watch_;
   double last_scan_s_ = -1e300;
   std::map<std::filesystem::path, Stamp> reported_;   // what the caller knows
   std::map<std::filesystem::path, Pending> pending_;  // changed, waiting to be stable

@@ -1,12 +1,10 @@
 #include "render/memory_budget.hpp"
 
-#include <sys/resource.h>
+#include "platform/system_facts.hpp"
 
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
 #include <limits>
-#include <sstream>
 
 namespace fr {
 namespace {
@@ -20,23 +18,6 @@ constexpr uint64_t kDisplayReadbackBytesPerPixel = 4 + 4 + 1;
 constexpr uint64_t kAllPassesReadbackBytesPerPixel = 16 + 4 + 8 + 12 + 12 + 4 + 4;
 // The PNG encoder: its filtered copy of the image, the compressed stream and our copy of it.
 constexpr uint64_t kPngBytesPerPixel = 4 + 4 + 4;
-
-// A /proc or /sys number, or nullopt.
-bool read_number(const char* file, const char* key, uint64_t* out) {
-  std::ifstream in(file);
-  std::string line;
-  while (std::getline(in, line)) {
-    if (key && line.rfind(key, 0) != 0) continue;
-    std::istringstream words(key ? line.substr(std::string(key).size()) : line);
-    unsigned long long v = 0;
-    if (!(words >> v)) return false;  // "max" in memory.max: no limit
-    std::string unit;
-    words >> unit;
-    *out = unit == "kB" ? v * 1024 : v;
-    return true;
-  }
-  return false;
-}
 
 }  // namespace
 
@@ -56,24 +37,9 @@ uint64_t process_memory_headroom(std::string* why) {
   auto limit = [&](uint64_t bytes, const std::string& name) {
     if (bytes < headroom) headroom = bytes, *why = name;
   };
-  struct rlimit as {};
-  if (getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_cur != RLIM_INFINITY) {
-    uint64_t used = 0;
-    read_number("/proc/self/status", "VmSize:", &used);
-    const uint64_t cap = static_cast<uint64_t>(as.rlim_cur);
-    limit(cap > used ? cap - used : 0,
-          "what the address-space limit (ulimit -v, " + format_bytes(cap) + ") leaves");
-  }
-  uint64_t cgroup_max = 0, cgroup_now = 0;
-  if (read_number("/sys/fs/cgroup/memory.max", nullptr, &cgroup_max) &&
-      read_number("/sys/fs/cgroup/memory.current", nullptr, &cgroup_now))
-    limit(cgroup_max > cgroup_now ? cgroup_max - cgroup_now : 0,
-          "what the cgroup's memory.max (" + format_bytes(cgroup_max) + ") leaves");
-  uint64_t available = 0, swap_free = 0;
-  if (read_number("/proc/meminfo", "MemAvailable:", &available)) {
-    read_number("/proc/meminfo", "SwapFree:", &swap_free);
-    limit(available + swap_free, "the memory available (MemAvailable and free swap)");
-  }
+  for (const MemoryBound& b : memory_bounds())
+    limit(b.bytes_left,
+          b.cap_bytes ? "what " + b.name + ", " + format_bytes(b.cap_bytes) + ", leaves" : b.name);
   return headroom;
 }
 

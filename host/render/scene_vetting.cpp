@@ -5,6 +5,7 @@
 #include "io/fnv1a.hpp"
 #include "plugin/plugin_files.hpp"
 #include "plugin/scan_cache.hpp"
+#include "platform/user_folders.hpp"
 
 #include <fcntl.h>
 #include <poll.h>
@@ -23,9 +24,8 @@
 namespace fr {
 
 std::filesystem::path fractalis_executable() {
-  std::error_code ec;
-  const auto self = std::filesystem::read_symlink("/proc/self/exe", ec);
-  if (!ec && self.filename() == "fractalis") return self;
+  const std::filesystem::path self = executable_path();
+  if (self.filename() == "fractalis" || self.filename() == "fractalis.exe") return self;
   return FRACTALIS_EXECUTABLE_BUILD_PATH;
 }
 

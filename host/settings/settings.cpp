@@ -2,6 +2,7 @@
 
 #include "io/echo.hpp"
 #include "io/toml_guard.hpp"
+#include "platform/user_folders.hpp"
 #include "settings/key_bindings.hpp"
 #include "settings/settings_table.hpp"
 
@@ -220,14 +221,8 @@ std::vector<std::string> known_setting_keys() {
 }
 
 std::filesystem::path user_settings_path() {
-  std::filesystem::path base;
-  if (const char* xdg = std::getenv("XDG_CONFIG_HOME"); xdg && *xdg)
-    base = xdg;
-  else if (const char* home = std::getenv("HOME"); home && *home)
-    base = std::filesystem::path(home) / ".config";
-  else
-    return {};
-  return base / "fractalis" / "config.toml";
+  const std::filesystem::path folder = user_folder(UserFolder::Config);
+  return folder.empty() ? folder : folder / "config.toml";
 }
 
 std::optional<std::filesystem::path> user_settings_file() {

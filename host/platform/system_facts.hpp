@@ -1,0 +1,28 @@
+// system_facts.hpp — the machine a benchmark ran on, and what bounds this process's memory.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace fr {
+
+struct SystemFacts {
+  std::string cpu_model;      // "AMD EPYC 7B13"; "unknown" when the system does not say
+  uint64_t memory_bytes = 0;  // physical memory; 0: unknown
+  std::string os;             // "Debian GNU/Linux 12 (bookworm), Linux 6.1.0 x86_64"
+};
+SystemFacts system_facts();
+
+// One bound on how much more memory this process can take: `bytes_left`, and what sets it in
+// words ("the address-space limit (ulimit -v)"), with the cap it comes from when it is one.
+struct MemoryBound {
+  uint64_t bytes_left = 0;
+  std::string name;
+  uint64_t cap_bytes = 0;  // 0: not a cap (memory the system has free)
+};
+// Every bound the system applies here (limits, control groups, available memory); none when it
+// says nothing.
+std::vector<MemoryBound> memory_bounds();
+
+}  // namespace fr

@@ -1,0 +1,134 @@
+// The platform layer (host/platform/): each stage against what the system itself says, on Linux
+// in CTest and, cross-built with MinGW-w64, under Wine (scripts/test-windows.sh). One source for
+// both: what a system is expected to answer is chosen at run time, never by #ifdef.
+#include "platform/folder_watch.hpp"
+#include "platform/interrupt.hpp"
+#include "platform/system_facts.hpp"
+#include "platform/user_folders.hpp"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <csignal>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <list>
+#include <string>
+#include <thread>
+
+namespace fr {
+namespace {
+
+namespace fs = std::filesystem;
+
+const bool kWindows = fs::path::preferred_separator == '\\';
+
+void set_variable(const char* name, const std::string& value) {
+  // setenv is POSIX, _putenv_s Windows'; putenv is both (the string must outlive the setting).
+  static std::list<std::string> kept;  // never moves a string it holds
+  kept.push_back(std::string(name) + "=" + value);
+  putenv(kept.back().data());
+}
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("fractalis-platform-test-" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+TEST(UserFolders, FollowTheSystemsVariables) {
+  const fs::path base = fs::temp_directory_path() / "fractalis-platform-folders";
+  if (kWindows) {
+    set_variable("LOCALAPPDATA", (base / "local").string());
+    set_variable("APPDATA", (base / "roaming").string());
+    EXPECT_EQ(user_folder(UserFolder::Cache), base / "local" / "fractalis" / "cache");
+    EXPECT_EQ(user_folder(UserFolder::Data), base / "local" / "fractalis");
+    EXPECT_EQ(user_folder(UserFolder::Config), base / "roaming" / "fractalis");
+  } else {
+    set_variable("XDG_CACHE_HOME", (base / "cache").string());
+    set_variable("XDG_CONFIG_HOME", (base / "config").string());
+    set_variable("XDG_DATA_HOME", (base / "data").string());
+    EXPECT_EQ(user_folder(UserFolder::Cache), base / "cache" / "fractalis");
+    EXPECT_EQ(user_folder(UserFolder::Config), base / "config" / "fractalis");
+    EXPECT_EQ(user_folder(UserFolder::Data), base / "data" / "fractalis");
+    // Unset (empty counts as unset): under HOME, as the XDG base directory specification says.
+    set_variable("XDG_CACHE_HOME", "");
+    set_variable("XDG_CONFIG_HOME", "");
+    set_variable("XDG_DATA_HOME", "");
+    set_variable("HOME", (base / "home").string());
+    EXPECT_EQ(user_folder(UserFolder::Cache), base / "home" / ".cache" / "fractalis");
+    EXPECT_EQ(user_folder(UserFolder::Config), base / "home" / ".config" / "fractalis");
+    EXPECT_EQ(user_folder(UserFolder::Data), base / "home" / ".local" / "share" / "fractalis");
+    set_variable("HOME", "");
+    EXPECT_TRUE(user_folder(UserFolder::Cache).empty()) << "no HOME: no folder, not ./.cache";
+  }
+}
+
+TEST(UserFolders, ExecutablePathIsThisTest) {
+  const fs::path exe = executable_path();
+  ASSERT_FALSE(exe.empty());
+  EXPECT_TRUE(exe.is_absolute()) << exe;
+  EXPECT_EQ(exe.stem(), "platform_test") << exe;
+  EXPECT_TRUE(fs::is_regular_file(exe)) << exe;
+}
+
+TEST(SystemFacts, DescribeThisMachine) {
+  const SystemFacts facts = system_facts();
+  EXPECT_FALSE(facts.cpu_model.empty());
+  EXPECT_GT(facts.memory_bytes, uint64_t{256} << 20) << "at least 256 MiB of memory";
+  EXPECT_FALSE(facts.os.empty());
+  const std::vector<MemoryBound> bounds = memory_bounds();
+  ASSERT_FALSE(bounds.empty()) << "the memory available, at least";
+  for (const MemoryBound& b : bounds) {
+    EXPECT_FALSE(b.name.empty());
+    EXPECT_GT(b.bytes_left, uint64_t{16} << 20) << b.name << ": this test itself runs";
+  }
+}
+
+// Polls for up to 5 s (a watch reports within milliseconds; Wine's within its poll period).
+bool changed_within_5_s(FolderWatch& watch) {
+  for (int i = 0; i < 500; ++i) {
+    if (watch.changed()) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  return false;
+}
+
+TEST(FolderWatch, SaysWhenAFileAppearsChangesOrGoes) {
+  const fs::path dir = fresh_dir("watch");
+  FolderWatch watch(dir);
+  ASSERT_TRUE(watch.active());
+  EXPECT_FALSE(watch.changed()) << "nothing happened yet";
+  std::ofstream(dir / "scene.so") << "first";
+  EXPECT_TRUE(changed_within_5_s(watch)) << "a new file";
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  watch.changed();  // the writes' and closes' own events
+  EXPECT_FALSE(watch.changed()) << "nothing since";
+  std::ofstream(dir / "scene.so", std::ios::app) << " and more";
+  EXPECT_TRUE(changed_within_5_s(watch)) << "a file written";
+  fs::rename(dir / "scene.so", dir / "renamed.so");
+  EXPECT_TRUE(changed_within_5_s(watch)) << "a file renamed";
+  fs::remove(dir / "renamed.so");
+  EXPECT_TRUE(changed_within_5_s(watch)) << "a file removed";
+  fs::remove_all(dir);
+}
+
+TEST(FolderWatch, AFolderThatIsNotThereIsNotWatched) {
+  FolderWatch watch(fs::temp_directory_path() / "fractalis-platform-test-no-such-folder");
+  EXPECT_FALSE(watch.active());
+  EXPECT_FALSE(watch.changed());
+}
+
+// Ctrl-C while a catcher lives sets the flag, and the process goes on.
+TEST(Interrupt, CaughtWhileACatcherLives) {
+  if (kWindows) GTEST_SKIP() << "Ctrl-C reaches a console program through its console (not here)";
+  InterruptCatcher catcher;
+  EXPECT_FALSE(InterruptCatcher::interrupted());
+  std::raise(SIGINT);
+  EXPECT_TRUE(InterruptCatcher::interrupted());
+}
+
+}  // namespace
+}  // namespace fr
