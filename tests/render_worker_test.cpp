@@ -172,8 +172,11 @@ TEST_P(HostileKernel, EveryCommandSurvivesAndNamesTheFileAndReason) {
   // The explorer as a user starts it, in a window (an Xvfb of its own): the scene is skipped at
   // load with its reason (then status 2: no such scene), or explored, its error shown; never a
   // crash of fractalis.
-  const CommandRun explore = run_fractalis("explore " + scene + " --frames 10 --size 64x36",
-                                           std::string(XVFB_RUN) + " -a");
+  // (SDL and the X libraries keep memory to the end, which LeakSanitizer would call leaks, as in
+  // explorer_window_test.)
+  const CommandRun explore =
+      run_fractalis("explore " + scene + " --frames 10 --size 64x36",
+                    std::string("ASAN_OPTIONS=detect_leaks=0 ") + XVFB_RUN + " -a");
   {
     SCOPED_TRACE("explore: " + explore.output);
     EXPECT_TRUE(explore.code == 0 || (!h.renders && explore.code == 2)) << explore.code;

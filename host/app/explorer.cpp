@@ -15,8 +15,10 @@ namespace fr {
 namespace {
 
 bool same_state(const SceneState& a, const SceneState& b) {
+  // (No memcmp of a scene without parameters: its empty vectors' data() may be null.)
   return a.params.size() == b.params.size() &&
-         std::memcmp(a.params.data(), b.params.data(), a.params.size() * sizeof(fr_value)) == 0 &&
+         (a.params.empty() ||
+          std::memcmp(a.params.data(), b.params.data(), a.params.size() * sizeof(fr_value)) == 0) &&
          std::memcmp(&a.camera, &b.camera, sizeof(fr_camera)) == 0 &&
          a.bounding_radius == b.bounding_radius;
 }
