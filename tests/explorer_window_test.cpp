@@ -11,6 +11,7 @@
 #include "ui/window.hpp"
 
 #include <SDL.h>
+#include <imgui.h>
 #include <stb_image.h>
 
 #include <cmath>
@@ -295,7 +296,17 @@ TEST(ExplorerWindowHostile, TheOverlaysSliderCrashesOnlyTheRenderWorker) {
   const int x = static_cast<int>(slider.x_px + 0.9f * slider.width_px);
   const int y = static_cast<int>(slider.y_px + 0.5f * slider.height_px);
   SDL_WarpMouseInWindow(sdl_window, x, y);
-  frame();  // the pointer's move reaches SDL and ImGui
+  // The X server says the pointer entered the window in its own time: frames until ImGui sees it
+  // over the slider.
+  const auto over_slider = [&] {
+    const ImVec2 at = ImGui::GetIO().MousePos;
+    return std::abs(at.x - x) < 1 && std::abs(at.y - y) < 1;
+  };
+  for (int i = 0; i < 200 && !over_slider(); ++i) {
+    frame();
+    SDL_Delay(10);
+  }
+  ASSERT_TRUE(over_slider()) << "the pointer never reached the slider";
   SDL_Event press{};
   press.type = SDL_MOUSEBUTTONDOWN;
   press.button.windowID = SDL_GetWindowID(sdl_window);
