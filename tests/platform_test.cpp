@@ -1,6 +1,7 @@
 // The platform layer (host/platform/): each stage against what the system itself says, on Linux
 // in CTest and, cross-built with MinGW-w64, under Wine (scripts/test-windows.sh). One source for
 // both: what a system is expected to answer is chosen at run time, never by #ifdef.
+#include "platform/files.hpp"
 #include "platform/folder_watch.hpp"
 #include "platform/interrupt.hpp"
 #include "platform/system_facts.hpp"
@@ -13,6 +14,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <list>
 #include <string>
 #include <thread>
@@ -119,6 +121,72 @@ TEST(FolderWatch, AFolderThatIsNotThereIsNotWatched) {
   FolderWatch watch(fs::temp_directory_path() / "fractalis-platform-test-no-such-folder");
   EXPECT_FALSE(watch.active());
   EXPECT_FALSE(watch.changed());
+}
+
+std::string read_all(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+TEST(Files, ExaminePathSaysWhatAPathNames) {
+  const fs::path dir = fresh_dir("examine");
+  EXPECT_EQ(examine_path(dir / "nothing").kind, PathKind::Missing);
+  EXPECT_TRUE(examine_path(dir / "nothing").error.empty()) << "not there is not an error";
+  EXPECT_EQ(examine_path(dir).kind, PathKind::Folder);
+  std::ofstream(dir / "file") << "x";
+  const PathInfo file = examine_path(dir / "file");
+  EXPECT_EQ(file.kind, PathKind::Regular);
+  EXPECT_FALSE(file.is_link);
+  // The null device: written through, never replaced.
+  EXPECT_EQ(examine_path(kWindows ? "NUL" : "/dev/null").kind, PathKind::CharacterDevice);
+  std::error_code ec;
+  fs::create_symlink(dir / "gone", dir / "dangling", ec);
+  if (!ec) {  // (Windows lets only administrators and developer mode make symbolic links)
+    const PathInfo dangling = examine_path(dir / "dangling");
+    EXPECT_EQ(dangling.kind, PathKind::Missing);
+    EXPECT_TRUE(dangling.is_link);
+    EXPECT_FALSE(dangling.error.empty()) << "a link to nothing says why";
+    fs::create_symlink(dir / "file", dir / "link", ec);
+    EXPECT_EQ(examine_path(dir / "link").kind, PathKind::Regular);
+    EXPECT_TRUE(examine_path(dir / "link").is_link);
+  }
+  EXPECT_FALSE(is_standard_output_path(dir / "file"));
+  fs::remove_all(dir);
+}
+
+TEST(Files, WritableFileCreatesOnlyNewFilesAndReplacesInOneStep) {
+  const fs::path dir = fresh_dir("writable");
+  std::string error;
+  bool exists = false;
+  WritableFile a = WritableFile::create_new(dir / "temp", &exists, &error);
+  ASSERT_TRUE(a.valid()) << error;
+  EXPECT_FALSE(exists);
+  WritableFile again = WritableFile::create_new(dir / "temp", &exists, &error);
+  EXPECT_FALSE(again.valid()) << "never an existing file";
+  EXPECT_TRUE(exists);
+  EXPECT_FALSE(error.empty());
+  ASSERT_TRUE(a.write_all("hello, world", &error)) << error;
+  ASSERT_TRUE(a.seek(7, &error)) << error;
+  ASSERT_TRUE(a.write_all("WORLD", &error)) << error;
+  ASSERT_TRUE(a.set_mode(0640, &error)) << error;
+  ASSERT_TRUE(a.flush_to_disk(&error)) << error;
+  ASSERT_TRUE(a.close(&error)) << error;
+  EXPECT_FALSE(a.valid());
+  std::ofstream(dir / "target") << "old contents";
+  ASSERT_TRUE(replace_file(dir / "temp", dir / "target", &error)) << error;
+  EXPECT_EQ(read_all(dir / "target"), "hello, WORLD");
+  EXPECT_FALSE(fs::exists(dir / "temp"));
+  EXPECT_FALSE(replace_file(dir / "temp", dir / "target", &error)) << "nothing to move";
+  EXPECT_EQ(read_all(dir / "target"), "hello, WORLD") << "the target stays";
+  if (!kWindows) {
+    EXPECT_EQ(examine_path(dir / "target").mode, 0640u);
+  }
+  WritableFile missing = WritableFile::create_new(dir / "no" / "folder", &exists, &error);
+  EXPECT_FALSE(missing.valid());
+  EXPECT_FALSE(exists);
+  remove_file_now((dir / "target").string().c_str());
+  EXPECT_FALSE(fs::exists(dir / "target"));
+  fs::remove_all(dir);
 }
 
 // Ctrl-C while a catcher lives sets the flag, and the process goes on.

@@ -2,24 +2,17 @@
 
 #include "platform/interrupt.hpp"
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <atomic>
-#include <cerrno>
 #include <chrono>
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
-#include <fstream>
 
 namespace fr {
 namespace {
 
 // Temporary files being written now, for the signal handler: fixed slots, since the handler may
-// only touch memory that is always valid and call async-signal-safe functions (unlink).
+// only touch memory that is always valid and call async-signal-safe functions (remove_file_now).
 constexpr int kTempSlots = 16;
 constexpr size_t kTempPathMax = 4096;
 char g_temp_paths[kTempSlots][kTempPathMax];
@@ -53,10 +46,7 @@ std::atomic<int> g_note_current{-1};
 // no temporary file left.
 void say_note_and_remove_temps() {
   const int note = g_note_current.load();
-  if (note >= 0) {
-    const ssize_t written = write(STDERR_FILENO, g_notes[note], strlen(g_notes[note]));
-    (void)written;
-  }
+  if (note >= 0) write_stderr_now(g_notes[note]);
   remove_temp_files();
 }
 
@@ -67,57 +57,33 @@ uint32_t random_bits() {
   return static_cast<uint32_t>(now) * 2654435761u + counter.fetch_add(0x9e3779b9u);
 }
 
-// 0666 less the process's umask, read without changing it (umask(2) would, for a moment, for
-// every thread).
-mode_t new_file_mode() {
-  std::ifstream status("/proc/self/status");
-  std::string line;
-  while (std::getline(status, line))
-    if (line.rfind("Umask:", 0) == 0)
-      return 0666 & ~static_cast<mode_t>(std::strtoul(line.c_str() + 6, nullptr, 8));
-  return 0644;
-}
-
-const char* kind_name(mode_t mode) {
-  if (S_ISDIR(mode)) return "is a folder, not a file";
-  if (S_ISBLK(mode)) return "is a block device (a disk), which fractalis never writes to";
-  if (S_ISSOCK(mode)) return "is a socket";
-  return nullptr;
-}
-
-bool write_all(int fd, std::string_view bytes) {
-  size_t done = 0;
-  while (done < bytes.size()) {
-    const ssize_t n = write(fd, bytes.data() + done, bytes.size() - done);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      return false;
-    }
-    done += static_cast<size_t>(n);
+const char* kind_name(PathKind kind) {
+  switch (kind) {
+    case PathKind::Folder:
+      return "is a folder, not a file";
+    case PathKind::BlockDevice:
+      return "is a block device (a disk), which fractalis never writes to";
+    case PathKind::Socket:
+      return "is a socket";
+    default:
+      return nullptr;
   }
-  return true;
 }
 
 }  // namespace
 
 std::string output_problem(const std::filesystem::path& path) {
-  struct stat link {};
-  if (lstat(path.c_str(), &link) != 0) return "";  // a new file
-  struct stat target {};
-  if (stat(path.c_str(), &target) != 0)
-    return S_ISLNK(link.st_mode)
-               ? "is a symlink to nothing (" + std::string(std::strerror(errno)) + ")"
-               : std::string(std::strerror(errno));
-  if (const char* problem = kind_name(target.st_mode))
-    return S_ISLNK(link.st_mode) ? std::string("is a symlink to what ") + problem : problem;
+  const PathInfo info = examine_path(path);
+  if (info.kind == PathKind::Missing && info.error.empty()) return "";  // a new file
+  if (info.kind == PathKind::Missing)
+    return info.is_link ? "is a symlink to nothing (" + info.error + ")" : info.error;
+  if (const char* problem = kind_name(info.kind))
+    return info.is_link ? std::string("is a symlink to what ") + problem : problem;
   return "";
 }
 
 bool is_standard_output(const std::filesystem::path& path) {
-  struct stat file {
-  }, out{};
-  return stat(path.c_str(), &file) == 0 && fstat(STDOUT_FILENO, &out) == 0 &&
-         file.st_dev == out.st_dev && file.st_ino == out.st_ino;
+  return is_standard_output_path(path);
 }
 
 std::unique_ptr<OutputFile> OutputFile::open(const std::filesystem::path& path,
@@ -128,20 +94,20 @@ std::unique_ptr<OutputFile> OutputFile::open(const std::filesystem::path& path,
   }
   std::unique_ptr<OutputFile> out(new OutputFile());
   out->path_ = out->real_ = path;
-  struct stat st {};
-  if (stat(path.c_str(), &st) == 0) {
-    if (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode)) {
+  const PathInfo info = examine_path(path);
+  if (info.kind != PathKind::Missing) {
+    if (info.kind == PathKind::CharacterDevice || info.kind == PathKind::Pipe) {
       // Written through: no temporary file, nothing replaced.
-      out->fd_ = ::open(path.c_str(), O_WRONLY | O_CLOEXEC | O_NOCTTY);
-      if (out->fd_ < 0) {
-        *error = "cannot write " + path.string() + ": " + std::strerror(errno);
+      std::string why;
+      out->file_ = WritableFile::open_existing(path, &why);
+      if (!out->file_.valid()) {
+        *error = "cannot write " + path.string() + ": " + why;
         return nullptr;
       }
       return out;
     }
-    out->mode_ = st.st_mode & 07777;
-    struct stat link {};
-    if (lstat(path.c_str(), &link) == 0 && S_ISLNK(link.st_mode)) {
+    out->mode_ = info.mode;
+    if (info.is_link) {
       std::error_code ec;
       out->real_ = std::filesystem::canonical(path, ec);  // the link's target is replaced
       if (ec) {
@@ -156,28 +122,29 @@ std::unique_ptr<OutputFile> OutputFile::open(const std::filesystem::path& path,
   // The temporary file's name is registered for the signal handler before the file exists: a
   // signal may be delivered to any thread, so blocking it in this one would not close the gap
   // between creating the file and registering it. (Removing a name not yet created is harmless;
-  // the pid in the name keeps it from being another process's file.)
-  int create_errno = 0;
-  for (int attempt = 0; attempt < 100 && out->fd_ < 0; ++attempt) {
-    char suffix[40];
-    std::snprintf(suffix, sizeof suffix, ".%ld.%08x", static_cast<long>(getpid()),
+  // the process id in the name keeps it from being another process's file.)
+  std::string create_error;
+  for (int attempt = 0; attempt < 100 && !out->file_.valid(); ++attempt) {
+    char suffix[48];
+    std::snprintf(suffix, sizeof suffix, ".%llu.%08x",
+                  static_cast<unsigned long long>(current_process_id()),
                   static_cast<unsigned>(random_bits()));
     std::string hidden = out->real_.filename().string();  // appended: GCC 12's -Wrestrict
     hidden.insert(hidden.begin(), '.');                   // misfires on "." + string
     hidden += suffix;
     out->temp_ = (dir / hidden).string();
     out->slot_ = register_temp(out->temp_);
-    out->fd_ = ::open(out->temp_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
-    create_errno = errno;
-    if (out->fd_ < 0) {
+    bool exists = false;
+    out->file_ = WritableFile::create_new(out->temp_, &exists, &create_error);
+    if (!out->file_.valid()) {
       unregister_temp(out->slot_);
       out->slot_ = -1;
-      if (create_errno != EEXIST) break;
+      if (!exists) break;
     }
   }
-  if (out->fd_ < 0) {
+  if (!out->file_.valid()) {
     *error = "cannot write " + path.string() + ": cannot create a temporary file in " +
-             dir.string() + ": " + std::strerror(create_errno);
+             dir.string() + ": " + create_error;
     out->temp_.clear();
     return nullptr;
   }
@@ -185,51 +152,48 @@ std::unique_ptr<OutputFile> OutputFile::open(const std::filesystem::path& path,
 }
 
 bool OutputFile::write(std::string_view bytes, std::string* error) {
-  if (write_all(fd_, bytes)) {
+  std::string why;
+  if (file_.write_all(bytes, &why)) {
     position_ += bytes.size();
     return true;
   }
-  *error = "cannot write " + path_.string() + ": write failed: " + std::strerror(errno);
+  *error = "cannot write " + path_.string() + ": write failed: " + why;
   return false;
 }
 
 bool OutputFile::seek(uint64_t offset, std::string* error) {
-  if (seekable() && lseek(fd_, static_cast<off_t>(offset), SEEK_SET) >= 0) {
+  std::string why = "this format must seek, and a pipe or device cannot";
+  if (seekable() && file_.seek(offset, &why)) {
     position_ = offset;
     return true;
   }
-  *error = "cannot write " + path_.string() + ": " +
-           (seekable() ? std::string("seek failed: ") + std::strerror(errno)
-                       : std::string("this format must seek, and a pipe or device cannot"));
+  *error = "cannot write " + path_.string() + ": " + (seekable() ? "seek failed: " + why : why);
   return false;
 }
 
 bool OutputFile::commit(std::string* error) {
+  std::string why;
   auto fail = [&](const char* what) {
-    *error = "cannot write " + path_.string() + ": " + what + ": " + std::strerror(errno);
+    *error = "cannot write " + path_.string() + ": " + what + ": " + why;
     return false;
   };
   if (temp_.empty()) {  // written through
-    const int fd = fd_;
-    fd_ = -1;
     done_ = true;
-    return close(fd) == 0 || fail("close failed");
+    return file_.close(&why) || fail("close failed");
   }
-  if (fchmod(fd_, static_cast<mode_t>(mode_)) != 0) return fail("chmod failed");
-  if (fsync(fd_) != 0) return fail("fsync failed");
-  const int fd = fd_;
-  fd_ = -1;
-  if (close(fd) != 0) return fail("close failed");
-  if (rename(temp_.c_str(), real_.c_str()) != 0) return fail("rename failed");
+  if (!file_.set_mode(mode_, &why)) return fail("chmod failed");
+  if (!file_.flush_to_disk(&why)) return fail("fsync failed");
+  if (!file_.close(&why)) return fail("close failed");
+  if (!replace_file(temp_, real_, &why)) return fail("rename failed");
   unregister_temp(slot_);
   done_ = true;
   return true;
 }
 
 OutputFile::~OutputFile() {
-  if (fd_ >= 0) close(fd_);
+  file_ = WritableFile();  // closed before it is removed (Windows cannot remove an open file)
   if (!done_ && !temp_.empty()) {
-    unlink(temp_.c_str());
+    remove_file_now(temp_.c_str());
     unregister_temp(slot_);
   }
 }
@@ -242,7 +206,7 @@ bool write_file_atomic(const std::filesystem::path& path, std::string_view bytes
 
 void remove_temp_files() {
   for (int i = 0; i < kTempSlots; ++i)
-    if (g_temp_state[i].load() == 2) unlink(g_temp_paths[i]);
+    if (g_temp_state[i].load() == 2) remove_file_now(g_temp_paths[i]);
 }
 
 void set_signal_note(std::string_view note) {

@@ -14,6 +14,8 @@
 // process mid-write (install_temp_file_cleanup), so no hidden half-file is ever left behind.
 #pragma once
 
+#include "platform/files.hpp"
+
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -56,7 +58,7 @@ class OutputFile {
   std::filesystem::path path_;  // as given, for messages
   std::filesystem::path real_;  // what the rename replaces (a symlink's target)
   std::string temp_;            // empty when writing through
-  int fd_ = -1;
+  WritableFile file_;
   int slot_ = -1;
   unsigned mode_ = 0;
   uint64_t position_ = 0;

@@ -1,0 +1,143 @@
+#include "platform/files.hpp"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+
+namespace fr {
+namespace {
+
+PathKind kind_of(mode_t mode) {
+  if (S_ISREG(mode)) return PathKind::Regular;
+  if (S_ISDIR(mode)) return PathKind::Folder;
+  if (S_ISCHR(mode)) return PathKind::CharacterDevice;
+  if (S_ISFIFO(mode)) return PathKind::Pipe;
+  if (S_ISBLK(mode)) return PathKind::BlockDevice;
+  if (S_ISSOCK(mode)) return PathKind::Socket;
+  return PathKind::Other;
+}
+
+bool failed(std::string* error) {
+  *error = std::strerror(errno);
+  return false;
+}
+
+}  // namespace
+
+PathInfo examine_path(const std::filesystem::path& path) {
+  PathInfo info;
+  struct stat link {};
+  if (lstat(path.c_str(), &link) != 0) return info;  // nothing there
+  info.is_link = S_ISLNK(link.st_mode);
+  struct stat target {};
+  if (stat(path.c_str(), &target) != 0) {
+    info.error = std::strerror(errno);  // a link to nothing, or a race with its removal
+    return info;
+  }
+  info.kind = kind_of(target.st_mode);
+  info.mode = target.st_mode & 07777;
+  return info;
+}
+
+bool is_standard_output_path(const std::filesystem::path& path) {
+  struct stat file {
+  }, out{};
+  return stat(path.c_str(), &file) == 0 && fstat(STDOUT_FILENO, &out) == 0 &&
+         file.st_dev == out.st_dev && file.st_ino == out.st_ino;
+}
+
+unsigned new_file_mode() {
+  // umask(2) would change it, for a moment, for every thread: /proc says it instead.
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line))
+    if (line.rfind("Umask:", 0) == 0)
+      return 0666 & ~static_cast<unsigned>(std::strtoul(line.c_str() + 6, nullptr, 8));
+  return 0644;
+}
+
+uint64_t current_process_id() {
+  return static_cast<uint64_t>(getpid());
+}
+
+WritableFile::~WritableFile() {
+  if (handle_ != kNone) ::close(static_cast<int>(handle_));
+}
+
+WritableFile::WritableFile(WritableFile&& other) noexcept : handle_(other.handle_) {
+  other.handle_ = kNone;
+}
+
+WritableFile& WritableFile::operator=(WritableFile&& other) noexcept {
+  if (this != &other) {
+    if (handle_ != kNone) ::close(static_cast<int>(handle_));
+    handle_ = other.handle_;
+    other.handle_ = kNone;
+  }
+  return *this;
+}
+
+WritableFile WritableFile::create_new(const std::filesystem::path& path, bool* exists,
+                                      std::string* error) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+  *exists = fd < 0 && errno == EEXIST;
+  if (fd < 0) failed(error);
+  return WritableFile(fd);
+}
+
+WritableFile WritableFile::open_existing(const std::filesystem::path& path, std::string* error) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC | O_NOCTTY);
+  if (fd < 0) failed(error);
+  return WritableFile(fd);
+}
+
+bool WritableFile::write_all(std::string_view bytes, std::string* error) {
+  size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = ::write(static_cast<int>(handle_), bytes.data() + done, bytes.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) return failed(error);
+    done += static_cast<size_t>(n);
+  }
+  return true;
+}
+
+bool WritableFile::seek(uint64_t offset, std::string* error) {
+  return lseek(static_cast<int>(handle_), static_cast<off_t>(offset), SEEK_SET) >= 0 ||
+         failed(error);
+}
+
+bool WritableFile::set_mode(unsigned mode, std::string* error) {
+  return fchmod(static_cast<int>(handle_), static_cast<mode_t>(mode)) == 0 || failed(error);
+}
+
+bool WritableFile::flush_to_disk(std::string* error) {
+  return fsync(static_cast<int>(handle_)) == 0 || failed(error);
+}
+
+bool WritableFile::close(std::string* error) {
+  const int fd = static_cast<int>(handle_);
+  handle_ = kNone;
+  return ::close(fd) == 0 || failed(error);
+}
+
+bool replace_file(const std::filesystem::path& from, const std::filesystem::path& to,
+                  std::string* error) {
+  return rename(from.c_str(), to.c_str()) == 0 || failed(error);
+}
+
+void remove_file_now(const char* path) {
+  unlink(path);
+}
+
+void write_stderr_now(const char* text) {
+  const ssize_t written = write(STDERR_FILENO, text, strlen(text));
+  (void)written;
+}
+
+}  // namespace fr
