@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace fr {
 CameraMotion update_camera(fr_camera& camera, CameraMode mode, const InputState& input, bool look,
@@ -22,7 +23,7 @@ CameraMotion update_camera(fr_camera& camera, CameraMode mode, const InputState&
 
   // Turning: yaw about up, pitch about right, kept away from the poles so up stays valid.
   if (look && (input.look_dx != 0 || input.look_dy != 0)) {
-    const double rad_per_px = c.mouse_sensitivity_deg_per_px * M_PI / 180.0;
+    const double rad_per_px = c.mouse_sensitivity_deg_per_px * std::numbers::pi / 180.0;
     const double yaw = -input.look_dx * rad_per_px;
     const double pitch = (c.invert_y ? input.look_dy : -input.look_dy) * rad_per_px;
     glm::dvec3 turned = glm::angleAxis(yaw, up) * forward;

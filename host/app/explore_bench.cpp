@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <numbers>
 
 namespace fr {
 
@@ -18,7 +19,7 @@ ExploreBenchResult run_explore_bench(Explorer& explorer, int w, int h, int movin
   double last = now_s();
   for (int i = 0; i < moving_frames; ++i) {
     // Weaving left and right while flying forward keeps the scene in view.
-    input.look_dx = 6 * std::sin(2 * M_PI * i / 60.0);
+    input.look_dx = 6 * std::sin(2 * std::numbers::pi * i / 60.0);
     // A fixed 1/30 s of motion per frame: the same path on every machine and every run.
     const double start = now_s();
     explorer.update(input, 1.0 / 30.0, i / 30.0);

@@ -4,6 +4,7 @@
 #include "cli/progress.hpp"
 #include "io/atomic_file.hpp"
 #include "io/cache_dirs.hpp"
+#include "platform/files.hpp"
 #include "platform/interrupt.hpp"
 #include "render/camera.hpp"
 #include "render/renderer.hpp"
@@ -46,8 +47,7 @@ void check_out_dir(const std::filesystem::path& dir) {
     throw UsageError("--out: '" + dir.string() + "' is not a folder");
   std::filesystem::create_directories(dir, ec);
   if (ec) throw UsageError("--out: cannot create '" + dir.string() + "': " + ec.message());
-  if (access(dir.c_str(), W_OK) != 0)
-    throw UsageError("--out: folder '" + dir.string() + "' is not writable");
+  if (!can_write_in(dir)) throw UsageError("--out: folder '" + dir.string() + "' is not writable");
 }
 
 std::string config_name(const SweepConfig& c) {

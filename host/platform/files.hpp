@@ -33,6 +33,9 @@ PathInfo examine_path(const std::filesystem::path& path);
 // Whether `path` is this process's standard output (/dev/stdout, the file or pipe it goes to).
 bool is_standard_output_path(const std::filesystem::path& path);
 
+// Whether this process may create files in `folder`.
+bool can_write_in(const std::filesystem::path& folder);
+
 // Permission bits a new file gets: 0666 less the umask (read without changing it); 0 on Windows.
 unsigned new_file_mode();
 

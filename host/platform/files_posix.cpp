@@ -51,6 +51,10 @@ bool is_standard_output_path(const std::filesystem::path& path) {
          file.st_dev == out.st_dev && file.st_ino == out.st_ino;
 }
 
+bool can_write_in(const std::filesystem::path& folder) {
+  return access(folder.c_str(), W_OK) == 0;
+}
+
 unsigned new_file_mode() {
   // umask(2) would change it, for a moment, for every thread: /proc says it instead.
   std::ifstream status("/proc/self/status");

@@ -93,6 +93,23 @@ bool is_standard_output_path(const std::filesystem::path& path) {
   return same;
 }
 
+bool can_write_in(const std::filesystem::path& folder) {
+  // Access control lists decide, with more rules than a bit to read: try it.
+  for (int attempt = 0; attempt < 8; ++attempt) {
+    const std::filesystem::path probe =
+        folder / (".fractalis-write-probe-" + std::to_string(GetCurrentProcessId()) + "-" +
+                  std::to_string(GetTickCount64() + attempt));
+    const HANDLE h = CreateFileW(probe.c_str(), GENERIC_WRITE, 0, nullptr, CREATE_NEW,
+                                 FILE_ATTRIBUTE_TEMPORARY | FILE_FLAG_DELETE_ON_CLOSE, nullptr);
+    if (h != INVALID_HANDLE_VALUE) {
+      CloseHandle(h);
+      return true;
+    }
+    if (GetLastError() != ERROR_FILE_EXISTS) return false;
+  }
+  return false;
+}
+
 unsigned new_file_mode() {
   return 0;  // no permission bits: a new file inherits its folder's access control list
 }

@@ -15,6 +15,9 @@ enum class UserFolder {
 // environment names none (no HOME, no %LOCALAPPDATA%).
 std::filesystem::path user_folder(UserFolder kind);
 
+// Sets an environment variable of this process (and of the processes it starts later).
+void set_environment_variable(const char* name, const std::filesystem::path& value);
+
 // The running executable's own path (to find its helper executables and installed files);
 // empty when the system does not say.
 std::filesystem::path executable_path();

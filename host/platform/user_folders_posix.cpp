@@ -17,6 +17,10 @@ std::filesystem::path user_folder(UserFolder kind) {
   return {};
 }
 
+void set_environment_variable(const char* name, const std::filesystem::path& value) {
+  setenv(name, value.c_str(), 1);
+}
+
 std::filesystem::path executable_path() {
   std::error_code ec;
   const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);

@@ -27,6 +27,12 @@ std::filesystem::path user_folder(UserFolder kind) {
   return kind == UserFolder::Cache ? base / "fractalis" / "cache" : base / "fractalis";
 }
 
+void set_environment_variable(const char* name, const std::filesystem::path& value) {
+  // The C runtime's copy (getenv) and the process's (child processes, GetEnvironmentVariableW).
+  _wputenv_s(std::wstring(name, name + std::char_traits<char>::length(name)).c_str(),
+             value.c_str());
+}
+
 std::filesystem::path executable_path() {
   std::wstring buffer(MAX_PATH, L'\0');
   for (;;) {

@@ -5,6 +5,7 @@
 #include <glm/geometric.hpp>
 
 #include <cmath>
+#include <numbers>
 
 namespace fr {
 CameraRays make_camera_rays(const fr_camera& c, int k, int m) {
@@ -12,7 +13,7 @@ CameraRays make_camera_rays(const fr_camera& c, int k, int m) {
   const glm::dvec3 b = glm::cross(effective_up(c), t);
   const glm::dvec3 v = glm::cross(t, b);
   const glm::dvec3 t_n = glm::normalize(t), b_n = glm::normalize(b), v_n = glm::normalize(v);
-  const double g_x = std::tan(c.fov_deg * M_PI / 360.0);
+  const double g_x = std::tan(c.fov_deg * std::numbers::pi / 360.0);
   const double g_y = g_x * m / k;
   CameraRays r;
   r.eye = to_dvec3(c.eye);

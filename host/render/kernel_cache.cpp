@@ -1,8 +1,7 @@
 #include "render/kernel_cache.hpp"
 
 #include "io/cache_dirs.hpp"
-
-#include <sys/stat.h>
+#include "platform/user_folders.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -22,9 +21,14 @@ struct Program {
   uint64_t bytes = 0;
 };
 
+// Seconds since the epoch (time()'s clock) of p's last change; 0 when it cannot be read.
 time_t mtime_s(const fs::path& p) {
-  struct stat st {};
-  return stat(p.c_str(), &st) == 0 ? st.st_mtime : 0;
+  std::error_code ec;
+  const fs::file_time_type t = fs::last_write_time(p, ec);
+  if (ec) return 0;
+  const auto age =
+      std::chrono::duration_cast<std::chrono::seconds>(fs::file_time_type::clock::now() - t);
+  return std::time(nullptr) - static_cast<time_t>(age.count());
 }
 
 }  // namespace
@@ -46,7 +50,7 @@ void use_kernel_cache_dir() {
   if (dir.empty()) return;
   std::error_code ec;
   fs::create_directories(dir, ec);
-  if (!ec) setenv("POCL_CACHE_DIR", dir.c_str(), 1);
+  if (!ec) set_environment_variable("POCL_CACHE_DIR", dir);
 }
 
 uint64_t folder_bytes(const fs::path& dir) {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <numeric>
 #include <stdexcept>
 
@@ -55,7 +56,7 @@ ErrorMetrics compare_to_reference(const FrameImage& image, const ReferenceImage&
     oversteps += error > kOverstepFootprints;
     double dot = 0;
     for (int c = 0; c < 3; ++c) dot += double(image.normal[3 * i + c]) * ref.normal[3 * i + c];
-    angle_deg.push_back(std::acos(std::clamp(dot, -1.0, 1.0)) * 180 / M_PI);
+    angle_deg.push_back(std::acos(std::clamp(dot, -1.0, 1.0)) * 180 / std::numbers::pi);
   }
   for (uint8_t s : image.ray_status) m.out_of_steps_fraction += s == uint8_t(RayStatus::OutOfSteps);
   m.out_of_steps_fraction /= double(std::max<size_t>(n, 1));
