@@ -143,6 +143,7 @@ const FrameView* Explorer::render(int window_width_px, int window_height_px) {
   SceneSlot& slot = current();
   if (took_the_worker_down(slot)) return nullptr;
   const auto start = std::chrono::steady_clock::now();
+  last_ = FrameView{};  // the last frame's memory may go with a failing worker
   try {
     // Steps and ray status on every sample, so that one kernel serves the whole refinement.
     last_ = worker_.render_frame(
