@@ -4,6 +4,7 @@
 #include "platform/files.hpp"
 #include "platform/folder_watch.hpp"
 #include "platform/interrupt.hpp"
+#include "platform/shared_memory.hpp"
 #include "platform/system_facts.hpp"
 #include "platform/user_folders.hpp"
 
@@ -187,6 +188,32 @@ TEST(Files, WritableFileCreatesOnlyNewFilesAndReplacesInOneStep) {
   remove_file_now((dir / "target").string().c_str());
   EXPECT_FALSE(fs::exists(dir / "target"));
   fs::remove_all(dir);
+}
+
+// Another mapping of the same memory (the render worker's, here in this process) sees what the
+// creator wrote, as the memory grows; and asking it for more than there is fails, not faults.
+TEST(SharedMemory, BothSidesSeeTheSameBytesAsItGrows) {
+  SharedMemory creator;
+  creator.grow(1 << 20);
+  ASSERT_GE(creator.mapped_bytes(), size_t{1} << 20);
+  for (size_t i = 0; i < (size_t{1} << 20); i += 4096)
+    creator.data()[i] = static_cast<uint8_t>(i >> 12);
+  const intptr_t copy = creator.duplicate_handle();
+  ASSERT_NE(copy, -1);
+  SharedMemory helper(copy);
+  std::string error;
+  ASSERT_TRUE(helper.map_at_least(1 << 20, &error)) << error;
+  for (size_t i = 0; i < (size_t{1} << 20); i += 4096)
+    ASSERT_EQ(helper.data()[i], static_cast<uint8_t>(i >> 12)) << "byte " << i;
+  helper.data()[5] = 42;
+  EXPECT_EQ(creator.data()[5], 42) << "and the other way";
+  EXPECT_FALSE(helper.map_at_least(size_t{64} << 20, &error)) << "more than there is";
+  EXPECT_FALSE(error.empty());
+  creator.grow(size_t{64} << 20);
+  creator.data()[(size_t{64} << 20) - 1] = 7;
+  ASSERT_TRUE(helper.map_at_least(size_t{64} << 20, &error)) << error;
+  EXPECT_EQ(helper.data()[(size_t{64} << 20) - 1], 7);
+  EXPECT_EQ(helper.data()[4096], 1) << "what was there before growing stays";
 }
 
 // Ctrl-C while a catcher lives sets the flag, and the process goes on.

@@ -4,7 +4,7 @@
 // pixels do not: the worker reads them back from the device straight into a shared memory object
 // that fractalis created (frame_passes_at below gives both ends the same layout). fractalis
 // trusts nothing the worker sends: every reply is read with WireReader's caps, and the shared
-// memory cannot shrink under fractalis (shared_frame.hpp).
+// memory cannot shrink under fractalis (platform/shared_memory.hpp).
 #pragma once
 
 #include "plugin/scene_wire.hpp"

@@ -2,10 +2,10 @@
 
 #include "io/child_process.hpp"
 #include "io/printable.hpp"
+#include "platform/shared_memory.hpp"
 #include "plugin/wire_io.hpp"
 #include "render/de_probe.hpp"
 #include "worker/render_wire.hpp"
-#include "worker/shared_frame.hpp"
 
 #include <fcntl.h>
 #include <poll.h>
@@ -73,8 +73,8 @@ RenderWorkerLimits explorer_worker_limits(const PluginPolicy& policy) {
 struct RenderWorker::Process {
   pid_t pid = -1;
   int socket = -1;
-  int output = -1;  // its stdout (a DE's printf), ours to read; -1 once it closed
-  SharedFrame frame;
+  int output = -1;     // its stdout (a DE's printf), ours to read; -1 once it closed
+  SharedMemory frame;  // the frames read back (never shrinks under us)
   // What it holds, oldest first (at most kWorkerSceneCount): each scene's key and bytes, so that
   // a scene whose key another's hash already took replaces it rather than being mistaken for it.
   std::deque<std::pair<uint64_t, std::string>> scenes;
@@ -191,7 +191,7 @@ void RenderWorker::ensure_started() {
   std::string error;
   p->pid = start_child_process(
       {exe.string(), "--wire", std::to_string(kRenderWireVersion), "--device", device_.selector()},
-      {{sv[1], 3}, {p->frame.fd(), 4}}, 2, &error, out[1]);
+      {{sv[1], 3}, {static_cast<int>(p->frame.handle()), 4}}, 2, &error, out[1]);
   close(sv[1]);
   close(out[1]);
   if (p->pid < 0) throw std::runtime_error("cannot start the render worker: " + error);

@@ -9,10 +9,10 @@
 // RenderWorkerFailure naming the scene's file, the stage and the reason, and the next call starts
 // a fresh worker. With plugins.isolation = "none" the same calls run in this process (debugging).
 //
-// Frames come back through shared memory (shared_frame.hpp): the worker reads the device's
-// buffers into it, fractalis copies them into the FrameImage (or, for the explorer, reads them
-// where they are: render_frame). Output a DE prints (OpenCL printf)
-// goes through a pipe, is attributed to the scene and capped.
+// Frames come back through shared memory (platform/shared_memory.hpp): the worker reads the
+// device's buffers into it, fractalis copies them into the FrameImage (or, for the explorer, reads
+// them where they are: render_frame). Output a DE prints (OpenCL printf) goes through a pipe, is
+// attributed to the scene and capped.
 //
 // One RenderWorker is used from one thread, the one that created it (its process is started from
 // there: it is killed when that thread ends).

@@ -2,11 +2,11 @@
 // time. Errors the worker can catch (a kernel that does not compile, a device error, a request it
 // cannot read) are replies; what it cannot catch (a DE's crash, a hang) fractalis sees as the
 // process ending or not answering.
+#include "platform/shared_memory.hpp"
 #include "plugin/wire_io.hpp"
 #include "render/de_probe.hpp"
 #include "worker/render_wire.hpp"
 #include "worker/render_worker.hpp"
-#include "worker/shared_frame.hpp"
 
 #include <map>
 
@@ -184,7 +184,7 @@ class Worker {
   }
 
   int socket_;
-  SharedFrame frame_;
+  SharedMemory frame_;
   ClRuntime runtime_;
   Renderer renderer_;
   std::map<uint64_t, SceneInfo> scenes_;
