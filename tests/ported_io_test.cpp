@@ -1,0 +1,117 @@
+// The host's files that build on the platform layer alone and so already run on Windows: atomic
+// output files (io/atomic_file.hpp) and the plugin folder watcher (plugin/plugin_watcher.hpp),
+// checked the same way on Linux in CTest and, cross-built, under Wine (scripts/test-windows.sh).
+// (tests/output_safety_test.cpp checks the Linux-only cases: FIFOs, symlinks, modes, signals.)
+#include "io/atomic_file.hpp"
+#include "plugin/plugin_watcher.hpp"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace fr {
+namespace {
+
+namespace fs = std::filesystem;
+
+const bool kWindows = fs::path::preferred_separator == '\\';
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("fractalis-ported-test-" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::string read_all(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+size_t entries(const fs::path& dir) {
+  return static_cast<size_t>(std::distance(fs::directory_iterator(dir), fs::directory_iterator()));
+}
+
+TEST(AtomicFile, AppearsWholeReplacesAndLeavesNothingBehind) {
+  const fs::path dir = fresh_dir("atomic");
+  std::string error;
+  ASSERT_TRUE(write_file_atomic(dir / "out.txt", "first", &error)) << error;
+  EXPECT_EQ(read_all(dir / "out.txt"), "first");
+  ASSERT_TRUE(write_file_atomic(dir / "out.txt", "second, longer", &error)) << error;
+  EXPECT_EQ(read_all(dir / "out.txt"), "second, longer");
+  EXPECT_EQ(entries(dir), 1u) << "no temporary file left";
+  {
+    auto out = OutputFile::open(dir / "abandoned.txt", &error);
+    ASSERT_NE(out, nullptr) << error;
+    ASSERT_TRUE(out->write("half", &error)) << error;
+    EXPECT_TRUE(out->seekable());
+  }  // destroyed without commit: nothing appears, nothing stays
+  EXPECT_FALSE(fs::exists(dir / "abandoned.txt"));
+  EXPECT_EQ(entries(dir), 1u);
+  EXPECT_FALSE(write_file_atomic(dir / "no" / "folder.txt", "x", &error));
+  EXPECT_NE(error.find("folder.txt"), std::string::npos) << error;
+  EXPECT_EQ(entries(dir), 1u);
+  fs::remove_all(dir);
+}
+
+TEST(AtomicFile, AFolderIsRefusedAndTheNullDeviceWrittenThrough) {
+  const fs::path dir = fresh_dir("refused");
+  EXPECT_EQ(output_problem(dir), "is a folder, not a file");
+  std::string error;
+  EXPECT_FALSE(write_file_atomic(dir, "x", &error));
+  EXPECT_NE(error.find("folder"), std::string::npos) << error;
+  EXPECT_TRUE(fs::is_directory(dir)) << "the folder is untouched";
+  const fs::path null_device = kWindows ? "NUL" : "/dev/null";
+  EXPECT_EQ(output_problem(null_device), "");
+  auto out = OutputFile::open(null_device, &error);
+  ASSERT_NE(out, nullptr) << error;
+  EXPECT_FALSE(out->seekable()) << "written through, nothing replaced";
+  EXPECT_TRUE(out->write("gone", &error)) << error;
+  EXPECT_TRUE(out->commit(&error)) << error;
+  fs::remove_all(dir);
+}
+
+// Polls with the watcher's clock `*now_s` advancing 0.05 s per look (and 20 ms of real time, for
+// the system's notification to arrive) until something is reported, for at most 10 s of its
+// clock: past 5 s the watcher scans anyway (its safety net).
+std::vector<PluginChange> poll_until_reported(PluginWatcher& watcher, double* now_s) {
+  for (int i = 0; i < 200; ++i) {
+    *now_s += 0.05;
+    std::vector<PluginChange> changes = watcher.poll(*now_s);
+    if (!changes.empty()) return changes;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return {};
+}
+
+// A new plugin file is reported once it has stayed the same for the debounce time, a removed one
+// as removed; files there at the start are known, not new.
+TEST(PluginWatcher, ReportsFilesOnceTheyAreStable) {
+  const fs::path dir = fresh_dir("watcher");
+  std::ofstream(dir / "old.so") << "there before";
+  PluginWatcher watcher(dir, 0.3, 0.5);
+  double now_s = 0;
+  EXPECT_TRUE(watcher.poll(now_s).empty()) << "known at the start";
+  std::ofstream(dir / "new.so") << "scene";
+  const double written_s = now_s;
+  auto changes = poll_until_reported(watcher, &now_s);
+  ASSERT_EQ(changes.size(), 1u);
+  EXPECT_EQ(changes[0].kind, PluginChange::Kind::Added);
+  EXPECT_EQ(changes[0].file.filename(), "new.so");
+  EXPECT_GE(now_s - written_s, 0.3) << "not before it was stable for the debounce time";
+  fs::remove(dir / "old.so");
+  changes = poll_until_reported(watcher, &now_s);
+  ASSERT_EQ(changes.size(), 1u);
+  EXPECT_EQ(changes[0].kind, PluginChange::Kind::Removed);
+  EXPECT_EQ(changes[0].file.filename(), "old.so");
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace fr
