@@ -1,5 +1,7 @@
 #include "platform/files.hpp"
 
+#include "platform/last_error_windows.hpp"
+
 #include <windows.h>
 
 #include <algorithm>
@@ -7,21 +9,6 @@
 
 namespace fr {
 namespace {
-
-// The system's words for GetLastError()'s code.
-std::string last_error_text() {
-  const DWORD code = GetLastError();
-  char* text = nullptr;
-  const DWORD n = FormatMessageA(
-      FORMAT_MESSAGE_ALLOCATE_BUFFER | FORMAT_MESSAGE_FROM_SYSTEM | FORMAT_MESSAGE_IGNORE_INSERTS,
-      nullptr, code, 0, reinterpret_cast<char*>(&text), 0, nullptr);
-  std::string message = n ? std::string(text, n) : "error " + std::to_string(code);
-  if (text) LocalFree(text);
-  while (!message.empty() && (message.back() == '\n' || message.back() == '\r' ||
-                              message.back() == ' ' || message.back() == '.'))
-    message.pop_back();
-  return message;
-}
 
 bool failed(std::string* error) {
   *error = last_error_text();

@@ -1,5 +1,7 @@
 #include "platform/shared_memory.hpp"
 
+#include "platform/last_error_windows.hpp"
+
 #include <windows.h>
 
 #include <stdexcept>
@@ -14,20 +16,6 @@ constexpr uint64_t kReservedBytes = uint64_t{16} << 30;
 
 HANDLE as_handle(intptr_t h) {
   return reinterpret_cast<HANDLE>(h);
-}
-
-std::string last_error_text() {
-  const DWORD code = GetLastError();
-  char* text = nullptr;
-  const DWORD n = FormatMessageA(
-      FORMAT_MESSAGE_ALLOCATE_BUFFER | FORMAT_MESSAGE_FROM_SYSTEM | FORMAT_MESSAGE_IGNORE_INSERTS,
-      nullptr, code, 0, reinterpret_cast<char*>(&text), 0, nullptr);
-  std::string message = n ? std::string(text, n) : "error " + std::to_string(code);
-  if (text) LocalFree(text);
-  while (!message.empty() && (message.back() == '\n' || message.back() == '\r' ||
-                              message.back() == ' ' || message.back() == '.'))
-    message.pop_back();
-  return message;
 }
 
 uint8_t* map_whole(intptr_t handle) {
