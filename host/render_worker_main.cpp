@@ -1,11 +1,10 @@
 // fractalis-render-worker: compiles and runs scene kernels on behalf of fractalis, which starts
-// it with a socket on descriptor 3 and the shared frame on descriptor 4 (see
-// worker/render_worker.hpp). Not meant to be run by hand.
+// it with a channel to it and the shared frame, each named by its handle on the command line
+// (see worker/render_worker.hpp). Not meant to be run by hand.
+#include "platform/child_process.hpp"
 #include "render/kernel_cache.hpp"
 #include "worker/render_wire.hpp"
 #include "worker/render_worker.hpp"
-
-#include <sys/resource.h>
 
 #include <cstdio>
 #include <cstring>
@@ -13,9 +12,13 @@
 
 int main(int argc, char** argv) {
   std::string wire, device;
+  fr::NativeHandle channel_handle = fr::kNoHandle, frame_handle = fr::kNoHandle;
   for (int i = 1; i + 1 < argc; i += 2) {
     if (std::strcmp(argv[i], "--wire") == 0) wire = argv[i + 1];
     if (std::strcmp(argv[i], "--device") == 0) device = argv[i + 1];
+    if (std::strcmp(argv[i], "--channel") == 0)
+      channel_handle = fr::handle_from_argument(argv[i + 1]);
+    if (std::strcmp(argv[i], "--frame") == 0) frame_handle = fr::handle_from_argument(argv[i + 1]);
   }
   if (wire.empty()) {
     std::fprintf(stderr,
@@ -23,13 +26,14 @@ int main(int argc, char** argv) {
     return 2;
   }
   if (wire != std::to_string(fr::kRenderWireVersion)) return 126;
+  if (channel_handle == fr::kNoHandle || frame_handle == fr::kNoHandle) return 2;
   // The only files a worker writes are the compiler's (the kernel cache: a few MB a program). A
   // preprocessor bomb writes its expansion there as it goes (1.8 GB in 40 s here): past this
   // size the worker ends with SIGXFSZ instead of filling the disk.
-  const rlimit file_size{fr::kWorkerFileSizeLimitBytes, fr::kWorkerFileSizeLimitBytes};
-  setrlimit(RLIMIT_FSIZE, &file_size);
+  fr::limit_written_file_size(fr::kWorkerFileSizeLimitBytes);
   fr::use_kernel_cache_dir();  // as fractalis's (a no-op when fractalis set it already)
-  return fr::run_render_worker(3, 4, device);
+  fr::Channel channel(channel_handle);
+  return fr::run_render_worker(channel, frame_handle, device);
 }
 
 #if defined(__SANITIZE_ADDRESS__)

@@ -1,6 +1,6 @@
 // fractalis-scene-host: runs one scene plugin's code on behalf of the fractalis host, which
-// starts it with the plugin open on descriptor 4 and a socket on descriptor 3 (see
-// plugin/scene_host_process.hpp). Not meant to be run by hand.
+// starts it with a channel to it and the plugin file open, each named by its handle on the
+// command line (see plugin/scene_host_process.hpp). Not meant to be run by hand.
 #include "plugin/scene_host_process.hpp"
 #include "plugin/scene_wire.hpp"
 
@@ -10,9 +10,14 @@
 
 int main(int argc, char** argv) {
   std::string wire, file;
+  fr::NativeHandle channel_handle = fr::kNoHandle, plugin_handle = fr::kNoHandle;
   for (int i = 1; i + 1 < argc; i += 2) {
     if (std::strcmp(argv[i], "--wire") == 0) wire = argv[i + 1];
     if (std::strcmp(argv[i], "--file") == 0) file = argv[i + 1];
+    if (std::strcmp(argv[i], "--channel") == 0)
+      channel_handle = fr::handle_from_argument(argv[i + 1]);
+    if (std::strcmp(argv[i], "--plugin") == 0)
+      plugin_handle = fr::handle_from_argument(argv[i + 1]);
   }
   if (wire.empty()) {
     std::fprintf(stderr,
@@ -20,7 +25,9 @@ int main(int argc, char** argv) {
     return 2;
   }
   if (wire != std::to_string(fr::kSceneWireVersion)) return 126;
-  return fr::run_scene_host(3, 4, file);
+  if (channel_handle == fr::kNoHandle || plugin_handle == fr::kNoHandle) return 2;
+  fr::Channel channel(channel_handle);
+  return fr::run_scene_host(channel, static_cast<int>(plugin_handle), file);
 }
 
 #if defined(__SANITIZE_ADDRESS__)

@@ -21,7 +21,8 @@ while IFS= read -r f; do
     -I"$headers" -I"$headers/stb" -DSPDLOG_HEADER_ONLY -DFMT_HEADER_ONLY -DTOML_HEADER_ONLY=1 \
     -DFRACTALIS_VERSION='"0"' -DFRACTALIS_BUILD_ROOT='"/"' -DFRACTALIS_PLUGIN_BUILD_DIR='"/"' \
     -DFRACTALIS_PLUGIN_INSTALL_DIR='"/"' -DFRACTALIS_PATHS_SOURCE_DIR='"/"' \
-    -DFRACTALIS_PATHS_INSTALL_DIR='"/"' "$f" 2>&1)"; then
+    -DFRACTALIS_PATHS_INSTALL_DIR='"/"' -DFRACTALIS_SCENE_HOST_BUILD_PATH='"/"' \
+    -DFRACTALIS_RENDER_WORKER_BUILD_PATH='"/"' -DFRACTALIS_EXECUTABLE_BUILD_PATH='"/"' "$f" 2>&1)"; then
     ok=$((ok + 1))
   else
     echo "not yet: $f: $(grep -m1 -oE 'error: .*' <<<"$out" | cut -c1-100)"

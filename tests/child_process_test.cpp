@@ -1,12 +1,13 @@
-// The one launcher of helper processes (io/child_process.hpp), checked by looking at the child
-// in /proc once it has exec'd: it has exactly stdin and stdout on /dev/null, the stderr it was
-// given, the descriptors it was given at their numbers, and none of ours (not even one opened
-// without close-on-exec), and an empty signal mask although ours blocks signals.
-#include "io/child_process.hpp"
+// The one launcher of helper processes (platform/child_process.hpp), its Linux side checked by
+// looking at the child in /proc once it has exec'd: it has exactly stdin and stdout on
+// /dev/null, the stderr it was given, the descriptors it was given at the numbers
+// handle_in_child names, and none of ours (not even one opened without close-on-exec), and an
+// empty signal mask although ours blocks signals. (What both systems share is in
+// platform_test.cpp.)
+#include "platform/child_process.hpp"
 
 #include <fcntl.h>
 #include <signal.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <gtest/gtest.h>
@@ -50,9 +51,16 @@ TEST(ChildProcess, GetsOnlyItsDescriptorsAndAnEmptySignalMask) {
   sigaddset(&blocked, SIGUSR1);
   ASSERT_EQ(pthread_sigmask(SIG_BLOCK, &blocked, &old), 0);
   std::string error;
-  const pid_t pid = start_child_process({sleep_program, "30"}, {{given[0], 3}}, err[1], &error);
+  ChildSpec spec;
+  spec.program = sleep_program;
+  spec.arguments = {"30"};
+  spec.handles = {given[0]};
+  spec.stderr_to = err[1];
+  auto child = ChildProcess::start(spec, &error);
   pthread_sigmask(SIG_SETMASK, &old, nullptr);
-  ASSERT_GT(pid, 0) << error;
+  ASSERT_TRUE(child) << error;
+  EXPECT_EQ(handle_in_child(0, given[0]), "3");
+  const pid_t pid = static_cast<pid_t>(child->id());
   ASSERT_TRUE(wait_for_exec(pid, sleep_program));
 
   const std::string proc = "/proc/" + std::to_string(pid);
@@ -70,9 +78,8 @@ TEST(ChildProcess, GetsOnlyItsDescriptorsAndAnEmptySignalMask) {
     if (line.rfind("SigBlk:", 0) == 0) sig_blk = line;
   EXPECT_EQ(sig_blk, "SigBlk:\t0000000000000000");
 
-  kill(pid, SIGKILL);
-  int wait_status = 0;
-  waitpid(pid, &wait_status, 0);
+  child->kill();
+  EXPECT_TRUE(child->ended());
   for (int fd : {leaked, given[0], given[1], err[0], err[1]}) close(fd);
 }
 
@@ -80,54 +87,32 @@ TEST(ChildProcess, StderrGoesWhereItIsSent) {
   int err[2];
   ASSERT_EQ(pipe2(err, O_CLOEXEC), 0);
   std::string error;
-  const pid_t pid = start_child_process({"/bin/sh", "-c", "echo said >&2"}, {}, err[1], &error);
-  ASSERT_GT(pid, 0) << error;
+  ChildSpec spec;
+  spec.program = "/bin/sh";
+  spec.arguments = {"-c", "echo said >&2"};
+  spec.stderr_to = err[1];
+  auto child = ChildProcess::start(spec, &error);
+  ASSERT_TRUE(child) << error;
   close(err[1]);
   char buffer[64];
   const ssize_t n = read(err[0], buffer, sizeof buffer);
   close(err[0]);
   EXPECT_EQ(std::string(buffer, size_t(std::max<ssize_t>(n, 0))), "said\n");
-  int status = 0;
-  waitpid(pid, &status, 0);
-  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+  ASSERT_TRUE(child->wait(-1));
+  EXPECT_EQ(child->exit_status(), 0);
 }
 
-// A helper of one rank of an MPI job must not start MPI as if it were a rank: the launcher's
-// variables stay behind, everything else goes along.
-TEST(ChildProcess, GetsNoMpiLauncherVariables) {
-  int err[2];
-  ASSERT_EQ(pipe2(err, O_CLOEXEC), 0);
-  setenv("OMPI_COMM_WORLD_SIZE", "3", 1);
-  setenv("PMIX_RANK", "1", 1);
-  setenv("PMI_SIZE", "3", 1);
-  setenv("FRACTALIS_TEST_KEPT", "kept", 1);
+// A child killed by a signal is described by the signal's name.
+TEST(ChildProcess, ASignalIsNamed) {
+  ChildSpec spec;
+  spec.program = "/bin/sh";
+  spec.arguments = {"-c", "kill -SEGV $$"};
   std::string error;
-  const pid_t shell = start_child_process({"/bin/sh", "-c", "env >&2"}, {}, err[1], &error);
-  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_SIZE", "FRACTALIS_TEST_KEPT"})
-    unsetenv(name);
-  ASSERT_GT(shell, 0) << error;
-  close(err[1]);
-  std::string environment;
-  char buffer[4096];
-  for (ssize_t n; (n = read(err[0], buffer, sizeof buffer)) > 0;) environment.append(buffer, n);
-  close(err[0]);
-  int status = 0;
-  waitpid(shell, &status, 0);
-  EXPECT_NE(environment.find("FRACTALIS_TEST_KEPT=kept"), std::string::npos) << environment;
-  for (const char* name : {"OMPI_COMM_WORLD_SIZE=", "PMIX_RANK=", "PMI_SIZE="})
-    EXPECT_EQ(environment.find(name), std::string::npos) << name;
-}
-
-TEST(ChildProcess, AMissingProgramIsAnExitStatus) {
-  std::string error;
-  const pid_t pid = start_child_process({"/no/such/program"}, {}, -1, &error);
-  ASSERT_GT(pid, 0) << error;
-  int status = 0;
-  waitpid(pid, &status, 0);
-  EXPECT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), kChildExecFailedStatus);
-  EXPECT_EQ(start_child_process({}, {}, -1, &error), -1);
-  EXPECT_EQ(error, "no program to start");
+  auto child = ChildProcess::start(spec, &error);
+  ASSERT_TRUE(child) << error;
+  ASSERT_TRUE(child->wait(10000));
+  EXPECT_EQ(child->how_it_ended(), "crashed (SIGSEGV: Segmentation fault)");
+  EXPECT_EQ(child->exit_status(), -1);
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 // The platform layer (host/platform/): each stage against what the system itself says, on Linux
 // in CTest and, cross-built with MinGW-w64, under Wine (scripts/test-windows.sh). One source for
 // both: what a system is expected to answer is chosen at run time, never by #ifdef.
+#include "platform/channel.hpp"
+#include "platform/child_process.hpp"
 #include "platform/files.hpp"
 #include "platform/folder_watch.hpp"
 #include "platform/interrupt.hpp"
@@ -10,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
@@ -17,8 +20,10 @@
 #include <fstream>
 #include <iterator>
 #include <list>
+#include <memory>
 #include <string>
 #include <thread>
+#include <vector>
 
 namespace fr {
 namespace {
@@ -223,6 +228,205 @@ TEST(Interrupt, CaughtWhileACatcherLives) {
   EXPECT_FALSE(InterruptCatcher::interrupted());
   std::raise(SIGINT);
   EXPECT_TRUE(InterruptCatcher::interrupted());
+}
+
+// The helper program these tests start (tests/platform_test_child.cpp), beside this test.
+fs::path child_program() {
+  const fs::path self = executable_path();
+  return self.parent_path() / ("platform_test_child" + self.extension().string());
+}
+
+std::unique_ptr<ChildProcess> start_child(std::vector<std::string> arguments,
+                                          std::vector<NativeHandle> handles = {},
+                                          NativeHandle stdout_to = kNoHandle) {
+  ChildSpec spec;
+  spec.program = child_program();
+  spec.arguments = std::move(arguments);
+  spec.handles = std::move(handles);
+  spec.stdout_to = stdout_to;
+  spec.stderr_to = own_stderr();
+  std::string error;
+  auto child = ChildProcess::start(spec, &error);
+  EXPECT_TRUE(child) << error;
+  return child;
+}
+
+// Everything `channel` gives until its other end closes (at most 10 s).
+std::string read_to_end(Channel& channel) {
+  std::string text;
+  char buffer[256];
+  for (int i = 0; i < 1000; ++i) {
+    size_t got = 0;
+    const ChannelStatus s = channel.read_some(buffer, sizeof buffer, 10000, &got);
+    if (s != ChannelStatus::Ok) break;
+    text.append(buffer, got);
+  }
+  return text;
+}
+
+TEST(ChildProcess, TalksOverATwoWayChannel) {
+  ChannelPair pair;
+  std::string error;
+  ASSERT_TRUE(make_channel_pair(&pair, &error)) << error;
+  auto child =
+      start_child({"echo", handle_in_child(0, pair.theirs.handle())}, {pair.theirs.handle()});
+  ASSERT_TRUE(child);
+  pair.theirs.close();  // the child has its own now
+  // Larger than a pipe's buffer, so that both ends must take turns.
+  std::string sent(300000, '\0');
+  for (size_t i = 0; i < sent.size(); ++i) sent[i] = static_cast<char>(i * 7 + i / 251);
+  std::thread writer([&] { EXPECT_TRUE(pair.ours.write_all(sent.data(), sent.size())); });
+  std::string echoed;
+  char buffer[8192];
+  while (echoed.size() < sent.size()) {
+    size_t got = 0;
+    const ChannelStatus s = pair.ours.read_some(buffer, sizeof buffer, 10000, &got);
+    ASSERT_EQ(s, ChannelStatus::Ok) << "after " << echoed.size() << " bytes";
+    echoed.append(buffer, got);
+  }
+  writer.join();
+  EXPECT_TRUE(echoed == sent);
+  pair.ours.close();  // the child sees the end and exits 0
+  ASSERT_TRUE(child->wait(10000));
+  EXPECT_EQ(child->exit_status(), 0) << child->how_it_ended();
+  EXPECT_EQ(child->how_it_ended(), "exited with status 0");
+}
+
+TEST(ChildProcess, StdoutThroughAPipeAndNoMpiLauncherVariables) {
+  set_variable("OMPI_COMM_WORLD_SIZE", "3");
+  set_variable("PMI_RANK", "1");
+  set_variable("FRACTALIS_TEST_KEPT", "kept");
+  ChannelPair pipe;
+  std::string error;
+  ASSERT_TRUE(make_pipe(&pipe, &error)) << error;
+  auto child = start_child({"env", "FRACTALIS_TEST_KEPT", "OMPI_COMM_WORLD_SIZE", "PMI_RANK"}, {},
+                           pipe.theirs.handle());
+  ASSERT_TRUE(child);
+  pipe.theirs.close();
+  std::string said = read_to_end(pipe.ours);
+  said.erase(std::remove(said.begin(), said.end(), '\r'), said.end());
+  EXPECT_EQ(said, "FRACTALIS_TEST_KEPT=kept\nOMPI_COMM_WORLD_SIZE unset\nPMI_RANK unset\n");
+  ASSERT_TRUE(child->wait(10000));
+  EXPECT_EQ(child->exit_status(), 0);
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_RANK", "FRACTALIS_TEST_KEPT"})
+    set_variable(name, "");
+}
+
+TEST(ChildProcess, ArgumentsArriveAsTheyWereGiven) {
+  // Spaces, quotes and backslashes: Windows passes one command line the child splits again.
+  for (const std::string text : {"two words", "a \"quoted\" word", "trailing\\",
+                                 "back\\\\slash\\\"", "", "tab\there", "é ü 漢字"}) {
+    ChannelPair pipe;
+    std::string error;
+    ASSERT_TRUE(make_pipe(&pipe, &error)) << error;
+    auto child = start_child({"print", text}, {}, pipe.theirs.handle());
+    ASSERT_TRUE(child);
+    pipe.theirs.close();
+    std::string said = read_to_end(pipe.ours);
+    said.erase(std::remove(said.begin(), said.end(), '\r'), said.end());
+    if (kWindows && text == "é ü 漢字") continue;  // the child's narrow argv is the code page's
+    EXPECT_EQ(said, text + "\n");
+    child->wait(10000);
+  }
+}
+
+TEST(ChildProcess, SaysHowItEnded) {
+  auto exits = start_child({"exit", "3"});
+  ASSERT_TRUE(exits && exits->wait(10000));
+  EXPECT_EQ(exits->how_it_ended(), "exited with status 3");
+  EXPECT_EQ(exits->exit_status(), 3);
+
+  auto crashes = start_child({"crash"});
+  ASSERT_TRUE(crashes && crashes->wait(10000));
+  EXPECT_EQ(crashes->how_it_ended().rfind("crashed (", 0), 0u) << crashes->how_it_ended();
+  EXPECT_EQ(crashes->exit_status(), -1);
+
+  auto hangs = start_child({"hang"});
+  ASSERT_TRUE(hangs);
+  EXPECT_FALSE(hangs->wait(200));
+  EXPECT_FALSE(hangs->ended());
+  hangs->kill();
+  EXPECT_TRUE(hangs->ended());
+  EXPECT_EQ(hangs->how_it_ended(), "was killed");
+
+  ChildSpec missing;
+  missing.program = fs::temp_directory_path() / "fractalis-no-such-program";
+  std::string error;
+  auto none = ChildProcess::start(missing, &error);
+  // Linux knows only after the fork (exec fails in the child); Windows before.
+  if (none) {
+    ASSERT_TRUE(none->wait(10000));
+    EXPECT_EQ(none->how_it_ended(), "could not be started (exec failed)");
+  } else {
+    EXPECT_FALSE(error.empty());
+  }
+  EXPECT_FALSE(ChildProcess::start(ChildSpec{}, &error));
+  EXPECT_EQ(error, "no program to start");
+}
+
+// No helper outlives the process that started it, however that ends: here a child is killed
+// while its own child holds a channel, which closes only when that grandchild is gone too.
+TEST(ChildProcess, AHelpersHelpersEndWithIt) {
+  ChannelPair pair;
+  std::string error;
+  ASSERT_TRUE(make_channel_pair(&pair, &error)) << error;
+  auto child =
+      start_child({"spawn-hang", handle_in_child(0, pair.theirs.handle())}, {pair.theirs.handle()});
+  ASSERT_TRUE(child);
+  pair.theirs.close();
+  char ready = 0;
+  size_t got = 0;
+  ASSERT_EQ(pair.ours.read_some(&ready, 1, 20000, &got), ChannelStatus::Ok);
+  ASSERT_EQ(ready, 'r');
+  child->kill();
+  EXPECT_EQ(pair.ours.read_some(&ready, 1, 10000, &got), ChannelStatus::Closed)
+      << "the grandchild still holds its end";
+}
+
+TEST(ChildProcess, ResidentBytesSeeWhatItHolds) {
+  ChannelPair pair;
+  std::string error;
+  ASSERT_TRUE(make_channel_pair(&pair, &error)) << error;
+  auto child = start_child({"memory", "96", handle_in_child(0, pair.theirs.handle())},
+                           {pair.theirs.handle()});
+  ASSERT_TRUE(child);
+  pair.theirs.close();
+  char ready = 0;
+  size_t got = 0;
+  ASSERT_EQ(pair.ours.read_some(&ready, 1, 20000, &got), ChannelStatus::Ok);
+  EXPECT_GE(child->resident_bytes(), uint64_t{96} << 20);
+  EXPECT_LT(child->resident_bytes(), uint64_t{1} << 30);
+  pair.ours.close();
+  ASSERT_TRUE(child->wait(10000));
+  EXPECT_EQ(child->exit_status(), 0);
+  EXPECT_EQ(child->resident_bytes(), 0u) << "nothing once it ended";
+}
+
+TEST(Channel, ReadsWaitAtMostTheirTimeAndSeeTheEnd) {
+  ChannelPair pair;
+  std::string error;
+  ASSERT_TRUE(make_channel_pair(&pair, &error)) << error;
+  char buffer[16];
+  size_t got = 0;
+  EXPECT_EQ(pair.ours.read_some(buffer, sizeof buffer, 0, &got), ChannelStatus::TimedOut);
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_EQ(pair.ours.read_some(buffer, sizeof buffer, 100, &got), ChannelStatus::TimedOut);
+  const double waited_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_GE(waited_ms, 90);
+  EXPECT_LT(waited_ms, 5000);
+  Channel* both[] = {&pair.ours, &pair.theirs};
+  EXPECT_EQ(wait_readable(both, 2, 50), -1);
+  ASSERT_TRUE(pair.theirs.write_all("abc", 3));
+  EXPECT_EQ(wait_readable(both, 2, 1000), 0);
+  ASSERT_EQ(pair.ours.read_some(buffer, sizeof buffer, 0, &got), ChannelStatus::Ok);
+  EXPECT_EQ(std::string(buffer, got), "abc");
+  pair.theirs.close();
+  EXPECT_EQ(wait_readable(both, 2, 1000), 0) << "the end is something to read";
+  EXPECT_EQ(pair.ours.read_some(buffer, sizeof buffer, 1000, &got), ChannelStatus::Closed);
+  EXPECT_FALSE(pair.ours.write_all("x", 1)) << "nobody at the other end";
+  EXPECT_EQ(handle_from_argument("x"), kNoHandle);
+  EXPECT_EQ(handle_from_argument(""), kNoHandle);
 }
 
 }  // namespace

@@ -480,7 +480,7 @@ TEST(RenderWorker, AThousandRestartsLeakNothing) {
   [[maybe_unused]] const long rss = resident_kib();
   constexpr int kRestarts = 1000;
   for (int i = 0; i < kRestarts; ++i) {
-    kill(worker.pid(), SIGKILL);
+    kill(static_cast<pid_t>(worker.pid()), SIGKILL);
     EXPECT_THROW(worker.probe_de(scene->info, state.params, eye), RenderWorkerFailure);
     ASSERT_EQ(worker.probe_de(scene->info, state.params, eye).size(), 1u);
   }

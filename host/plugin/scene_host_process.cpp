@@ -1,15 +1,11 @@
 #include "plugin/scene_host_process.hpp"
 
-#include "io/child_process.hpp"
+#include "io/helper_executable.hpp"
 #include "io/printable.hpp"
 #include "plugin/scan_cache.hpp"
 #include "plugin/scene_checks.hpp"
 #include "plugin/wire_io.hpp"
 
-#include <fcntl.h>
-#include <signal.h>
-#include <sys/socket.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -24,10 +20,10 @@ namespace {
 
 constexpr int kWireMismatchStatus = 126;
 
-std::string describe_exit(int status) {
-  if (WIFEXITED(status) && WEXITSTATUS(status) == kWireMismatchStatus)
+std::string describe_exit(const ChildProcess& process) {
+  if (process.exit_status() == kWireMismatchStatus)
     return "is from another build of fractalis (message format differs)";
-  return describe_child_exit(status);
+  return process.how_it_ended();
 }
 
 std::string seconds(double s) {
@@ -251,51 +247,45 @@ std::unique_ptr<SceneHostProcess> SceneHostProcess::start(int plugin_fd,
         "../libexec/fractalis, or $FRACTALIS_SCENE_HOST)";
     return nullptr;
   }
-  int sv[2];
-  if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, sv) != 0) {
-    *error = std::string("cannot make a socket for the scene host: ") + std::strerror(errno);
+  ChannelPair channel;
+  if (!make_channel_pair(&channel, error)) {
+    *error = "cannot connect to the scene host: " + *error;
     return nullptr;
   }
   const bool keep_stderr = std::getenv("FRACTALIS_SCENE_HOST_STDERR") != nullptr;
-  const pid_t pid = start_child_process(
-      {exe.string(), "--wire", std::to_string(kSceneWireVersion), "--file", file.string()},
-      {{sv[1], 3}, {plugin_fd, 4}}, keep_stderr ? 2 : -1, error);
-  if (pid < 0) {
-    close(sv[0]);
-    close(sv[1]);
+  ChildSpec spec;
+  spec.program = exe;
+  spec.handles = {channel.theirs.handle(), static_cast<NativeHandle>(plugin_fd)};
+  spec.arguments = {"--wire",    std::to_string(kSceneWireVersion),
+                    "--channel", handle_in_child(0, spec.handles[0]),
+                    "--plugin",  handle_in_child(1, spec.handles[1]),
+                    "--file",    file.string()};
+  spec.stderr_to = keep_stderr ? own_stderr() : kNoHandle;
+  std::unique_ptr<ChildProcess> process = ChildProcess::start(spec, error);
+  if (!process) {
     *error = "cannot start the scene host: " + *error;
     return nullptr;
   }
-  close(sv[1]);
-  return std::unique_ptr<SceneHostProcess>(new SceneHostProcess(pid, sv[0]));
+  return std::unique_ptr<SceneHostProcess>(
+      new SceneHostProcess(std::move(process), std::move(channel.ours)));
 }
 
 SceneHostProcess::~SceneHostProcess() {
   if (!gone_) {
-    write_frame(socket_, WireKind::Quit, "");
+    write_frame(channel_, WireKind::Quit, "");
     stop(false);
   }
 }
 
 std::string SceneHostProcess::stop(bool kill_now) {
   if (gone_) return failure_;
-  close(socket_);
+  channel_.close();
   gone_ = true;
-  int status = 0;
-  pid_t r = 0;
-  if (!kill_now) {
-    // A moment to exit by itself (after Quit, or when it crashed and its socket closed), so that
-    // the status says how it ended; then it is killed.
-    for (int i = 0; i < 50 && (r = waitpid(pid_, &status, WNOHANG)) == 0; ++i)
-      std::this_thread::sleep_for(std::chrono::milliseconds(2));
-  }
-  if (r == 0 || kill_now) {
-    kill(pid_, SIGKILL);
-    while ((r = waitpid(pid_, &status, 0)) < 0 && errno == EINTR) {
-    }
-    return "";
-  }
-  return r == pid_ ? describe_exit(status) : "";
+  // A moment to exit by itself (after Quit, or when it crashed and its channel closed), so that
+  // its status says how it ended; then it is killed.
+  if (!kill_now && process_->wait(100)) return describe_exit(*process_);
+  process_->kill();
+  return "";
 }
 
 bool SceneHostProcess::receive(double timeout_s, double limit_s, WireKind expected,
@@ -305,7 +295,7 @@ bool SceneHostProcess::receive(double timeout_s, double limit_s, WireKind expect
     return false;
   }
   WireKind kind{};
-  const ReadStatus s = read_frame(socket_, timeout_s, &kind, payload);
+  const ReadStatus s = read_frame(channel_, timeout_s, &kind, payload);
   if (s == ReadStatus::Ok && kind == expected) return true;
   if (s == ReadStatus::TimedOut) {
     stop(true);
@@ -328,7 +318,7 @@ bool SceneHostProcess::receive_loaded(double timeout_s, double limit_s, std::str
 
 bool SceneHostProcess::call(WireKind kind, const std::string& request, double timeout_s,
                             std::string* reply, std::string* error) {
-  if (!gone_ && !write_frame(socket_, kind, request)) {
+  if (!gone_ && !write_frame(channel_, kind, request)) {
     const std::string how = stop(false);
     failure_ = how.empty() ? "closed its connection" : how;
   }

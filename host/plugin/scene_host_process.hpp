@@ -11,12 +11,12 @@
 // command): the scene host asks the kernel to kill it when that thread ends.
 #pragma once
 
+#include "platform/channel.hpp"
+#include "platform/child_process.hpp"
 #include "plugin/plugin_files.hpp"
 #include "plugin/plugin_loader.hpp"
 #include "plugin/plugin_policy.hpp"
 #include "plugin/scene_code.hpp"
-
-#include <sys/types.h>
 
 #include <filesystem>
 #include <memory>
@@ -48,17 +48,18 @@ class SceneHostProcess {
   // the message names (the time the process has had in all).
   bool receive_loaded(double timeout_s, double limit_s, std::string* payload, std::string* error);
 
-  pid_t pid() const { return pid_; }
+  int64_t pid() const { return process_->id(); }
   bool alive() const { return !gone_; }
 
  private:
-  SceneHostProcess(pid_t pid, int socket_fd) : pid_(pid), socket_(socket_fd) {}
+  SceneHostProcess(std::unique_ptr<ChildProcess> process, Channel channel)
+      : process_(std::move(process)), channel_(std::move(channel)) {}
   bool receive(double timeout_s, double limit_s, WireKind expected, std::string* payload,
                std::string* error);
   std::string stop(bool kill_now);  // ends and reaps the process; returns how it ended
 
-  pid_t pid_;
-  int socket_;
+  std::unique_ptr<ChildProcess> process_;
+  Channel channel_;
   bool gone_ = false;
   std::string failure_;
 };
@@ -70,7 +71,7 @@ std::vector<LoadOutcome> load_isolated(const std::vector<std::filesystem::path>&
                                        const PluginPolicy& policy);
 
 // The scene-host side: what fractalis-scene-host runs. Loads the plugin open at `plugin_fd`,
-// answers on `socket_fd` until told to quit or the host goes away. Returns the exit status.
-int run_scene_host(int socket_fd, int plugin_fd, const std::string& file);
+// answers on `channel` until told to quit or the host goes away. Returns the exit status.
+int run_scene_host(Channel& channel, int plugin_fd, const std::string& file);
 
 }  // namespace fr

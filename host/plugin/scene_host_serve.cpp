@@ -63,7 +63,7 @@ std::string init_error(const fr_scene_entry& entry, const std::string& file) {
   return out.ok ? "" : out.error;
 }
 
-int run_scene_host(int socket_fd, int plugin_fd, const std::string& file) {
+int run_scene_host(Channel& channel, int plugin_fd, const std::string& file) {
   std::string error;
   std::shared_ptr<PluginLibrary> library = PluginLibrary::open(plugin_fd, file, &error);
   close(plugin_fd);
@@ -83,14 +83,14 @@ int run_scene_host(int socket_fd, int plugin_fd, const std::string& file) {
     loaded.u32((d.create ? 1u : 0u) | (d.update ? 2u : 0u) | (d.destroy ? 4u : 0u));
     write_scene_info(loaded, d.info);
   }
-  if (!write_frame(socket_fd, WireKind::Loaded, loaded.bytes()) || d.result != LoadResult::Loaded)
+  if (!write_frame(channel, WireKind::Loaded, loaded.bytes()) || d.result != LoadResult::Loaded)
     return 0;
 
   auto code = std::make_unique<InProcessCode>(library, d.create, d.destroy, d.update);
   for (;;) {
     WireKind kind{};
     std::string request;
-    if (read_frame(socket_fd, -1, &kind, &request) != ReadStatus::Ok) return 0;
+    if (read_frame(channel, -1, &kind, &request) != ReadStatus::Ok) return 0;
     WireReader r(request);
     WireWriter result;
     CallOutcome out;
@@ -125,10 +125,10 @@ int run_scene_host(int socket_fd, int plugin_fd, const std::string& file) {
         result.u32(stats.plugin_mappings);
         out.ok = true;
         if (!code && kind == WireKind::Unload) {
-          if (!write_frame(socket_fd, WireKind::Reply, reply_bytes(out, result))) return 0;
+          if (!write_frame(channel, WireKind::Reply, reply_bytes(out, result))) return 0;
           // Nothing is loaded any more: answer Stats until told to quit.
           for (;;) {
-            if (read_frame(socket_fd, -1, &kind, &request) != ReadStatus::Ok ||
+            if (read_frame(channel, -1, &kind, &request) != ReadStatus::Ok ||
                 kind != WireKind::Stats)
               return 0;
             WireWriter again;
@@ -136,7 +136,7 @@ int run_scene_host(int socket_fd, int plugin_fd, const std::string& file) {
             again.u64(s.heap_bytes);
             again.u32(s.threads);
             again.u32(s.plugin_mappings);
-            if (!write_frame(socket_fd, WireKind::Reply, reply_bytes(out, again))) return 0;
+            if (!write_frame(channel, WireKind::Reply, reply_bytes(out, again))) return 0;
           }
         }
         break;
@@ -146,7 +146,7 @@ int run_scene_host(int socket_fd, int plugin_fd, const std::string& file) {
       default:
         return 2;
     }
-    if (!write_frame(socket_fd, WireKind::Reply, reply_bytes(out, result))) return 0;
+    if (!write_frame(channel, WireKind::Reply, reply_bytes(out, result))) return 0;
   }
 }
 

@@ -1,16 +1,14 @@
 #include "render/scene_vetting.hpp"
 
 #include "io/cache_dirs.hpp"
-#include "io/child_process.hpp"
 #include "io/fnv1a.hpp"
+#include "platform/channel.hpp"
+#include "platform/child_process.hpp"
+#include "platform/files.hpp"
+#include "platform/user_folders.hpp"
 #include "plugin/plugin_files.hpp"
 #include "plugin/scan_cache.hpp"
-#include "platform/user_folders.hpp"
 
-#include <fcntl.h>
-#include <poll.h>
-#include <signal.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -33,14 +31,17 @@ VetResult vet_scene(const std::filesystem::path& file, const RenderSettings& set
                     const std::string& device, const PluginPolicy& policy) {
   const double timeout_s = policy.vet_timeout_s;
   VetResult result;
-  const std::string exe = fractalis_executable().string();
-  std::vector<std::string> args = {exe,           "vet-scene",
-                                   "--file",      file.string(),
-                                   "--size",      "8x8",
-                                   "--lanes",     std::to_string(settings.lanes),
-                                   "--precision", precision_name(settings.precision)};
+  std::vector<std::string> args = {"vet-scene",
+                                   "--file",
+                                   file.string(),
+                                   "--size",
+                                   "8x8",
+                                   "--lanes",
+                                   std::to_string(settings.lanes),
+                                   "--precision",
+                                   precision_name(settings.precision)};
   if (!device.empty()) args.insert(args.end(), {"--device", device});
-  if (settings.lanes == 0) args.erase(args.begin() + 6, args.begin() + 8);
+  if (settings.lanes == 0) args.erase(args.begin() + 5, args.begin() + 7);
   const auto set = [&](const char* key, double value) {
     std::ostringstream text;
     text << key << "=" << value;
@@ -48,20 +49,22 @@ VetResult vet_scene(const std::filesystem::path& file, const RenderSettings& set
   };
   set("plugins.build_timeout_s", policy.build_timeout_s);
   set("plugins.worker_memory_mib", policy.worker_memory_mib);
-  int pipe_fds[2];
-  if (pipe2(pipe_fds, O_CLOEXEC) != 0) {
-    result.error = std::string("cannot start the test render: ") + std::strerror(errno);
-    return result;
-  }
+  ChannelPair said_pipe;
   std::string error;
-  const pid_t pid = start_child_process(args, {}, pipe_fds[1], &error);
-  if (pid < 0) {
-    close(pipe_fds[0]);
-    close(pipe_fds[1]);
+  if (!make_pipe(&said_pipe, &error)) {
     result.error = "cannot start the test render: " + error;
     return result;
   }
-  close(pipe_fds[1]);
+  ChildSpec spec;
+  spec.program = fractalis_executable();
+  spec.arguments = args;
+  spec.stderr_to = said_pipe.theirs.handle();
+  const std::unique_ptr<ChildProcess> child = ChildProcess::start(spec, &error);
+  said_pipe.theirs.close();
+  if (!child) {
+    result.error = "cannot start the test render: " + error;
+    return result;
+  }
   // Collect what it says (bounded) until it closes stderr or the time is up.
   std::string said;
   const auto deadline = std::chrono::steady_clock::now() +
@@ -76,21 +79,19 @@ VetResult vet_scene(const std::filesystem::path& file, const RenderSettings& set
       timed_out = true;
       break;
     }
-    pollfd p{pipe_fds[0], POLLIN, 0};
-    const int ready = poll(&p, 1, static_cast<int>(std::ceil(left_ms)));
-    if (ready < 0 && errno == EINTR) continue;
-    if (ready <= 0) continue;
     char buffer[1024];
-    const ssize_t n = read(pipe_fds[0], buffer, sizeof buffer);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) break;
-    if (said.size() < 4096) said.append(buffer, static_cast<size_t>(n));
+    size_t got = 0;
+    const ChannelStatus s =
+        said_pipe.ours.read_some(buffer, sizeof buffer, static_cast<int>(std::ceil(left_ms)), &got);
+    if (s == ChannelStatus::TimedOut) continue;
+    if (s != ChannelStatus::Ok) break;
+    if (said.size() < 4096) said.append(buffer, got);
   }
-  close(pipe_fds[0]);
-  if (timed_out) kill(pid, SIGKILL);
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
+  said_pipe.ours.close();
+  if (timed_out)
+    child->kill();
+  else
+    child->wait(-1);
   if (timed_out) {
     result.timed_out = true;
     std::ostringstream why;
@@ -99,7 +100,7 @@ VetResult vet_scene(const std::filesystem::path& file, const RenderSettings& set
     result.error = why.str();
     return result;
   }
-  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) {
+  if (child->exit_status() == 0) {
     result.ok = true;
     return result;
   }
@@ -112,8 +113,8 @@ VetResult vet_scene(const std::filesystem::path& file, const RenderSettings& set
   if (last.rfind("scene '", 0) == 0)
     if (const size_t named = last.find("): "); named != std::string::npos)
       last = last.substr(named + 3);
-  if (WIFSIGNALED(status))
-    result.error = "the test render " + describe_child_exit(status);
+  if (child->exit_status() < 0)
+    result.error = "the test render " + child->how_it_ended();
   else
     result.error = "the test render failed: " + (last.empty() ? "no reason given" : last);
   return result;
@@ -159,8 +160,11 @@ void VettedScenes::insert(uint64_t hash, const RenderSettings& s) {
   std::error_code ec;
   std::filesystem::create_directories(file.parent_path(), ec);
   std::filesystem::permissions(file.parent_path(), std::filesystem::perms::owner_all, ec);
-  const int fd = open(file.c_str(), O_WRONLY | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0600);
-  if (fd >= 0) close(fd);
+  // An empty marker, created new (never through a link someone put there); one that is there
+  // already says the same.
+  bool exists = false;
+  std::string error;
+  WritableFile::create_new(file, &exists, &error);
 }
 
 VetResult vet_scene_once(const std::filesystem::path& file, const RenderSettings& settings,

@@ -1,18 +1,13 @@
 #include "worker/render_worker.hpp"
 
-#include "io/child_process.hpp"
+#include "io/helper_executable.hpp"
 #include "io/printable.hpp"
+#include "platform/channel.hpp"
+#include "platform/child_process.hpp"
 #include "platform/shared_memory.hpp"
 #include "plugin/wire_io.hpp"
 #include "render/de_probe.hpp"
 #include "worker/render_wire.hpp"
-
-#include <fcntl.h>
-#include <poll.h>
-#include <signal.h>
-#include <sys/socket.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <spdlog/spdlog.h>
 
@@ -41,14 +36,6 @@ std::string seconds_text(double s) {
   return out.str();
 }
 
-// Resident memory of process `pid` in bytes (0 when it cannot be read).
-uint64_t resident_bytes(pid_t pid) {
-  std::ifstream statm("/proc/" + std::to_string(pid) + "/statm");
-  uint64_t size_pages = 0, resident_pages = 0;
-  if (!(statm >> size_pages >> resident_pages)) return 0;
-  return resident_pages * static_cast<uint64_t>(sysconf(_SC_PAGESIZE));
-}
-
 constexpr const char* kFrameStage = "rendering";
 
 }  // namespace
@@ -71,38 +58,22 @@ RenderWorkerLimits explorer_worker_limits(const PluginPolicy& policy) {
 
 // The worker process and what it has been sent.
 struct RenderWorker::Process {
-  pid_t pid = -1;
-  int socket = -1;
-  int output = -1;     // its stdout (a DE's printf), ours to read; -1 once it closed
+  std::unique_ptr<ChildProcess> child;
+  Channel channel;
+  Channel output;      // its stdout (a DE's printf), ours to read; closed once it closed
   SharedMemory frame;  // the frames read back (never shrinks under us)
   // What it holds, oldest first (at most kWorkerSceneCount): each scene's key and bytes, so that
   // a scene whose key another's hash already took replaces it rather than being mistaken for it.
   std::deque<std::pair<uint64_t, std::string>> scenes;
   std::string partial_line;  // output not yet ended by a newline
 
-  ~Process() {
-    if (socket >= 0) close(socket);
-    if (output >= 0) close(output);
-  }
-  // Ends the process (SIGKILL unless it has exited by itself within `grace_ms`) and reaps it;
+  // Ends the process (killed unless it has exited by itself within `grace_ms`) and reaps it;
   // returns how it ended when it ended by itself.
   std::string end(int grace_ms) {
-    if (pid <= 0) return "";
-    int status = 0;
-    pid_t r = 0;
-    for (int waited = 0; waited < grace_ms && (r = waitpid(pid, &status, WNOHANG)) == 0;
-         waited += 2)
-      std::this_thread::sleep_for(std::chrono::milliseconds(2));
-    std::string how;
-    if (r == pid) {
-      how = describe_child_exit(status);
-    } else {
-      kill(pid, SIGKILL);
-      while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-      }
-    }
-    pid = -1;
-    return how;
+    if (!child || child->ended()) return "";
+    if (child->wait(grace_ms)) return child->how_it_ended();
+    child->kill();
+    return "";
   }
 };
 
@@ -119,14 +90,14 @@ RenderWorker::RenderWorker(const DeviceInfo& device, const RenderWorkerLimits& l
 
 RenderWorker::~RenderWorker() {
   if (process_) {
-    write_frame(process_->socket, static_cast<WireKind>(RenderWireKind::Quit), "");
-    shutdown(process_->socket, SHUT_RDWR);
+    write_frame(process_->channel, static_cast<WireKind>(RenderWireKind::Quit), "");
+    process_->channel.close();
     process_->end(200);
   }
 }
 
-pid_t RenderWorker::pid() const {
-  return process_ ? process_->pid : 0;
+int64_t RenderWorker::pid() const {
+  return process_ && process_->child ? process_->child->id() : 0;
 }
 
 void RenderWorker::name_scene_file(const std::string& scene_id, const std::filesystem::path& file) {
@@ -175,46 +146,40 @@ void RenderWorker::ensure_started() {
         "the render worker executable fractalis-render-worker was not found (beside fractalis, "
         "in ../libexec/fractalis, or $FRACTALIS_RENDER_WORKER)");
   auto p = std::make_unique<Process>();
-  int sv[2], out[2];
-  if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, sv) != 0)
-    throw std::runtime_error(std::string("cannot make a socket for the render worker: ") +
-                             std::strerror(errno));
-  if (pipe2(out, O_CLOEXEC) != 0) {
-    close(sv[0]);
-    close(sv[1]);
-    throw std::runtime_error(std::string("cannot make a pipe for the render worker: ") +
-                             std::strerror(errno));
-  }
-  p->socket = sv[0];
-  p->output = out[0];
-  fcntl(p->output, F_SETFL, O_NONBLOCK);
+  ChannelPair channel, output;
   std::string error;
-  p->pid = start_child_process(
-      {exe.string(), "--wire", std::to_string(kRenderWireVersion), "--device", device_.selector()},
-      {{sv[1], 3}, {static_cast<int>(p->frame.handle()), 4}}, 2, &error, out[1]);
-  close(sv[1]);
-  close(out[1]);
-  if (p->pid < 0) throw std::runtime_error("cannot start the render worker: " + error);
+  if (!make_channel_pair(&channel, &error) || !make_pipe(&output, &error))
+    throw std::runtime_error("cannot connect to the render worker: " + error);
+  p->channel = std::move(channel.ours);
+  p->output = std::move(output.ours);
+  ChildSpec spec;
+  spec.program = exe;
+  spec.handles = {channel.theirs.handle(), p->frame.handle()};
+  spec.arguments = {"--wire",    std::to_string(kRenderWireVersion),
+                    "--device",  device_.selector(),
+                    "--channel", handle_in_child(0, spec.handles[0]),
+                    "--frame",   handle_in_child(1, spec.handles[1])};
+  spec.stdout_to = output.theirs.handle();
+  spec.stderr_to = own_stderr();
+  p->child = ChildProcess::start(spec, &error);
+  if (!p->child) throw std::runtime_error("cannot start the render worker: " + error);
   process_ = std::move(p);
   ++starts_;
   call(static_cast<uint32_t>(RenderWireKind::Ready), "", "", "starting", limits_.start_s);
 }
 
 void RenderWorker::drain_output(const std::string& scene) {
-  if (!process_ || process_->output < 0) return;
+  if (!process_ || !process_->output.is_open()) return;
   char buffer[65536];
   for (;;) {
-    const ssize_t got = read(process_->output, buffer, sizeof buffer);
-    if (got < 0 && errno == EINTR) continue;
-    if (got <= 0) {
-      if (got == 0) {  // the worker closed its stdout (it is ending)
-        close(process_->output);
-        process_->output = -1;
-      }
+    size_t got = 0;
+    const ChannelStatus s = process_->output.read_some(buffer, sizeof buffer, 0, &got);
+    if (s != ChannelStatus::Ok) {
+      if (s == ChannelStatus::Closed) process_->output.close();  // the worker is ending
       return;
     }
     size_t& shown = printed_lines_[scene];
-    for (ssize_t i = 0; i < got; ++i) {
+    for (size_t i = 0; i < got; ++i) {
       std::string& line = process_->partial_line;
       const bool end = buffer[i] == '\n';
       if (!end) line.push_back(buffer[i]);
@@ -242,7 +207,7 @@ std::string RenderWorker::call(uint32_t kind, const std::string& request, const 
     fail(scene, now_doing(), how.empty() ? fallback : how, false);
   };
   if (kind != static_cast<uint32_t>(RenderWireKind::Ready) &&
-      !write_frame(p.socket, static_cast<WireKind>(kind), request))
+      !write_frame(p.channel, static_cast<WireKind>(kind), request))
     ended("closed its connection");
   auto deadline = Clock::now();
   const auto restart_clock = [&](double s) {
@@ -269,31 +234,29 @@ std::string RenderWorker::call(uint32_t kind, const std::string& request, const 
         which = " (the scene's slowest time per pixel so far, times 20)";
       fail(scene, stage, "did not finish within " + seconds_text(limit_s) + which, true);
     }
-    pollfd fds[2] = {{p.socket, POLLIN, 0}, {p.output, POLLIN, 0}};
-    const nfds_t count = p.output >= 0 ? 2 : 1;
+    Channel* const both[2] = {&p.channel, &p.output};
     // A quick answer (a DE probe, a queued sample) comes within tens of microseconds: looking
-    // for it for a moment costs less than sleeping in poll and being woken.
-    int ready = 0;
+    // for it for a moment costs less than sleeping in the system and being woken.
+    int ready = -1;
     for (const auto spin_until = Clock::now() + std::chrono::microseconds(150);
-         ready == 0 && Clock::now() < spin_until;)
-      ready = poll(fds, count, 0);
+         ready < 0 && Clock::now() < spin_until;)
+      ready = wait_readable(both, 2, 0);
     // Then short waits: the worker's memory is looked at between them.
     const int wait_ms = static_cast<int>(std::ceil(std::min(left_s, 0.1) * 1000));
-    if (ready == 0) ready = poll(fds, count, wait_ms);
-    if (ready < 0 && errno != EINTR) ended("could not be waited for");
-    if (p.output >= 0 && (fds[1].revents & (POLLIN | POLLHUP))) drain_output(scene);
+    if (ready < 0) ready = wait_readable(both, 2, wait_ms);
+    if (ready == 1) drain_output(scene);
     if (limits_.memory_bytes > 0 && seconds_since(last_memory_check) >= 0.1) {
       last_memory_check = Clock::now();
-      if (resident_bytes(p.pid) > limits_.memory_bytes)
+      if (p.child->resident_bytes() > limits_.memory_bytes)
         fail(scene, now_doing(),
              "used more than " + std::to_string(limits_.memory_bytes >> 20) +
                  " MiB of memory (plugins.worker_memory_mib)",
              false);
     }
-    if (!(fds[0].revents & (POLLIN | POLLHUP | POLLERR))) continue;
+    if (ready != 0) continue;
     WireKind got{};
     std::string payload;
-    const ReadStatus s = read_frame_exact(p.socket, std::max(1.0, left_s), &got, &payload);
+    const ReadStatus s = read_frame_exact(p.channel, std::max(1.0, left_s), &got, &payload);
     if (s == ReadStatus::Closed) ended("closed its connection");
     if (s == ReadStatus::TimedOut) continue;
     if (s != ReadStatus::Ok) fail(scene, now_doing(), "sent a malformed message", false);

@@ -18,14 +18,13 @@
 // there: it is killed when that thread ends).
 #pragma once
 
+#include "platform/channel.hpp"
 #include "plugin/plugin_policy.hpp"
 #include "render/cl_runtime.hpp"
 #include "render/eval_counts.hpp"
 #include "render/renderer.hpp"
 #include "worker/frame_limit.hpp"
 #include "worker/render_wire.hpp"
-
-#include <sys/types.h>
 
 #include <array>
 #include <chrono>
@@ -105,7 +104,7 @@ class RenderWorker {
 
   // Workers started so far (a restart after each failure); the current one's pid (0: none).
   int starts() const { return starts_; }
-  pid_t pid() const;
+  int64_t pid() const;
 
  private:
   struct Process;
@@ -146,8 +145,9 @@ class RenderWorker {
 constexpr uint64_t kWorkerFileSizeLimitBytes = uint64_t{64} << 20;
 
 // The worker side: what fractalis-render-worker runs. Opens the device `device_selector` (as
-// --device takes it), answers on `socket_fd`, reads frames back into the shared frame open at
-// `frame_fd`, until told to quit or fractalis goes away. Returns the exit status.
-int run_render_worker(int socket_fd, int frame_fd, const std::string& device_selector);
+// --device takes it), answers on `channel`, reads frames back into the shared frame behind
+// `frame_handle`, until told to quit or fractalis goes away. Returns the exit status.
+int run_render_worker(Channel& channel, NativeHandle frame_handle,
+                      const std::string& device_selector);
 
 }  // namespace fr

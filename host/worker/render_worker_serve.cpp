@@ -17,13 +17,13 @@ WireKind wire(RenderWireKind k) {
   return static_cast<WireKind>(k);
 }
 
-bool send_reply(int socket_fd, RenderWireKind kind, ReplyStatus status, const std::string& error,
+bool send_reply(Channel& channel, RenderWireKind kind, ReplyStatus status, const std::string& error,
                 const std::string& result) {
   WireWriter w;
   w.u32(static_cast<uint32_t>(status));
   w.str(error.size() > kMaxWorkerErrorBytes ? error.substr(0, kMaxWorkerErrorBytes) : error);
   w.raw(result.data(), result.size());
-  return write_frame(socket_fd, wire(kind), w.bytes());
+  return write_frame(channel, wire(kind), w.bytes());
 }
 
 struct BadRequest : std::runtime_error {
@@ -32,13 +32,13 @@ struct BadRequest : std::runtime_error {
 
 class Worker {
  public:
-  Worker(int socket_fd, int frame_fd, const DeviceInfo& device)
-      : socket_(socket_fd), frame_(frame_fd), runtime_(device), renderer_(runtime_) {
+  Worker(Channel& channel, NativeHandle frame_handle, const DeviceInfo& device)
+      : channel_(channel), frame_(frame_handle), runtime_(device), renderer_(runtime_) {
     runtime_.on_build = [this](const std::string* description) {
       WireWriter w;
       w.u32(description ? 1 : 0);
       w.str(description ? *description : "");
-      write_frame(socket_, wire(RenderWireKind::Building), w.bytes());
+      write_frame(channel_, wire(RenderWireKind::Building), w.bytes());
     };
   }
 
@@ -183,7 +183,7 @@ class Worker {
     if (r.failed()) throw BadRequest("a malformed request");
   }
 
-  int socket_;
+  Channel& channel_;
   SharedMemory frame_;
   ClRuntime runtime_;
   Renderer renderer_;
@@ -192,25 +192,26 @@ class Worker {
 
 }  // namespace
 
-int run_render_worker(int socket_fd, int frame_fd, const std::string& device_selector) {
+int run_render_worker(Channel& channel, NativeHandle frame_handle,
+                      const std::string& device_selector) {
   std::unique_ptr<Worker> worker;
   try {
     std::string error;
     const std::optional<DeviceInfo> device = select_device(list_devices(), device_selector, &error);
     if (!device) {
-      send_reply(socket_fd, RenderWireKind::Ready, ReplyStatus::Failed, error, "");
+      send_reply(channel, RenderWireKind::Ready, ReplyStatus::Failed, error, "");
       return 1;
     }
-    worker = std::make_unique<Worker>(socket_fd, frame_fd, *device);
+    worker = std::make_unique<Worker>(channel, frame_handle, *device);
   } catch (const std::exception& e) {
-    send_reply(socket_fd, RenderWireKind::Ready, ReplyStatus::Failed, e.what(), "");
+    send_reply(channel, RenderWireKind::Ready, ReplyStatus::Failed, e.what(), "");
     return 1;
   }
-  if (!send_reply(socket_fd, RenderWireKind::Ready, ReplyStatus::Ok, "", "")) return 0;
+  if (!send_reply(channel, RenderWireKind::Ready, ReplyStatus::Ok, "", "")) return 0;
   for (;;) {
     WireKind kind{};
     std::string payload;
-    if (read_frame(socket_fd, -1, &kind, &payload) != ReadStatus::Ok) return 0;  // fractalis left
+    if (read_frame(channel, -1, &kind, &payload) != ReadStatus::Ok) return 0;  // fractalis left
     const auto k = static_cast<RenderWireKind>(kind);
     if (k == RenderWireKind::Quit) return 0;
     WireReader r(payload);
@@ -229,7 +230,7 @@ int run_render_worker(int socket_fd, int frame_fd, const std::string& device_sel
       status = ReplyStatus::Failed;
       error = e.what();
     }
-    if (!send_reply(socket_fd, RenderWireKind::Reply, status, error, result.bytes())) return 0;
+    if (!send_reply(channel, RenderWireKind::Reply, status, error, result.bytes())) return 0;
   }
 }
 
