@@ -24,5 +24,5 @@ real_t de_menger(vec3_t p, int iterations, scalar_t scale, vec3_t offset, scalar
     orbit_min = fmin(orbit_min, v3_length2(z));
   }
   *trap = orbit_min;
-  return sd_box(z, v3s(1, 1, 1)) * to_real(pown(1 / scale, iterations));
+  return sd_box(z, v3s(1, 1, 1)) * to_real(pown_scalar(1 / scale, iterations));
 }

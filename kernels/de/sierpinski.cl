@@ -18,5 +18,5 @@ real_t de_sierpinski(vec3_t p, int iterations, scalar_t scale, vec3_t offset, re
     orbit_min = fmin(orbit_min, v3_length2(z));
   }
   *trap = orbit_min;
-  return de_tetrahedron(z, to_real(1)) * to_real(pown(1 / scale, iterations));
+  return de_tetrahedron(z, to_real(1)) * to_real(pown_scalar(1 / scale, iterations));
 }
