@@ -6,6 +6,7 @@
 #include "platform/files.hpp"
 #include "platform/folder_watch.hpp"
 #include "platform/interrupt.hpp"
+#include "platform/shared_library.hpp"
 #include "platform/shared_memory.hpp"
 #include "platform/system_facts.hpp"
 #include "platform/user_folders.hpp"
@@ -400,6 +401,69 @@ TEST(ChildProcess, ResidentBytesSeeWhatItHolds) {
   ASSERT_TRUE(child->wait(10000));
   EXPECT_EQ(child->exit_status(), 0);
   EXPECT_EQ(child->resident_bytes(), 0u) << "nothing once it ended";
+}
+
+std::string file_bytes(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+TEST(SharedLibrary, LoadsAPrivateCopyOfTheBytesItWasGiven) {
+  const fs::path built =
+      executable_path().parent_path() / library_file_name("platform_test_library");
+  const std::string bytes = file_bytes(built);
+  ASSERT_GT(bytes.size(), 1000u) << built;
+  EXPECT_EQ(check_library_bytes(bytes), "");
+  std::string error;
+  auto first = SharedLibrary::load_private_copy(bytes, "first", &error);
+  ASSERT_TRUE(first) << error;
+  auto* value = static_cast<int*>(const_cast<void*>(first->symbol("platform_test_value")));
+  ASSERT_NE(value, nullptr);
+  EXPECT_EQ(*value, 42);
+  using Add = int (*)(int, int);
+  const auto add = reinterpret_cast<Add>(const_cast<void*>(first->symbol("platform_test_add")));
+  ASSERT_NE(add, nullptr);
+  EXPECT_EQ(add(2, 3), 5);
+  EXPECT_EQ(first->symbol("platform_test_missing"), nullptr);
+  // The same bytes again are a library of their own (a hot reload of an unchanged file must not
+  // get the old one back), with their own data.
+  *value = 7;
+  auto second = SharedLibrary::load_private_copy(bytes, "second", &error);
+  ASSERT_TRUE(second) << error;
+  auto* second_value = static_cast<const int*>(second->symbol("platform_test_value"));
+  ASSERT_NE(second_value, nullptr);
+  EXPECT_EQ(*second_value, 42);
+  EXPECT_EQ(*value, 7);
+  first.reset();
+  EXPECT_EQ(*second_value, 42) << "unloading one leaves the other";
+  second.reset();
+  if (kWindows) {  // the copies are files there: none is left once unloaded
+    size_t left = 0;
+    std::error_code ec;
+    for (const auto& e :
+         fs::directory_iterator(user_folder(UserFolder::Cache) / "plugin-copies", ec))
+      left += e.path().extension() == ".dll";
+    EXPECT_EQ(left, 0u);
+  }
+}
+
+TEST(SharedLibrary, RefusesWhatIsNotAWholeLibraryForThisHost) {
+  const fs::path built =
+      executable_path().parent_path() / library_file_name("platform_test_library");
+  const std::string bytes = file_bytes(built);
+  ASSERT_GT(bytes.size(), 4000u);
+  std::string error;
+  EXPECT_FALSE(SharedLibrary::load_private_copy("hello, loader", "text", &error));
+  EXPECT_EQ(error.rfind("not a", 0), 0u) << error;
+  EXPECT_FALSE(SharedLibrary::load_private_copy("", "empty", &error));
+  EXPECT_EQ(error.rfind("not a", 0), 0u) << error;
+  EXPECT_FALSE(SharedLibrary::load_private_copy(bytes.substr(0, bytes.size() / 2), "half", &error));
+  EXPECT_EQ(error.rfind("truncated", 0), 0u) << error;
+  // This test program is a program, not a library: a PE header says so (a position-independent
+  // ELF program is a shared object as far as its header goes, so only Windows can tell).
+  if (kWindows) {
+    EXPECT_NE(check_library_bytes(file_bytes(executable_path())), "");
+  }
 }
 
 TEST(Channel, ReadsWaitAtMostTheirTimeAndSeeTheEnd) {

@@ -1,137 +1,19 @@
 #include "plugin/plugin_library.hpp"
 
-#include <dlfcn.h>
-#include <elf.h>
-#include <fcntl.h>
-#include <link.h>
-#include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include <algorithm>
 #include <cerrno>
-#include <cstdio>
 #include <cstring>
-#include <vector>
 
 namespace fr {
 namespace {
 
-const char* machine_name(unsigned machine) {
-  switch (machine) {
-    case EM_X86_64:
-      return "x86-64";
-    case EM_386:
-      return "i386";
-    case EM_AARCH64:
-      return "AArch64";
-    case EM_ARM:
-      return "ARM";
-    case EM_RISCV:
-      return "RISC-V";
-    case EM_PPC64:
-      return "PowerPC 64";
-    case EM_S390:
-      return "s390";
-    case EM_MIPS:
-      return "MIPS";
-    case EM_LOONGARCH:
-      return "LoongArch";
-  }
-  return nullptr;
-}
-
-std::string describe_machine(unsigned machine) {
-  const char* name = machine_name(machine);
-  return name ? name : "ELF machine " + std::to_string(machine);
-}
-
-// This process's own ELF identity: what a plugin must have been built for.
-struct ElfTarget {
-  unsigned char elf_class = 0, data = 0;
-  unsigned machine = 0;
-};
-const ElfTarget& host_target() {
-  static const ElfTarget target = [] {
-    ElfTarget t;
-    const int fd = open("/proc/self/exe", O_RDONLY | O_CLOEXEC);
-    ElfW(Ehdr) eh{};
-    if (fd >= 0 && pread(fd, &eh, sizeof eh, 0) == static_cast<ssize_t>(sizeof eh)) {
-      t.elf_class = eh.e_ident[EI_CLASS];
-      t.data = eh.e_ident[EI_DATA];
-      t.machine = eh.e_machine;
-    }
-    if (fd >= 0) close(fd);
-    return t;
-  }();
-  return target;
-}
-
-// Whether a loaded object already goes by `name` (glibc would hand back that one instead).
-bool loaded_under_name(const std::string& name) {
-  struct Query {
-    const std::string* name;
-    bool found;
-  } q{&name, false};
-  dl_iterate_phdr(
-      [](dl_phdr_info* info, size_t, void* data) {
-        auto* q = static_cast<Query*>(data);
-        if (info->dlpi_name && *q->name == info->dlpi_name) q->found = true;
-        return 0;
-      },
-      &q);
-  return q.found;
-}
-
-void replace_all(std::string& text, const std::string& from, const std::string& to) {
-  for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
-    text.replace(at, from.size(), to);
-}
+// Far above any scene plugin (the in-tree ones are tens of KB); reading more would only hold a
+// hostile file in memory.
+constexpr uint64_t kMaxPluginBytes = uint64_t{1} << 30;
 
 }  // namespace
-
-std::string check_elf_library(uint64_t size,
-                              const std::function<size_t(uint64_t, void*, size_t)>& read_at) {
-  unsigned char ident[EI_NIDENT] = {};
-  const size_t got = read_at(0, ident, sizeof ident);
-  if (got < 4 || std::memcmp(ident, ELFMAG, SELFMAG) != 0) {
-    char hex[32] = "fewer than 4 bytes";
-    if (got >= 4)
-      std::snprintf(hex, sizeof hex, "%02x %02x %02x %02x", ident[0], ident[1], ident[2], ident[3]);
-    return std::string("not an ELF shared library (expected bytes 7f 45 4c 46, found ") + hex + ")";
-  }
-  const ElfTarget& host = host_target();
-  if (got < EI_NIDENT) return "truncated: " + std::to_string(size) + " bytes";
-  if (ident[EI_CLASS] != host.elf_class)
-    return std::string("built as a ") + (ident[EI_CLASS] == ELFCLASS32 ? "32" : "64") +
-           "-bit ELF library; this host is " + (host.elf_class == ELFCLASS32 ? "32" : "64") +
-           "-bit";
-  if (ident[EI_DATA] != host.data) return "built for the other byte order than this host's";
-  ElfW(Ehdr) eh{};
-  if (read_at(0, &eh, sizeof eh) != sizeof eh)
-    return "truncated: " + std::to_string(size) + " bytes, shorter than an ELF header";
-  if (eh.e_machine != host.machine)
-    return "built for " + describe_machine(eh.e_machine) + "; this host is " +
-           describe_machine(host.machine);
-  if (eh.e_type != ET_DYN)
-    return "not a shared library (ELF type " + std::to_string(eh.e_type) + ")";
-  // dlopen maps a truncated library and then dies of SIGBUS touching the missing pages, so the
-  // headers and every loadable segment must lie inside the file.
-  const uint64_t ph_end = eh.e_phoff + uint64_t{eh.e_phnum} * eh.e_phentsize;
-  const uint64_t sh_end = eh.e_shoff + uint64_t{eh.e_shnum} * eh.e_shentsize;
-  if (eh.e_phentsize != sizeof(ElfW(Phdr)) || ph_end > size || sh_end > size)
-    return "truncated: " + std::to_string(size) + " bytes, but its headers end at byte " +
-           std::to_string(std::max(ph_end, sh_end));
-  for (unsigned i = 0; i < eh.e_phnum; ++i) {
-    ElfW(Phdr) ph{};
-    if (read_at(eh.e_phoff + uint64_t{i} * sizeof ph, &ph, sizeof ph) != sizeof ph)
-      return "truncated program header";
-    if (ph.p_type == PT_LOAD && ph.p_offset + ph.p_filesz > size)
-      return "truncated: " + std::to_string(size) + " bytes, but a loadable segment ends at byte " +
-             std::to_string(ph.p_offset + ph.p_filesz);
-  }
-  return "";
-}
 
 std::shared_ptr<PluginLibrary> PluginLibrary::open(int fd, const std::filesystem::path& file,
                                                    std::string* error) {
@@ -140,71 +22,30 @@ std::shared_ptr<PluginLibrary> PluginLibrary::open(int fd, const std::filesystem
     *error = "not a regular file";
     return nullptr;
   }
-  const int memfd = memfd_create("fractalis-plugin", MFD_CLOEXEC | MFD_ALLOW_SEALING);
-  if (memfd < 0) {
-    *error = std::string("cannot make a private copy (memfd_create): ") + std::strerror(errno);
+  if (static_cast<uint64_t>(st.st_size) > kMaxPluginBytes) {
+    *error = "larger than 1 GiB: not a scene plugin";
     return nullptr;
   }
-  auto fail = [&](std::string why) {
-    close(memfd);
-    *error = std::move(why);
-    return nullptr;
-  };
-  // Copy, then seal: the bytes checked below are the bytes dlopen maps.
-  std::vector<char> buffer(1 << 16);
-  uint64_t size = 0;
+  // Read once: the bytes checked are the bytes loaded, whatever happens to the file meanwhile.
+  std::string bytes;
+  char buffer[1 << 16];
   for (;;) {
-    const ssize_t n = pread(fd, buffer.data(), buffer.size(), static_cast<off_t>(size));
+    const ssize_t n = pread(fd, buffer, sizeof buffer, static_cast<off_t>(bytes.size()));
     if (n < 0 && errno == EINTR) continue;
-    if (n < 0) return fail(std::string("cannot read: ") + std::strerror(errno));
+    if (n < 0) {
+      *error = std::string("cannot read: ") + std::strerror(errno);
+      return nullptr;
+    }
     if (n == 0) break;
-    for (ssize_t done = 0; done < n;) {
-      const ssize_t w = write(memfd, buffer.data() + done, static_cast<size_t>(n - done));
-      if (w < 0 && errno == EINTR) continue;
-      if (w < 0) return fail(std::string("cannot copy: ") + std::strerror(errno));
-      done += w;
-    }
-    size += static_cast<uint64_t>(n);
-    if (size > static_cast<uint64_t>(st.st_size) + (1 << 20))
-      return fail("the file grew while it was being read");
-  }
-  fcntl(memfd, F_ADD_SEALS, F_SEAL_SHRINK | F_SEAL_GROW | F_SEAL_WRITE | F_SEAL_SEAL);
-  if (std::string problem = check_elf_library(size,
-                                              [&](uint64_t at, void* out, size_t n) -> size_t {
-                                                const ssize_t r =
-                                                    pread(memfd, out, n, static_cast<off_t>(at));
-                                                return r < 0 ? 0 : static_cast<size_t>(r);
-                                              });
-      !problem.empty())
-    return fail(problem);
-
-  // glibc hands back an already loaded object that has the same name, so the fd number must not
-  // be one an earlier (still resident) plugin was loaded under.
-  int load_fd = memfd;
-  std::vector<int> spare;
-  while (loaded_under_name("/proc/self/fd/" + std::to_string(load_fd))) {
-    spare.push_back(load_fd);
-    load_fd = fcntl(memfd, F_DUPFD_CLOEXEC, load_fd + 1);
-    if (load_fd < 0) {
-      for (int f : spare)
-        if (f != memfd) close(f);
-      return fail("cannot find a free descriptor for the private copy");
+    bytes.append(buffer, static_cast<size_t>(n));
+    if (bytes.size() > static_cast<uint64_t>(st.st_size) + (1 << 20)) {
+      *error = "the file grew while it was being read";
+      return nullptr;
     }
   }
-  for (int f : spare)
-    if (f != memfd) close(f);
-  if (load_fd != memfd) close(memfd);
-  const std::string copy_name = "/proc/self/fd/" + std::to_string(load_fd);
-  void* handle = dlopen(copy_name.c_str(), RTLD_NOW | RTLD_LOCAL);
-  if (!handle) {
-    const char* dl_error = dlerror();
-    std::string message = std::string("dlopen failed: ") + (dl_error ? dl_error : "unknown error");
-    replace_all(message, copy_name, file.string());
-    close(load_fd);
-    *error = message;
-    return nullptr;
-  }
-  return std::shared_ptr<PluginLibrary>(new PluginLibrary(handle, load_fd));
+  std::unique_ptr<SharedLibrary> library = SharedLibrary::load_private_copy(bytes, file, error);
+  if (!library) return nullptr;
+  return std::shared_ptr<PluginLibrary>(new PluginLibrary(std::move(library)));
 }
 
 PluginLibrary::~PluginLibrary() {
@@ -215,13 +56,10 @@ PluginLibrary::~PluginLibrary() {
       // Nothing to recover: the library goes either way.
     }
   }
-  dlclose(handle_);
-  close(memfd_);
 }
 
 const void* PluginLibrary::symbol(const char* name) const {
-  dlerror();
-  return dlsym(handle_, name);
+  return library_->symbol(name);
 }
 
 }  // namespace fr
