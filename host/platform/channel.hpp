@@ -50,8 +50,9 @@ class Channel {
 
  private:
   NativeHandle handle_ = kNoHandle;
-  NativeHandle read_event_ = kNoHandle;   // Windows: signalled when an overlapped read ends
-  NativeHandle write_event_ = kNoHandle;  // and a write
+  // Windows only: the events its overlapped reads and writes signal when they end.
+  [[maybe_unused]] NativeHandle read_event_ = kNoHandle;
+  [[maybe_unused]] NativeHandle write_event_ = kNoHandle;
 };
 
 struct ChannelPair {

@@ -36,9 +36,9 @@ class SharedLibrary {
 
  private:
   SharedLibrary() = default;
-  void* handle_ = nullptr;           // dlopen's, or the HMODULE
-  intptr_t copy_ = -1;               // Linux: the memfd, kept open while loaded
-  std::filesystem::path copy_path_;  // Windows: the copy, removed once unloaded
+  void* handle_ = nullptr;               // dlopen's, or the HMODULE
+  [[maybe_unused]] intptr_t copy_ = -1;  // Linux: the memfd, kept open while loaded
+  std::filesystem::path copy_path_;      // Windows: the copy, removed once unloaded
 };
 
 // "" when `bytes` are a complete dynamic library of this process's own kind — on Linux an ELF
