@@ -489,6 +489,11 @@ TEST(Channel, ReadsWaitAtMostTheirTimeAndSeeTheEnd) {
   EXPECT_EQ(wait_readable(both, 2, 1000), 0) << "the end is something to read";
   EXPECT_EQ(pair.ours.read_some(buffer, sizeof buffer, 1000, &got), ChannelStatus::Closed);
   EXPECT_FALSE(pair.ours.write_all("x", 1)) << "nobody at the other end";
+  // A pipe whose reader is gone: false, and this process goes on (no SIGPIPE).
+  ChannelPair pipe;
+  ASSERT_TRUE(make_pipe(&pipe, &error)) << error;
+  pipe.ours.close();
+  EXPECT_FALSE(pipe.theirs.write_all("x", 1));
   EXPECT_EQ(handle_from_argument("x"), kNoHandle);
   EXPECT_EQ(handle_from_argument(""), kNoHandle);
 }

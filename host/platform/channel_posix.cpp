@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <poll.h>
+#include <signal.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
@@ -15,6 +16,24 @@ namespace {
 
 int fd_of(NativeHandle h) {
   return static_cast<int>(h);
+}
+
+// write() without SIGPIPE: a pipe has no MSG_NOSIGNAL, so the signal is blocked in this thread
+// for the write, and one the write raised is taken back before the mask is restored.
+ssize_t write_without_signal(int fd, const void* data, size_t size) {
+  sigset_t pipe_only, old;
+  sigemptyset(&pipe_only);
+  sigaddset(&pipe_only, SIGPIPE);
+  pthread_sigmask(SIG_BLOCK, &pipe_only, &old);
+  const ssize_t w = write(fd, data, size);
+  const int saved = errno;
+  if (w < 0 && saved == EPIPE && !sigismember(&old, SIGPIPE)) {
+    const timespec now{0, 0};
+    sigtimedwait(&pipe_only, nullptr, &now);
+  }
+  pthread_sigmask(SIG_SETMASK, &old, nullptr);
+  errno = saved;
+  return w;
 }
 
 bool refused(const char* what, std::string* error) {
@@ -50,7 +69,7 @@ bool Channel::write_all(const void* data, size_t size) {
   while (size > 0) {
     // send() where it is a socket (no SIGPIPE for a peer that is gone), write() on a pipe.
     ssize_t w = send(fd_of(handle_), at, size, MSG_NOSIGNAL);
-    if (w < 0 && errno == ENOTSOCK) w = write(fd_of(handle_), at, size);
+    if (w < 0 && errno == ENOTSOCK) w = write_without_signal(fd_of(handle_), at, size);
     if (w < 0 && errno == EINTR) continue;
     if (w < 0 && errno == EAGAIN) {  // a non-blocking descriptor handed to us: wait for room
       pollfd p{fd_of(handle_), POLLOUT, 0};
