@@ -313,6 +313,25 @@ TEST(ChildProcess, StdoutThroughAPipeAndNoMpiLauncherVariables) {
     set_variable(name, "");
 }
 
+TEST(ChildProcess, StdoutAndStderrCanShareAPipe) {
+  ChannelPair pipe;
+  std::string error;
+  ASSERT_TRUE(make_pipe(&pipe, &error)) << error;
+  ChildSpec spec;
+  spec.program = child_program();
+  spec.arguments = {"print", "both"};
+  spec.stdout_to = pipe.theirs.handle();
+  spec.stderr_to = pipe.theirs.handle();
+  auto child = ChildProcess::start(spec, &error);
+  ASSERT_TRUE(child) << error;
+  pipe.theirs.close();
+  std::string said = read_to_end(pipe.ours);
+  said.erase(std::remove(said.begin(), said.end(), '\r'), said.end());
+  EXPECT_EQ(said, "both\n");
+  ASSERT_TRUE(child->wait(10000));
+  EXPECT_EQ(child->exit_status(), 0);
+}
+
 TEST(ChildProcess, ArgumentsArriveAsTheyWereGiven) {
   // Spaces, quotes and backslashes: Windows passes one command line the child splits again.
   for (const std::string text : {"two words", "a \"quoted\" word", "trailing\\",

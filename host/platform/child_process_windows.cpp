@@ -6,6 +6,7 @@
 
 #include <psapi.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cwchar>
@@ -156,12 +157,20 @@ std::unique_ptr<ChildProcess> ChildProcess::start(const ChildSpec& spec, std::st
     *error = "cannot open NUL: " + last_error_text();
     return nullptr;
   }
-  const HANDLE out = spec.stdout_to != kNoHandle ? as_handle(spec.stdout_to) : null_device;
-  const HANDLE err = spec.stderr_to != kNoHandle ? as_handle(spec.stderr_to) : null_device;
-  std::vector<HANDLE> inherited{null_device};
-  for (const HANDLE h : {out, err})
-    if (h != null_device) inherited.push_back(h);
-  for (const NativeHandle h : spec.handles) inherited.push_back(as_handle(h));
+  // A program without a console has no stderr to pass on (GetStdHandle gives null): the null
+  // device instead.
+  const auto or_null_device = [&](NativeHandle h) {
+    return h == kNoHandle || h == 0 ? null_device : as_handle(h);
+  };
+  const HANDLE out = or_null_device(spec.stdout_to);
+  const HANDLE err = or_null_device(spec.stderr_to);
+  // Each handle once: the list refuses duplicates (stdout and stderr may be one pipe).
+  std::vector<HANDLE> inherited;
+  const auto inherit = [&](HANDLE h) {
+    if (std::find(inherited.begin(), inherited.end(), h) == inherited.end()) inherited.push_back(h);
+  };
+  for (const HANDLE h : {null_device, out, err}) inherit(h);
+  for (const NativeHandle h : spec.handles) inherit(as_handle(h));
 
   SIZE_T attribute_bytes = 0;
   InitializeProcThreadAttributeList(nullptr, 1, 0, &attribute_bytes);
