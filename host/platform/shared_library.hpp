@@ -7,7 +7,7 @@
 // process ends. Windows: a file of a new, unguessable name in the user's own fractalis folder
 // (%LOCALAPPDATA%\fractalis\plugin-copies), kept open without write or delete sharing until it is
 // loaded, and removed when it is unloaded; copies that a process which ended abruptly left there
-// are removed by the next load (a loaded one cannot be).
+// are removed by a later load once they are a minute old (a loaded one cannot be).
 //
 // Loading runs the library's initialisers in the calling process: fractalis does this only in a
 // scene-host process (plugin/scene_host_process.hpp) unless plugins.isolation = "none".

@@ -6,6 +6,7 @@
 #include <windows.h>
 
 #include <atomic>
+#include <chrono>
 #include <cstring>
 #include <random>
 
@@ -64,12 +65,18 @@ std::filesystem::path copies_folder(std::string* error) {
   return folder;
 }
 
-// Copies a process that ended abruptly left behind; a copy still loaded somewhere cannot be
-// removed, and stays.
+// Copies a process that ended abruptly left behind. A copy still loaded somewhere cannot be
+// removed, and stays; one younger than a minute may be another scene host's between being
+// written and being loaded (the scans run several at once), and is left alone.
 void remove_stale_copies(const std::filesystem::path& folder) {
   std::error_code ec;
-  for (const auto& entry : std::filesystem::directory_iterator(folder, ec))
-    if (entry.path().extension() == ".dll") DeleteFileW(entry.path().c_str());
+  const auto now = std::filesystem::file_time_type::clock::now();
+  for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
+    std::error_code time_ec;
+    const auto written = entry.last_write_time(time_ec);
+    if (entry.path().extension() == ".dll" && !time_ec && now - written > std::chrono::minutes(1))
+      DeleteFileW(entry.path().c_str());
+  }
 }
 
 }  // namespace
