@@ -67,7 +67,7 @@ bool make_pipe(ChannelPair* pair, std::string* error);
 
 // Waits at most `timeout_ms` (negative: for ever) until one of `channels` has something to read
 // or its other end has gone; returns its index, or -1 when none did in time. Closed channels
-// are skipped.
+// are skipped, and so is any past the 16th.
 int wait_readable(Channel* const* channels, size_t count, int timeout_ms);
 
 }  // namespace fr

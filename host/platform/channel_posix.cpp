@@ -9,7 +9,6 @@
 #include <cerrno>
 #include <cstring>
 #include <utility>
-#include <vector>
 
 namespace fr {
 namespace {
@@ -123,18 +122,21 @@ bool make_pipe(ChannelPair* pair, std::string* error) {
 }
 
 int wait_readable(Channel* const* channels, size_t count, int timeout_ms) {
-  std::vector<pollfd> fds;
-  std::vector<int> index;
-  for (size_t i = 0; i < count; ++i)
+  // On the stack: the render worker's calls look here in a spin loop, many times a frame.
+  constexpr size_t kMost = 16;
+  pollfd fds[kMost];
+  int index[kMost];
+  nfds_t open = 0;
+  for (size_t i = 0; i < count && open < kMost; ++i)
     if (channels[i]->is_open()) {
-      fds.push_back({fd_of(channels[i]->handle()), POLLIN, 0});
-      index.push_back(static_cast<int>(i));
+      fds[open] = {fd_of(channels[i]->handle()), POLLIN, 0};
+      index[open++] = static_cast<int>(i);
     }
   for (;;) {
-    const int ready = poll(fds.data(), fds.size(), timeout_ms < 0 ? -1 : timeout_ms);
+    const int ready = poll(fds, open, timeout_ms < 0 ? -1 : timeout_ms);
     if (ready < 0 && errno == EINTR) continue;
     if (ready <= 0) return -1;
-    for (size_t i = 0; i < fds.size(); ++i)
+    for (nfds_t i = 0; i < open; ++i)
       if (fds[i].revents & (POLLIN | POLLHUP | POLLERR)) return index[i];
     return -1;
   }
