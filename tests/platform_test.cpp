@@ -238,13 +238,11 @@ fs::path child_program() {
 }
 
 std::unique_ptr<ChildProcess> start_child(std::vector<std::string> arguments,
-                                          std::vector<NativeHandle> handles = {},
-                                          NativeHandle stdout_to = kNoHandle) {
+                                          std::vector<NativeHandle> handles = {}) {
   ChildSpec spec;
   spec.program = child_program();
   spec.arguments = std::move(arguments);
   spec.handles = std::move(handles);
-  spec.stdout_to = stdout_to;
   spec.stderr_to = own_stderr();
   std::string error;
   auto child = ChildProcess::start(spec, &error);
@@ -265,29 +263,64 @@ std::string read_to_end(Channel& channel) {
   return text;
 }
 
-TEST(ChildProcess, TalksOverATwoWayChannel) {
+// A child given one end of a channel, named as its last argument; `ours` is the other end.
+struct ChildOnChannel {
+  std::unique_ptr<ChildProcess> child;
+  Channel ours;
+};
+ChildOnChannel start_on_channel(std::vector<std::string> arguments) {
   ChannelPair pair;
   std::string error;
-  ASSERT_TRUE(make_channel_pair(&pair, &error)) << error;
-  auto child =
-      start_child({"echo", handle_in_child(0, pair.theirs.handle())}, {pair.theirs.handle()});
+  EXPECT_TRUE(make_channel_pair(&pair, &error)) << error;
+  arguments.push_back(handle_in_child(0, pair.theirs.handle()));
+  return {start_child(std::move(arguments), {pair.theirs.handle()}), std::move(pair.ours)};
+  // pair.theirs closes here: the child has its own
+}
+
+// What a child wrote on its stdout (and its stderr too where `stderr_too`) through a pipe,
+// without Windows' carriage returns, and its exit status (-2: it did not end).
+struct ChildOutput {
+  std::string text;
+  int exit_status = -2;
+};
+ChildOutput output_of(std::vector<std::string> arguments, bool stderr_too = false) {
+  ChildOutput out;
+  ChannelPair pipe;
+  std::string error;
+  EXPECT_TRUE(make_pipe(&pipe, &error)) << error;
+  ChildSpec spec;
+  spec.program = child_program();
+  spec.arguments = std::move(arguments);
+  spec.stdout_to = pipe.theirs.handle();
+  spec.stderr_to = stderr_too ? pipe.theirs.handle() : own_stderr();
+  const auto child = ChildProcess::start(spec, &error);
+  EXPECT_TRUE(child) << error;
+  if (!child) return out;
+  pipe.theirs.close();
+  out.text = read_to_end(pipe.ours);
+  out.text.erase(std::remove(out.text.begin(), out.text.end(), '\r'), out.text.end());
+  if (child->wait(10000)) out.exit_status = child->exit_status();
+  return out;
+}
+
+TEST(ChildProcess, TalksOverATwoWayChannel) {
+  auto [child, ours] = start_on_channel({"echo"});
   ASSERT_TRUE(child);
-  pair.theirs.close();  // the child has its own now
   // Larger than a pipe's buffer, so that both ends must take turns.
   std::string sent(300000, '\0');
   for (size_t i = 0; i < sent.size(); ++i) sent[i] = static_cast<char>(i * 7 + i / 251);
-  std::thread writer([&] { EXPECT_TRUE(pair.ours.write_all(sent.data(), sent.size())); });
+  std::thread writer([&] { EXPECT_TRUE(ours.write_all(sent.data(), sent.size())); });
   std::string echoed;
   char buffer[8192];
   while (echoed.size() < sent.size()) {
     size_t got = 0;
-    const ChannelStatus s = pair.ours.read_some(buffer, sizeof buffer, 10000, &got);
+    const ChannelStatus s = ours.read_some(buffer, sizeof buffer, 10000, &got);
     ASSERT_EQ(s, ChannelStatus::Ok) << "after " << echoed.size() << " bytes";
     echoed.append(buffer, got);
   }
   writer.join();
   EXPECT_TRUE(echoed == sent);
-  pair.ours.close();  // the child sees the end and exits 0
+  ours.close();  // the child sees the end and exits 0
   ASSERT_TRUE(child->wait(10000));
   EXPECT_EQ(child->exit_status(), 0) << child->how_it_ended();
   EXPECT_EQ(child->how_it_ended(), "exited with status 0");
@@ -297,56 +330,28 @@ TEST(ChildProcess, StdoutThroughAPipeAndNoMpiLauncherVariables) {
   set_variable("OMPI_COMM_WORLD_SIZE", "3");
   set_variable("PMI_RANK", "1");
   set_variable("FRACTALIS_TEST_KEPT", "kept");
-  ChannelPair pipe;
-  std::string error;
-  ASSERT_TRUE(make_pipe(&pipe, &error)) << error;
-  auto child = start_child({"env", "FRACTALIS_TEST_KEPT", "OMPI_COMM_WORLD_SIZE", "PMI_RANK"}, {},
-                           pipe.theirs.handle());
-  ASSERT_TRUE(child);
-  pipe.theirs.close();
-  std::string said = read_to_end(pipe.ours);
-  said.erase(std::remove(said.begin(), said.end(), '\r'), said.end());
-  EXPECT_EQ(said, "FRACTALIS_TEST_KEPT=kept\nOMPI_COMM_WORLD_SIZE unset\nPMI_RANK unset\n");
-  ASSERT_TRUE(child->wait(10000));
-  EXPECT_EQ(child->exit_status(), 0);
+  const ChildOutput out =
+      output_of({"env", "FRACTALIS_TEST_KEPT", "OMPI_COMM_WORLD_SIZE", "PMI_RANK"});
+  EXPECT_EQ(out.text, "FRACTALIS_TEST_KEPT=kept\nOMPI_COMM_WORLD_SIZE unset\nPMI_RANK unset\n");
+  EXPECT_EQ(out.exit_status, 0);
   for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_RANK", "FRACTALIS_TEST_KEPT"})
     set_variable(name, "");
 }
 
 TEST(ChildProcess, StdoutAndStderrCanShareAPipe) {
-  ChannelPair pipe;
-  std::string error;
-  ASSERT_TRUE(make_pipe(&pipe, &error)) << error;
-  ChildSpec spec;
-  spec.program = child_program();
-  spec.arguments = {"print", "both"};
-  spec.stdout_to = pipe.theirs.handle();
-  spec.stderr_to = pipe.theirs.handle();
-  auto child = ChildProcess::start(spec, &error);
-  ASSERT_TRUE(child) << error;
-  pipe.theirs.close();
-  std::string said = read_to_end(pipe.ours);
-  said.erase(std::remove(said.begin(), said.end(), '\r'), said.end());
-  EXPECT_EQ(said, "both\n");
-  ASSERT_TRUE(child->wait(10000));
-  EXPECT_EQ(child->exit_status(), 0);
+  const ChildOutput out = output_of({"print", "both"}, true);
+  EXPECT_EQ(out.text, "both\n");
+  EXPECT_EQ(out.exit_status, 0);
 }
 
 TEST(ChildProcess, ArgumentsArriveAsTheyWereGiven) {
   // Spaces, quotes and backslashes: Windows passes one command line the child splits again.
   for (const std::string text : {"two words", "a \"quoted\" word", "trailing\\",
                                  "back\\\\slash\\\"", "", "tab\there", "é ü 漢字"}) {
-    ChannelPair pipe;
-    std::string error;
-    ASSERT_TRUE(make_pipe(&pipe, &error)) << error;
-    auto child = start_child({"print", text}, {}, pipe.theirs.handle());
-    ASSERT_TRUE(child);
-    pipe.theirs.close();
-    std::string said = read_to_end(pipe.ours);
-    said.erase(std::remove(said.begin(), said.end(), '\r'), said.end());
+    const ChildOutput out = output_of({"print", text});
+    EXPECT_EQ(out.exit_status, 0) << text;
     if (kWindows && text == "é ü 漢字") continue;  // the child's narrow argv is the code page's
-    EXPECT_EQ(said, text + "\n");
-    child->wait(10000);
+    EXPECT_EQ(out.text, text + "\n");
   }
 }
 
@@ -387,36 +392,26 @@ TEST(ChildProcess, SaysHowItEnded) {
 // No helper outlives the process that started it, however that ends: here a child is killed
 // while its own child holds a channel, which closes only when that grandchild is gone too.
 TEST(ChildProcess, AHelpersHelpersEndWithIt) {
-  ChannelPair pair;
-  std::string error;
-  ASSERT_TRUE(make_channel_pair(&pair, &error)) << error;
-  auto child =
-      start_child({"spawn-hang", handle_in_child(0, pair.theirs.handle())}, {pair.theirs.handle()});
+  auto [child, ours] = start_on_channel({"spawn-hang"});
   ASSERT_TRUE(child);
-  pair.theirs.close();
   char ready = 0;
   size_t got = 0;
-  ASSERT_EQ(pair.ours.read_some(&ready, 1, 20000, &got), ChannelStatus::Ok);
+  ASSERT_EQ(ours.read_some(&ready, 1, 20000, &got), ChannelStatus::Ok);
   ASSERT_EQ(ready, 'r');
   child->kill();
-  EXPECT_EQ(pair.ours.read_some(&ready, 1, 10000, &got), ChannelStatus::Closed)
+  EXPECT_EQ(ours.read_some(&ready, 1, 10000, &got), ChannelStatus::Closed)
       << "the grandchild still holds its end";
 }
 
 TEST(ChildProcess, ResidentBytesSeeWhatItHolds) {
-  ChannelPair pair;
-  std::string error;
-  ASSERT_TRUE(make_channel_pair(&pair, &error)) << error;
-  auto child = start_child({"memory", "96", handle_in_child(0, pair.theirs.handle())},
-                           {pair.theirs.handle()});
+  auto [child, ours] = start_on_channel({"memory", "96"});
   ASSERT_TRUE(child);
-  pair.theirs.close();
   char ready = 0;
   size_t got = 0;
-  ASSERT_EQ(pair.ours.read_some(&ready, 1, 20000, &got), ChannelStatus::Ok);
+  ASSERT_EQ(ours.read_some(&ready, 1, 20000, &got), ChannelStatus::Ok);
   EXPECT_GE(child->resident_bytes(), uint64_t{96} << 20);
   EXPECT_LT(child->resident_bytes(), uint64_t{1} << 30);
-  pair.ours.close();
+  ours.close();
   ASSERT_TRUE(child->wait(10000));
   EXPECT_EQ(child->exit_status(), 0);
   EXPECT_EQ(child->resident_bytes(), 0u) << "nothing once it ended";
