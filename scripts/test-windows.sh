@@ -21,5 +21,14 @@ echo "fractalis: cross-building for Windows in $FRACTALIS_BUILD" >&2
 fractalis_build -DCMAKE_TOOLCHAIN_FILE="$FRACTALIS_ROOT/cmake/mingw-w64-x86_64.cmake" \
   -DFRACTALIS_PLATFORM_ONLY=ON -DFRACTALIS_WERROR=ON
 cd "$FRACTALIS_BUILD"
+# Make the prefix and start one lasting wine server, with Wine's own services, before the tests
+# run side by side: two test programs that each find no server and no prefix race to make them,
+# and the loser fails at start ("wine: chdir to /tmp/wine-…/server-…: No such file or
+# directory", seen in CI); and services started by a test would hold its output open for CTest.
+echo "fractalis: preparing Wine in $WINEPREFIX" >&2
+mkdir -p "$WINEPREFIX"
+wineserver -p 900
+trap 'wineserver -k 2>/dev/null || true' EXIT
+wine wineboot --init
 echo "fractalis: the Windows tests under Wine" >&2
 ctest --output-on-failure -j "$(nproc 2>/dev/null || echo 2)"
