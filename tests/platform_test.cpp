@@ -96,6 +96,25 @@ TEST(SystemFacts, DescribeThisMachine) {
   }
 }
 
+// What a plugin holds shows in the heap count: 1 MiB in 4096 small blocks (from malloc's
+// arenas) and 4 MiB in one (which glibc maps on its own), then gone again once freed.
+TEST(SystemFacts, HeapBytesSeeWhatIsAllocated) {
+  constexpr uint64_t kMiB = uint64_t{1} << 20;
+  const uint64_t before = heap_bytes_in_use();
+  std::vector<void*> small(4096);
+  // The compiler may drop a malloc whose memory nothing reads; the empty asm reads it.
+  const auto keep = [](void* p) { asm volatile("" : : "r"(p) : "memory"); };
+  for (void*& p : small) keep(p = std::malloc(256));
+  void* large = std::malloc(4 * kMiB);
+  keep(large);
+  const uint64_t holding = heap_bytes_in_use();
+  EXPECT_GE(holding, before + 5 * kMiB) << before << " bytes before, " << holding << " holding";
+  for (void* p : small) std::free(p);
+  std::free(large);
+  const uint64_t after = heap_bytes_in_use();
+  EXPECT_LE(after + 4 * kMiB, holding) << holding << " bytes holding, " << after << " after";
+}
+
 // Polls for up to 5 s (a watch reports within milliseconds; Wine's within its poll period).
 bool changed_within_5_s(FolderWatch& watch) {
   for (int i = 0; i < 500; ++i) {

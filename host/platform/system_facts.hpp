@@ -1,4 +1,5 @@
-// system_facts.hpp — the machine a benchmark ran on, and what bounds this process's memory.
+// system_facts.hpp — the machine a benchmark ran on, what bounds this process's memory, and how
+// much of it the allocator has handed out.
 #pragma once
 
 #include <cstdint>
@@ -24,5 +25,11 @@ struct MemoryBound {
 // Every bound the system applies here (limits, control groups, available memory); none when it
 // says nothing.
 std::vector<MemoryBound> memory_bounds();
+
+// Bytes of this process's heap in use: handed out by malloc (a plugin's allocations included)
+// and not freed yet. The scene host reports it so that a plugin's leak shows (scene_wire.hpp's
+// HostStats). Linux: malloc's own count (AddressSanitizer's under that sanitizer); Windows: the
+// busy blocks of the process's heaps.
+uint64_t heap_bytes_in_use();
 
 }  // namespace fr

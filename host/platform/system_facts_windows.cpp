@@ -73,4 +73,20 @@ std::vector<MemoryBound> memory_bounds() {
   return bounds;
 }
 
+uint64_t heap_bytes_in_use() {
+  // Every heap of the process: the C runtime's malloc (a plugin DLL's too) allocates from one of
+  // them. Walked under each heap's lock, so the sum is of a consistent state per heap.
+  HANDLE heaps[64];
+  const DWORD count = GetProcessHeaps(64, heaps);
+  uint64_t busy = 0;
+  for (DWORD i = 0; i < count && i < 64; ++i) {
+    if (!HeapLock(heaps[i])) continue;
+    PROCESS_HEAP_ENTRY entry{};
+    while (HeapWalk(heaps[i], &entry))
+      if (entry.wFlags & PROCESS_HEAP_ENTRY_BUSY) busy += entry.cbData;
+    HeapUnlock(heaps[i]);
+  }
+  return busy;
+}
+
 }  // namespace fr

@@ -3,13 +3,9 @@
 #include "plugin/plugin_library.hpp"
 #include "plugin/scene_host_process.hpp"
 #include "plugin/wire_io.hpp"
+#include "platform/system_facts.hpp"
 
 #include <dirent.h>
-#include <malloc.h>
-#if defined(__SANITIZE_ADDRESS__)
-// From the sanitizer runtime (sanitizer/allocator_interface.h, which Debian's GCC does not ship).
-extern "C" size_t __sanitizer_get_current_allocated_bytes(void);
-#endif
 #include <unistd.h>
 
 #include <cstdio>
@@ -39,12 +35,7 @@ size_t count_lines(const char* file, const char* part) {
 
 HostStats own_stats() {
   HostStats s;
-#if defined(__SANITIZE_ADDRESS__)
-  // AddressSanitizer's allocator serves every malloc (the plugin's too); mallinfo2 reads zero.
-  s.heap_bytes = __sanitizer_get_current_allocated_bytes();
-#else
-  s.heap_bytes = mallinfo2().uordblks;
-#endif
+  s.heap_bytes = heap_bytes_in_use();
   size_t threads = 0;
   if (DIR* d = opendir("/proc/self/task")) {
     while (const dirent* e = readdir(d))
