@@ -27,7 +27,11 @@ int main(int argc, char** argv) {
   if (wire != std::to_string(fr::kSceneWireVersion)) return 126;
   if (channel_handle == fr::kNoHandle || plugin_handle == fr::kNoHandle) return 2;
   fr::Channel channel(channel_handle);
-  return fr::run_scene_host(channel, static_cast<int>(plugin_handle), file);
+  std::string error;
+  fr::ReadableFile plugin = fr::ReadableFile::adopt(plugin_handle, &error);
+  if (!plugin.valid())
+    std::fprintf(stderr, "fractalis-scene-host: the plugin: %s\n", error.c_str());
+  return fr::run_scene_host(channel, std::move(plugin), file);
 }
 
 #if defined(__SANITIZE_ADDRESS__)

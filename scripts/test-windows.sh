@@ -3,9 +3,10 @@
 # build-windows/ with cmake/mingw-w64-x86_64.cmake, and runs the tests under Wine.
 #
 # Issue 21 is in progress: this builds and tests the platform layer (host/platform/, the one
-# place that differs between the systems: files, folders, shared memory, helper processes and
-# their channels, libraries loaded from private copies) and the few files above it that need
-# nothing else; README's Windows section says what is and is not ported.
+# place that differs between the systems: files and who may change them, folders, shared
+# memory, helper processes and their channels, libraries loaded from private copies) and the
+# files above it that need nothing else (output files, cache folders, the plugin folder's watch
+# and scan); README's Windows section says what is and is not ported.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 

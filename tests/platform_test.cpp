@@ -215,6 +215,58 @@ TEST(Files, WritableFileCreatesOnlyNewFilesAndReplacesInOneStep) {
   fs::remove_all(dir);
 }
 
+// A file opened for reading: what it is, all of its bytes (and no more than asked for), an
+// identity that a replaced file does not share, and who else could change it.
+TEST(Files, ReadableFileSaysWhatItOpenedAndReadsItWhole) {
+  const fs::path dir = fresh_dir("readable");
+  std::string contents(200000, '\0');
+  for (size_t i = 0; i < contents.size(); ++i) contents[i] = static_cast<char>(i * 7 + i / 300);
+  std::ofstream(dir / "plugin", std::ios::binary) << contents;
+  std::string error;
+  FileIdentity first;
+  {
+    const ReadableFile file = ReadableFile::open(dir / "plugin", &error);
+    ASSERT_TRUE(file.valid()) << error;
+    EXPECT_EQ(file.kind(), PathKind::Regular);
+    EXPECT_EQ(file.identity().size_bytes, contents.size());
+    std::string bytes;
+    ASSERT_TRUE(file.read_all(contents.size(), &bytes, &error)) << error;
+    EXPECT_TRUE(bytes == contents) << bytes.size() << " bytes read";
+    ASSERT_TRUE(file.read_all(contents.size(), &bytes, &error)) << "again, from the start";
+    EXPECT_TRUE(bytes == contents);
+    EXPECT_FALSE(file.read_all(contents.size() - 1, &bytes, &error)) << "one byte over the limit";
+    EXPECT_NE(error.find("more than"), std::string::npos) << error;
+    EXPECT_EQ(file.others_who_can_write(), "") << "this test's own new file";
+    first = file.identity();
+  }  // (Windows replaces no file that is open)
+  EXPECT_EQ(others_who_can_write(dir, true), "") << "this test's own new folder";
+
+  {  // (the handles closed before the folder goes)
+    // Replaced by another file of the same size: another identity.
+    std::ofstream(dir / "next", std::ios::binary) << std::string(contents.size(), 'x');
+    ASSERT_TRUE(replace_file(dir / "next", dir / "plugin", &error)) << error;
+    const ReadableFile replaced = ReadableFile::open(dir / "plugin", &error);
+    ASSERT_TRUE(replaced.valid()) << error;
+    EXPECT_EQ(replaced.identity().size_bytes, first.size_bytes);
+    EXPECT_FALSE(replaced.identity() == first);
+
+    const ReadableFile folder = ReadableFile::open(dir, &error);
+    ASSERT_TRUE(folder.valid()) << "a folder opens, to say what it is: " << error;
+    EXPECT_EQ(folder.kind(), PathKind::Folder);
+    EXPECT_EQ(describe(PathKind::Folder), "a directory");
+    const ReadableFile missing = ReadableFile::open(dir / "nothing", &error);
+    EXPECT_FALSE(missing.valid());
+    EXPECT_EQ(error.rfind("cannot open: ", 0), 0u) << error;
+    std::error_code ec;
+    fs::create_symlink(dir / "gone", dir / "dangling", ec);
+    if (!ec) {  // (Windows lets only administrators and developer mode make symbolic links)
+      EXPECT_FALSE(ReadableFile::open(dir / "dangling", &error).valid());
+      EXPECT_EQ(error, "a dangling symlink");
+    }
+  }
+  fs::remove_all(dir);
+}
+
 // Another mapping of the same memory (the render worker's, here in this process) sees what the
 // creator wrote, as the memory grows; and asking it for more than there is fails, not faults.
 TEST(SharedMemory, BothSidesSeeTheSameBytesAsItGrows) {

@@ -1,9 +1,9 @@
 // Hostile plugins against the host: one fixture per failure mode (fixtures/plugins/README.md has
 // the table). For each, the host survives (this process goes on), the outcome names the file and
 // the reason, and a good scene beside them still loads, updates and renders.
+#include "io/printable.hpp"
 #include "plugin/plugin_files.hpp"
 #include "plugin/plugin_loader.hpp"
-#include "io/printable.hpp"
 #include "plugin/scan_cache.hpp"
 #include "plugin/scene_instance.hpp"
 #include "render/renderer.hpp"
@@ -505,11 +505,12 @@ TEST(PluginIsolation, ScanIsCachedByFileIdentity) {
   const auto dir = test::fresh_dir("scan_cache_plugins");
   std::filesystem::copy_file(std::filesystem::path(RELOAD_PLUGIN_DIR) / "reload_a.so",
                              dir / "cached.so");
-  FileIdentity identity;
   std::string error;
-  const int fd = open_plugin_file(dir / "cached.so", false, &error, &identity);
-  ASSERT_GE(fd, 0) << error;
-  close(fd);
+  const FileIdentity identity = [&] {
+    const ReadableFile opened = open_plugin_file(dir / "cached.so", false, &error);
+    EXPECT_TRUE(opened.valid()) << error;
+    return opened.identity();
+  }();
   EXPECT_FALSE(find_scan(identity));
   const LoadOutcome first = load_scene_plugin(dir / "cached.so", quick_policy());
   ASSERT_EQ(first.result, LoadResult::Loaded) << first.message;

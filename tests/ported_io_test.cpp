@@ -1,8 +1,10 @@
 // The host's files that build on the platform layer alone and so already run on Windows: atomic
-// output files (io/atomic_file.hpp) and the plugin folder watcher (plugin/plugin_watcher.hpp),
-// checked the same way on Linux in CTest and, cross-built, under Wine (scripts/test-windows.sh).
-// (tests/output_safety_test.cpp checks the Linux-only cases: FIFOs, symlinks, modes, signals.)
+// output files (io/atomic_file.hpp), the plugin folder watcher (plugin/plugin_watcher.hpp) and
+// the plugin folder's scan (plugin/plugin_files.hpp), checked the same way on Linux in CTest
+// and, cross-built, under Wine (scripts/test-windows.sh). (tests/output_safety_test.cpp and
+// tests/plugin_isolation_test.cpp check the Linux-only cases: FIFOs, symlinks, modes, signals.)
 #include "io/atomic_file.hpp"
+#include "plugin/plugin_files.hpp"
 #include "plugin/plugin_watcher.hpp"
 
 #include <gtest/gtest.h>
@@ -110,6 +112,33 @@ TEST(PluginWatcher, ReportsFilesOnceTheyAreStable) {
   ASSERT_EQ(changes.size(), 1u);
   EXPECT_EQ(changes[0].kind, PluginChange::Kind::Removed);
   EXPECT_EQ(changes[0].file.filename(), "old.so");
+  fs::remove_all(dir);
+}
+
+// A plugin folder's scan: libraries by their system's suffix, anything else of that name skipped
+// with its reason, other names ignored; this test's own folder (and its parents) not refused.
+TEST(PluginFiles, ListsLibrariesAndSaysWhyTheRestAreSkipped) {
+  const fs::path dir = fresh_dir("plugin-files");
+  const std::string suffix = kWindows ? ".dll" : ".so";
+  std::ofstream(dir / ("scene" + suffix)) << "bytes the loader will judge";
+  fs::create_directory(dir / ("folder" + suffix));
+  std::ofstream(dir / "notes.txt") << "not a plugin";
+  const std::vector<PluginFile> files = list_plugin_files(dir, false);
+  ASSERT_EQ(files.size(), 2u) << (files.empty() ? "" : files[0].skip_reason);
+  EXPECT_EQ(files[0].path.filename(), "folder" + suffix);
+  EXPECT_EQ(files[0].skip_reason, "a directory, not a shared library");
+  EXPECT_EQ(files[1].path.filename(), "scene" + suffix);
+  EXPECT_EQ(files[1].skip_reason, "");
+  std::string error;
+  {
+    const ReadableFile opened = open_plugin_file(dir / ("scene" + suffix), false, &error);
+    EXPECT_TRUE(opened.valid()) << error;
+    EXPECT_FALSE(open_plugin_file(dir / ("folder" + suffix), false, &error).valid());
+    EXPECT_EQ(error, "a directory, not a shared library");
+    EXPECT_FALSE(open_plugin_file(dir / ("gone" + suffix), false, &error).valid());
+    EXPECT_EQ(error.rfind("cannot open: ", 0), 0u) << error;
+  }
+  EXPECT_EQ(list_plugin_files(dir / "missing", false).size(), 1u) << "one entry saying why";
   fs::remove_all(dir);
 }
 

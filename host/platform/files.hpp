@@ -1,4 +1,5 @@
-// files.hpp — files as the system sees them: what a path names, a file opened for writing, and
+// files.hpp — files as the system sees them: what a path names and who else could change it, a
+// file opened for reading (plugins: plugin/plugin_files.hpp), a file opened for writing, and
 // putting one file in another's place in one step (io/atomic_file.hpp builds its output files
 // on these).
 #pragma once
@@ -24,11 +25,70 @@ enum class PathKind {
 struct PathInfo {
   PathKind kind = PathKind::Missing;  // of what the path names, symbolic links followed
   bool is_link = false;               // the path itself is a symbolic link (or a reparse point)
+  bool loops = false;                 // its links lead round in a circle (then kind is Missing)
   unsigned mode = 0;                  // permission bits (POSIX); 0 on Windows
   // Why what it names could not be examined, when the path exists (a link to nothing: why not).
   std::string error;
 };
 PathInfo examine_path(const std::filesystem::path& path);
+
+// What a kind of path is, in words: "a regular file", "a directory", "a FIFO", "a socket"...
+std::string describe(PathKind kind);
+
+// Why a user other than this one (or the system's administrator) could change the file or
+// folder `path` names, or "" when none could: "owned by user 1001, not by you or root",
+// "writable by every user", "writable by group 27" (POSIX: the owner and the permission bits; a
+// sticky folder such as /tmp, where others may add entries but not replace ours, is not
+// refused). Windows: the owner (not this user, the Administrators or the system) and the
+// access control list's write rights given to Everyone, Users, Authenticated Users or Guests.
+// An error reading it is a reason too.
+std::string others_who_can_write(const std::filesystem::path& path, bool is_folder);
+
+// The identity of a file's contents as the file system sees it: a rebuilt file differs in at
+// least one of these. POSIX: st_dev, st_ino, st_size, st_mtim, st_ctim; Windows: the volume's
+// serial number, the file index, the size, the last write and change times.
+struct FileIdentity {
+  uint64_t device = 0;
+  uint64_t inode = 0;
+  uint64_t size_bytes = 0;
+  int64_t mtime_ns = 0;
+  int64_t ctime_ns = 0;
+  bool operator==(const FileIdentity&) const = default;
+};
+
+// A file open for reading. Opening never blocks (a FIFO opens without waiting for a writer, and
+// kind() says what it is) and never makes a terminal this process's; the handle is not inherited
+// by child processes unless handed to one (child_process.hpp). Move-only; closed when destroyed.
+class ReadableFile {
+ public:
+  ReadableFile() = default;
+  ~ReadableFile();
+  ReadableFile(ReadableFile&& other) noexcept;
+  ReadableFile& operator=(ReadableFile&& other) noexcept;
+
+  // On failure *error is "a symlink loop", "a dangling symlink" or "cannot open: " and why.
+  static ReadableFile open(const std::filesystem::path& path, std::string* error);
+  // Takes over a handle open for reading (one a parent process handed over); invalid, with
+  // *error, when the system cannot say what it is (the handle is closed then).
+  static ReadableFile adopt(intptr_t handle, std::string* error);
+
+  bool valid() const { return handle_ != kNone; }
+  // What is open (not what the path names now: it may have been replaced since).
+  PathKind kind() const { return kind_; }
+  const FileIdentity& identity() const { return identity_; }
+  // As others_who_can_write, for the file that is open.
+  std::string others_who_can_write() const;
+  // Every byte from the start; false (and *error) past max_bytes or when reading fails.
+  bool read_all(uint64_t max_bytes, std::string* bytes, std::string* error) const;
+  // A descriptor or a HANDLE, for handing to a child process.
+  intptr_t handle() const { return handle_; }
+
+ private:
+  static constexpr intptr_t kNone = -1;
+  intptr_t handle_ = kNone;
+  PathKind kind_ = PathKind::Missing;
+  FileIdentity identity_;
+};
 
 // Whether `path` is this process's standard output (/dev/stdout, the file or pipe it goes to).
 bool is_standard_output_path(const std::filesystem::path& path);

@@ -36,12 +36,142 @@ PathInfo examine_path(const std::filesystem::path& path) {
   info.is_link = S_ISLNK(link.st_mode);
   struct stat target {};
   if (stat(path.c_str(), &target) != 0) {
+    info.loops = errno == ELOOP;
     info.error = std::strerror(errno);  // a link to nothing, or a race with its removal
     return info;
   }
   info.kind = kind_of(target.st_mode);
   info.mode = target.st_mode & 07777;
   return info;
+}
+
+std::string describe(PathKind kind) {
+  switch (kind) {
+    case PathKind::Missing:
+      return "nothing";
+    case PathKind::Regular:
+      return "a regular file";
+    case PathKind::Folder:
+      return "a directory";
+    case PathKind::CharacterDevice:
+      return "a character device";
+    case PathKind::Pipe:
+      return "a FIFO";
+    case PathKind::BlockDevice:
+      return "a block device";
+    case PathKind::Socket:
+      return "a socket";
+    case PathKind::Other:
+      break;
+  }
+  return "not a regular file";
+}
+
+namespace {
+
+// Why a file or folder with this status could be changed by a user other than us or root.
+std::string foreign_writer(const struct stat& st, bool is_folder) {
+  const uid_t me = geteuid();
+  if (st.st_uid != me && st.st_uid != 0)
+    return "owned by user " + std::to_string(st.st_uid) + ", not by you or root";
+  // A sticky folder (like /tmp) lets others add entries but not replace or rename ours.
+  if (is_folder && (st.st_mode & S_ISVTX)) return "";
+  if (st.st_mode & S_IWOTH) return "writable by every user";
+  if ((st.st_mode & S_IWGRP) && st.st_gid != getegid())
+    return "writable by group " + std::to_string(st.st_gid);
+  return "";
+}
+
+int64_t nanoseconds(const struct timespec& t) {
+  return int64_t{t.tv_sec} * 1000000000 + t.tv_nsec;
+}
+
+}  // namespace
+
+std::string others_who_can_write(const std::filesystem::path& path, bool is_folder) {
+  struct stat st {};
+  if (stat(path.c_str(), &st) != 0) return std::string("cannot stat: ") + std::strerror(errno);
+  return foreign_writer(st, is_folder);
+}
+
+ReadableFile::~ReadableFile() {
+  if (handle_ != kNone) ::close(static_cast<int>(handle_));
+}
+
+ReadableFile::ReadableFile(ReadableFile&& other) noexcept
+    : handle_(other.handle_), kind_(other.kind_), identity_(other.identity_) {
+  other.handle_ = kNone;
+}
+
+ReadableFile& ReadableFile::operator=(ReadableFile&& other) noexcept {
+  if (this != &other) {
+    if (handle_ != kNone) ::close(static_cast<int>(handle_));
+    handle_ = other.handle_;
+    kind_ = other.kind_;
+    identity_ = other.identity_;
+    other.handle_ = kNone;
+  }
+  return *this;
+}
+
+ReadableFile ReadableFile::open(const std::filesystem::path& path, std::string* error) {
+  // O_NONBLOCK: a FIFO opens without waiting for a writer (fstat below then says what it is).
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
+  if (fd < 0) {
+    const int err = errno;
+    struct stat own {};
+    if (err == ELOOP)
+      *error = "a symlink loop";
+    else if (err == ENOENT && lstat(path.c_str(), &own) == 0 && S_ISLNK(own.st_mode))
+      *error = "a dangling symlink";
+    else
+      *error = std::string("cannot open: ") + std::strerror(err);
+    return ReadableFile();
+  }
+  return adopt(fd, error);
+}
+
+ReadableFile ReadableFile::adopt(intptr_t handle, std::string* error) {
+  ReadableFile file;
+  file.handle_ = handle;
+  struct stat st {};
+  if (fstat(static_cast<int>(handle), &st) != 0) {
+    *error = std::string("cannot examine the open file: ") + std::strerror(errno);
+    return ReadableFile();
+  }
+  file.kind_ = kind_of(st.st_mode);
+  file.identity_ = {static_cast<uint64_t>(st.st_dev), static_cast<uint64_t>(st.st_ino),
+                    static_cast<uint64_t>(st.st_size), nanoseconds(st.st_mtim),
+                    nanoseconds(st.st_ctim)};
+  return file;
+}
+
+std::string ReadableFile::others_who_can_write() const {
+  struct stat st {};
+  if (fstat(static_cast<int>(handle_), &st) != 0)
+    return std::string("cannot stat: ") + std::strerror(errno);
+  return foreign_writer(st, S_ISDIR(st.st_mode));
+}
+
+bool ReadableFile::read_all(uint64_t max_bytes, std::string* bytes, std::string* error) const {
+  bytes->clear();
+  char buffer[1 << 16];
+  for (;;) {
+    // pread: the position is not shared with a child process that was handed this descriptor.
+    const ssize_t n =
+        pread(static_cast<int>(handle_), buffer, sizeof buffer, static_cast<off_t>(bytes->size()));
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) {
+      *error = std::string("cannot read: ") + std::strerror(errno);
+      return false;
+    }
+    if (n == 0) return true;
+    if (bytes->size() + static_cast<size_t>(n) > max_bytes) {
+      *error = "more than " + std::to_string(max_bytes) + " bytes";
+      return false;
+    }
+    bytes->append(buffer, static_cast<size_t>(n));
+  }
 }
 
 bool is_standard_output_path(const std::filesystem::path& path) {

@@ -3,6 +3,9 @@
 #include "platform/last_error_windows.hpp"
 
 #include <windows.h>
+// After windows.h:
+#include <aclapi.h>
+#include <sddl.h>
 
 #include <algorithm>
 #include <cstring>
@@ -39,6 +42,7 @@ PathInfo examine_path(const std::filesystem::path& path) {
       CreateFileW(path.c_str(), 0, FILE_SHARE_READ | FILE_SHARE_WRITE | FILE_SHARE_DELETE, nullptr,
                   OPEN_EXISTING, FILE_FLAG_BACKUP_SEMANTICS, nullptr);
   if (h == INVALID_HANDLE_VALUE) {
+    info.loops = GetLastError() == ERROR_CANT_RESOLVE_FILENAME;
     info.error = last_error_text();
     return info;
   }
@@ -62,6 +66,246 @@ PathInfo examine_path(const std::filesystem::path& path) {
   }
   CloseHandle(h);
   return info;
+}
+
+std::string describe(PathKind kind) {
+  switch (kind) {
+    case PathKind::Missing:
+      return "nothing";
+    case PathKind::Regular:
+      return "a regular file";
+    case PathKind::Folder:
+      return "a directory";
+    case PathKind::CharacterDevice:
+      return "a character device";
+    case PathKind::Pipe:
+      return "a named pipe";
+    case PathKind::BlockDevice:
+      return "a block device";
+    case PathKind::Socket:
+      return "a socket";
+    case PathKind::Other:
+      break;
+  }
+  return "not a regular file";
+}
+
+namespace {
+
+// A SID's account name ("BUILTIN\\Users"), or its string form when it has none.
+std::string account_name(PSID sid) {
+  wchar_t name[256], domain[256];
+  DWORD name_size = 256, domain_size = 256;
+  SID_NAME_USE use;
+  if (LookupAccountSidW(nullptr, sid, name, &name_size, domain, &domain_size, &use)) {
+    const std::wstring full = domain_size ? std::wstring(domain) + L"\\" + name : name;
+    return std::filesystem::path(full).string();
+  }
+  char* text = nullptr;
+  if (!ConvertSidToStringSidA(sid, &text)) return "an unknown account";
+  std::string out = text;
+  LocalFree(text);
+  return out;
+}
+
+struct WellKnownSid {
+  BYTE bytes[SECURITY_MAX_SID_SIZE];
+  bool made = false;
+  explicit WellKnownSid(WELL_KNOWN_SID_TYPE type) {
+    DWORD size = sizeof bytes;
+    made = CreateWellKnownSid(type, nullptr, bytes, &size);
+  }
+  bool is(PSID sid) const { return made && EqualSid(const_cast<BYTE*>(bytes), sid); }
+};
+
+bool is_this_user(PSID sid) {
+  HANDLE token = nullptr;
+  if (!OpenProcessToken(GetCurrentProcess(), TOKEN_QUERY, &token)) return false;
+  BYTE buffer[sizeof(TOKEN_USER) + SECURITY_MAX_SID_SIZE];
+  DWORD size = 0;
+  const bool same = GetTokenInformation(token, TokenUser, buffer, sizeof buffer, &size) &&
+                    EqualSid(reinterpret_cast<TOKEN_USER*>(buffer)->User.Sid, sid);
+  CloseHandle(token);
+  return same;
+}
+
+// Windows' own installer service, which owns the system's folders.
+bool is_trusted_installer(PSID sid) {
+  PSID installer = nullptr;
+  if (!ConvertStringSidToSidW(L"S-1-5-80-956008885-3418522649-1831038044-1853292631-2271478464",
+                              &installer))
+    return false;
+  const bool same = EqualSid(installer, sid);
+  LocalFree(installer);
+  return same;
+}
+
+// The POSIX side's rule in access-control terms: the owner is this user, the Administrators or
+// the system; and no group of other users may change the file (write it, or replace its access
+// rules or owner, or delete it) or, for a folder, delete or rename what is in it. Adding an entry
+// to a folder is not refused (like a sticky folder): the entry is then someone else's, which the
+// owner rule refuses.
+std::string foreign_writer(PSID owner, PACL dacl, bool is_folder) {
+  static const WellKnownSid administrators(WinBuiltinAdministratorsSid), system(WinLocalSystemSid);
+  if (owner && !is_this_user(owner) && !administrators.is(owner) && !system.is(owner) &&
+      !is_trusted_installer(owner))
+    return "owned by " + account_name(owner) + ", not by you or an administrator";
+  if (!dacl) return "open to every user (it has no access control list)";
+  static const WellKnownSid everyone(WinWorldSid), users(WinBuiltinUsersSid),
+      authenticated(WinAuthenticatedUserSid), guests(WinBuiltinGuestsSid),
+      anonymous(WinAnonymousSid);
+  const ACCESS_MASK changes =
+      WRITE_DAC | WRITE_OWNER | DELETE | GENERIC_ALL |
+      (is_folder ? FILE_DELETE_CHILD : FILE_WRITE_DATA | FILE_APPEND_DATA | GENERIC_WRITE);
+  for (DWORD i = 0; i < dacl->AceCount; ++i) {
+    void* ace = nullptr;
+    if (!GetAce(dacl, i, &ace)) continue;
+    const auto* header = static_cast<const ACE_HEADER*>(ace);
+    if (header->AceType != ACCESS_ALLOWED_ACE_TYPE || (header->AceFlags & INHERIT_ONLY_ACE))
+      continue;
+    auto* allowed = static_cast<ACCESS_ALLOWED_ACE*>(ace);
+    PSID sid = &allowed->SidStart;
+    if (!(allowed->Mask & changes)) continue;
+    for (const WellKnownSid* group : {&everyone, &users, &authenticated, &guests, &anonymous})
+      if (group->is(sid)) return "writable by " + account_name(sid);
+  }
+  return "";
+}
+
+int64_t file_time_ns(LARGE_INTEGER t) {
+  return t.QuadPart * 100;  // 100 ns units since 1601
+}
+
+}  // namespace
+
+std::string others_who_can_write(const std::filesystem::path& path, bool is_folder) {
+  PSID owner = nullptr;
+  PACL dacl = nullptr;
+  PSECURITY_DESCRIPTOR sd = nullptr;
+  const DWORD code = GetNamedSecurityInfoW(path.c_str(), SE_FILE_OBJECT,
+                                           OWNER_SECURITY_INFORMATION | DACL_SECURITY_INFORMATION,
+                                           &owner, nullptr, &dacl, nullptr, &sd);
+  if (code != ERROR_SUCCESS) {
+    SetLastError(code);
+    return "cannot read its access control list: " + last_error_text();
+  }
+  std::string why = foreign_writer(owner, dacl, is_folder);
+  LocalFree(sd);
+  return why;
+}
+
+ReadableFile::~ReadableFile() {
+  if (handle_ != kNone) CloseHandle(as_handle(handle_));
+}
+
+ReadableFile::ReadableFile(ReadableFile&& other) noexcept
+    : handle_(other.handle_), kind_(other.kind_), identity_(other.identity_) {
+  other.handle_ = kNone;
+}
+
+ReadableFile& ReadableFile::operator=(ReadableFile&& other) noexcept {
+  if (this != &other) {
+    if (handle_ != kNone) CloseHandle(as_handle(handle_));
+    handle_ = other.handle_;
+    kind_ = other.kind_;
+    identity_ = other.identity_;
+    other.handle_ = kNone;
+  }
+  return *this;
+}
+
+ReadableFile ReadableFile::open(const std::filesystem::path& path, std::string* error) {
+  // Not inherited (no SECURITY_ATTRIBUTES); folders open too (backup semantics), so that kind()
+  // says what they are; others may go on reading, writing or deleting the file meanwhile.
+  const HANDLE h = CreateFileW(path.c_str(), GENERIC_READ,
+                               FILE_SHARE_READ | FILE_SHARE_WRITE | FILE_SHARE_DELETE, nullptr,
+                               OPEN_EXISTING, FILE_FLAG_BACKUP_SEMANTICS, nullptr);
+  if (h == INVALID_HANDLE_VALUE) {
+    const DWORD code = GetLastError();
+    const std::string why = last_error_text();
+    const DWORD attributes = GetFileAttributesW(path.c_str());
+    if (code == ERROR_CANT_RESOLVE_FILENAME)
+      *error = "a symlink loop";
+    else if ((code == ERROR_FILE_NOT_FOUND || code == ERROR_PATH_NOT_FOUND) &&
+             attributes != INVALID_FILE_ATTRIBUTES && (attributes & FILE_ATTRIBUTE_REPARSE_POINT))
+      *error = "a dangling symlink";
+    else
+      *error = "cannot open: " + why;
+    return ReadableFile();
+  }
+  return adopt(reinterpret_cast<intptr_t>(h), error);
+}
+
+ReadableFile ReadableFile::adopt(intptr_t handle, std::string* error) {
+  ReadableFile file;
+  file.handle_ = handle;
+  const HANDLE h = as_handle(handle);
+  switch (GetFileType(h)) {
+    case FILE_TYPE_CHAR:
+      file.kind_ = PathKind::CharacterDevice;
+      return file;
+    case FILE_TYPE_PIPE:
+      file.kind_ = PathKind::Pipe;
+      return file;
+    case FILE_TYPE_DISK:
+      break;
+    default:
+      file.kind_ = PathKind::Other;
+      return file;
+  }
+  BY_HANDLE_FILE_INFORMATION info{};
+  FILE_BASIC_INFO basic{};
+  if (!GetFileInformationByHandle(h, &info) ||
+      !GetFileInformationByHandleEx(h, FileBasicInfo, &basic, sizeof basic)) {
+    *error = "cannot examine the open file: " + last_error_text();
+    return ReadableFile();
+  }
+  file.kind_ =
+      (info.dwFileAttributes & FILE_ATTRIBUTE_DIRECTORY) ? PathKind::Folder : PathKind::Regular;
+  file.identity_ = {info.dwVolumeSerialNumber,
+                    (uint64_t{info.nFileIndexHigh} << 32) | info.nFileIndexLow,
+                    (uint64_t{info.nFileSizeHigh} << 32) | info.nFileSizeLow,
+                    file_time_ns(basic.LastWriteTime), file_time_ns(basic.ChangeTime)};
+  return file;
+}
+
+std::string ReadableFile::others_who_can_write() const {
+  PSID owner = nullptr;
+  PACL dacl = nullptr;
+  PSECURITY_DESCRIPTOR sd = nullptr;
+  const DWORD code = GetSecurityInfo(as_handle(handle_), SE_FILE_OBJECT,
+                                     OWNER_SECURITY_INFORMATION | DACL_SECURITY_INFORMATION, &owner,
+                                     nullptr, &dacl, nullptr, &sd);
+  if (code != ERROR_SUCCESS) {
+    SetLastError(code);
+    return "cannot read its access control list: " + last_error_text();
+  }
+  std::string why = foreign_writer(owner, dacl, kind_ == PathKind::Folder);
+  LocalFree(sd);
+  return why;
+}
+
+bool ReadableFile::read_all(uint64_t max_bytes, std::string* bytes, std::string* error) const {
+  bytes->clear();
+  char buffer[1 << 16];
+  for (;;) {
+    // At an offset, like pread: the position is not the point.
+    OVERLAPPED at{};
+    at.Offset = static_cast<DWORD>(bytes->size());
+    at.OffsetHigh = static_cast<DWORD>(static_cast<uint64_t>(bytes->size()) >> 32);
+    DWORD n = 0;
+    if (!ReadFile(as_handle(handle_), buffer, sizeof buffer, &n, &at)) {
+      if (GetLastError() == ERROR_HANDLE_EOF) return true;
+      *error = "cannot read: " + last_error_text();
+      return false;
+    }
+    if (n == 0) return true;
+    if (bytes->size() + n > max_bytes) {
+      *error = "more than " + std::to_string(max_bytes) + " bytes";
+      return false;
+    }
+    bytes->append(buffer, n);
+  }
 }
 
 bool is_standard_output_path(const std::filesystem::path& path) {

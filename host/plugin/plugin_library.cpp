@@ -1,11 +1,5 @@
 #include "plugin/plugin_library.hpp"
 
-#include <sys/stat.h>
-#include <unistd.h>
-
-#include <cerrno>
-#include <cstring>
-
 namespace fr {
 namespace {
 
@@ -15,33 +9,22 @@ constexpr uint64_t kMaxPluginBytes = uint64_t{1} << 30;
 
 }  // namespace
 
-std::shared_ptr<PluginLibrary> PluginLibrary::open(int fd, const std::filesystem::path& file,
+std::shared_ptr<PluginLibrary> PluginLibrary::open(const ReadableFile& opened,
+                                                   const std::filesystem::path& file,
                                                    std::string* error) {
-  struct stat st {};
-  if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+  if (opened.kind() != PathKind::Regular) {
     *error = "not a regular file";
     return nullptr;
   }
-  if (static_cast<uint64_t>(st.st_size) > kMaxPluginBytes) {
+  if (opened.identity().size_bytes > kMaxPluginBytes) {
     *error = "larger than 1 GiB: not a scene plugin";
     return nullptr;
   }
   // Read once: the bytes checked are the bytes loaded, whatever happens to the file meanwhile.
   std::string bytes;
-  char buffer[1 << 16];
-  for (;;) {
-    const ssize_t n = pread(fd, buffer, sizeof buffer, static_cast<off_t>(bytes.size()));
-    if (n < 0 && errno == EINTR) continue;
-    if (n < 0) {
-      *error = std::string("cannot read: ") + std::strerror(errno);
-      return nullptr;
-    }
-    if (n == 0) break;
-    bytes.append(buffer, static_cast<size_t>(n));
-    if (bytes.size() > static_cast<uint64_t>(st.st_size) + (1 << 20)) {
-      *error = "the file grew while it was being read";
-      return nullptr;
-    }
+  if (!opened.read_all(opened.identity().size_bytes + (1 << 20), &bytes, error)) {
+    if (error->rfind("more than", 0) == 0) *error = "the file grew while it was being read";
+    return nullptr;
   }
   std::unique_ptr<SharedLibrary> library = SharedLibrary::load_private_copy(bytes, file, error);
   if (!library) return nullptr;

@@ -6,6 +6,7 @@
 // scene-host process (scene_host_process.hpp) unless plugins.isolation = "none".
 #pragma once
 
+#include "platform/files.hpp"
 #include "platform/shared_library.hpp"
 
 #include <filesystem>
@@ -16,12 +17,11 @@ namespace fr {
 
 class PluginLibrary {
  public:
-  // Reads the plugin open at `fd` (see open_plugin_file; not closed here), checks that it is a
-  // complete library for this host (check_library_bytes) and loads a private copy. On failure
-  // returns null and sets *error to a sentence naming what went wrong; messages name `file`,
-  // never the private copy.
-  static std::shared_ptr<PluginLibrary> open(int fd, const std::filesystem::path& file,
-                                             std::string* error);
+  // Reads the plugin `opened` (see open_plugin_file), checks that it is a complete library for
+  // this host (check_library_bytes) and loads a private copy. On failure returns null and sets
+  // *error to a sentence naming what went wrong; messages name `file`, never the private copy.
+  static std::shared_ptr<PluginLibrary> open(const ReadableFile& opened,
+                                             const std::filesystem::path& file, std::string* error);
 
   ~PluginLibrary();
   PluginLibrary(const PluginLibrary&) = delete;

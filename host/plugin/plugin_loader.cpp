@@ -8,7 +8,6 @@
 #include "plugin/scene_code.hpp"
 #include "plugin/scene_host_process.hpp"
 
-#include <unistd.h>
 
 #include <map>
 
@@ -20,14 +19,13 @@ LoadOutcome load_in_process(const std::filesystem::path& file, const PluginPolic
   LoadOutcome out;
   out.file = file;
   std::string error;
-  const int fd = open_plugin_file(file, policy.allow_writable, &error);
-  if (fd < 0) {
+  const ReadableFile opened = open_plugin_file(file, policy.allow_writable, &error);
+  if (!opened.valid()) {
     out.result = LoadResult::Refused;
     out.message = error;
     return out;
   }
-  auto library = PluginLibrary::open(fd, file, &error);
-  close(fd);
+  auto library = PluginLibrary::open(opened, file, &error);
   if (!library) {
     out.result = LoadResult::NotLoadable;
     out.message = printable(error);

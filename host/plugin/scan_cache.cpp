@@ -5,10 +5,6 @@
 #include "io/atomic_file.hpp"
 #include "plugin/scene_wire.hpp"
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -41,16 +37,13 @@ std::filesystem::path scan_cache_dir() {
 
 std::optional<std::string> find_scan(const FileIdentity& identity) {
   if (scan_cache_dir().empty()) return std::nullopt;
-  const int fd = open(entry_path(identity).c_str(), O_RDONLY | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK);
-  if (fd < 0) return std::nullopt;
-  struct stat st {};
-  std::optional<std::string> bytes;
-  if (fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_uid == geteuid() &&
-      st.st_size <= static_cast<off_t>(kMaxFrameBytes)) {
-    std::string b(static_cast<size_t>(st.st_size), '\0');
-    if (pread(fd, b.data(), b.size(), 0) == static_cast<ssize_t>(b.size())) bytes = std::move(b);
-  }
-  close(fd);
+  // Only a regular file that nobody else could have written (the folder is this user's own).
+  std::string error;
+  const ReadableFile entry = ReadableFile::open(entry_path(identity), &error);
+  std::string bytes;
+  if (!entry.valid() || entry.kind() != PathKind::Regular ||
+      !entry.others_who_can_write().empty() || !entry.read_all(kMaxFrameBytes, &bytes, &error))
+    return std::nullopt;
   return bytes;
 }
 

@@ -6,7 +6,6 @@
 #include "plugin/scene_checks.hpp"
 #include "plugin/wire_io.hpp"
 
-#include <unistd.h>
 
 #include <cerrno>
 #include <chrono>
@@ -129,18 +128,15 @@ class IsolatedCode final : public SceneCode {
 
   bool ensure_started(std::string* error) {
     if (process_) return true;
-    FileIdentity now;
-    const int fd = open_plugin_file(file_, policy_.allow_writable, error, &now);
-    if (fd < 0) return false;
-    if (!(now == identity_)) {
-      close(fd);
+    const ReadableFile opened = open_plugin_file(file_, policy_.allow_writable, error);
+    if (!opened.valid()) return false;
+    if (!(opened.identity() == identity_)) {
       *error = printable(file_.string()) +
                " changed since it was loaded (it is reloaded once the "
                "change settles)";
       return false;
     }
-    process_ = SceneHostProcess::start(fd, file_, error);
-    close(fd);
+    process_ = SceneHostProcess::start(opened, file_, error);
     if (!process_) return false;
     std::string loaded;
     if (!process_->receive_loaded(policy_.load_timeout_s, policy_.load_timeout_s, &loaded, error)) {
@@ -237,7 +233,7 @@ std::filesystem::path scene_host_executable() {
                            FRACTALIS_SCENE_HOST_BUILD_PATH);
 }
 
-std::unique_ptr<SceneHostProcess> SceneHostProcess::start(int plugin_fd,
+std::unique_ptr<SceneHostProcess> SceneHostProcess::start(const ReadableFile& plugin,
                                                           const std::filesystem::path& file,
                                                           std::string* error) {
   const std::filesystem::path exe = scene_host_executable();
@@ -255,7 +251,7 @@ std::unique_ptr<SceneHostProcess> SceneHostProcess::start(int plugin_fd,
   const bool keep_stderr = std::getenv("FRACTALIS_SCENE_HOST_STDERR") != nullptr;
   ChildSpec spec;
   spec.program = exe;
-  spec.handles = {channel.theirs.handle(), static_cast<NativeHandle>(plugin_fd)};
+  spec.handles = {channel.theirs.handle(), plugin.handle()};
   spec.arguments = {"--wire",    std::to_string(kSceneWireVersion),
                     "--channel", handle_in_child(0, spec.handles[0]),
                     "--plugin",  handle_in_child(1, spec.handles[1]),
@@ -348,25 +344,24 @@ std::vector<LoadOutcome> load_isolated(const std::vector<std::filesystem::path>&
       Pending p;
       p.outcome.file = files[i];
       std::string error;
-      const int fd = open_plugin_file(files[i], policy.allow_writable, &error, &p.identity);
+      const ReadableFile opened = open_plugin_file(files[i], policy.allow_writable, &error);
+      p.identity = opened.identity();
       std::optional<std::string> kept;
-      if (fd >= 0 && (kept = find_scan(p.identity))) {
+      if (opened.valid() && (kept = find_scan(p.identity))) {
         uint32_t callbacks = 0;
         LoadOutcome cached = parse_loaded(files[i], *kept, &callbacks);
         if (cached.result != LoadResult::Crashed) {  // a damaged entry is scanned again
-          close(fd);
           attach_code(cached, p.identity, *kept, callbacks, policy);
           p.outcome = std::move(cached);
           batch.push_back(std::move(p));
           continue;
         }
       }
-      if (fd < 0) {
+      if (!opened.valid()) {
         p.outcome.result = LoadResult::Refused;
         p.outcome.message = error;
       } else {
-        p.process = SceneHostProcess::start(fd, files[i], &error);
-        close(fd);
+        p.process = SceneHostProcess::start(opened, files[i], &error);
         if (!p.process) {
           p.outcome.result = LoadResult::Crashed;
           p.outcome.message = error;

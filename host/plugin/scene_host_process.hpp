@@ -31,9 +31,11 @@ std::filesystem::path scene_host_executable();
 
 class SceneHostProcess {
  public:
-  // Starts a scene host on the plugin open at `plugin_fd` (not closed here); `file` names it in
-  // messages. Returns null and sets *error when no process could be started.
-  static std::unique_ptr<SceneHostProcess> start(int plugin_fd, const std::filesystem::path& file,
+  // Starts a scene host on the plugin `plugin` (open_plugin_file; the host hands it a handle of
+  // its own); `file` names it in messages. Returns null and sets *error when no process could be
+  // started.
+  static std::unique_ptr<SceneHostProcess> start(const ReadableFile& plugin,
+                                                 const std::filesystem::path& file,
                                                  std::string* error);
   ~SceneHostProcess();  // asks it to quit, kills it if it does not, and reaps it
   SceneHostProcess(const SceneHostProcess&) = delete;
@@ -70,8 +72,9 @@ class SceneHostProcess {
 std::vector<LoadOutcome> load_isolated(const std::vector<std::filesystem::path>& files,
                                        const PluginPolicy& policy);
 
-// The scene-host side: what fractalis-scene-host runs. Loads the plugin open at `plugin_fd`,
-// answers on `channel` until told to quit or the host goes away. Returns the exit status.
-int run_scene_host(Channel& channel, int plugin_fd, const std::string& file);
+// The scene-host side: what fractalis-scene-host runs. Loads the plugin `plugin` (the
+// handle fractalis handed over; closed once its bytes are read), answers on `channel` until told to
+// quit or the host goes away. Returns the exit status.
+int run_scene_host(Channel& channel, ReadableFile plugin, const std::string& file);
 
 }  // namespace fr

@@ -1,9 +1,9 @@
 // The scene-host side of scene_host_process.hpp: runs in fractalis-scene-host, never in the host.
+#include "platform/system_facts.hpp"
 #include "plugin/descriptor_copy.hpp"
 #include "plugin/plugin_library.hpp"
 #include "plugin/scene_host_process.hpp"
 #include "plugin/wire_io.hpp"
-#include "platform/system_facts.hpp"
 
 #include <dirent.h>
 #include <unistd.h>
@@ -54,10 +54,12 @@ std::string init_error(const fr_scene_entry& entry, const std::string& file) {
   return out.ok ? "" : out.error;
 }
 
-int run_scene_host(Channel& channel, int plugin_fd, const std::string& file) {
+int run_scene_host(Channel& channel, ReadableFile plugin, const std::string& file) {
   std::string error;
-  std::shared_ptr<PluginLibrary> library = PluginLibrary::open(plugin_fd, file, &error);
-  close(plugin_fd);
+  std::shared_ptr<PluginLibrary> library =
+      plugin.valid() ? PluginLibrary::open(plugin, file, &error) : nullptr;
+  if (!plugin.valid()) error = "the plugin file handed over is not open";
+  plugin = ReadableFile();  // closed: the private copy is loaded
   DescriptorCopy d;
   if (!library) {
     d.result = LoadResult::NotLoadable;

@@ -9,7 +9,6 @@
 #include "plugin/plugin_files.hpp"
 #include "plugin/scan_cache.hpp"
 
-#include <unistd.h>
 
 #include <cerrno>
 #include <chrono>
@@ -122,15 +121,10 @@ VetResult vet_scene(const std::filesystem::path& file, const RenderSettings& set
 
 uint64_t VettedScenes::content_hash(const std::filesystem::path& file) {
   std::string error;
-  const int fd = open_plugin_file(file, true, &error);  // never blocks, regular files only
-  if (fd < 0) return 0;
-  uint64_t h = kFnv1aOffset;
-  char buffer[1 << 16];
-  ssize_t n;
-  while ((n = read(fd, buffer, sizeof buffer)) > 0)
-    h = fnv1a(std::string_view(buffer, static_cast<size_t>(n)), h);
-  close(fd);
-  return n < 0 ? 0 : h;
+  const ReadableFile opened = open_plugin_file(file, true, &error);  // regular files only
+  std::string bytes;
+  if (!opened.valid() || !opened.read_all(kMaxPluginFileBytes, &bytes, &error)) return 0;
+  return fnv1a(bytes, kFnv1aOffset);
 }
 
 namespace {
