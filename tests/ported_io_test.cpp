@@ -123,12 +123,17 @@ TEST(PluginFiles, ListsLibrariesAndSaysWhyTheRestAreSkipped) {
   std::ofstream(dir / ("scene" + suffix)) << "bytes the loader will judge";
   fs::create_directory(dir / ("folder" + suffix));
   std::ofstream(dir / "notes.txt") << "not a plugin";
+  // Windows ignores the case of names, so a `.DLL` is a library there; a `.SO` is none on Linux.
+  std::ofstream(dir / (kWindows ? "upper.DLL" : "upper.SO")) << "bytes";
   const std::vector<PluginFile> files = list_plugin_files(dir, false);
-  ASSERT_EQ(files.size(), 2u) << (files.empty() ? "" : files[0].skip_reason);
+  ASSERT_EQ(files.size(), kWindows ? 3u : 2u) << (files.empty() ? "" : files[0].skip_reason);
   EXPECT_EQ(files[0].path.filename(), "folder" + suffix);
   EXPECT_EQ(files[0].skip_reason, "a directory, not a shared library");
   EXPECT_EQ(files[1].path.filename(), "scene" + suffix);
   EXPECT_EQ(files[1].skip_reason, "");
+  if (kWindows) {
+    EXPECT_EQ(files[2].path.filename(), "upper.DLL");
+  }
   std::string error;
   {
     const ReadableFile opened = open_plugin_file(dir / ("scene" + suffix), false, &error);

@@ -51,4 +51,8 @@ std::string check_library_bytes(const std::string& bytes);
 // The file name of library `name` on this system: `name`.so on Linux, `name`.dll on Windows.
 std::string library_file_name(const std::string& name);
 
+// Whether a file's name says it is a library on this system: `*.so` on Linux; `*.dll`, in any
+// case (the system ignores it), on Windows.
+bool is_library_file_name(const std::filesystem::path& file);
+
 }  // namespace fr

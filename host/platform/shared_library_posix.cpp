@@ -209,4 +209,8 @@ std::string library_file_name(const std::string& name) {
   return name + ".so";
 }
 
+bool is_library_file_name(const std::filesystem::path& file) {
+  return file.extension() == ".so" && !file.stem().empty();
+}
+
 }  // namespace fr

@@ -8,6 +8,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstring>
+#include <cwctype>
 #include <random>
 
 namespace fr {
@@ -193,6 +194,12 @@ const void* SharedLibrary::symbol(const char* name) const {
 
 std::string library_file_name(const std::string& name) {
   return name + ".dll";
+}
+
+bool is_library_file_name(const std::filesystem::path& file) {
+  std::wstring extension = file.extension().wstring();
+  for (wchar_t& c : extension) c = static_cast<wchar_t>(std::towlower(c));
+  return extension == L".dll" && !file.stem().empty();
 }
 
 }  // namespace fr

@@ -27,15 +27,13 @@ std::vector<PluginFile> list_plugin_files(const std::filesystem::path& folder,
       return {{folder, "plugin folder refused: " + why +
                            " (set plugins.allow_writable = true to load from it anyway)"}};
   }
-  const std::filesystem::path extension =
-      std::filesystem::path(library_file_name("scene")).extension();
   std::error_code ec;
   std::filesystem::directory_iterator entries(folder, ec);
   if (ec) return {{folder, "cannot read the plugin folder: " + ec.message()}};
   std::vector<PluginFile> files;
   for (; entries != std::filesystem::directory_iterator(); entries.increment(ec)) {
     const std::filesystem::path& path = entries->path();
-    if (path.extension() != extension || path.stem().empty()) continue;
+    if (!is_library_file_name(path)) continue;
     PluginFile f{path, ""};
     // Examining a path never opens it, so FIFOs and devices cannot block the scan.
     const PathInfo info = examine_path(path);
