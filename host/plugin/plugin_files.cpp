@@ -68,7 +68,7 @@ ReadableFile open_plugin_file(const std::filesystem::path& file, bool allow_writ
           std::to_string(kMaxPluginFileBytes >> 20) + " MiB a scene plugin may have";
   else if (!allow_writable) {
     if (std::string w = opened.others_who_can_write(); !w.empty())
-      why = "refused: the file is " + w + " (set plugins.allow_writable = true to load it anyway)";
+      why = "the file is " + w + " (set plugins.allow_writable = true to load it anyway)";
   }
   if (!why.empty()) {
     *error = why;

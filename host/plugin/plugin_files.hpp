@@ -32,7 +32,7 @@ std::string writable_by_others(const std::filesystem::path& folder);
 
 // Opens a plugin file for reading without blocking, and only a regular file: returns it (its
 // identity() tells a rebuilt file), or an invalid ReadableFile and *error ("a FIFO, not a shared
-// library", "a symlink loop", "refused: the file is writable by every user ...", ...).
+// library", "a symlink loop", "the file is writable by every user ...", ...).
 ReadableFile open_plugin_file(const std::filesystem::path& file, bool allow_writable,
                               std::string* error);
 
