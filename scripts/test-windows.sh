@@ -6,11 +6,13 @@
 # place that differs between the systems: files and who may change them, folders, shared
 # memory, helper processes and their channels, libraries loaded from private copies) and the
 # files above it that need nothing else (output files, cache folders, the plugin folder's watch
-# and scan); README's Windows section says what is and is not ported.
+# and scan, the renderer's OpenCL runtime: run under Wine through Wine's opencl.dll on this
+# machine's PoCL); README's Windows section says what is and is not ported.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
-FRACTALIS_PACKAGES=(cmake make ccache g++-mingw-w64-x86-64-posix wine64 googletest)
+FRACTALIS_PACKAGES=(cmake make ccache g++-mingw-w64-x86-64-posix wine64 googletest opencl-c-headers
+  ocl-icd-libopencl1 pocl-opencl-icd)
 fractalis_install_packages
 
 FRACTALIS_BUILD="${FRACTALIS_WINDOWS_BUILD:-$FRACTALIS_ROOT/build-windows}"
