@@ -8,7 +8,6 @@
 #include "plugin/scene_code.hpp"
 #include "plugin/scene_host_process.hpp"
 
-
 #include <map>
 
 namespace fr {

@@ -6,7 +6,6 @@
 #include "plugin/scene_checks.hpp"
 #include "plugin/wire_io.hpp"
 
-
 #include <cerrno>
 #include <chrono>
 #include <cstdlib>

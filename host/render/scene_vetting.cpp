@@ -9,7 +9,6 @@
 #include "plugin/plugin_files.hpp"
 #include "plugin/scan_cache.hpp"
 
-
 #include <cerrno>
 #include <chrono>
 #include <cmath>
