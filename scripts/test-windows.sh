@@ -6,8 +6,9 @@
 # place that differs between the systems: files and who may change them, folders, shared
 # memory, helper processes and their channels, libraries loaded from private copies) and the
 # files above it that need nothing else (output files, cache folders, the plugin folder's watch
-# and scan, the renderer's OpenCL runtime: run under Wine through Wine's opencl.dll on this
-# machine's PoCL); README's Windows section says what is and is not ported.
+# and scan, the plugin loader with fractalis-scene-host.exe, the renderer's OpenCL runtime: run
+# under Wine through Wine's opencl.dll on this machine's PoCL); README's Windows section says
+# what is and is not ported.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
