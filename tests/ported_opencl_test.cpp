@@ -8,6 +8,8 @@
 #include "render/device.hpp"
 #include "render/kernel_sources.hpp"
 
+#include "display_reference.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -19,19 +21,7 @@
 namespace fr {
 namespace {
 
-double aces(double x) {
-  const double a = 2.51, b = 0.03, c = 2.43, d = 0.59, e = 0.14;
-  return std::clamp((x * (a * x + b)) / (x * (c * x + d) + e), 0.0, 1.0);
-}
-
-double srgb(double linear) {
-  return linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1 / 2.4) - 0.055;
-}
-
-int display_level(double linear, double exposure) {
-  return static_cast<int>(
-      std::clamp(std::floor(srgb(aces(linear * exposure)) * 255 + 0.5), 0.0, 255.0));
-}
+using test::display_level;
 
 TEST(PortedOpenCl, TheDisplayKernelMatchesItsFormulas) {
   const std::vector<DeviceInfo> devices = list_devices();

@@ -1,6 +1,7 @@
 // The display image (kernels/post.cl: exposure, ACES filmic fit, sRGB encoding with its own
 // log2/exp2) against the same formulas in double on the host, pixel by pixel, for a rendered
 // frame's linear values and for a ramp that covers the sRGB curve's whole range.
+#include "display_reference.hpp"
 #include "plugin/scene_instance.hpp"
 #include "render/renderer.hpp"
 #include "test_support.hpp"
@@ -11,19 +12,7 @@
 namespace fr {
 namespace {
 
-double aces(double x) {
-  const double a = 2.51, b = 0.03, c = 2.43, d = 0.59, e = 0.14;
-  return std::clamp((x * (a * x + b)) / (x * (c * x + d) + e), 0.0, 1.0);
-}
-
-double srgb(double linear) {
-  return linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1 / 2.4) - 0.055;
-}
-
-int display_level(double linear, double exposure) {
-  return static_cast<int>(
-      std::clamp(std::floor(srgb(aces(linear * exposure)) * 255 + 0.5), 0.0, 255.0));
-}
+using test::display_level;
 
 void expect_display_matches(const FrameImage& img, double exposure, const std::string& what) {
   ASSERT_EQ(img.linear_rgba.size(), img.rgba8.size());

@@ -33,7 +33,29 @@ struct PathInfo {
 PathInfo examine_path(const std::filesystem::path& path);
 
 // What a kind of path is, in words: "a regular file", "a directory", "a FIFO", "a socket"...
-std::string describe(PathKind kind);
+// (A pipe is "a FIFO" on both systems: on Windows only \\.\pipe\ names are pipes, which no
+// folder holds.)
+inline std::string describe(PathKind kind) {
+  switch (kind) {
+    case PathKind::Missing:
+      return "nothing";
+    case PathKind::Regular:
+      return "a regular file";
+    case PathKind::Folder:
+      return "a directory";
+    case PathKind::CharacterDevice:
+      return "a character device";
+    case PathKind::Pipe:
+      return "a FIFO";
+    case PathKind::BlockDevice:
+      return "a block device";
+    case PathKind::Socket:
+      return "a socket";
+    case PathKind::Other:
+      break;
+  }
+  return "not a regular file";
+}
 
 // Why a user other than this one (or the system's administrator) could change the file or
 // folder `path` names, or "" when none could: "owned by user 1001, not by you or root",

@@ -45,28 +45,6 @@ PathInfo examine_path(const std::filesystem::path& path) {
   return info;
 }
 
-std::string describe(PathKind kind) {
-  switch (kind) {
-    case PathKind::Missing:
-      return "nothing";
-    case PathKind::Regular:
-      return "a regular file";
-    case PathKind::Folder:
-      return "a directory";
-    case PathKind::CharacterDevice:
-      return "a character device";
-    case PathKind::Pipe:
-      return "a FIFO";
-    case PathKind::BlockDevice:
-      return "a block device";
-    case PathKind::Socket:
-      return "a socket";
-    case PathKind::Other:
-      break;
-  }
-  return "not a regular file";
-}
-
 namespace {
 
 // Why a file or folder with this status could be changed by a user other than us or root.
