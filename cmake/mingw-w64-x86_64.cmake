@@ -6,7 +6,18 @@ set(CMAKE_SYSTEM_PROCESSOR x86_64)
 set(CMAKE_C_COMPILER x86_64-w64-mingw32-gcc-posix)
 set(CMAKE_CXX_COMPILER x86_64-w64-mingw32-g++-posix)
 set(CMAKE_RC_COMPILER x86_64-w64-mingw32-windres)
+# The libraries cross-built from Debian's source packages (scripts/windows-build.sh) are found in
+# their prefix as Linux's are in /usr: CMake packages and pkg-config files alike.
 set(CMAKE_FIND_ROOT_PATH /usr/x86_64-w64-mingw32)
+if(FRACTALIS_WINDOWS_PREFIX)
+  list(PREPEND CMAKE_FIND_ROOT_PATH "${FRACTALIS_WINDOWS_PREFIX}")
+  set(ENV{PKG_CONFIG_LIBDIR}
+    "${FRACTALIS_WINDOWS_PREFIX}/lib/pkgconfig:${FRACTALIS_WINDOWS_PREFIX}/share/pkgconfig:/usr/x86_64-w64-mingw32/lib/pkgconfig")
+  set(ENV{PKG_CONFIG_PATH} "")
+endif()
+# MinGW-w64's zlib comes as a DLL's import library and as a static library: the static one, so
+# that nothing needs zlib1.dll (libpng is found through CMake's FindZLIB).
+set(ZLIB_USE_STATIC_LIBS ON)
 set(CMAKE_FIND_ROOT_PATH_MODE_PROGRAM NEVER)
 set(CMAKE_FIND_ROOT_PATH_MODE_LIBRARY ONLY)
 set(CMAKE_FIND_ROOT_PATH_MODE_INCLUDE ONLY)

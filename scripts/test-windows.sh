@@ -1,29 +1,20 @@
 #!/usr/bin/env bash
-# The Windows build, from Linux: installs MinGW-w64 and Wine (Debian packages), cross-builds in
-# build-windows/ with cmake/mingw-w64-x86_64.cmake, and runs the tests under Wine.
+# The Windows build, tested from Linux: cross-builds fractalis for Windows with its tests
+# (scripts/windows-build.sh: MinGW-w64, the libraries cross-built from Debian's source packages,
+# the same CMake description as Linux's), runs the tests under Wine, then makes the zip
+# (scripts/package-windows.sh) and tries it as a user would: unpacked elsewhere, fractalis.exe
+# lists, checks and renders its scenes, and a scene built with the zip's SDK loads.
 #
-# Issue 21 is in progress: this builds and tests the platform layer (host/platform/, the one
-# place that differs between the systems: files and who may change them, folders, shared
-# memory, helper processes and their channels, libraries loaded from private copies) and the
-# files above it that need nothing else (output files, cache folders, the plugin folder's watch
-# and scan, the plugin loader with fractalis-scene-host.exe, the renderer's OpenCL runtime: run
-# under Wine through Wine's opencl.dll on this machine's PoCL); README's Windows section says
-# what is and is not ported.
+# README's Windows section says which tests run under Wine and what Wine is not.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+source "$FRACTALIS_ROOT/scripts/windows-build.sh"
 
-FRACTALIS_PACKAGES=(cmake make ccache g++-mingw-w64-x86-64-posix wine64 googletest opencl-c-headers
-  ocl-icd-libopencl1 pocl-opencl-icd)
-fractalis_install_packages
-
-FRACTALIS_BUILD="${FRACTALIS_WINDOWS_BUILD:-$FRACTALIS_ROOT/build-windows}"
+fractalis_windows_build wine64 ocl-icd-libopencl1 pocl-opencl-icd zip unzip
 # Wine's own state (its "C: drive" and registry) lives in the build folder: made on the first
 # run (a few seconds), kept for the next.
 export WINEPREFIX="$FRACTALIS_BUILD/wine"
 export WINEDEBUG=-all
-echo "fractalis: cross-building for Windows in $FRACTALIS_BUILD" >&2
-fractalis_build -DCMAKE_TOOLCHAIN_FILE="$FRACTALIS_ROOT/cmake/mingw-w64-x86_64.cmake" \
-  -DFRACTALIS_PLATFORM_ONLY=ON -DFRACTALIS_WERROR=ON
 cd "$FRACTALIS_BUILD"
 # Make the prefix and start one lasting wine server, with Wine's own services, before the tests
 # run side by side: two test programs that each find no server and no prefix race to make them,
@@ -34,5 +25,12 @@ mkdir -p "$WINEPREFIX"
 wineserver -p 900
 trap 'wineserver -k 2>/dev/null || true' EXIT
 wine wineboot --init
+# Wine's prefix says "Windows 7" unless told otherwise; Windows 10 is what fractalis is for.
+wine winecfg -v win10 < /dev/null > /dev/null 2>&1
 echo "fractalis: the Windows tests under Wine" >&2
 ctest --output-on-failure -j "$(nproc 2>/dev/null || echo 2)"
+
+echo "fractalis: the Windows zip, unpacked and run under Wine" >&2
+zip_file="$("$FRACTALIS_ROOT/scripts/package-windows.sh")"
+bash "$FRACTALIS_ROOT/tests/windows_package_test.sh" "$FRACTALIS_ROOT" "$zip_file" \
+  "$FRACTALIS_BUILD/package_test"

@@ -252,7 +252,8 @@ namespace {
 // `bench`: a lap at radius 7.4 bobbing 1.8 + 0.6 sin(2a) (the formula the scene's update callback
 // used), which the spline through its 17 keyframes follows closely.
 TEST(Animate, BenchmarkRouteIsAnOrdinaryPath) {
-  auto scene = test::load_or_fail(std::filesystem::path(SCENE_PLUGIN_DIR) / "benchmark.so");
+  auto scene =
+      test::load_or_fail(std::filesystem::path(SCENE_PLUGIN_DIR) / "benchmark" PLUGIN_SUFFIX);
   ASSERT_TRUE(scene);
   std::vector<PathProblem> problems;
   const auto path =

@@ -54,7 +54,7 @@ TEST(Check, EveryInTreeScenePasses) {
   for (const char* scene : {"mandelbulb", "menger", "sierpinski", "julia", "benchmark"}) {
     SCOPED_TRACE(scene);
     const CheckRun r =
-        run_check(std::filesystem::path(SCENE_PLUGIN_DIR) / (std::string(scene) + ".so"));
+        run_check(std::filesystem::path(SCENE_PLUGIN_DIR) / (std::string(scene) + PLUGIN_SUFFIX));
     EXPECT_EQ(r.exit_code, 0) << r.out;
     for (const char* check : {"descriptor", "de-compiles", "de-returns", "de-finite",
                               "de-lipschitz", "de-overestimate", "de-bounded", "lanes-agree",
@@ -75,7 +75,7 @@ TEST(Check, OverEstimatingDeFails) {
        std::vector<std::pair<std::string, double>>{{"1_25", 1.25}, {"1_5", 1.5}, {"3", 3.0}}) {
     SCOPED_TRACE(tag);
     const CheckRun r = run_check(std::filesystem::path(OVERESTIMATE_PLUGIN_DIR) /
-                                 ("overestimate_menger_x" + tag + ".so"));
+                                 ("overestimate_menger_x" + tag + PLUGIN_SUFFIX));
     EXPECT_EQ(r.exit_code, 1) << r.out;
     EXPECT_EQ(status_of(r.out, "de-overestimate"), "FAIL") << r.out;
     EXPECT_EQ(status_of(r.out, "render"), "PASS") << "only the DE is wrong\n" << r.out;
@@ -102,7 +102,8 @@ TEST(Check, OverEstimatingDeFails) {
 
 // The compatibility scene, built against the frozen ABI 1.0 headers, passes on this 1.1 host.
 TEST(Check, SceneBuiltAgainstAbi10Passes) {
-  const CheckRun r = run_check(std::filesystem::path(COMPAT_PLUGIN_DIR) / "abi10_scene.so");
+  const CheckRun r =
+      run_check(std::filesystem::path(COMPAT_PLUGIN_DIR) / "abi10_scene" PLUGIN_SUFFIX);
   EXPECT_EQ(r.exit_code, 0) << r.out;
   EXPECT_EQ(status_of(r.out, "render"), "PASS") << r.out;
 }
@@ -113,7 +114,7 @@ TEST(Check, SceneBuiltAgainstAbi10Passes) {
 TEST(Check, EveryBrokenFixtureFailsItsCheck) {
   const std::filesystem::path check_dir = CHECK_PLUGIN_DIR, hostile_dir = HOSTILE_PLUGIN_DIR;
   auto hostile = [&](const char* name) {
-    return hostile_dir / ("hostile_" + std::string(name) + ".so");
+    return hostile_dir / ("hostile_" + std::string(name) + PLUGIN_SUFFIX);
   };
   const std::map<std::filesystem::path, std::pair<std::string, std::string>> cases = {
       // fixtures/plugins, as the loader sees them
@@ -136,7 +137,7 @@ TEST(Check, EveryBrokenFixtureFailsItsCheck) {
       {hostile("escape_name"), {"descriptor", "control character 0x1b"}},
       {hostile("invalid_utf8"), {"descriptor", "invalid UTF-8 at byte 3"}},
       {hostile("reserved_nonzero"), {"descriptor", "reserved is not zero"}},
-      {hostile("missing_dep"), {"descriptor", "libfixture_missing_dep_lib.so"}},
+      {hostile("missing_dep"), {"descriptor", "libfixture_missing_dep_lib" PLUGIN_SUFFIX}},
       {hostile("create_crash"), {"update", "crashed (SIG"}},
       {hostile("create_hang"), {"update", "did not answer within 0.5 s"}},
       {hostile("create_throw"), {"update", "create threw a C++ exception"}},
@@ -147,14 +148,19 @@ TEST(Check, EveryBrokenFixtureFailsItsCheck) {
       {hostile("update_bad_camera"), {"update", "invalid camera"}},
       {hostile("de_loop"), {"de-returns", "did not finish within 8 s"}},
       // faults only `check` looks for
-      {check_dir / "check_de_nan.so", {"de-finite", "DE is nan"}},
-      {check_dir / "check_de_overstep.so", {"de-lipschitz", "the DE oversteps"}},
-      {check_dir / "check_surface_outside.so", {"de-bounded", "outside the bounding radius 0.8"}},
-      {check_dir / "check_nondeterministic.so", {"update", "not deterministic"}},
-      {check_dir / "check_create_leak.so", {"create-destroy", "bytes per create/destroy"}},
-      {check_dir / "check_thread_leak.so", {"unload", "thread(s) of the plugin still run"}},
-      {check_dir / "check_blank.so", {"render", "nothing visible from the default camera"}},
-      {check_dir / "check_wrong_entry.so", {"de-compiles", "defines no `real_t scene_de("}},
+      {check_dir / "check_de_nan" PLUGIN_SUFFIX, {"de-finite", "DE is nan"}},
+      {check_dir / "check_de_overstep" PLUGIN_SUFFIX, {"de-lipschitz", "the DE oversteps"}},
+      {check_dir / "check_surface_outside" PLUGIN_SUFFIX,
+       {"de-bounded", "outside the bounding radius 0.8"}},
+      {check_dir / "check_nondeterministic" PLUGIN_SUFFIX, {"update", "not deterministic"}},
+      {check_dir / "check_create_leak" PLUGIN_SUFFIX,
+       {"create-destroy", "bytes per create/destroy"}},
+      {check_dir / "check_thread_leak" PLUGIN_SUFFIX,
+       {"unload", "thread(s) of the plugin still run"}},
+      {check_dir / "check_blank" PLUGIN_SUFFIX,
+       {"render", "nothing visible from the default camera"}},
+      {check_dir / "check_wrong_entry" PLUGIN_SUFFIX,
+       {"de-compiles", "defines no `real_t scene_de("}},
   };
   const std::string limits =
       "--set plugins.load_timeout_s=2 --set plugins.call_timeout_s=0.5 "

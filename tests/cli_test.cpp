@@ -73,7 +73,7 @@ TEST(Cli, UsageErrors) {
   expect_usage_error({"bench", "--explore", "--scene", "nope"}, "unknown scene 'nope'");
   // --config names what it got when that is not a file.
   expect_usage_error({"render", "--config", TEST_OUTPUT_DIR}, "is a folder, not a settings file");
-  expect_usage_error({"render", "--config", "/dev/null"}, "'/dev/null' is a device");
+  expect_usage_error({"render", "--config", NULL_DEVICE}, "'" NULL_DEVICE "' is a device");
 }
 
 // Values are quoted back cut short, with their length, and with control characters escaped.
@@ -153,7 +153,7 @@ TEST(Cli, LargeRenderGoesInBands) {
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("rendered menger 4000x2200 in 2 bands"), std::string::npos) << r.out;
   int w = 0, h = 0, channels = 0;
-  ASSERT_TRUE(stbi_info(file.c_str(), &w, &h, &channels));
+  ASSERT_TRUE(stbi_info(file.string().c_str(), &w, &h, &channels));
   EXPECT_EQ(w, 4000);
   EXPECT_EQ(h, 2200);
 }
@@ -268,10 +268,9 @@ TEST(Cli, ListShowsParametersAndFailures) {
   EXPECT_NE(ok.out.find("--param power=8  float in [2, 16]"), std::string::npos) << ok.out;
   const CliRun fixtures = run({"list", "--plugins", FIXTURE_PLUGIN_DIR});
   EXPECT_EQ(fixtures.code, 1) << "a folder with broken plugins lists them and exits 1";
-  EXPECT_NE(
-      fixtures.out.find(
-          "fixture_wrong_major.so: FAILED (wrong ABI major): wrong ABI major: plugin 2, host 1"),
-      std::string::npos)
+  EXPECT_NE(fixtures.out.find("fixture_wrong_major" PLUGIN_SUFFIX
+                              ": FAILED (wrong ABI major): wrong ABI major: plugin 2, host 1"),
+            std::string::npos)
       << fixtures.out;
 }
 

@@ -19,7 +19,7 @@ struct View {
 
 View scene_view(const std::string& id) {
   View v;
-  v.scene = test::load_or_fail(std::filesystem::path(SCENE_PLUGIN_DIR) / (id + ".so"));
+  v.scene = test::load_or_fail(std::filesystem::path(SCENE_PLUGIN_DIR) / (id + PLUGIN_SUFFIX));
   v.state = make_default_state(v.scene->info);
   std::string error;
   auto instance = SceneInstance::create(v.scene, &error);

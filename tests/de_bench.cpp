@@ -53,7 +53,8 @@ std::vector<std::array<float, 3>> points_in(double radius) {
 void BM_SceneDe(benchmark::State& state) {
   const std::string id = kScenes[state.range(0)];
   const Precision precision = state.range(1) ? Precision::Double : Precision::Float;
-  const LoadOutcome o = load_scene_plugin(std::filesystem::path(SCENE_PLUGIN_DIR) / (id + ".so"));
+  const LoadOutcome o =
+      load_scene_plugin(std::filesystem::path(SCENE_PLUGIN_DIR) / (id + PLUGIN_SUFFIX));
   if (!o.scene) throw std::runtime_error(o.message);
   const auto params = make_default_state(o.scene->info).params;
   const auto points = points_in(o.scene->info.bounding_radius);

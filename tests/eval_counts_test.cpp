@@ -168,8 +168,8 @@ class PinnedCounts : public ::testing::TestWithParam<PinnedView> {};
 
 TEST_P(PinnedCounts, NoMoreWorkThanPinned) {
   const PinnedView& v = GetParam();
-  auto scene =
-      test::load_or_fail(std::filesystem::path(SCENE_PLUGIN_DIR) / (std::string(v.scene) + ".so"));
+  auto scene = test::load_or_fail(std::filesystem::path(SCENE_PLUGIN_DIR) /
+                                  (std::string(v.scene) + PLUGIN_SUFFIX));
   ASSERT_TRUE(scene);
   SceneState state = make_default_state(scene->info);
   std::string error;

@@ -222,7 +222,7 @@ struct View {
 
 template <typename Entry>
 Comparison compare(const std::string& id, int level, Entry entry, const View& view = {}) {
-  auto scene = test::load_or_fail(std::filesystem::path(SCENE_PLUGIN_DIR) / (id + ".so"));
+  auto scene = test::load_or_fail(std::filesystem::path(SCENE_PLUGIN_DIR) / (id + PLUGIN_SUFFIX));
   SceneState state = make_default_state(scene->info);
   state.params[scene->info.find_param("iterations")].v[0] = level;
   std::string error;
@@ -331,7 +331,7 @@ TEST(ExactGeometry, FaceOnViewCatchesATwoPercentOverstep) {
 template <typename Exact>
 void expect_lower_bound(const std::string& id, std::array<int, 2> levels, Exact exact,
                         int min_near_surface) {
-  auto scene = test::load_or_fail(std::filesystem::path(SCENE_PLUGIN_DIR) / (id + ".so"));
+  auto scene = test::load_or_fail(std::filesystem::path(SCENE_PLUGIN_DIR) / (id + PLUGIN_SUFFIX));
   ASSERT_TRUE(scene);
   for (int level : levels) {
     auto at_level = [&](dvec3 p) { return exact(p, level); };

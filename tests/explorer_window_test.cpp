@@ -6,6 +6,7 @@
 #include "app/game_loop.hpp"
 #include "cli/cli.hpp"
 #include "image/png_write.hpp"
+#include "platform/system_facts.hpp"
 #include "test_support.hpp"
 #include "ui/overlay.hpp"
 #include "ui/window.hpp"
@@ -33,7 +34,7 @@ void push_key(SDL_Keycode key, bool down) {
 class ExplorerWindow : public ::testing::Test {
  protected:
   void SetUp() override {
-    ASSERT_TRUE(display_available()) << "run under xvfb-run";
+    ASSERT_EQ(why_no_display(), "") << "run under xvfb-run";
     window = std::make_unique<Window>("Fractalis test", kW, kH, false);
     library =
         std::make_unique<SceneLibrary>(std::vector<std::filesystem::path>{SCENE_PLUGIN_DIR},
@@ -264,7 +265,7 @@ SDL_Window* window_titled(const std::string& title) {
 // end. The render worker dies, not the explorer: the error names the file and the crash, the
 // parameter goes back to the value that rendered, and the next frames render in a fresh worker.
 TEST(ExplorerWindowHostile, TheOverlaysSliderCrashesOnlyTheRenderWorker) {
-  ASSERT_TRUE(display_available()) << "run under xvfb-run";
+  ASSERT_EQ(why_no_display(), "") << "run under xvfb-run";
   const std::string title = "Fractalis slider test";
   Window window(title, kW, kH, false);
   SDL_Window* sdl_window = window_titled(title);
@@ -327,7 +328,8 @@ TEST(ExplorerWindowHostile, TheOverlaysSliderCrashesOnlyTheRenderWorker) {
   // The click sets the value in one frame; the next frame's probe at the eye runs the DE.
   for (int i = 0; i < 10 && slot.error.empty(); ++i) frame();
   EXPECT_NE(slot.error.find("crashed (SIGSEGV"), std::string::npos) << slot.error;
-  EXPECT_NE(slot.error.find("kernel_write_above_param.so"), std::string::npos) << slot.error;
+  EXPECT_NE(slot.error.find("kernel_write_above_param" PLUGIN_SUFFIX), std::string::npos)
+      << slot.error;
   EXPECT_EQ(slot.state.params[0].v[0], 0) << "back to the last value that rendered";
   EXPECT_GE(worker.starts(), 2) << "the slider's value ended a worker";
   const int before = rendered;
@@ -337,7 +339,7 @@ TEST(ExplorerWindowHostile, TheOverlaysSliderCrashesOnlyTheRenderWorker) {
 }
 
 TEST(OverlayOnEveryScreen, ReadableWithNoLabelCut) {
-  ASSERT_TRUE(display_available()) << "run under xvfb-run";
+  ASSERT_EQ(why_no_display(), "") << "run under xvfb-run";
   std::vector<SceneEvent> events;
   SceneLibrary library({SCENE_PLUGIN_DIR}, PluginPolicy{}, RenderSettings{}, test::worker(),
                        &events);

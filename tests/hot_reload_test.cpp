@@ -18,7 +18,7 @@ namespace fr {
 namespace {
 
 std::filesystem::path reload_plugin(const char* name) {
-  return std::filesystem::path(RELOAD_PLUGIN_DIR) / (std::string(name) + ".so");
+  return std::filesystem::path(RELOAD_PLUGIN_DIR) / (std::string(name) + PLUGIN_SUFFIX);
 }
 
 // Drops `from` into the folder as `name` the way a build or a file manager does: written under
@@ -76,7 +76,7 @@ TEST(HotReload, AddChangeBreakRemove) {
   FrameClock clock;
   std::string m;
 
-  drop(reload_plugin("reload_a"), folder, "probe.so");
+  drop(reload_plugin("reload_a"), folder, "probe" PLUGIN_SUFFIX);
   const double appeared_s = poll_until(lib, clock, SceneEvent::Kind::Added, &m);
   ASSERT_GE(appeared_s, 0) << "the new scene never appeared";
   EXPECT_EQ(m, "added 'reload_probe' from probe.so");
@@ -90,7 +90,7 @@ TEST(HotReload, AddChangeBreakRemove) {
   slot.state.params[slot.scene->info.find_param("radius")].v[0] = 1.8;
   slot.state.camera.eye[0] = 0.25;
 
-  drop(reload_plugin("reload_b"), folder, "probe.so");
+  drop(reload_plugin("reload_b"), folder, "probe" PLUGIN_SUFFIX);
   ASSERT_GE(poll_until(lib, clock, SceneEvent::Kind::Reloaded, &m), 0) << "said:\n" << log.str();
   EXPECT_EQ(m, "reloaded 'reload_probe' from probe.so");
   {
@@ -103,7 +103,7 @@ TEST(HotReload, AddChangeBreakRemove) {
     EXPECT_EQ(b.state.camera.eye[0], 0.25) << "the camera stays";
   }
 
-  drop(reload_plugin("reload_broken"), folder, "probe.so");
+  drop(reload_plugin("reload_broken"), folder, "probe" PLUGIN_SUFFIX);
   ASSERT_GE(poll_until(lib, clock, SceneEvent::Kind::Kept, &m), 0);
   EXPECT_EQ(m.rfind("kept the running 'reload_probe': ", 0), 0u) << m;
   EXPECT_NE(m.find("missing_radius"), std::string::npos) << m;
@@ -111,11 +111,11 @@ TEST(HotReload, AddChangeBreakRemove) {
   EXPECT_NE(lib.slots()[0].error.find("reload_broken.cl:2:"), std::string::npos)
       << lib.slots()[0].error;
 
-  std::ofstream(folder / "junk.so") << "not a plugin";
+  std::ofstream(folder / "junk" PLUGIN_SUFFIX) << "not a plugin";
   ASSERT_GE(poll_until(lib, clock, SceneEvent::Kind::Skipped, &m), 0);
   EXPECT_NE(m.find("not an ELF"), std::string::npos) << m;
 
-  std::filesystem::remove(folder / "probe.so");
+  std::filesystem::remove(folder / "probe" PLUGIN_SUFFIX);
   ASSERT_GE(poll_until(lib, clock, SceneEvent::Kind::Removed, &m), 0);
   EXPECT_EQ(m.rfind("'reload_probe' was removed", 0), 0u) << m;
   ASSERT_EQ(lib.slots().size(), 1u) << "a removed scene keeps running";
@@ -128,9 +128,11 @@ TEST(HotReload, AddChangeBreakRemove) {
   EXPECT_EQ(recent.back().rfind("'reload_probe' was removed", 0), 0u) << recent.back();
   session.reset();
   const std::string said = log.str();
-  EXPECT_NE(said.find("fractalis: added 'reload_probe' from probe.so\n"), std::string::npos)
+  EXPECT_NE(said.find("fractalis: added 'reload_probe' from probe" PLUGIN_SUFFIX "\n"),
+            std::string::npos)
       << said;
-  EXPECT_NE(said.find("fractalis: reloaded 'reload_probe' from probe.so\n"), std::string::npos);
+  EXPECT_NE(said.find("fractalis: reloaded 'reload_probe' from probe" PLUGIN_SUFFIX "\n"),
+            std::string::npos);
   EXPECT_NE(said.find("fractalis: warning: kept the running 'reload_probe': "), std::string::npos);
   EXPECT_NE(said.find("fractalis: warning: skipped "), std::string::npos);
   EXPECT_NE(said.find("fractalis: 'reload_probe' was removed"), std::string::npos);
@@ -167,23 +169,23 @@ size_t mapping_count() {
 // open files, threads, mappings or processes, no zombies, and the plugin never mapped here.
 TEST(HotReload, ThousandReloadsLeakNothing) {
   const auto folder = test::fresh_dir("hot_reload_soak");
-  drop(reload_plugin("reload_a"), folder, "soak_probe.so");
+  drop(reload_plugin("reload_a"), folder, "soak_probe" PLUGIN_SUFFIX);
   std::vector<SceneEvent> events;
   SceneLibrary lib({folder}, PluginPolicy{}, RenderSettings{}, test::worker(), &events);
   ASSERT_EQ(lib.slots().size(), 1u);
   FrameClock clock;
   std::string m;
   // One reload first, so that the kernels of both versions are built, cached and vetted.
-  drop(reload_plugin("reload_b"), folder, "soak_probe.so");
+  drop(reload_plugin("reload_b"), folder, "soak_probe" PLUGIN_SUFFIX);
   ASSERT_GE(poll_until(lib, clock, SceneEvent::Kind::Reloaded, &m), 0) << m;
-  drop(reload_plugin("reload_a"), folder, "soak_probe.so");
+  drop(reload_plugin("reload_a"), folder, "soak_probe" PLUGIN_SUFFIX);
   ASSERT_GE(poll_until(lib, clock, SceneEvent::Kind::Reloaded, &m), 0) << m;
   const size_t fds = count_entries("/proc/self/fd"), threads = count_entries("/proc/self/task"),
                maps = mapping_count();
   const auto [children, zombies] = children_and_zombies();
   EXPECT_EQ(zombies, 0u);
   for (int i = 0; i < 1000; ++i) {
-    drop(reload_plugin(i % 2 ? "reload_a" : "reload_b"), folder, "soak_probe.so");
+    drop(reload_plugin(i % 2 ? "reload_a" : "reload_b"), folder, "soak_probe" PLUGIN_SUFFIX);
     ASSERT_GE(poll_until(lib, clock, SceneEvent::Kind::Reloaded, &m), 0)
         << "reload " << i << ": " << m;
     std::string error;
@@ -199,7 +201,8 @@ TEST(HotReload, ThousandReloadsLeakNothing) {
   const auto [children_after, zombies_after] = children_and_zombies();
   EXPECT_EQ(children_after, children) << "scene-host processes grew over 1000 reloads";
   EXPECT_EQ(zombies_after, 0u);
-  EXPECT_EQ(mapped_copies("soak_probe.so"), 0u) << "plugin code was mapped into the host";
+  EXPECT_EQ(mapped_copies("soak_probe" PLUGIN_SUFFIX), 0u)
+      << "plugin code was mapped into the host";
   EXPECT_EQ(mapped_copies("fractalis-plugin"), 0u) << "plugin code was mapped into the host";
 }
 
@@ -207,8 +210,9 @@ TEST(HotReload, ThousandReloadsLeakNothing) {
 // the scene beside it is there.
 TEST(HotReload, StartupVetsEveryScene) {
   const auto folder = test::fresh_dir("startup_vet");
-  drop(reload_plugin("reload_a"), folder, "good.so");
-  drop(std::filesystem::path(HOSTILE_PLUGIN_DIR) / "hostile_de_loop.so", folder, "loops.so");
+  drop(reload_plugin("reload_a"), folder, "good" PLUGIN_SUFFIX);
+  drop(std::filesystem::path(HOSTILE_PLUGIN_DIR) / "hostile_de_loop" PLUGIN_SUFFIX, folder,
+       "loops" PLUGIN_SUFFIX);
   PluginPolicy policy;
   policy.vet_timeout_s = 8;
   std::vector<SceneEvent> events;
@@ -219,8 +223,8 @@ TEST(HotReload, StartupVetsEveryScene) {
   ASSERT_EQ(events.size(), 2u);
   const SceneEvent& skipped = events[0].kind == SceneEvent::Kind::Skipped ? events[0] : events[1];
   EXPECT_EQ(skipped.kind, SceneEvent::Kind::Skipped);
-  EXPECT_EQ(skipped.file, folder / "loops.so");
-  EXPECT_NE(skipped.to_string().find("skipped " + (folder / "loops.so").string() +
+  EXPECT_EQ(skipped.file, folder / "loops" PLUGIN_SUFFIX);
+  EXPECT_NE(skipped.to_string().find("skipped " + (folder / "loops" PLUGIN_SUFFIX).string() +
                                      ": a test render at 8x8 did not finish within 8 s"),
             std::string::npos)
       << skipped.to_string();
@@ -230,8 +234,8 @@ TEST(HotReload, StartupVetsEveryScene) {
 // reason kept, and it still updates and renders afterwards.
 TEST(HotReload, HostileBuildsNeverReplaceTheRunningScene) {
   const auto folder = test::fresh_dir("hot_reload_hostile");
-  drop(reload_plugin("reload_a"), folder, "probe.so");
-  std::filesystem::copy_file(test::fixture_plugin("valid_scene"), folder / "other.so");
+  drop(reload_plugin("reload_a"), folder, "probe" PLUGIN_SUFFIX);
+  std::filesystem::copy_file(test::fixture_plugin("valid_scene"), folder / "other" PLUGIN_SUFFIX);
   std::vector<SceneEvent> events;
   PluginPolicy policy;
   policy.load_timeout_s = 2;
@@ -253,13 +257,14 @@ TEST(HotReload, HostileBuildsNeverReplaceTheRunningScene) {
       {"update_bad_camera", "update left an invalid camera"},
       {"absurd_counts", "param_count 2000000000 is more than 256"},
       {"escape_name", "control character 0x1b"},
-      {"missing_dep", "libfixture_missing_dep_lib.so"},
+      {"missing_dep", "libfixture_missing_dep_lib" PLUGIN_SUFFIX},
       {"de_loop", "did not finish within 8 s (plugins.vet_timeout_s)"},
   };
   for (const auto& [fixture, reason] : cases) {
     SCOPED_TRACE(fixture);
-    drop(std::filesystem::path(HOSTILE_PLUGIN_DIR) / ("hostile_" + std::string(fixture) + ".so"),
-         folder, "probe.so");
+    drop(std::filesystem::path(HOSTILE_PLUGIN_DIR) /
+             ("hostile_" + std::string(fixture) + PLUGIN_SUFFIX),
+         folder, "probe" PLUGIN_SUFFIX);
     ASSERT_GE(poll_until(lib, clock, SceneEvent::Kind::Kept, &m, 30), 0);
     EXPECT_EQ(m.rfind("kept the running 'reload_probe': ", 0), 0u) << m;
     EXPECT_NE(m.find(reason), std::string::npos) << m;
@@ -270,13 +275,14 @@ TEST(HotReload, HostileBuildsNeverReplaceTheRunningScene) {
     EXPECT_TRUE(lib.slots()[index].instance->update(lib.slots()[index].state, 0, &error)) << error;
   }
   // A file that suddenly declares another file's scene id is refused, and both keep running.
-  drop(reload_plugin("reload_a"), folder, "other.so");
+  drop(reload_plugin("reload_a"), folder, "other" PLUGIN_SUFFIX);
   ASSERT_GE(poll_until(lib, clock, SceneEvent::Kind::Kept, &m), 0);
   EXPECT_EQ(m.rfind("kept the running 'fixture_valid': ", 0), 0u) << m;
-  EXPECT_NE(m.find("declares scene id 'reload_probe', which probe.so provides"), std::string::npos)
+  EXPECT_NE(m.find("declares scene id 'reload_probe', which probe" PLUGIN_SUFFIX " provides"),
+            std::string::npos)
       << m;
   ASSERT_EQ(lib.slots().size(), 2u);
-  EXPECT_EQ(lib.slots()[lib.find("reload_probe")].scene->file, folder / "probe.so");
+  EXPECT_EQ(lib.slots()[lib.find("reload_probe")].scene->file, folder / "probe" PLUGIN_SUFFIX);
   Renderer renderer(test::runtime());
   RenderSettings settings;
   settings.width_px = settings.height_px = 8;

@@ -61,7 +61,7 @@ const StageMarker kStageMarkers[] = {
 };
 
 std::shared_ptr<const LoadedScene> scene_by_id(const std::string& id) {
-  return test::load_or_fail(std::filesystem::path(SCENE_PLUGIN_DIR) / (id + ".so"));
+  return test::load_or_fail(std::filesystem::path(SCENE_PLUGIN_DIR) / (id + PLUGIN_SUFFIX));
 }
 
 // For every in-tree scene and every effect: the stage's code is in the kernel exactly when the

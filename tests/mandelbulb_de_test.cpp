@@ -99,8 +99,8 @@ TEST(LaneWidths, AgreeOnAsymmetricScenesOffEverySymmetryPlane) {
   };
   for (const SceneBox& box : {SceneBox{"julia", {-1.2f, -1.2f, -1.2f}, {1.2f, 1.2f, 1.2f}},
                               SceneBox{"benchmark", {-3, -1.2f, -2.2f}, {3.6f, 1.4f, 2.2f}}}) {
-    auto scene =
-        test::load_or_fail(std::filesystem::path(SCENE_PLUGIN_DIR) / (std::string(box.id) + ".so"));
+    auto scene = test::load_or_fail(std::filesystem::path(SCENE_PLUGIN_DIR) /
+                                    (std::string(box.id) + PLUGIN_SUFFIX));
     ASSERT_TRUE(scene);
     const auto values = make_default_state(scene->info).params;
     std::mt19937 rng(3);

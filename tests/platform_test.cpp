@@ -129,16 +129,16 @@ TEST(FolderWatch, SaysWhenAFileAppearsChangesOrGoes) {
   FolderWatch watch(dir);
   ASSERT_TRUE(watch.active());
   EXPECT_FALSE(watch.changed()) << "nothing happened yet";
-  std::ofstream(dir / "scene.so") << "first";
+  std::ofstream(dir / "scene" PLUGIN_SUFFIX) << "first";
   EXPECT_TRUE(changed_within_5_s(watch)) << "a new file";
   std::this_thread::sleep_for(std::chrono::milliseconds(200));
   watch.changed();  // the writes' and closes' own events
   EXPECT_FALSE(watch.changed()) << "nothing since";
-  std::ofstream(dir / "scene.so", std::ios::app) << " and more";
+  std::ofstream(dir / "scene" PLUGIN_SUFFIX, std::ios::app) << " and more";
   EXPECT_TRUE(changed_within_5_s(watch)) << "a file written";
-  fs::rename(dir / "scene.so", dir / "renamed.so");
+  fs::rename(dir / "scene" PLUGIN_SUFFIX, dir / "renamed" PLUGIN_SUFFIX);
   EXPECT_TRUE(changed_within_5_s(watch)) << "a file renamed";
-  fs::remove(dir / "renamed.so");
+  fs::remove(dir / "renamed" PLUGIN_SUFFIX);
   EXPECT_TRUE(changed_within_5_s(watch)) << "a file removed";
   fs::remove_all(dir);
 }

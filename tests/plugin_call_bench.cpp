@@ -12,7 +12,7 @@ namespace fr {
 namespace {
 
 std::filesystem::path mandelbulb_file() {
-  return std::filesystem::path(SCENE_PLUGIN_DIR) / "mandelbulb.so";
+  return std::filesystem::path(SCENE_PLUGIN_DIR) / "mandelbulb" PLUGIN_SUFFIX;
 }
 
 PluginPolicy policy_for(int64_t isolated) {

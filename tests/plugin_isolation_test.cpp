@@ -25,7 +25,7 @@ namespace fr {
 namespace {
 
 std::filesystem::path hostile(const std::string& name) {
-  return std::filesystem::path(HOSTILE_PLUGIN_DIR) / ("hostile_" + name + ".so");
+  return std::filesystem::path(HOSTILE_PLUGIN_DIR) / ("hostile_" + name + PLUGIN_SUFFIX);
 }
 
 // Short limits, so that the hanging fixtures cost little.
@@ -138,8 +138,8 @@ const std::map<std::string, LoadExpectation>& load_expectations() {
 TEST(PluginIsolation, HostileFolderLoadsWithEachFailureNamed) {
   const auto dir = test::fresh_dir("hostile_folder");
   for (const auto& [name, expected] : load_expectations())
-    std::filesystem::copy_file(hostile(name), dir / (name + ".so"));
-  std::filesystem::copy_file(test::fixture_plugin("valid_scene"), dir / "valid.so");
+    std::filesystem::copy_file(hostile(name), dir / (name + PLUGIN_SUFFIX));
+  std::filesystem::copy_file(test::fixture_plugin("valid_scene"), dir / "valid" PLUGIN_SUFFIX);
   const size_t children_before = child_processes();
   const auto outcomes = load_scene_folder({dir}, quick_policy());
   ASSERT_EQ(outcomes.size(), load_expectations().size() + 1);
@@ -158,7 +158,7 @@ TEST(PluginIsolation, HostileFolderLoadsWithEachFailureNamed) {
     EXPECT_EQ(o.message.find("memfd"), std::string::npos) << o.message;
   }
   EXPECT_EQ(child_processes(), children_before) << "a scene host was left running or unreaped";
-  expect_good_scene_works(dir / "valid.so", quick_policy());
+  expect_good_scene_works(dir / "valid" PLUGIN_SUFFIX, quick_policy());
 }
 
 // Attacks from create and update: each call fails with its reason, a failed update is not run
@@ -233,21 +233,21 @@ TEST(PluginIsolation, LogFloodIsBoundedAndEscaped) {
 // opening it (a FIFO would block a reader forever), and the good plugin beside them loads.
 TEST(PluginIsolation, FolderEntriesThatAreNotPlugins) {
   const auto dir = test::fresh_dir("odd_entries");
-  std::filesystem::copy_file(test::fixture_plugin("valid_scene"), dir / "valid.so");
-  std::filesystem::create_symlink("loop_b.so", dir / "loop_a.so");
-  std::filesystem::create_symlink("loop_a.so", dir / "loop_b.so");
-  std::filesystem::create_symlink("gone.so.1", dir / "dangling.so");
-  ASSERT_EQ(mkfifo((dir / "fifo.so").c_str(), 0600), 0);
-  std::filesystem::create_directory(dir / "folder.so");
+  std::filesystem::copy_file(test::fixture_plugin("valid_scene"), dir / "valid" PLUGIN_SUFFIX);
+  std::filesystem::create_symlink("loop_b" PLUGIN_SUFFIX, dir / "loop_a" PLUGIN_SUFFIX);
+  std::filesystem::create_symlink("loop_a" PLUGIN_SUFFIX, dir / "loop_b" PLUGIN_SUFFIX);
+  std::filesystem::create_symlink("gone.so.1", dir / "dangling" PLUGIN_SUFFIX);
+  ASSERT_EQ(mkfifo((dir / "fifo" PLUGIN_SUFFIX).c_str(), 0600), 0);
+  std::filesystem::create_directory(dir / "folder" PLUGIN_SUFFIX);
   const int sock = socket(AF_UNIX, SOCK_STREAM, 0);
   sockaddr_un addr{};
   addr.sun_family = AF_UNIX;
-  const std::string sock_path = (dir / "socket.so").string();
+  const std::string sock_path = (dir / "socket" PLUGIN_SUFFIX).string();
   ASSERT_LT(sock_path.size(), sizeof addr.sun_path);
   std::strcpy(addr.sun_path, sock_path.c_str());
   ASSERT_EQ(bind(sock, reinterpret_cast<sockaddr*>(&addr), sizeof addr), 0);
   // A symlink to a plugin is followed (and here gives a second copy of the same id).
-  std::filesystem::create_symlink(dir / "valid.so", dir / "zz_link.so");
+  std::filesystem::create_symlink(dir / "valid" PLUGIN_SUFFIX, dir / "zz_link" PLUGIN_SUFFIX);
   // An ELF library built for another machine: the valid fixture with its e_machine changed.
   {
     std::ifstream in(test::fixture_plugin("valid_scene"), std::ios::binary);
@@ -256,7 +256,7 @@ TEST(PluginIsolation, FolderEntriesThatAreNotPlugins) {
     std::memcpy(&eh, bytes.data(), sizeof eh);
     eh.e_machine = eh.e_machine == EM_AARCH64 ? EM_X86_64 : EM_AARCH64;
     std::memcpy(bytes.data(), &eh, sizeof eh);
-    std::ofstream(dir / "foreign.so", std::ios::binary) << bytes;
+    std::ofstream(dir / "foreign" PLUGIN_SUFFIX, std::ios::binary) << bytes;
   }
   std::ofstream(dir / "notes.txt") << "not a plugin: ignored without a word";
 
@@ -286,7 +286,7 @@ TEST(PluginIsolation, FolderEntriesThatAreNotPlugins) {
 // settings allow it.
 TEST(PluginIsolation, WritableByOthersIsRefusedUnlessAllowed) {
   const auto dir = test::fresh_dir("world_writable");
-  std::filesystem::copy_file(test::fixture_plugin("valid_scene"), dir / "valid.so");
+  std::filesystem::copy_file(test::fixture_plugin("valid_scene"), dir / "valid" PLUGIN_SUFFIX);
   ASSERT_EQ(chmod(dir.c_str(), 0777), 0);
   auto outcomes = load_scene_folder({dir}, quick_policy());
   ASSERT_EQ(outcomes.size(), 1u);
@@ -303,8 +303,8 @@ TEST(PluginIsolation, WritableByOthersIsRefusedUnlessAllowed) {
   EXPECT_EQ(outcomes[0].result, LoadResult::Loaded) << outcomes[0].message;
 
   ASSERT_EQ(chmod(dir.c_str(), 0755), 0);
-  ASSERT_EQ(chmod((dir / "valid.so").c_str(), 0666), 0);
-  const LoadOutcome file = load_scene_plugin(dir / "valid.so", quick_policy());
+  ASSERT_EQ(chmod((dir / "valid" PLUGIN_SUFFIX).c_str(), 0666), 0);
+  const LoadOutcome file = load_scene_plugin(dir / "valid" PLUGIN_SUFFIX, quick_policy());
   EXPECT_EQ(file.result, LoadResult::Refused);
   EXPECT_NE(file.message.find("the file is writable by every user"), std::string::npos)
       << file.message;
@@ -322,8 +322,8 @@ TEST(PluginIsolation, PlantedTempFolderIsNeverUsed) {
       tmp / ("fractalis-" + std::to_string(getuid()) + "-" + std::to_string(getpid()));
   std::filesystem::create_directory(planted);
   for (int n = 0; n < 4; ++n)
-    std::filesystem::create_symlink(victim,
-                                    planted / (std::to_string(n) + "-fixture_valid_scene.so"));
+    std::filesystem::create_symlink(
+        victim, planted / (std::to_string(n) + "-fixture_valid_scene" PLUGIN_SUFFIX));
   {
     ScopedEnv tmpdir("TMPDIR", tmp.string());
     for (PluginIsolation mode : {PluginIsolation::Process, PluginIsolation::None}) {
@@ -348,12 +348,13 @@ TEST(PluginIsolation, PlantedTempFolderIsNeverUsed) {
 // By default no plugin code is mapped into the host: neither the file nor a private copy.
 TEST(PluginIsolation, NoPluginCodeInTheHostByDefault) {
   const auto dir = test::fresh_dir("no_code_in_host");
-  std::filesystem::copy_file(test::fixture_plugin("valid_scene"), dir / "isolation_probe.so");
+  std::filesystem::copy_file(test::fixture_plugin("valid_scene"),
+                             dir / "isolation_probe" PLUGIN_SUFFIX);
   // Mandelbulb: a scene with an update callback (a scene without callbacks needs no process).
-  std::filesystem::copy_file(std::filesystem::path(SCENE_PLUGIN_DIR) / "mandelbulb.so",
-                             dir / "isolation_probe.so",
+  std::filesystem::copy_file(std::filesystem::path(SCENE_PLUGIN_DIR) / "mandelbulb" PLUGIN_SUFFIX,
+                             dir / "isolation_probe" PLUGIN_SUFFIX,
                              std::filesystem::copy_options::overwrite_existing);
-  const LoadOutcome o = load_scene_plugin(dir / "isolation_probe.so");
+  const LoadOutcome o = load_scene_plugin(dir / "isolation_probe" PLUGIN_SUFFIX);
   ASSERT_EQ(o.result, LoadResult::Loaded) << o.message;
   std::string error;
   auto instance = SceneInstance::create(o.scene, &error);
@@ -367,7 +368,7 @@ TEST(PluginIsolation, NoPluginCodeInTheHostByDefault) {
   // In-process mode does map it: the check above can fail.
   PluginPolicy none;
   none.isolation = PluginIsolation::None;
-  const LoadOutcome in_host = load_scene_plugin(dir / "isolation_probe.so", none);
+  const LoadOutcome in_host = load_scene_plugin(dir / "isolation_probe" PLUGIN_SUFFIX, none);
   ASSERT_EQ(in_host.result, LoadResult::Loaded) << in_host.message;
   EXPECT_GT(count_lines("/proc/self/maps", "fractalis-plugin"), 0u);
 }
@@ -411,9 +412,9 @@ TEST(PluginIsolation, DeThatNeverReturnsEndsTheCommand) {
   struct Case {
     std::string command_out, extra, expected;
   };
-  const std::string vetted =
-      "scene 'fixture_de_loop' (PLUGINS/de_loop.so): a test render at 8x8 did not finish within "
-      "2 s (plugins.vet_timeout_s)";
+  const std::string vetted = "scene 'fixture_de_loop' (PLUGINS/de_loop" PLUGIN_SUFFIX
+                             "): a test render at 8x8 did not finish within "
+                             "2 s (plugins.vet_timeout_s)";
   const std::string watchdog =
       "rendering scene 'fixture_de_loop' did not finish within 2 s (render.watchdog_s)";
   const std::vector<Case> cases = {
@@ -431,7 +432,7 @@ TEST(PluginIsolation, DeThatNeverReturnsEndsTheCommand) {
     const auto dir = test::fresh_dir("de_loop_render");
     const auto plugins = dir / "plugins";
     std::filesystem::create_directories(plugins);
-    std::filesystem::copy_file(hostile("de_loop"), plugins / "de_loop.so");
+    std::filesystem::copy_file(hostile("de_loop"), plugins / "de_loop" PLUGIN_SUFFIX);
     std::ofstream(dir / "path.toml") << "[[keyframe]]\ntime_s = 0\neye = [0, 0, 3]\n"
                                         "target = [0, 0, 0]\n[[keyframe]]\ntime_s = 1\n"
                                         "eye = [0, 1, 3]\ntarget = [0, 0, 0]\n";
@@ -467,8 +468,8 @@ TEST(PluginIsolation, CommandsVetEachSceneFileOnce) {
   const auto dir = test::fresh_dir("vet_once");
   const auto plugins = dir / "plugins";
   std::filesystem::create_directories(plugins);
-  std::filesystem::copy_file(std::filesystem::path(RELOAD_PLUGIN_DIR) / "reload_a.so",
-                             plugins / "probe.so");
+  std::filesystem::copy_file(std::filesystem::path(RELOAD_PLUGIN_DIR) / "reload_a" PLUGIN_SUFFIX,
+                             plugins / "probe" PLUGIN_SUFFIX);
   const auto markers = dir / "cache" / "fractalis" / "vetted";
   auto render = [&] {
     const std::string command = "cd " + dir.string() + " && XDG_CACHE_HOME=" + dir.string() +
@@ -489,8 +490,8 @@ TEST(PluginIsolation, CommandsVetEachSceneFileOnce) {
   EXPECT_EQ(count(), 1u);
   ASSERT_EQ(render(), 0);
   EXPECT_EQ(count(), 1u) << "the same bytes are not vetted again";
-  std::filesystem::copy_file(std::filesystem::path(RELOAD_PLUGIN_DIR) / "reload_b.so",
-                             plugins / "probe.so",
+  std::filesystem::copy_file(std::filesystem::path(RELOAD_PLUGIN_DIR) / "reload_b" PLUGIN_SUFFIX,
+                             plugins / "probe" PLUGIN_SUFFIX,
                              std::filesystem::copy_options::overwrite_existing);
   ASSERT_EQ(render(), 0);
   EXPECT_EQ(count(), 2u);
@@ -503,19 +504,19 @@ TEST(PluginIsolation, ScanIsCachedByFileIdentity) {
   const auto cache = test::fresh_dir("scan_cache_home");
   ScopedEnv cache_home("XDG_CACHE_HOME", cache.string());
   const auto dir = test::fresh_dir("scan_cache_plugins");
-  std::filesystem::copy_file(std::filesystem::path(RELOAD_PLUGIN_DIR) / "reload_a.so",
-                             dir / "cached.so");
+  std::filesystem::copy_file(std::filesystem::path(RELOAD_PLUGIN_DIR) / "reload_a" PLUGIN_SUFFIX,
+                             dir / "cached" PLUGIN_SUFFIX);
   std::string error;
   const FileIdentity identity = [&] {
-    const ReadableFile opened = open_plugin_file(dir / "cached.so", false, &error);
+    const ReadableFile opened = open_plugin_file(dir / "cached" PLUGIN_SUFFIX, false, &error);
     EXPECT_TRUE(opened.valid()) << error;
     return opened.identity();
   }();
   EXPECT_FALSE(find_scan(identity));
-  const LoadOutcome first = load_scene_plugin(dir / "cached.so", quick_policy());
+  const LoadOutcome first = load_scene_plugin(dir / "cached" PLUGIN_SUFFIX, quick_policy());
   ASSERT_EQ(first.result, LoadResult::Loaded) << first.message;
   ASSERT_TRUE(find_scan(identity)) << "nothing kept in " << cache;
-  const LoadOutcome second = load_scene_plugin(dir / "cached.so", quick_policy());
+  const LoadOutcome second = load_scene_plugin(dir / "cached" PLUGIN_SUFFIX, quick_policy());
   ASSERT_EQ(second.result, LoadResult::Loaded) << second.message;
   EXPECT_EQ(second.scene->info.de_source, first.scene->info.de_source);
   auto instance = SceneInstance::create(second.scene, &error);
@@ -523,9 +524,10 @@ TEST(PluginIsolation, ScanIsCachedByFileIdentity) {
   SceneState state = make_default_state(second.scene->info);
   EXPECT_TRUE(instance->update(state, 0, &error)) << error;
   // Rewritten in place with another build: another identity, scanned afresh.
-  std::filesystem::copy_file(std::filesystem::path(RELOAD_PLUGIN_DIR) / "reload_b.so",
-                             dir / "cached.so", std::filesystem::copy_options::overwrite_existing);
-  const LoadOutcome third = load_scene_plugin(dir / "cached.so", quick_policy());
+  std::filesystem::copy_file(std::filesystem::path(RELOAD_PLUGIN_DIR) / "reload_b" PLUGIN_SUFFIX,
+                             dir / "cached" PLUGIN_SUFFIX,
+                             std::filesystem::copy_options::overwrite_existing);
+  const LoadOutcome third = load_scene_plugin(dir / "cached" PLUGIN_SUFFIX, quick_policy());
   ASSERT_EQ(third.result, LoadResult::Loaded) << third.message;
   EXPECT_EQ(third.scene->info.version, "2.0.0");
   // The first scene's file changed under it: its process refuses to start on the new bytes.

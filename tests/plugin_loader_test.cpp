@@ -121,22 +121,22 @@ TEST(PluginLoader, Truncated) {
   std::ifstream in(fixture_plugin("valid_scene"), std::ios::binary);
   std::vector<char> head(2000);
   in.read(head.data(), head.size());
-  std::ofstream(dir / "truncated.so", std::ios::binary).write(head.data(), in.gcount());
-  const LoadOutcome o = load_scene_plugin(dir / "truncated.so");
+  std::ofstream(dir / "truncated" PLUGIN_SUFFIX, std::ios::binary).write(head.data(), in.gcount());
+  const LoadOutcome o = load_scene_plugin(dir / "truncated" PLUGIN_SUFFIX);
   EXPECT_EQ(o.result, LoadResult::NotLoadable);
   EXPECT_NE(o.message.find("truncated: 2000 bytes"), std::string::npos) << o.message;
 }
 
 TEST(PluginLoader, DuplicateIdNamesTheFirstFile) {
   const auto dir = test::fresh_dir("duplicate");
-  std::filesystem::copy_file(fixture_plugin("valid_scene"), dir / "a.so");
-  std::filesystem::copy_file(fixture_plugin("valid_scene"), dir / "b.so");
+  std::filesystem::copy_file(fixture_plugin("valid_scene"), dir / "a" PLUGIN_SUFFIX);
+  std::filesystem::copy_file(fixture_plugin("valid_scene"), dir / "b" PLUGIN_SUFFIX);
   const auto outcomes = load_scene_folder({dir});
   ASSERT_EQ(outcomes.size(), 2u);
   EXPECT_EQ(outcomes[0].result, LoadResult::Loaded);
   EXPECT_EQ(outcomes[1].result, LoadResult::DuplicateId);
   EXPECT_NE(outcomes[1].message.find("duplicate scene id 'fixture_valid' (already provided by " +
-                                     (dir / "a.so").string()),
+                                     (dir / "a" PLUGIN_SUFFIX).string()),
             std::string::npos)
       << outcomes[1].message;
 }
@@ -148,16 +148,16 @@ TEST(PluginLoader, FolderSkipsBadPluginsAndKeepsGoodOnes) {
   for (const auto& o : outcomes) by_file.emplace(o.file.filename().string(), o.result);
   // Every fixture, each with its result: a missing file fails here rather than reading a default.
   const std::map<std::string, LoadResult> expected = {
-      {"fixture_valid_scene.so", LoadResult::Loaded},
-      {"fixture_bad_de.so", LoadResult::Loaded},  // a DE is only compiled when rendered
-      {"fixture_update_error.so", LoadResult::Loaded},
-      {"fixture_not_elf.so", LoadResult::NotLoadable},
-      {"fixture_no_entry.so", LoadResult::NoEntrySymbol},
-      {"fixture_wrong_major.so", LoadResult::WrongAbiMajor},
-      {"fixture_too_new_minor.so", LoadResult::AbiTooNew},
-      {"fixture_small_struct.so", LoadResult::StructTooSmall},
-      {"fixture_null_id.so", LoadResult::InvalidScene},
-      {"fixture_null_de.so", LoadResult::InvalidScene},
+      {"fixture_valid_scene" PLUGIN_SUFFIX, LoadResult::Loaded},
+      {"fixture_bad_de" PLUGIN_SUFFIX, LoadResult::Loaded},  // a DE is only compiled when rendered
+      {"fixture_update_error" PLUGIN_SUFFIX, LoadResult::Loaded},
+      {"fixture_not_elf" PLUGIN_SUFFIX, LoadResult::NotLoadable},
+      {"fixture_no_entry" PLUGIN_SUFFIX, LoadResult::NoEntrySymbol},
+      {"fixture_wrong_major" PLUGIN_SUFFIX, LoadResult::WrongAbiMajor},
+      {"fixture_too_new_minor" PLUGIN_SUFFIX, LoadResult::AbiTooNew},
+      {"fixture_small_struct" PLUGIN_SUFFIX, LoadResult::StructTooSmall},
+      {"fixture_null_id" PLUGIN_SUFFIX, LoadResult::InvalidScene},
+      {"fixture_null_de" PLUGIN_SUFFIX, LoadResult::InvalidScene},
   };
   EXPECT_EQ(outcomes.size(), expected.size());
   for (const auto& [file, result] : expected) {
@@ -204,13 +204,14 @@ TEST(PluginLoader, UpdateErrorCarriesPluginsReason) {
 // the file's name is mapped, and after the last reference is dropped the copy is unmapped.
 TEST(PluginLoader, PrivateCopyAndUnmap) {
   const auto dir = test::fresh_dir("private_copy");
-  std::filesystem::copy_file(fixture_plugin("valid_scene"), dir / "private_probe.so");
-  LoadOutcome o = load_scene_plugin(dir / "private_probe.so", in_process());
+  std::filesystem::copy_file(fixture_plugin("valid_scene"), dir / "private_probe" PLUGIN_SUFFIX);
+  LoadOutcome o = load_scene_plugin(dir / "private_probe" PLUGIN_SUFFIX, in_process());
   auto scene = std::move(o.scene);
   ASSERT_TRUE(scene) << o.message;
-  std::filesystem::remove(dir / "private_probe.so");
+  std::filesystem::remove(dir / "private_probe" PLUGIN_SUFFIX);
   EXPECT_EQ(scene->info.id, "fixture_valid");
-  EXPECT_TRUE(mapped_ranges("private_probe.so").empty()) << "the user's file itself is mapped";
+  EXPECT_TRUE(mapped_ranges("private_probe" PLUGIN_SUFFIX).empty())
+      << "the user's file itself is mapped";
   auto mapped = [] { return !mapped_ranges("fractalis-plugin").empty(); };
   EXPECT_TRUE(mapped());
   scene.reset();
@@ -233,7 +234,7 @@ TEST(SceneInstance, ClampsParamsAfterUpdate) {
 // ABI compatibility. A scene built against the frozen 1.0 headers (tests/abi_1_0/) loads, updates
 // (reading its light as 1.0 lays it out) and renders on this 1.1 host.
 TEST(AbiCompatibility, SceneBuiltAgainst10HeadersRuns) {
-  const auto file = std::filesystem::path(COMPAT_PLUGIN_DIR) / "abi10_scene.so";
+  const auto file = std::filesystem::path(COMPAT_PLUGIN_DIR) / "abi10_scene" PLUGIN_SUFFIX;
   for (PluginIsolation mode : {PluginIsolation::Process, PluginIsolation::None}) {
     PluginPolicy policy;
     policy.isolation = mode;
@@ -268,7 +269,8 @@ TEST(AbiCompatibility, MinorIsWhatThePluginNeedsNotTheSdks) {
   EXPECT_EQ(plain.abi_minor, 0u);
   EXPECT_GE(plain.struct_size, 24u);
   EXPECT_GE(plain.scene->struct_size, 160u);
-  auto [v11, v11_handle] = entry_of(std::filesystem::path(COMPAT_PLUGIN_DIR) / "abi11_features.so");
+  auto [v11, v11_handle] =
+      entry_of(std::filesystem::path(COMPAT_PLUGIN_DIR) / "abi11_features" PLUGIN_SUFFIX);
   EXPECT_EQ(v11.abi_minor, 1u);
   // The plugin's side of the extension mechanism: an id it knows, and NULL for one it does not.
   ASSERT_TRUE(v11.get_extension);
@@ -283,7 +285,7 @@ TEST(AbiCompatibility, MinorIsWhatThePluginNeedsNotTheSdks) {
 // a message logged from another thread arrives with the update's answer, and lights are found
 // through FR_FRAME_LIGHT.
 TEST(AbiCompatibility, Abi11InitExtensionsAndThreadLog) {
-  const auto file = std::filesystem::path(COMPAT_PLUGIN_DIR) / "abi11_features.so";
+  const auto file = std::filesystem::path(COMPAT_PLUGIN_DIR) / "abi11_features" PLUGIN_SUFFIX;
   for (PluginIsolation mode : {PluginIsolation::Process, PluginIsolation::None}) {
     PluginPolicy policy;
     policy.isolation = mode;

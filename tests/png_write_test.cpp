@@ -17,7 +17,7 @@ TEST(PngWrite, RoundTrip) {
   std::string error;
   ASSERT_TRUE(write_png_atomic(dir / "a.png", 3, 2, rgba, &error)) << error;
   int w = 0, h = 0, n = 0;
-  unsigned char* pixels = stbi_load((dir / "a.png").c_str(), &w, &h, &n, 4);
+  unsigned char* pixels = stbi_load((dir / "a.png").string().c_str(), &w, &h, &n, 4);
   ASSERT_NE(pixels, nullptr);
   EXPECT_EQ(w, 3);
   EXPECT_EQ(h, 2);

@@ -50,8 +50,9 @@ class UnitBall : public ::testing::TestWithParam<BallCase> {};
 TEST_P(UnitBall, DepthAndMaskMatchTheSphere) {
   const int lanes = GetParam().lanes;
   const bool julia = std::string(GetParam().scene) == "julia";
-  auto scene = julia ? test::load_or_fail(std::filesystem::path(SCENE_PLUGIN_DIR) / "julia.so")
-                     : test::unit_ball();
+  auto scene =
+      julia ? test::load_or_fail(std::filesystem::path(SCENE_PLUGIN_DIR) / "julia" PLUGIN_SUFFIX)
+            : test::unit_ball();
   ASSERT_TRUE(scene);
   SceneState state = make_default_state(scene->info);
   if (julia) {

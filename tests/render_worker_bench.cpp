@@ -21,7 +21,7 @@ namespace {
 
 const LoadedScene& mandelbulb() {
   static const LoadOutcome o =
-      load_scene_plugin(std::filesystem::path(SCENE_PLUGIN_DIR) / "mandelbulb.so");
+      load_scene_plugin(std::filesystem::path(SCENE_PLUGIN_DIR) / "mandelbulb" PLUGIN_SUFFIX);
   if (!o.scene) throw std::runtime_error(o.message);
   return *o.scene;
 }

@@ -133,7 +133,7 @@ class HostileKernel : public testing::TestWithParam<Hostile> {};
 TEST_P(HostileKernel, EveryCommandSurvivesAndNamesTheFileAndReason) {
   const Hostile& h = GetParam();
   const fs::path dir = kernel_fixture_dir(h.name);
-  const std::string file = "kernel_" + std::string(h.name) + ".so";
+  const std::string file = "kernel_" + std::string(h.name) + PLUGIN_SUFFIX;
   const std::string plugins = "--plugins '" + dir.string() + "' ";
   const std::string scene = plugins + "--scene kernel_" + h.name + " " + kLimits + " " + h.extra;
   const fs::path out = test::fresh_dir(std::string("render_worker_") + h.name);
@@ -322,7 +322,7 @@ TEST(RenderWorker, ABuildErrorKeepsTheWorker) {
 }
 
 std::shared_ptr<const LoadedScene> load_fixture(const std::string& name) {
-  return test::load_or_fail(kernel_fixture_dir(name) / ("kernel_" + name + ".so"));
+  return test::load_or_fail(kernel_fixture_dir(name) / ("kernel_" + name + PLUGIN_SUFFIX));
 }
 
 // A crash names the file, the stage and the signal; the next call starts a fresh worker, which
@@ -431,7 +431,8 @@ TEST(RenderWorker, TheExplorerGoesBackToTheLastGoodParameters) {
   explorer.update(input, 1.0 / 30, 0);  // the probe at the eye runs the DE: the worker crashes
   const FrameView* frame = explorer.render(64, 36);
   EXPECT_NE(slot.error.find("crashed (SIGSEGV"), std::string::npos) << slot.error;
-  EXPECT_NE(slot.error.find("kernel_write_above_param.so"), std::string::npos) << slot.error;
+  EXPECT_NE(slot.error.find("kernel_write_above_param" PLUGIN_SUFFIX), std::string::npos)
+      << slot.error;
   EXPECT_EQ(slot.state.params[0].v[0], 0) << "back to the last value that rendered";
   for (int i = 0; i < 3 && !frame; ++i) {
     explorer.update(input, 1.0 / 30, 0);
@@ -445,7 +446,8 @@ TEST(RenderWorker, TheExplorerGoesBackToTheLastGoodParameters) {
 // is the plain sphere's, pixel for pixel.
 TEST(RenderWorker, ABuiltInMacroStaysInTheScenesCode) {
   const auto redefined = load_fixture("builtin_macro");
-  const auto plain = test::load_or_fail(fs::path(FIXTURE_PLUGIN_DIR) / "fixture_valid_scene.so");
+  const auto plain =
+      test::load_or_fail(fs::path(FIXTURE_PLUGIN_DIR) / "fixture_valid_scene" PLUGIN_SUFFIX);
   RenderSettings s;
   s.width_px = 64;
   s.height_px = 36;

@@ -94,7 +94,7 @@ TEST(ResourceLimits, KernelCacheIsTrimmedLeastRecentlyUsedFirst) {
   const char* programs[] = {"AB/ZZZ", "CD/AAA", "AB/MMM", "EF/BBB"};
   for (int i = 0; i < 4; ++i) {
     make_file(dir / programs[i] / "program.bc", 900, now);
-    make_file(dir / programs[i] / "fr_render" / "1-1-1" / "fr_render.so", 100, now);
+    make_file(dir / programs[i] / "fr_render" / "1-1-1" / "fr_render" PLUGIN_SUFFIX, 100, now);
     make_file(dir / programs[i] / "last_accessed", 0, now - 3600 * (4 - i));
   }
   make_file(dir / "tempfile_old", 5000, now - 3600);

@@ -15,7 +15,7 @@ struct Frame {
 };
 
 Frame render_scene(const std::string& id, const RenderSettings& base) {
-  auto scene = test::load_or_fail(std::filesystem::path(SCENE_PLUGIN_DIR) / (id + ".so"));
+  auto scene = test::load_or_fail(std::filesystem::path(SCENE_PLUGIN_DIR) / (id + PLUGIN_SUFFIX));
   SceneState state = make_default_state(scene->info);
   std::string error;
   auto instance = SceneInstance::create(scene, &error);

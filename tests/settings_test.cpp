@@ -184,7 +184,7 @@ TEST(Settings, EveryKeyRoundTripsThroughSaveAndLoad) {
 // first row's name standing in for it.
 TEST(Settings, AnEnumValueWithoutANameIsAnInternalError) {
   EXPECT_DEATH(enum_name(static_cast<ShadingModel>(99)),
-               "internal error at .*enum_names.hpp:[0-9]+: an enum value has no row");
+               "internal error at .*enum_names.hpp:.*: an enum value has no row");
 }
 
 TEST(Settings, EnumNamesComeFromTheirTables) {

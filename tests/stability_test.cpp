@@ -52,9 +52,10 @@ void set_param(const SceneInfo& info, SceneState& state, const char* key, fr_val
 
 Frame render_view(const std::string& id, const View& view, RenderSettings settings,
                   const Setup& setup = {}) {
-  auto scene = std::string(id) == "unit_ball"
-                   ? test::unit_ball()
-                   : test::load_or_fail(std::filesystem::path(SCENE_PLUGIN_DIR) / (id + ".so"));
+  auto scene =
+      std::string(id) == "unit_ball"
+          ? test::unit_ball()
+          : test::load_or_fail(std::filesystem::path(SCENE_PLUGIN_DIR) / (id + PLUGIN_SUFFIX));
   Frame f;
   f.state = make_default_state(scene->info);
   if (setup) setup(scene->info, f.state);
@@ -568,8 +569,8 @@ TEST(Stability, DenormalPoints) {
   const std::vector<std::array<float, 3>> points = {
       {1e-40f, 0, 0}, {0, 1e-42f, 1e-39f}, {-1e-44f, 1e-45f, 0}, {1e-38f, 1e-38f, 1e-38f}};
   for (const char* id : {"mandelbulb", "julia", "menger", "sierpinski"}) {
-    auto scene =
-        test::load_or_fail(std::filesystem::path(SCENE_PLUGIN_DIR) / (std::string(id) + ".so"));
+    auto scene = test::load_or_fail(std::filesystem::path(SCENE_PLUGIN_DIR) /
+                                    (std::string(id) + PLUGIN_SUFFIX));
     const auto values = make_default_state(scene->info).params;
     for (int lanes : {1, 16})
       for (Precision p : {Precision::Float, Precision::Double}) {

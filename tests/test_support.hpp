@@ -21,7 +21,7 @@
 namespace fr::test {
 
 inline std::filesystem::path fixture_plugin(const std::string& name) {
-  return std::filesystem::path(FIXTURE_PLUGIN_DIR) / ("fixture_" + name + ".so");
+  return std::filesystem::path(FIXTURE_PLUGIN_DIR) / ("fixture_" + name + PLUGIN_SUFFIX);
 }
 
 // A scene that must load: the test fails loudly otherwise.
@@ -32,10 +32,10 @@ inline std::shared_ptr<const LoadedScene> load_or_fail(const std::filesystem::pa
 }
 
 inline std::shared_ptr<const LoadedScene> mandelbulb() {
-  return load_or_fail(std::filesystem::path(SCENE_PLUGIN_DIR) / "mandelbulb.so");
+  return load_or_fail(std::filesystem::path(SCENE_PLUGIN_DIR) / "mandelbulb" PLUGIN_SUFFIX);
 }
 inline std::shared_ptr<const LoadedScene> unit_ball() {
-  return load_or_fail(std::filesystem::path(TEST_SCENE_DIR) / "unit_ball.so");
+  return load_or_fail(std::filesystem::path(TEST_SCENE_DIR) / "unit_ball" PLUGIN_SUFFIX);
 }
 
 // The default device (PoCL's CPU device on the development machines), opened once.
@@ -96,7 +96,8 @@ struct LoadedPng {
 inline LoadedPng load_png(const std::filesystem::path& file) {
   LoadedPng png;
   int channels = 0;
-  unsigned char* pixels = stbi_load(file.c_str(), &png.width_px, &png.height_px, &channels, 4);
+  unsigned char* pixels =
+      stbi_load(file.string().c_str(), &png.width_px, &png.height_px, &channels, 4);
   if (!pixels) return {};
   png.rgba8.assign(pixels, pixels + size_t(png.width_px) * png.height_px * 4);
   stbi_image_free(pixels);

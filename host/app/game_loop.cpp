@@ -2,10 +2,10 @@
 
 namespace fr {
 
-long run_game_loop(const LoopSteps& steps, long max_frames) {
+int64_t run_game_loop(const LoopSteps& steps, int64_t max_frames) {
   InputState input;
   double last = steps.now_s();
-  long frames = 0;
+  int64_t frames = 0;
   while (max_frames < 0 || frames < max_frames) {
     steps.poll(input);
     if (input.quit) break;

@@ -5,6 +5,7 @@
 
 #include "app/input.hpp"
 
+#include <cstdint>
 #include <functional>
 
 namespace fr {
@@ -18,6 +19,6 @@ struct LoopSteps {
 
 // Runs until the input asks to quit (or after max_frames when that is >= 0). Returns the number
 // of frames run.
-long run_game_loop(const LoopSteps& steps, long max_frames = -1);
+int64_t run_game_loop(const LoopSteps& steps, int64_t max_frames = -1);
 
 }  // namespace fr

@@ -106,6 +106,9 @@ AnimateJob plan_animation(const ParsedOptions& options) {
                      "' (videos: " + video_extension_list() +
                      "; any other name is a folder of PNG frames)");
   if (job.video) {
+    if (const std::string why = video_unavailable_reason(); !why.empty())
+      throw UsageError("--out " + job.out_path.string() + ": " + why +
+                       "; a name without a video extension is a folder of PNG frames");
     // Rank 0 writes a video: other ranks of an MPI job, perhaps on machines without that
     // folder, do not look for it.
     if (mpi_world().rank == 0) check_output_file("--out", job.out_path.string());

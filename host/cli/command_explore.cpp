@@ -2,6 +2,7 @@
 #include "app/game_loop.hpp"
 #include "cli/commands.hpp"
 #include "cli/explorer_setup.hpp"
+#include "platform/system_facts.hpp"
 #include "ui/overlay.hpp"
 #include "ui/window.hpp"
 
@@ -38,11 +39,11 @@ int command_explore(const std::vector<std::string>& args, std::ostream& out,
     out << "\n" << format_options(specs);
     return 0;
   }
-  const long max_frames =
-      options.has("frames") ? parse_integer("--frames", *options.get("frames"), 1, 1L << 40) : -1;
-  if (!display_available())
-    throw std::runtime_error(
-        "no display (DISPLAY and WAYLAND_DISPLAY are unset); use `fractalis render` instead");
+  const int64_t max_frames =
+      options.has("frames") ? parse_integer("--frames", *options.get("frames"), 1, int64_t{1} << 40)
+                            : -1;
+  if (const std::string why = why_no_display(); !why.empty())
+    throw std::runtime_error(why + "; use `fractalis render` instead");
   ExplorerSetup setup = prepare_explorer(options);
   Explorer& explorer = *setup.explorer;
   const Settings& settings = setup.settings;
@@ -92,7 +93,7 @@ int command_explore(const std::vector<std::string>& args, std::ostream& out,
     // Nothing left to refine: wait for input instead of spinning.
     if (!image) std::this_thread::sleep_for(std::chrono::milliseconds(10));
   };
-  const long frames = run_game_loop(steps, max_frames);
+  const int64_t frames = run_game_loop(steps, max_frames);
   out << "explored for " << frames << " frames\n";
   return 0;
 }

@@ -10,6 +10,7 @@
 #include "io/atomic_file.hpp"
 #include "mpi/mpi_world.hpp"
 #include "mpi/shared_tasks.hpp"
+#include "platform/files.hpp"
 #include "render/camera.hpp"
 #include "render/memory_budget.hpp"
 #include "render/precision.hpp"
@@ -21,8 +22,6 @@
 #include <cstdio>
 #include <optional>
 
-#include <sys/stat.h>
-#include <unistd.h>
 #include <chrono>
 #include <filesystem>
 #include <ostream>
@@ -192,8 +191,10 @@ std::vector<OptionSpec> render_option_specs() {
 void check_render_output(const std::string& out_file) {
   check_output_file("--out", out_file);
   if (!is_exr_file_name(out_file)) return;
-  struct stat st {};
-  if (stat(out_file.c_str(), &st) == 0 && (S_ISFIFO(st.st_mode) || S_ISCHR(st.st_mode)))
+  if (const std::string why = exr_unavailable_reason(); !why.empty())
+    throw UsageError("--out " + out_file + ": " + why);
+  const PathKind kind = examine_path(out_file).kind;
+  if (kind == PathKind::Pipe || kind == PathKind::CharacterDevice)
     throw UsageError("--out " + out_file +
                      ": an EXR file cannot go to a pipe or device (OpenEXR seeks back to index "
                      "its scanlines)");

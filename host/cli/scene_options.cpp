@@ -2,6 +2,7 @@
 
 #include "io/echo.hpp"
 #include "io/printable.hpp"
+#include "platform/files.hpp"
 #include "platform/user_folders.hpp"
 #include "render/camera.hpp"
 #include "render/kernel_cache.hpp"
@@ -51,24 +52,25 @@ Settings load_settings(const ParsedOptions& options, std::vector<SettingsProblem
   std::optional<std::filesystem::path> file;
   if (auto given = options.get("config")) {
     file = *given;
-    std::error_code ec;
-    const auto status = std::filesystem::status(*file, ec);
+    const PathInfo path = examine_path(*file);  // devices too (std::filesystem: not on Windows)
     const std::string named = "--config: '" + echo(file->string()) + "' ";
-    switch (status.type()) {
-      case std::filesystem::file_type::regular:
+    switch (path.kind) {
+      case PathKind::Regular:
         break;
-      case std::filesystem::file_type::not_found:
+      case PathKind::Missing:
+        if (path.loops) throw UsageError(named + "is a symbolic link that loops");
+        if (path.is_link) throw UsageError(named + "is a symbolic link to nothing");
         throw UsageError("--config: no such file '" + echo(file->string()) + "'");
-      case std::filesystem::file_type::directory:
+      case PathKind::Folder:
         throw UsageError(named + "is a folder, not a settings file");
-      case std::filesystem::file_type::character:
-      case std::filesystem::file_type::block:
+      case PathKind::CharacterDevice:
+      case PathKind::BlockDevice:
         throw UsageError(named + "is a device, not a settings file");
-      case std::filesystem::file_type::fifo:
-      case std::filesystem::file_type::socket:
+      case PathKind::Pipe:
+      case PathKind::Socket:
         throw UsageError(named + "is a pipe or socket, not a settings file");
-      default:
-        throw UsageError(named + "cannot be read" + (ec ? " (" + ec.message() + ")" : ""));
+      case PathKind::Other:
+        throw UsageError(named + "cannot be read");
     }
   } else {
     file = user_settings_file();
@@ -95,7 +97,13 @@ namespace {
 // Whether the running executable is the build tree's (its scenes and paths are the build's and
 // the source tree's), not an installed one (or the system does not say where it is).
 bool runs_from_build_tree(const std::filesystem::path& exe) {
-  return exe.empty() || exe.string().rfind(std::string(FRACTALIS_BUILD_ROOT) + "/", 0) == 0;
+  if (exe.empty()) return true;
+  // Folders compared as folders, not as strings: a Windows build run under Wine has a Linux
+  // build root compiled in (/work/build) and a Windows path of its own (Z:\work\build\...).
+  std::error_code ec;
+  for (auto dir = exe.parent_path(); dir.has_relative_path(); dir = dir.parent_path())
+    if (std::filesystem::equivalent(dir, FRACTALIS_BUILD_ROOT, ec)) return true;
+  return false;
 }
 
 }  // namespace

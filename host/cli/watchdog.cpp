@@ -2,10 +2,9 @@
 
 #include "io/atomic_file.hpp"
 
-#include <unistd.h>
-
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 
 namespace fr {
 
@@ -30,8 +29,8 @@ Watchdog::Watchdog(double limit_s, std::string what) {
                  "scene's DE may never return for some points. Nothing half-written is left.\n",
                  what.c_str(), limit_s);
     std::fflush(stderr);
-    remove_temp_files();  // a poster's or a video's file in progress
-    _exit(kWatchdogExitStatus);
+    remove_temp_files();              // a poster's or a video's file in progress
+    std::_Exit(kWatchdogExitStatus);  // no destructors: other threads are still running
   });
 }
 

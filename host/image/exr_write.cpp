@@ -57,11 +57,8 @@ struct ExrStream::State {
   State(OutputFile& o, const std::string& name) : out(o), stream(o, name) {}
 };
 
-bool is_exr_file_name(const std::filesystem::path& file) {
-  std::string ext = file.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext == ".exr";
+std::string exr_unavailable_reason() {
+  return {};
 }
 
 ExrStream::ExrStream(OutputFile& out, int width_px, int height_px) {

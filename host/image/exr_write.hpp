@@ -23,7 +23,13 @@
 namespace fr {
 
 // True when `file`'s name ends in .exr (any case).
-bool is_exr_file_name(const std::filesystem::path& file);
+inline bool is_exr_file_name(const std::filesystem::path& file) {
+  const std::string ext = file.extension().string();
+  return ext.size() == 4 && ext[0] == '.' && (ext[1] | 0x20) == 'e' && (ext[2] | 0x20) == 'x' &&
+         (ext[3] | 0x20) == 'r';
+}
+// Empty where this build writes EXR files; otherwise why it cannot (exr_write_missing.cpp).
+std::string exr_unavailable_reason();
 
 // An EXR written a band of rows at a time (posters: image/poster.hpp), top to bottom, into an
 // OutputFile, which must be seekable (OpenEXR goes back to index its scanlines).

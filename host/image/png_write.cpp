@@ -1,18 +1,11 @@
 #include "image/png_write.hpp"
 
+#include "image/png_stream.hpp"
 #include "io/atomic_file.hpp"
 
-#include <stb_image_write.h>
+#include <stdexcept>
 
 namespace fr {
-namespace {
-
-void append_bytes(void* context, void* data, int size) {
-  auto* out = static_cast<std::string*>(context);
-  out->append(static_cast<const char*>(data), static_cast<size_t>(size));
-}
-
-}  // namespace
 
 bool write_png_atomic(const std::filesystem::path& path, int w, int h,
                       const std::vector<uint8_t>& rgba8, std::string* error) {
@@ -20,12 +13,20 @@ bool write_png_atomic(const std::filesystem::path& path, int w, int h,
     *error = "cannot write " + path.string() + ": image size does not match its pixels";
     return false;
   }
-  std::string png;
-  if (!stbi_write_png_to_func(append_bytes, &png, w, h, 4, rgba8.data(), w * 4)) {
-    *error = "cannot write " + path.string() + ": PNG encoding failed";
+  auto out = OutputFile::open(path, error);
+  if (!out) return false;
+  try {
+    PngStream png(*out, w, h);  // one PNG encoder for every image, whole or in bands
+    png.write_rows(rgba8.data(), h);
+    png.finish();
+    return true;
+  } catch (const std::exception& e) {
+    const std::string what = e.what();
+    *error = what.rfind("cannot write " + path.string(), 0) == 0
+                 ? what
+                 : "cannot write " + path.string() + ": " + what;
     return false;
   }
-  return write_file_atomic(path, png, error);
 }
 
 }  // namespace fr

@@ -27,22 +27,18 @@ HANDLE as_handle(intptr_t h) {
 PathInfo examine_path(const std::filesystem::path& path) {
   PathInfo info;
   const DWORD attributes = GetFileAttributesW(path.c_str());
-  if (attributes == INVALID_FILE_ATTRIBUTES) {
-    const DWORD code = GetLastError();
-    if (code != ERROR_FILE_NOT_FOUND && code != ERROR_PATH_NOT_FOUND) {
-      // NUL, CON and pipes have no attributes to read: ask what a handle to them is.
-    } else {
-      return info;
-    }
-  }
   info.is_link =
       attributes != INVALID_FILE_ATTRIBUTES && (attributes & FILE_ATTRIBUTE_REPARSE_POINT);
-  // What the path names, links followed: its handle's type.
+  // What the path names, links followed: its handle's type. Asked even where the attributes
+  // said "not found": NUL, CON and pipes have no attributes to read (Wine says NUL is not
+  // found), and a missing file costs one more failed call.
   const HANDLE h =
       CreateFileW(path.c_str(), 0, FILE_SHARE_READ | FILE_SHARE_WRITE | FILE_SHARE_DELETE, nullptr,
                   OPEN_EXISTING, FILE_FLAG_BACKUP_SEMANTICS, nullptr);
   if (h == INVALID_HANDLE_VALUE) {
-    info.loops = GetLastError() == ERROR_CANT_RESOLVE_FILENAME;
+    const DWORD code = GetLastError();
+    if (code == ERROR_FILE_NOT_FOUND || code == ERROR_PATH_NOT_FOUND) return info;
+    info.loops = code == ERROR_CANT_RESOLVE_FILENAME;
     info.error = last_error_text();
     return info;
   }

@@ -32,4 +32,8 @@ std::vector<MemoryBound> memory_bounds();
 // busy blocks of the process's heaps.
 uint64_t heap_bytes_in_use();
 
+// Empty when this process can open windows; otherwise why not, for the message. Linux: an X11 or
+// Wayland display named in the environment; Windows: a visible window station (not a service).
+std::string why_no_display();
+
 }  // namespace fr

@@ -9,6 +9,7 @@
 extern "C" size_t __sanitizer_get_current_allocated_bytes(void);
 #endif
 
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
@@ -96,6 +97,13 @@ uint64_t heap_bytes_in_use() {
   const struct mallinfo2 info = mallinfo2();
   return info.uordblks + info.hblkhd;
 #endif
+}
+
+std::string why_no_display() {
+  const char* x = std::getenv("DISPLAY");
+  const char* wayland = std::getenv("WAYLAND_DISPLAY");
+  if ((x && *x) || (wayland && *wayland)) return {};
+  return "no display (DISPLAY and WAYLAND_DISPLAY are unset)";
 }
 
 }  // namespace fr

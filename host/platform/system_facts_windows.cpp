@@ -89,4 +89,14 @@ uint64_t heap_bytes_in_use() {
   return busy;
 }
 
+std::string why_no_display() {
+  // A service runs in a window station nobody sees: windows would open, invisibly.
+  USEROBJECTFLAGS flags{};
+  HWINSTA station = GetProcessWindowStation();
+  if (station && GetUserObjectInformationW(station, UOI_FLAGS, &flags, sizeof flags, nullptr) &&
+      !(flags.dwFlags & WSF_VISIBLE))
+    return "no display (this process runs in a window station without one, as a service does)";
+  return {};
+}
+
 }  // namespace fr

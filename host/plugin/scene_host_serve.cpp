@@ -6,7 +6,6 @@
 #include "plugin/wire_io.hpp"
 
 #include <dirent.h>
-#include <unistd.h>
 
 #include <cstdio>
 #include <cstring>

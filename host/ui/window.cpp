@@ -13,12 +13,6 @@
 
 namespace fr {
 
-bool display_available() {
-  const char* x = std::getenv("DISPLAY");
-  const char* wayland = std::getenv("WAYLAND_DISPLAY");
-  return (x && *x) || (wayland && *wayland);
-}
-
 Window::Window(const std::string& title, int w, int h, bool fullscreen) {
   if (SDL_Init(SDL_INIT_VIDEO | SDL_INIT_EVENTS) != 0)
     throw std::runtime_error(std::string("cannot start SDL video: ") + SDL_GetError());

@@ -63,9 +63,6 @@ class Window {
   int captured_w_ = 0, captured_h_ = 0;
 };
 
-// True when a window can be opened here (a display server is reachable).
-bool display_available();
-
 // The overlay's scale (text, spacing, widgets) for a window `height_px` tall on a display of
 // `dpi` dots per inch (0: unknown): 1 at 720 pixels and 96 dpi, growing with either, so that the
 // panel is as tall a share of a 4K window as of a 720p one and as large physically on a dense

@@ -21,12 +21,6 @@ extern "C" {
 namespace fr {
 namespace {
 
-constexpr std::array<VideoFormat, 3> kFormats = {{
-    {".mp4", "mp4", "libx264", "H.264"},
-    {".mkv", "matroska", "libx264", "H.264"},
-    {".webm", "webm", "libvpx-vp9", "VP9"},
-}};
-
 std::string av_error(int code) {
   char text[AV_ERROR_MAX_STRING_SIZE] = {};
   av_strerror(code, text, sizeof text);
@@ -53,22 +47,8 @@ void log_from_ffmpeg(void* avcl, int level, const char* format, va_list args) {
 
 }  // namespace
 
-const VideoFormat* video_format_for(const std::filesystem::path& file) {
-  std::string ext = file.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  for (const auto& f : kFormats)
-    if (ext == f.extension) return &f;
-  return nullptr;
-}
-
-std::string video_extension_list() {
-  std::string list;
-  for (const auto& f : kFormats) {
-    if (!list.empty()) list += ", ";
-    list.append("'").append(f.extension).append("'");
-  }
-  return list;
+std::string video_unavailable_reason() {
+  return {};
 }
 
 struct VideoEncoder::State {

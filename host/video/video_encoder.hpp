@@ -31,6 +31,8 @@ struct VideoFormat {
 const VideoFormat* video_format_for(const std::filesystem::path& file);
 // "'.mp4', '.mkv', '.webm'", for messages.
 std::string video_extension_list();
+// Empty where this build writes videos; otherwise why it cannot (video_encoder_missing.cpp).
+std::string video_unavailable_reason();
 
 class VideoEncoder {
  public:

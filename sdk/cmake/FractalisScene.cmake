@@ -1,9 +1,9 @@
 # fractalis_add_scene(<target> SOURCES <c files...> DE_SOURCE <file.cl>
 #                     [SURFACE_SOURCE <file.cl>] [OUTPUT_DIRECTORY <dir>])
 #
-# Builds a Fractalis scene plugin: a MODULE library named <target>.so whose only exported symbol
-# is fractalis_scene_entry, linked with -z defs so a missing symbol fails at build time, not at
-# load time (libm is linked for you). The OpenCL files are embedded as
+# Builds a Fractalis scene plugin: a MODULE library named <target>.so (<target>.dll on Windows)
+# whose only exported symbol is fractalis_scene_entry, linked so that a missing symbol fails at
+# build time, not at load time (on Linux with -z defs; libm is linked for you). The OpenCL files are embedded as
 #   extern const char fr_de_source[];       (DE_SOURCE)
 #   extern const char fr_surface_source[];  (SURFACE_SOURCE, if given)
 # for the scene descriptor's de_source and surface_source fields.
@@ -44,8 +44,12 @@ function(fractalis_add_scene target)
   if(ARG_OUTPUT_DIRECTORY)
     set_target_properties(${target} PROPERTIES LIBRARY_OUTPUT_DIRECTORY "${ARG_OUTPUT_DIRECTORY}")
   endif()
-  target_link_options(${target} PRIVATE
-    "LINKER:--version-script=${FRACTALIS_SDK_CMAKE_DIR}/scene.map" "LINKER:-z,defs")
+  # ELF (Linux): export the entry alone, and refuse undefined symbols at link time. A Windows
+  # DLL exports what FR_EXPORT marks (__declspec(dllexport)) and cannot leave symbols undefined.
+  if(NOT WIN32 AND NOT APPLE)
+    target_link_options(${target} PRIVATE
+      "LINKER:--version-script=${FRACTALIS_SDK_CMAKE_DIR}/scene.map" "LINKER:-z,defs")
+  endif()
   # -z defs makes every undefined symbol an error, libm's (sin, pow, ...) included: link it.
   if(UNIX AND NOT APPLE)
     target_link_libraries(${target} PRIVATE m)

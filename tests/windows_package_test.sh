@@ -1,0 +1,64 @@
+#!/usr/bin/env bash
+# The Windows zip as a user gets it, under Wine (scripts/test-windows.sh runs this): unpacked into
+# a folder with a space in its name, fractalis.exe finds its own scenes and helpers from where it
+# lies (nothing of the build tree), lists and renders them, refuses the outputs this build lacks
+# with the reason, and a scene built with the zip's SDK (MinGW-w64, the template) passes
+# `fractalis check`.
+# Usage: windows_package_test.sh SOURCE_DIR ZIP WORK_DIR   (WINEPREFIX set, wine running)
+set -euo pipefail
+source_dir=$1 zip=$2 work=$3
+rm -rf "$work"
+mkdir -p "$work/Program Files"
+unzip -q "$zip" -d "$work/Program Files"
+root="$(find "$work/Program Files" -mindepth 1 -maxdepth 1 -type d)"
+exe="$root/bin/fractalis.exe"
+fail() { echo "windows package: $*" >&2; exit 1; }
+# Wine holds its console's pipes open after the program ends: output goes to files.
+fractalis() { wine "$exe" "$@" < /dev/null > "$work/out.txt" 2> "$work/err.txt"; }
+
+for f in bin/fractalis.exe libexec/fractalis/fractalis-scene-host.exe \
+    libexec/fractalis/fractalis-render-worker.exe lib/fractalis/plugins/mandelbulb.dll \
+    share/fractalis/paths/benchmark.toml include/fractalis/abi.h \
+    lib/cmake/FractalisSDK/FractalisSDKConfig.cmake README.txt settings-example.toml; do
+  [[ -f "$root/$f" ]] || fail "missing from the zip: $f"
+done
+# Statically linked: nothing beyond Windows' own DLLs and OpenCL.dll.
+for f in "$root"/bin/*.exe "$root"/libexec/fractalis/*.exe; do
+  deps="$(x86_64-w64-mingw32-objdump -p "$f" | sed -n 's/^\s*DLL Name: //p' | tr 'A-Z' 'a-z' |
+    grep -vxE 'kernel32.dll|user32.dll|gdi32.dll|advapi32.dll|shell32.dll|ole32.dll|oleaut32.dll|imm32.dll|winmm.dll|version.dll|setupapi.dll|msvcrt.dll|opencl.dll|ws2_32.dll|shlwapi.dll|dinput8.dll|cfgmgr32.dll' || true)"
+  [[ -z "$deps" ]] || fail "$(basename "$f") needs DLLs the zip lacks: $deps"
+done
+
+echo "== list: the five scenes, found beside the executable"
+fractalis list || fail "list failed: $(cat "$work/err.txt")"
+grep -q "plugin folder: .*lib.fractalis.plugins" "$work/out.txt" ||
+  fail "list did not use the zip's scenes: $(head -1 "$work/out.txt")"
+for scene in mandelbulb menger sierpinski julia benchmark; do
+  grep -q "^$scene " "$work/out.txt" || fail "list lacks $scene"
+done
+
+echo "== render: a PNG, through the render worker and Wine's opencl.dll"
+fractalis render --scene menger --size 96x64 --out "Z:$work/menger.png" ||
+  fail "render failed: $(cat "$work/err.txt")"
+[[ "$(head -c 8 "$work/menger.png" | od -An -tx1 | tr -d ' \n')" == 89504e470d0a1a0a ]] ||
+  fail "menger.png is not a PNG"
+
+echo "== outputs this build lacks: refused before rendering, with the reason"
+if fractalis render --scene menger --size 96x64 --out "Z:$work/x.exr"; then fail "EXR accepted"; fi
+grep -q "built without OpenEXR" "$work/err.txt" || fail "EXR refusal: $(cat "$work/err.txt")"
+[[ ! -e "$work/x.exr" ]] || fail "an EXR file appeared"
+if fractalis animate --scene benchmark --path "$root/share/fractalis/paths/benchmark.toml" \
+    --size 64x32 --out "Z:$work/x.mp4"; then fail "video accepted"; fi
+grep -q "built without FFmpeg" "$work/err.txt" || fail "video refusal: $(cat "$work/err.txt")"
+
+echo "== a scene from the zip's SDK (the template, MinGW-w64), checked by fractalis check"
+cmake -S "$root/share/doc/fractalis-sdk/template" -B "$work/template" \
+  -DCMAKE_TOOLCHAIN_FILE="$source_dir/cmake/mingw-w64-x86_64.cmake" \
+  -DFractalisSDK_DIR="$root/lib/cmake/FractalisSDK" > "$work/template.log" 2>&1 ||
+  fail "the template did not configure: $(tail -5 "$work/template.log")"
+cmake --build "$work/template" > "$work/template.log" 2>&1 ||
+  fail "the template did not build: $(tail -5 "$work/template.log")"
+[[ -f "$work/template/scenes/my_scene.dll" ]] || fail "no my_scene.dll"
+fractalis check "Z:$work/template/scenes/my_scene.dll" ||
+  fail "check failed: $(cat "$work/out.txt" "$work/err.txt")"
+echo "windows package: ok"
