@@ -22,7 +22,7 @@ cd "$FRACTALIS_BUILD"
 # directory", seen in CI); and services started by a test would hold its output open for CTest.
 echo "fractalis: preparing Wine in $WINEPREFIX" >&2
 mkdir -p "$WINEPREFIX"
-wineserver -p 900
+wineserver -p 900 || true  # exits 2 when one is already running for this prefix: fine
 trap 'wineserver -k 2>/dev/null || true' EXIT
 wine wineboot --init
 # Wine's prefix says "Windows 7" unless told otherwise; Windows 10 is what fractalis is for.

@@ -95,12 +95,17 @@ Settings load_settings(const ParsedOptions& options, std::vector<SettingsProblem
 namespace {
 
 // Whether the running executable is the build tree's (its scenes and paths are the build's and
-// the source tree's), not an installed one (or the system does not say where it is).
+// the source tree's), not an installed one (or the system does not say where it is). An
+// installation is recognised by its own scenes beside it, wherever it lies: a package unpacked
+// inside a build folder is still that package.
 bool runs_from_build_tree(const std::filesystem::path& exe) {
   if (exe.empty()) return true;
+  std::error_code ec;
+  if (std::filesystem::is_directory(exe.parent_path().parent_path() / FRACTALIS_PLUGIN_INSTALL_DIR,
+                                    ec))
+    return false;
   // Folders compared as folders, not as strings: a Windows build run under Wine has a Linux
   // build root compiled in (/work/build) and a Windows path of its own (Z:\work\build\...).
-  std::error_code ec;
   for (auto dir = exe.parent_path(); dir.has_relative_path(); dir = dir.parent_path())
     if (std::filesystem::equivalent(dir, FRACTALIS_BUILD_ROOT, ec)) return true;
   return false;
