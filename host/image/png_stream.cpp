@@ -10,14 +10,19 @@ namespace fr {
 struct PngStream::State {
   png_structp png = nullptr;
   png_infop info = nullptr;
-  OutputFile* out = nullptr;
-  std::string error;  // the first failure, from libpng or from the file
+  OutputFile* out = nullptr;      // the file, or
+  std::string* memory = nullptr;  // the bytes in memory
+  std::string error;              // the first failure, from libpng or from the file
 };
 
 namespace {
 
 void on_write(png_structp png, png_bytep data, png_size_t length) {
   auto* s = static_cast<PngStream::State*>(png_get_io_ptr(png));
+  if (s->memory) {
+    s->memory->append(reinterpret_cast<const char*>(data), length);
+    return;
+  }
   std::string error;
   if (!s->out->write(std::string_view(reinterpret_cast<const char*>(data), length), &error)) {
     if (s->error.empty()) s->error = error;
@@ -60,8 +65,15 @@ bool guarded_end(PngStream::State* s) {
 }  // namespace
 
 PngStream::PngStream(OutputFile& out, int width_px, int height_px)
+    : PngStream(&out, nullptr, width_px, height_px) {}
+
+PngStream::PngStream(std::string& memory, int width_px, int height_px)
+    : PngStream(nullptr, &memory, width_px, height_px) {}
+
+PngStream::PngStream(OutputFile* out, std::string* memory, int width_px, int height_px)
     : state_(new State), out_(out), width_px_(width_px), height_px_(height_px) {
-  state_->out = &out;
+  state_->out = out;
+  state_->memory = memory;
   state_->png = png_create_write_struct(PNG_LIBPNG_VER_STRING, state_, on_error, on_warning);
   if (state_->png) state_->info = png_create_info_struct(state_->png);
   if (!state_->png || !state_->info) {
@@ -95,7 +107,7 @@ void PngStream::finish() {
   if (rows_written_ != height_px_) throw std::logic_error("PngStream: rows missing");
   if (!guarded_end(state_)) throw std::runtime_error(state_->error);
   std::string error;
-  if (!out_.commit(&error)) throw std::runtime_error(error);
+  if (out_ && !out_->commit(&error)) throw std::runtime_error(error);
 }
 
 }  // namespace fr

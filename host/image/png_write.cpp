@@ -13,20 +13,18 @@ bool write_png_atomic(const std::filesystem::path& path, int w, int h,
     *error = "cannot write " + path.string() + ": image size does not match its pixels";
     return false;
   }
-  auto out = OutputFile::open(path, error);
-  if (!out) return false;
+  // Encoded whole in memory first: the file is open only for as long as writing the bytes takes
+  // (a rank of an MPI job killed while encoding leaves no temporary file in the folder).
+  std::string png;
   try {
-    PngStream png(*out, w, h);  // one PNG encoder for every image, whole or in bands
-    png.write_rows(rgba8.data(), h);
-    png.finish();
-    return true;
+    PngStream encoder(png, w, h);  // one PNG encoder for every image, whole or in bands
+    encoder.write_rows(rgba8.data(), h);
+    encoder.finish();
   } catch (const std::exception& e) {
-    const std::string what = e.what();
-    *error = what.rfind("cannot write " + path.string(), 0) == 0
-                 ? what
-                 : "cannot write " + path.string() + ": " + what;
+    *error = "cannot write " + path.string() + ": " + e.what();
     return false;
   }
+  return write_file_atomic(path, png, error);
 }
 
 }  // namespace fr
