@@ -8,7 +8,7 @@ FRACTALIS_BUILD="${FRACTALIS_BUILD:-$FRACTALIS_ROOT/build}"
 FRACTALIS_PACKAGES=(
   cmake g++ make pkg-config ccache
   ocl-icd-opencl-dev opencl-c-headers pocl-opencl-icd
-  libglm-dev libspdlog-dev libtomlplusplus-dev libstb-dev libsdl2-dev libimgui-dev
+  libglm-dev libspdlog-dev libtomlplusplus-dev libstb-dev libpng-dev libsdl2-dev libimgui-dev
   xvfb xauth
   libgtest-dev libbenchmark-dev
   nlohmann-json3-dev

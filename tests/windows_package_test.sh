@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # The Windows zip as a user gets it, under Wine (scripts/test-windows.sh runs this): unpacked into
 # a folder with a space in its name, fractalis.exe finds its own scenes and helpers from where it
-# lies (nothing of the build tree), lists and renders them, refuses the outputs this build lacks
-# with the reason, and a scene built with the zip's SDK (MinGW-w64, the template) passes
-# `fractalis check`.
-# Usage: windows_package_test.sh SOURCE_DIR ZIP WORK_DIR   (WINEPREFIX set, wine running)
+# lies (nothing of the build tree), lists and renders them, opens the explorer's window for a
+# few frames (Xvfb), refuses the outputs this build lacks with the reason, and a scene built with
+# the zip's SDK (MinGW-w64, the template) passes `fractalis check`.
+# Usage: windows_package_test.sh SOURCE_DIR ZIP WORK_DIR   (WINEPREFIX and DISPLAY set, wine
+# running)
 set -euo pipefail
 source_dir=$1 zip=$2 work=$3
 rm -rf "$work"
@@ -42,6 +43,11 @@ fractalis render --scene menger --size 96x64 --out "Z:$work/menger.png" ||
   fail "render failed: $(cat "$work/err.txt")"
 [[ "$(head -c 8 "$work/menger.png" | od -An -tx1 | tr -d ' \n')" == 89504e470d0a1a0a ]] ||
   fail "menger.png is not a PNG"
+
+echo "== explore: the window (SDL2 through Wine's X11 driver), the overlay, 20 frames"
+[[ -n "${DISPLAY:-}" ]] || fail "no DISPLAY (scripts/test-windows.sh runs this under Xvfb)"
+fractalis explore --frames 20 --size 320x180 || fail "explore failed: $(cat "$work/err.txt")"
+grep -q "explored for 20 frames" "$work/out.txt" || fail "explore: $(cat "$work/out.txt")"
 
 echo "== outputs this build lacks: refused before rendering, with the reason"
 if fractalis render --scene menger --size 96x64 --out "Z:$work/x.exr"; then fail "EXR accepted"; fi

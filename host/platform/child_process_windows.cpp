@@ -186,6 +186,12 @@ std::unique_ptr<ChildProcess> ChildProcess::start(const ChildSpec& spec, std::st
   BOOL started = FALSE;
   {
     std::lock_guard<std::mutex> hold(inherit_lock);
+    // A helper inherits this error mode: one that crashes ends at once, reported by its exit
+    // status, instead of waiting for somebody to close Windows' error reporting dialog, and one
+    // that lacks a DLL fails its LoadLibrary without a message box. (Wine ignores it for its
+    // crash dialog: scripts/test-windows.sh switches that off in its prefix.)
+    SetErrorMode(GetErrorMode() | SEM_FAILCRITICALERRORS | SEM_NOGPFAULTERRORBOX |
+                 SEM_NOOPENFILEERRORBOX);
     std::vector<DWORD> flags(inherited.size(), 0);
     for (size_t i = 0; i < inherited.size(); ++i) {
       GetHandleInformation(inherited[i], &flags[i]);
