@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include <cmath>
+#include <numbers>
 
 namespace fr {
 namespace {
@@ -181,7 +182,7 @@ TEST(CameraPath, OrientationTurnsAtAnEvenRate) {
   const SceneInfo s = scene();
   for (const double u : {0.25, 0.5, 0.75}) {
     const PathSample p = sample_camera_path(path, s, u);
-    const double angle = u * M_PI / 2;
+    const double angle = u * std::numbers::pi / 2;
     const glm::dvec3 f = forward_of(p);
     EXPECT_NEAR(f.x, std::sin(angle), 1e-12) << u;
     EXPECT_NEAR(f.y, 0, 1e-12) << u;

@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include <cmath>
+#include <numbers>
 
 namespace fr {
 namespace {
@@ -54,7 +55,7 @@ TEST(Camera, CornerAndCentreRays) {
 // q_x = 2 g_x / 3 * (-1,0,0), q_y = 2 g_y / 1 * (0,1,0); p_1m = (g_x, -g_y, -1).
 // Pixel (0,0) uses i-1 = 3, j-1 = 1: (g_x - 2 g_x, -g_y + 2 g_y, -1) = (-g_x, g_y, -1).
 TEST(Camera, NonSquareImage) {
-  const double gx = std::tan(M_PI / 6), gy = gx * 2 / 4;
+  const double gx = std::tan(std::numbers::pi / 6), gy = gx * 2 / 4;
   const CameraRays r = make_camera_rays(make_camera({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 60), 4, 2);
   expect_dir(camera_ray_dir(r, 0, 0), {-gx, gy, -1});
   expect_dir(camera_ray_dir(r, 3, 1), {gx, -gy, -1});

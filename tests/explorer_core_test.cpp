@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 
 namespace fr {
@@ -159,8 +160,8 @@ TEST(CameraController, MouseLookYawsAndInvertY) {
   update_camera(c, CameraMode::Fly, in, true, 0.016, 1.0, controls);
   const glm::dvec3 forward = glm::normalize(
       glm::dvec3(c.target[0] - c.eye[0], c.target[1] - c.eye[1], c.target[2] - c.eye[2]));
-  EXPECT_NEAR(forward.x, std::sin(15 * M_PI / 180), 1e-9);
-  EXPECT_NEAR(forward.z, -std::cos(15 * M_PI / 180), 1e-9);
+  EXPECT_NEAR(forward.x, std::sin(15 * std::numbers::pi / 180), 1e-9);
+  EXPECT_NEAR(forward.z, -std::cos(15 * std::numbers::pi / 180), 1e-9);
   // Without mouse look the mouse does nothing.
   fr_camera still = looking_down_minus_z();
   EXPECT_FALSE(update_camera(still, CameraMode::Fly, in, false, 0.016, 1.0, controls).moved);

@@ -18,6 +18,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <numbers>
 #include <optional>
 
 namespace fr {
@@ -300,7 +301,7 @@ TEST(Stability, MengerMaximumLevel) {
 
 // Grazing: the view skims the sponge's top face at 0.5 degrees.
 TEST(Stability, MengerGrazingAngle) {
-  const dvec3 eye(3.2, 1.0 + 3.2 * std::tan(0.5 * M_PI / 180), 0.31);
+  const dvec3 eye(3.2, 1.0 + 3.2 * std::tan(0.5 * std::numbers::pi / 180), 0.31);
   const Frame f = render_view("menger", {eye, dvec3(0, 1, 0.3)}, float_settings(),
                               params({{"iterations", num(3)}}));
   expect_clean(f, "grazing");
@@ -312,7 +313,8 @@ TEST(Stability, MengerGrazingAngle) {
 // keeps its precision at the object.
 void expect_far_menger(double distance, const std::string& what) {
   const dvec3 eye = glm::normalize(dvec3(3.3, 2.5, 4.3)) * distance;
-  const double fov_deg = 2 * std::atan(1.9 / distance) * 180 / M_PI;  // frames the sponge
+  const double fov_deg =
+      2 * std::atan(1.9 / distance) * 180 / std::numbers::pi;  // frames the sponge
   const Frame f = render_view("menger", {eye, dvec3(0), dvec3(0, 1, 0), fov_deg}, float_settings(),
                               params({{"iterations", num(3)}}));
   expect_clean(f, what);
@@ -363,9 +365,10 @@ TEST(Stability, SierpinskiMaximumLevel) {
 TEST(Stability, SierpinskiFarCamera1e6) {
   // From 10^6 units the double reference and float agree: the start plane keeps float exact.
   const dvec3 eye = glm::normalize(dvec3(2.6, 1.6, 3.2)) * 1e6;
-  expect_matches_double("sierpinski",
-                        {eye, dvec3(0), dvec3(0, 1, 0), 2 * std::atan(1.8 / 1e6) * 180 / M_PI},
-                        float_settings(), {}, 0.01, 1.0, "10^6");
+  expect_matches_double(
+      "sierpinski",
+      {eye, dvec3(0), dvec3(0, 1, 0), 2 * std::atan(1.8 / 1e6) * 180 / std::numbers::pi},
+      float_settings(), {}, 0.01, 1.0, "10^6");
 }
 
 // c = -1.5 on the real axis: a filled Julia set with no interior (thin, dendrite-like; the

@@ -44,6 +44,17 @@ fractalis render --scene menger --size 96x64 --out "Z:$work/menger.png" ||
 [[ "$(head -c 8 "$work/menger.png" | od -An -tx1 | tr -d ' \n')" == 89504e470d0a1a0a ]] ||
   fail "menger.png is not a PNG"
 
+echo "== animate: a camera path into a folder of PNG frames; bench; cache"
+fractalis animate --scene benchmark --path "$root/share/fractalis/paths/benchmark.toml" --fps 1 \
+  --size 64x32 --out "Z:$work/frames" || fail "animate failed: $(cat "$work/err.txt")"
+frames=$(find "$work/frames" -name 'frame_*.png' | wc -l)
+[[ $frames == 21 ]] || fail "animate wrote $frames frames, not the 21 of 20 s at 1 fps"
+fractalis bench --scene julia --size 64x36 --frames 3 --runs 1 ||
+  fail "bench failed: $(cat "$work/err.txt")"
+grep -q "median" "$work/out.txt" || fail "bench said: $(cat "$work/out.txt")"
+fractalis cache || fail "cache failed: $(cat "$work/err.txt")"
+grep -qi "kernels" "$work/out.txt" || fail "cache said: $(cat "$work/out.txt")"
+
 echo "== explore: the window (SDL2 through Wine's X11 driver), the overlay, 20 frames"
 [[ -n "${DISPLAY:-}" ]] || fail "no DISPLAY (scripts/test-windows.sh runs this under Xvfb)"
 fractalis explore --frames 20 --size 320x180 || fail "explore failed: $(cat "$work/err.txt")"

@@ -17,7 +17,7 @@ namespace fr {
 int command_check(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   std::vector<OptionSpec> specs = {
       {"json", "FILE", false, "also write the findings as JSON (atomically)"},
-      {"config", "FILE", false, "settings file (default: $XDG_CONFIG_HOME/fractalis/config.toml)"},
+      config_option_spec(),
       {"set", "KEY=VALUE", true, "any setting, as in config/default.toml (repeatable)"},
       {"device", "SEL", false, "OpenCL device: gpu, cpu, P:D or part of its name"},
       {"help", nullptr, false, "show this help"},

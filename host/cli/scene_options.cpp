@@ -14,10 +14,16 @@
 
 namespace fr {
 
+OptionSpec config_option_spec() {
+  return {"config", "FILE", false,
+          "settings file (default: config.toml in your settings folder,\n"
+          "                                 $XDG_CONFIG_HOME/fractalis or %APPDATA%\\fractalis)"};
+}
+
 std::vector<OptionSpec> plugin_option_specs() {
   return {
       {"plugins", "DIR", false, "scene plugin folder (instead of the configured ones)"},
-      {"config", "FILE", false, "settings file (default: $XDG_CONFIG_HOME/fractalis/config.toml)"},
+      config_option_spec(),
   };
 }
 
@@ -131,18 +137,20 @@ std::vector<std::filesystem::path> plugin_folders(const Settings& settings,
   // else the installed ones, found from the executable (<prefix>/bin/fractalis ->
   // <prefix>/lib/fractalis/plugins), so that any install prefix works.
   const std::filesystem::path exe = executable_path();
+  // Normalised: one kind of separator on Windows too, where the compiled-in parts use '/'.
   if (runs_from_build_tree(exe))
-    add(FRACTALIS_PLUGIN_BUILD_DIR);
+    add(std::filesystem::path(FRACTALIS_PLUGIN_BUILD_DIR).lexically_normal());
   else
-    add(exe.parent_path().parent_path() / FRACTALIS_PLUGIN_INSTALL_DIR);
+    add((exe.parent_path().parent_path() / FRACTALIS_PLUGIN_INSTALL_DIR).lexically_normal());
   add(user_scene_folder());
   return folders;
 }
 
 std::filesystem::path shipped_path_file(const std::string& name) {
   const std::filesystem::path exe = executable_path();
-  if (runs_from_build_tree(exe)) return std::filesystem::path(FRACTALIS_PATHS_SOURCE_DIR) / name;
-  return exe.parent_path().parent_path() / FRACTALIS_PATHS_INSTALL_DIR / name;
+  if (runs_from_build_tree(exe))
+    return (std::filesystem::path(FRACTALIS_PATHS_SOURCE_DIR) / name).lexically_normal();
+  return (exe.parent_path().parent_path() / FRACTALIS_PATHS_INSTALL_DIR / name).lexically_normal();
 }
 
 std::filesystem::path user_scene_folder() {

@@ -20,6 +20,8 @@ namespace fr {
 std::vector<OptionSpec> scene_option_specs();
 // Options shared by every command that loads plugins: --plugins, --config.
 std::vector<OptionSpec> plugin_option_specs();
+// --config FILE, as every command that reads settings takes it.
+OptionSpec config_option_spec();
 
 // Defaults, then the settings file (--config FILE, else the user's file), then the options.
 // Without `problems`, the first problem is a UsageError; with it, problems are collected there and
