@@ -44,7 +44,7 @@ fractalis render --scene menger --size 96x64 --out "Z:$work/menger.png" ||
 [[ "$(head -c 8 "$work/menger.png" | od -An -tx1 | tr -d ' \n')" == 89504e470d0a1a0a ]] ||
   fail "menger.png is not a PNG"
 
-echo "== animate: a camera path into a folder of PNG frames; bench; cache"
+echo "== animate: a camera path into a folder of PNG frames; bench; sweep; cache"
 fractalis animate --scene benchmark --path "$root/share/fractalis/paths/benchmark.toml" --fps 1 \
   --size 64x32 --out "Z:$work/frames" || fail "animate failed: $(cat "$work/err.txt")"
 frames=$(find "$work/frames" -name 'frame_*.png' | wc -l)
@@ -52,6 +52,9 @@ frames=$(find "$work/frames" -name 'frame_*.png' | wc -l)
 fractalis bench --scene julia --size 64x36 --frames 3 --runs 1 ||
   fail "bench failed: $(cat "$work/err.txt")"
 grep -q "median" "$work/out.txt" || fail "bench said: $(cat "$work/out.txt")"
+fractalis sweep --scene menger --size 48x32 --knobs max_steps --frames 1 --out "Z:$work/sweep" ||
+  fail "sweep failed: $(cat "$work/err.txt")"
+for f in sweep.csv sweep.json sweep.svg; do [[ -s "$work/sweep/$f" ]] || fail "sweep wrote no $f"; done
 fractalis cache || fail "cache failed: $(cat "$work/err.txt")"
 grep -qi "kernels" "$work/out.txt" || fail "cache said: $(cat "$work/out.txt")"
 

@@ -32,7 +32,9 @@ int command_cache(const std::vector<std::string>& args, std::ostream& out,
   const Settings settings = load_settings(options);
   const auto base = fractalis_cache_dir();
   if (base.empty()) {
-    throw std::runtime_error("no cache folder: neither XDG_CACHE_HOME nor HOME is set");
+    throw std::runtime_error(
+        "no cache folder: the system names none (XDG_CACHE_HOME and HOME unset; on Windows "
+        "LOCALAPPDATA)");
   }
   const char* pocl = std::getenv("POCL_CACHE_DIR");
   // main() set POCL_CACHE_DIR to ours unless the user had set it: then the kernels are theirs.

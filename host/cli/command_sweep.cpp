@@ -80,8 +80,9 @@ std::vector<OptionSpec> sweep_option_specs() {
   specs.push_back({"knobs", "LIST", false, knobs_help().c_str()});
   specs.push_back({"frames", "N", false,
                    "timing rounds: frames timed per configuration, interleaved (default 9)"});
-  specs.push_back(
-      {"cache", "DIR", false, "reference cache (default $XDG_CACHE_HOME/fractalis/sweep)"});
+  specs.push_back({"cache", "DIR", false,
+                   "reference cache (default: sweep/ in fractalis's cache folder,\n"
+                   "                                 see `fractalis cache`)"});
   specs.push_back({"help", nullptr, false, "show this help"});
   return specs;
 }
