@@ -92,26 +92,29 @@ std::vector<PluginChange> poll_until_reported(PluginWatcher& watcher, double* no
   return {};
 }
 
-// A new plugin file is reported once it has stayed the same for the debounce time, a removed one
-// as removed; files there at the start are known, not new.
+// A new plugin file (a library by this system's suffix) is reported once it has stayed the same
+// for the debounce time, a removed one as removed; files there at the start are known, not new,
+// and other files are no plugins at all.
 TEST(PluginWatcher, ReportsFilesOnceTheyAreStable) {
   const fs::path dir = fresh_dir("watcher");
-  std::ofstream(dir / "old.so") << "there before";
+  const std::string suffix = kWindows ? ".dll" : ".so";
+  std::ofstream(dir / ("old" + suffix)) << "there before";
   PluginWatcher watcher(dir, 0.3, 0.5);
   double now_s = 0;
   EXPECT_TRUE(watcher.poll(now_s).empty()) << "known at the start";
-  std::ofstream(dir / "new.so") << "scene";
+  std::ofstream(dir / "notes.txt") << "not a plugin";
+  std::ofstream(dir / ("new" + suffix)) << "scene";
   const double written_s = now_s;
   auto changes = poll_until_reported(watcher, &now_s);
   ASSERT_EQ(changes.size(), 1u);
   EXPECT_EQ(changes[0].kind, PluginChange::Kind::Added);
-  EXPECT_EQ(changes[0].file.filename(), "new.so");
+  EXPECT_EQ(changes[0].file.filename(), "new" + suffix);
   EXPECT_GE(now_s - written_s, 0.3) << "not before it was stable for the debounce time";
-  fs::remove(dir / "old.so");
+  fs::remove(dir / ("old" + suffix));
   changes = poll_until_reported(watcher, &now_s);
   ASSERT_EQ(changes.size(), 1u);
   EXPECT_EQ(changes[0].kind, PluginChange::Kind::Removed);
-  EXPECT_EQ(changes[0].file.filename(), "old.so");
+  EXPECT_EQ(changes[0].file.filename(), "old" + suffix);
   fs::remove_all(dir);
 }
 

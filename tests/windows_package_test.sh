@@ -63,6 +63,22 @@ echo "== explore: the window (SDL2 through Wine's X11 driver), the overlay, 20 f
 fractalis explore --frames 20 --size 320x180 || fail "explore failed: $(cat "$work/err.txt")"
 grep -q "explored for 20 frames" "$work/out.txt" || fail "explore: $(cat "$work/out.txt")"
 
+echo "== hot reload: a scene DLL dropped into the watched folder appears in the running explorer"
+mkdir -p "$work/scenes"
+cp "$root/lib/fractalis/plugins/mandelbulb.dll" "$work/scenes/"
+wine "$exe" explore --plugins "Z:$work/scenes" --frames 100000 --size 160x90 < /dev/null \
+  > "$work/out.txt" 2> "$work/err.txt" &
+explorer=$!
+# Files there when the explorer starts are loaded, not added: drop the new one once it runs (it
+# starts in about 2 s here).
+sleep 10
+cp "$root/lib/fractalis/plugins/menger.dll" "$work/scenes/"
+for _ in $(seq 60); do grep -q "added 'menger' from menger.dll" "$work/err.txt" && break; sleep 0.5; done
+kill "$explorer" 2>/dev/null || true
+wait "$explorer" 2>/dev/null || true
+grep -q "added 'menger' from menger.dll" "$work/err.txt" ||
+  fail "the dropped scene was not added: $(cat "$work/err.txt")"
+
 echo "== outputs this build lacks: refused before rendering, with the reason"
 if fractalis render --scene menger --size 96x64 --out "Z:$work/x.exr"; then fail "EXR accepted"; fi
 grep -q "built without OpenEXR" "$work/err.txt" || fail "EXR refusal: $(cat "$work/err.txt")"

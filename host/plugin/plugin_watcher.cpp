@@ -1,5 +1,7 @@
 #include "plugin/plugin_watcher.hpp"
 
+#include "platform/shared_library.hpp"
+
 namespace fr {
 
 PluginWatcher::PluginWatcher(std::filesystem::path folder, double debounce_s,
@@ -17,7 +19,7 @@ std::map<std::filesystem::path, PluginWatcher::Stamp> PluginWatcher::scan() cons
   std::map<std::filesystem::path, Stamp> out;
   std::error_code ec;
   for (const auto& e : std::filesystem::directory_iterator(folder_, ec)) {
-    if (e.path().extension() != ".so" || !e.is_regular_file(ec)) continue;
+    if (!is_library_file_name(e.path()) || !e.is_regular_file(ec)) continue;
     Stamp s;
     s.size = e.file_size(ec);
     s.mtime = e.last_write_time(ec);
