@@ -66,6 +66,7 @@ Settings load_settings(const ParsedOptions& options, std::vector<SettingsProblem
       case PathKind::Missing:
         if (path.loops) throw UsageError(named + "is a symbolic link that loops");
         if (path.is_link) throw UsageError(named + "is a symbolic link to nothing");
+        if (!path.error.empty()) throw UsageError(named + "cannot be read (" + path.error + ")");
         throw UsageError("--config: no such file '" + echo(file->string()) + "'");
       case PathKind::Folder:
         throw UsageError(named + "is a folder, not a settings file");

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <utility>
 
 namespace fr {
 
@@ -27,7 +28,9 @@ struct PathInfo {
   bool is_link = false;               // the path itself is a symbolic link (or a reparse point)
   bool loops = false;                 // its links lead round in a circle (then kind is Missing)
   unsigned mode = 0;                  // permission bits (POSIX); 0 on Windows
-  // Why what it names could not be examined, when the path exists (a link to nothing: why not).
+  // Why what it names could not be examined: the path exists but leads nowhere (a link to
+  // nothing), or looking failed for another reason than its absence (no permission). Empty for
+  // a path that is simply not there.
   std::string error;
 };
 PathInfo examine_path(const std::filesystem::path& path);
@@ -84,9 +87,20 @@ struct FileIdentity {
 class ReadableFile {
  public:
   ReadableFile() = default;
-  ~ReadableFile();
-  ReadableFile(ReadableFile&& other) noexcept;
-  ReadableFile& operator=(ReadableFile&& other) noexcept;
+  ~ReadableFile();  // closes it (files_posix.cpp, files_windows.cpp)
+  ReadableFile(ReadableFile&& other) noexcept
+      : handle_(std::exchange(other.handle_, kNone)),
+        kind_(other.kind_),
+        identity_(other.identity_) {}
+  ReadableFile& operator=(ReadableFile&& other) noexcept {
+    if (this != &other) {
+      ReadableFile previous(std::move(*this));  // closed at the end of this call
+      handle_ = std::exchange(other.handle_, kNone);
+      kind_ = other.kind_;
+      identity_ = other.identity_;
+    }
+    return *this;
+  }
 
   // On failure *error is "a symlink loop", "a dangling symlink" or "cannot open: " and why.
   static ReadableFile open(const std::filesystem::path& path, std::string* error);

@@ -32,7 +32,11 @@ bool failed(std::string* error) {
 PathInfo examine_path(const std::filesystem::path& path) {
   PathInfo info;
   struct stat link {};
-  if (lstat(path.c_str(), &link) != 0) return info;  // nothing there
+  if (lstat(path.c_str(), &link) != 0) {
+    // Nothing there, or a folder on the way that may not be searched: say which.
+    if (errno != ENOENT && errno != ENOTDIR) info.error = std::strerror(errno);
+    return info;
+  }
   info.is_link = S_ISLNK(link.st_mode);
   struct stat target {};
   if (stat(path.c_str(), &target) != 0) {
@@ -74,22 +78,6 @@ std::string others_who_can_write(const std::filesystem::path& path, bool is_fold
 
 ReadableFile::~ReadableFile() {
   if (handle_ != kNone) ::close(static_cast<int>(handle_));
-}
-
-ReadableFile::ReadableFile(ReadableFile&& other) noexcept
-    : handle_(other.handle_), kind_(other.kind_), identity_(other.identity_) {
-  other.handle_ = kNone;
-}
-
-ReadableFile& ReadableFile::operator=(ReadableFile&& other) noexcept {
-  if (this != &other) {
-    if (handle_ != kNone) ::close(static_cast<int>(handle_));
-    handle_ = other.handle_;
-    kind_ = other.kind_;
-    identity_ = other.identity_;
-    other.handle_ = kNone;
-  }
-  return *this;
 }
 
 ReadableFile ReadableFile::open(const std::filesystem::path& path, std::string* error) {

@@ -172,22 +172,6 @@ ReadableFile::~ReadableFile() {
   if (handle_ != kNone) CloseHandle(as_handle(handle_));
 }
 
-ReadableFile::ReadableFile(ReadableFile&& other) noexcept
-    : handle_(other.handle_), kind_(other.kind_), identity_(other.identity_) {
-  other.handle_ = kNone;
-}
-
-ReadableFile& ReadableFile::operator=(ReadableFile&& other) noexcept {
-  if (this != &other) {
-    if (handle_ != kNone) CloseHandle(as_handle(handle_));
-    handle_ = other.handle_;
-    kind_ = other.kind_;
-    identity_ = other.identity_;
-    other.handle_ = kNone;
-  }
-  return *this;
-}
-
 ReadableFile ReadableFile::open(const std::filesystem::path& path, std::string* error) {
   // Not inherited (no SECURITY_ATTRIBUTES); folders open too (backup semantics), so that kind()
   // says what they are; others may go on reading, writing or deleting the file meanwhile.
