@@ -2,11 +2,8 @@
 // fixture fails exactly the check that names its fault (exit 1), with JSON that says the same.
 #include "test_support.hpp"
 
-#include <sys/wait.h>
-
 #include <nlohmann/json.hpp>
 
-#include <fstream>
 #include <map>
 #include <sstream>
 #include <vector>
@@ -20,21 +17,17 @@ struct CheckRun {
   std::string json;
 };
 
-CheckRun run_check(const std::filesystem::path& plugin, const std::string& extra = "") {
+CheckRun run_check(const std::filesystem::path& plugin,
+                   const std::vector<std::string>& extra = {}) {
   const auto dir = test::fresh_dir("check_" + plugin.stem().string());
-  const auto out = dir / "out.txt", json = dir / "check.json";
-  const std::string command = std::string(FRACTALIS_EXECUTABLE) + " check " + plugin.string() +
-                              " --json " + json.string() + " " + extra + " > " + out.string() +
-                              " 2>&1";
-  const int status = std::system(command.c_str());
+  const auto json = dir / "check.json";
+  std::vector<std::string> args = {"check", plugin.string(), "--json", json.string()};
+  args.insert(args.end(), extra.begin(), extra.end());
+  const test::ProgramRun run = test::run_fractalis(args);
   CheckRun r;
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream o(out), j(json);
-  std::stringstream os, js;
-  os << o.rdbuf();
-  js << j.rdbuf();
-  r.out = os.str();
-  r.json = js.str();
+  r.exit_code = run.exit_code;
+  r.out = run.output;
+  r.json = test::read_file(json);
   return r;
 }
 
@@ -162,9 +155,9 @@ TEST(Check, EveryBrokenFixtureFailsItsCheck) {
       {check_dir / "check_wrong_entry" PLUGIN_SUFFIX,
        {"de-compiles", "defines no `real_t scene_de("}},
   };
-  const std::string limits =
-      "--set plugins.load_timeout_s=2 --set plugins.call_timeout_s=0.5 "
-      "--set plugins.vet_timeout_s=8";
+  const std::vector<std::string> limits = {"--set", "plugins.load_timeout_s=2",
+                                           "--set", "plugins.call_timeout_s=0.5",
+                                           "--set", "plugins.vet_timeout_s=8"};
   for (const auto& [plugin, expected] : cases) {
     SCOPED_TRACE(plugin.filename().string());
     const CheckRun r = run_check(plugin, limits);
@@ -182,13 +175,11 @@ TEST(Check, EveryBrokenFixtureFailsItsCheck) {
 }
 
 TEST(Check, UsageErrors) {
-  EXPECT_EQ(
-      std::system((std::string(FRACTALIS_EXECUTABLE) + " check > /dev/null 2>&1").c_str()) >> 8, 2);
-  EXPECT_EQ(
-      std::system((std::string(FRACTALIS_EXECUTABLE) + " check x.so --frobnicate > /dev/null 2>&1")
-                      .c_str()) >>
-          8,
-      2);
+  EXPECT_EQ(test::run_fractalis({"check"}).exit_code, 2);
+  const test::ProgramRun unknown =
+      test::run_fractalis({"check", "x" PLUGIN_SUFFIX, "--frobnicate"});
+  EXPECT_EQ(unknown.exit_code, 2);
+  EXPECT_NE(unknown.output.find("--frobnicate"), std::string::npos) << unknown.output;
 }
 
 }  // namespace

@@ -6,14 +6,21 @@
 // slider into a crash.
 #include "worker/render_worker.hpp"
 #include "app/explorer.hpp"
+#include "platform/files.hpp"
 #include "render/de_probe.hpp"
 #include "test_support.hpp"
 #include "worker/render_wire.hpp"
 
+#ifdef _WIN32
+#include <windows.h>
+// (after windows.h)
+#include <tlhelp32.h>
+#else
 #include <dirent.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#endif
 
 #include <gtest/gtest.h>
 #include <spdlog/sinks/ostream_sink.h>
@@ -28,27 +35,46 @@ namespace {
 
 namespace fs = std::filesystem;
 
+const bool kWindows = fs::path::preferred_separator == '\\';
+
+// What a write through a bad pointer ends a process with, on either system.
+constexpr const char* kSegv = "crashed (SIGSEGV|crashed (access violation";
+
 fs::path kernel_fixture_dir(const std::string& name) {
   return fs::path(KERNEL_PLUGIN_DIR) / name;
 }
 
-// A link to the worker under a name of this test's own, so that its processes can be counted
-// among everything else that runs on the machine.
-fs::path own_worker_link() {
-  static const fs::path link = [] {
+// The worker under a name of this test's own, so that its processes can be counted among
+// everything else that runs on the machine: a link to it (Linux), a copy (Windows, where a
+// program's name is its file's).
+fs::path own_worker() {
+  static const fs::path own = [] {
     const fs::path dir = test::fresh_dir("render_worker_link");
-    const fs::path target =
-        fs::path(FRACTALIS_EXECUTABLE).parent_path() / "fractalis-render-worker";
-    const fs::path l = dir / ("worker-" + std::to_string(getpid()));
-    fs::create_symlink(target, l);
+    const fs::path target = fs::path(FRACTALIS_EXECUTABLE).parent_path() /
+                            executable_file_name("fractalis-render-worker");
+    const fs::path l =
+        dir / executable_file_name("worker-" + std::to_string(current_process_id()));
+    if (kWindows)
+      fs::copy_file(target, l);
+    else
+      fs::create_symlink(target, l);
     return l;
   }();
-  return link;
+  return own;
 }
 
-// Processes whose argv[0] is `program`.
+// Processes started from `program` (Linux: whose argv[0] it is; Windows: whose executable file
+// has its name).
 int processes_running(const fs::path& program) {
   int count = 0;
+#ifdef _WIN32
+  const HANDLE all = CreateToolhelp32Snapshot(TH32CS_SNAPPROCESS, 0);
+  PROCESSENTRY32W entry{};
+  entry.dwSize = sizeof entry;
+  for (BOOL more = Process32FirstW(all, &entry); more; more = Process32NextW(all, &entry))
+    if (_wcsicmp(entry.szExeFile, program.filename().c_str()) == 0) ++count;
+  CloseHandle(all);
+#else
   DIR* proc = opendir("/proc");
   while (dirent* e = readdir(proc)) {
     if (e->d_name[0] < '0' || e->d_name[0] > '9') continue;
@@ -58,6 +84,7 @@ int processes_running(const fs::path& program) {
     if (argv0 == program.string()) ++count;
   }
   closedir(proc);
+#endif
   return count;
 }
 
@@ -66,25 +93,39 @@ struct CommandRun {
   std::string output;  // stdout and stderr
 };
 
+using Args = std::vector<std::string>;
+
+Args operator+(Args a, const Args& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
 // Runs the fractalis executable (a process of its own: if isolation failed, it, not the test,
-// would die) with the test's worker link, through `launcher` when there is one.
-CommandRun run_fractalis(const std::string& args, const std::string& launcher = "") {
-  const std::string command = "FRACTALIS_RENDER_WORKER='" + own_worker_link().string() + "' " +
-                              launcher + " '" + FRACTALIS_EXECUTABLE + "' " + args + " 2>&1";
-  CommandRun r;
-  FILE* pipe = popen(command.c_str(), "r");
-  char buffer[4096];
-  size_t got = 0;
-  while ((got = fread(buffer, 1, sizeof buffer, pipe)) > 0) r.output.append(buffer, got);
-  const int status = pclose(pipe);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  return r;
+// would die) with the test's own worker; `in_window` in an Xvfb of its own on Linux (the Windows
+// tests run in one already: scripts/test-windows.sh).
+CommandRun run_fractalis(const Args& args, bool in_window = false) {
+  test::Environment environment = {{"FRACTALIS_RENDER_WORKER", own_worker().string()}};
+  test::ProgramRun run;
+#ifdef XVFB_RUN
+  if (in_window) {
+    // (SDL and the X libraries keep memory to the end, which LeakSanitizer would call leaks, as
+    // in explorer_window_test.)
+    environment.push_back({"ASAN_OPTIONS", "detect_leaks=0"});
+    run = test::run_program(XVFB_RUN, Args{"-a", FRACTALIS_EXECUTABLE} + args, environment);
+    return {run.exit_code, run.output + (run.exit_code < 0 ? "\n[" + run.how + "]" : "")};
+  }
+#else
+  (void)in_window;
+#endif
+  run = test::run_program(FRACTALIS_EXECUTABLE, args, environment);
+  return {run.exit_code, run.output + (run.exit_code < 0 ? "\n[" + run.how + "]" : "")};
 }
 
 // Limits short enough for a test: a hang ends in seconds, a compiler bomb in 10 s or 1 GiB.
-const std::string kLimits =
-    "--set render.watchdog_s=5 --set plugins.vet_timeout_s=20 --set plugins.build_timeout_s=10 "
-    "--set plugins.worker_memory_mib=1024";
+const Args kLimits = {"--set", "render.watchdog_s=5",
+                      "--set", "plugins.vet_timeout_s=20",
+                      "--set", "plugins.build_timeout_s=10",
+                      "--set", "plugins.worker_memory_mib=1024"};
 
 // Whether `text` says one of the alternatives ("a|b"), each a set of parts it must all contain
 // ("a&b").
@@ -108,24 +149,24 @@ bool says_any(const std::string& text, const std::string& alternatives) {
 
 struct Hostile {
   const char* name;      // fixture folder, and scene id after "kernel_"
-  const char* extra;     // extra options of render and bench
+  Args extra;            // extra options of render and bench
   const char* reason;    // what the error must say (says_any)
   bool renders = false;  // the scene renders (its attack is a nuisance, not a failure)
 };
 
 const Hostile kHostile[] = {
-    {"write_everywhere", "", "crashed (SIGSEGV"},
-    {"write_some_points", "", "crashed (SIGSEGV"},
-    {"write_above_param", "--param danger=1", "crashed (SIGSEGV"},
-    {"private_overrun", "", "crashed (SIGSEGV|crashed (SIGBUS"},
-    {"huge_private", "", "crashed (SIG|memory|compil"},
-    {"preprocessor_bomb", "", "SIGXFSZ|plugins.build_timeout_s|plugins.worker_memory_mib"},
-    {"huge_source", "", "de_source is longer than 1048576 bytes"},
-    {"loop_some_pixels", "", "did not finish"},
-    {"printf_flood", "", "printed more than 20 lines", true},
-    {"macro_collision", "", "fixture.cl:1: &v3_dot"},
-    {"builtin_macro", "", "rendered kernel_builtin_macro|median", true},
-    {"function_collision", "", "fixture.cl:4: &march"},
+    {"write_everywhere", {}, kSegv},
+    {"write_some_points", {}, kSegv},
+    {"write_above_param", {"--param", "danger=1"}, kSegv},
+    {"private_overrun", {}, "crashed (SIGSEGV|crashed (SIGBUS|crashed (access violation"},
+    {"huge_private", {}, "crashed (|memory|compil"},
+    {"preprocessor_bomb", {}, "SIGXFSZ|plugins.build_timeout_s|plugins.worker_memory_mib"},
+    {"huge_source", {}, "de_source is longer than 1048576 bytes"},
+    {"loop_some_pixels", {}, "did not finish"},
+    {"printf_flood", {}, "printed more than 20 lines", true},
+    {"macro_collision", {}, "fixture.cl:1: &v3_dot"},
+    {"builtin_macro", {}, "rendered kernel_builtin_macro|median", true},
+    {"function_collision", {}, "fixture.cl:4: &march"},
 };
 
 class HostileKernel : public testing::TestWithParam<Hostile> {};
@@ -134,18 +175,19 @@ TEST_P(HostileKernel, EveryCommandSurvivesAndNamesTheFileAndReason) {
   const Hostile& h = GetParam();
   const fs::path dir = kernel_fixture_dir(h.name);
   const std::string file = "kernel_" + std::string(h.name) + PLUGIN_SUFFIX;
-  const std::string plugins = "--plugins '" + dir.string() + "' ";
-  const std::string scene = plugins + "--scene kernel_" + h.name + " " + kLimits + " " + h.extra;
+  const Args plugins = {"--plugins", dir.string()};
+  const Args scene = plugins + Args{"--scene", std::string("kernel_") + h.name} + kLimits + h.extra;
   const fs::path out = test::fresh_dir(std::string("render_worker_") + h.name);
 
-  const CommandRun list = run_fractalis("list " + plugins);
+  const CommandRun list = run_fractalis(Args{"list"} + plugins);
   // 1: a plugin failed to load (named, with its reason); never a crash of fractalis.
   EXPECT_TRUE(list.code == 0 || list.code == 1) << list.output;
   EXPECT_EQ(list.output.find('\033'), std::string::npos) << list.output;
 
-  const CommandRun render =
-      run_fractalis("render " + scene + " --size 64x36 --out '" + (out / "x.png").string() + "'");
-  const CommandRun bench = run_fractalis("bench " + scene + " --size 64x36 --frames 2 --runs 1");
+  const CommandRun render = run_fractalis(Args{"render"} + scene +
+                                          Args{"--size", "64x36", "--out", (out / "x.png").string()});
+  const CommandRun bench =
+      run_fractalis(Args{"bench"} + scene + Args{"--size", "64x36", "--frames", "2", "--runs", "1"});
   for (const CommandRun* r : {&render, &bench}) {
     SCOPED_TRACE(r->output);
     if (h.renders) {
@@ -169,14 +211,10 @@ TEST_P(HostileKernel, EveryCommandSurvivesAndNamesTheFileAndReason) {
     if (e.path().filename() != "x.png") ++left;
   EXPECT_EQ(left, 0u) << "no temporary file is left";
 
-  // The explorer as a user starts it, in a window (an Xvfb of its own): the scene is skipped at
-  // load with its reason (then status 2: no such scene), or explored, its error shown; never a
-  // crash of fractalis.
-  // (SDL and the X libraries keep memory to the end, which LeakSanitizer would call leaks, as in
-  // explorer_window_test.)
+  // The explorer as a user starts it, in a window: the scene is skipped at load with its reason
+  // (then status 2: no such scene), or explored, its error shown; never a crash of fractalis.
   const CommandRun explore =
-      run_fractalis("explore " + scene + " --frames 10 --size 64x36",
-                    std::string("ASAN_OPTIONS=detect_leaks=0 ") + XVFB_RUN + " -a");
+      run_fractalis(Args{"explore"} + scene + Args{"--frames", "10", "--size", "64x36"}, true);
   {
     SCOPED_TRACE("explore: " + explore.output);
     EXPECT_TRUE(explore.code == 0 || (!h.renders && explore.code == 2)) << explore.code;
@@ -186,15 +224,15 @@ TEST_P(HostileKernel, EveryCommandSurvivesAndNamesTheFileAndReason) {
     }
   }
 
-  const CommandRun check = run_fractalis("check '" + (dir / file).string() + "' " + kLimits +
-                                         " --set plugins.allow_writable=true");
+  const CommandRun check = run_fractalis(Args{"check", (dir / file).string()} + kLimits +
+                                         Args{"--set", "plugins.allow_writable=true"});
   SCOPED_TRACE(check.output);
   EXPECT_TRUE(check.code == 0 || check.code == 1) << check.code;
   if (!h.renders && std::string(h.name) != "write_above_param" &&
       std::string(h.name) != "huge_source") {
     EXPECT_EQ(check.code, 1) << "the check fails";
   }
-  EXPECT_EQ(processes_running(own_worker_link()), 0) << "no worker outlives fractalis";
+  EXPECT_EQ(processes_running(own_worker()), 0) << "no worker outlives fractalis";
 }
 
 INSTANTIATE_TEST_SUITE_P(Fixtures, HostileKernel, testing::ValuesIn(kHostile),
@@ -340,7 +378,7 @@ TEST(RenderWorker, ACrashEndsTheWorkerAndTheNextCallStartsAnother) {
   } catch (const RenderWorkerFailure& e) {
     const std::string what = e.what();
     EXPECT_NE(what.find(bad->file.string()), std::string::npos) << what;
-    EXPECT_NE(what.find("crashed (SIGSEGV"), std::string::npos) << what;
+    EXPECT_TRUE(says_any(what, kSegv)) << what;
     EXPECT_NE(what.find("while rendering"), std::string::npos) << what;
     EXPECT_FALSE(e.timed_out());
   }
@@ -430,7 +468,7 @@ TEST(RenderWorker, TheExplorerGoesBackToTheLastGoodParameters) {
   explorer.mark_changed();
   explorer.update(input, 1.0 / 30, 0);  // the probe at the eye runs the DE: the worker crashes
   const FrameView* frame = explorer.render(64, 36);
-  EXPECT_NE(slot.error.find("crashed (SIGSEGV"), std::string::npos) << slot.error;
+  EXPECT_TRUE(says_any(slot.error, kSegv)) << slot.error;
   EXPECT_NE(slot.error.find("kernel_write_above_param" PLUGIN_SUFFIX), std::string::npos)
       << slot.error;
   EXPECT_EQ(slot.state.params[0].v[0], 0) << "back to the last value that rendered";
@@ -459,6 +497,7 @@ TEST(RenderWorker, ABuiltInMacroStaysInTheScenesCode) {
   EXPECT_GT(std::count(a.ray_status.begin(), a.ray_status.end(), 1), 200) << "the sphere is seen";
 }
 
+#ifndef _WIN32  // /proc, SIGKILL and waitpid
 // Restarting the worker a thousand times leaves no descriptor, child or memory behind.
 TEST(RenderWorker, AThousandRestartsLeakNothing) {
   const auto scene = test::mandelbulb();
@@ -495,6 +534,7 @@ TEST(RenderWorker, AThousandRestartsLeakNothing) {
   EXPECT_LT(resident_kib() - rss, 8 * 1024) << "KiB grown over the restarts";
 #endif
 }
+#endif
 
 }  // namespace
 }  // namespace fr

@@ -1,6 +1,8 @@
 // test_support.hpp — what several tests share: fixture paths and one OpenCL device per process.
 #pragma once
 
+#include "platform/channel.hpp"
+#include "platform/child_process.hpp"
 #include "plugin/plugin_loader.hpp"
 #include "render/cl_runtime.hpp"
 #include "render/device.hpp"
@@ -10,12 +12,15 @@
 #include <stb_image.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace fr::test {
@@ -102,6 +107,93 @@ inline LoadedPng load_png(const std::filesystem::path& file) {
   png.rgba8.assign(pixels, pixels + size_t(png.width_px) * png.height_px * 4);
   stbi_image_free(pixels);
   return png;
+}
+
+// A program run to its end, as a user's shell would run it: its exit status (-1 when it did not
+// exit by itself), how it ended ("exited with status 1", "crashed (...)") and everything it
+// wrote to stdout and stderr, interleaved as written.
+struct ProgramRun {
+  int exit_code = -1;
+  std::string how;
+  std::string output;
+};
+
+// Sets (or, with nullopt, removes) an environment variable of this process.
+inline void set_environment(const std::string& name, const std::optional<std::string>& value) {
+#ifdef _WIN32
+  _putenv_s(name.c_str(), value ? value->c_str() : "");  // "" removes it there
+#else
+  if (value)
+    setenv(name.c_str(), value->c_str(), 1);
+  else
+    unsetenv(name.c_str());
+#endif
+}
+
+using Environment = std::vector<std::pair<std::string, std::string>>;
+
+// Runs `program` with `arguments` through the platform layer's child processes (the same code on
+// Linux and Windows, no shell in between), with `environment` added to ours for it alone,
+// killing it after `timeout_s`.
+inline ProgramRun run_program(const std::filesystem::path& program,
+                              const std::vector<std::string>& arguments,
+                              const Environment& environment = {}, double timeout_s = 600) {
+  ProgramRun run;
+  ChannelPair pipe;
+  std::string error;
+  if (!make_pipe(&pipe, &error)) {
+    run.how = "no pipe: " + error;
+    return run;
+  }
+  ChildSpec spec;
+  spec.program = program;
+  spec.arguments = arguments;
+  spec.stdout_to = pipe.theirs.handle();
+  spec.stderr_to = pipe.theirs.handle();
+  // A child takes our environment when it starts: set around the start, then put back.
+  std::vector<std::optional<std::string>> before;
+  for (const auto& [name, value] : environment) {
+    const char* was = std::getenv(name.c_str());
+    before.push_back(was ? std::optional<std::string>(was) : std::nullopt);
+    set_environment(name, value);
+  }
+  auto child = ChildProcess::start(spec, &error);
+  for (size_t i = 0; i < environment.size(); ++i) set_environment(environment[i].first, before[i]);
+  pipe.theirs.close();  // the child's copy alone keeps the pipe open
+  if (!child) {
+    run.how = "could not be started: " + error;
+    return run;
+  }
+  const auto deadline =
+      std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+  char buffer[4096];
+  for (;;) {
+    const auto left_ms = std::chrono::duration_cast<std::chrono::milliseconds>(
+                             deadline - std::chrono::steady_clock::now())
+                             .count();
+    size_t got = 0;
+    const ChannelStatus status =
+        pipe.ours.read_some(buffer, sizeof buffer, int(std::max<int64_t>(left_ms, 0)), &got);
+    if (status == ChannelStatus::Ok) {
+      run.output.append(buffer, got);
+      continue;
+    }
+    if (status == ChannelStatus::TimedOut) {
+      child->kill();
+      run.output += "\n[test: killed after " + std::to_string(timeout_s) + " s]\n";
+    }
+    break;
+  }
+  child->wait(-1);
+  run.how = child->how_it_ended();
+  run.exit_code = child->exit_status();
+  return run;
+}
+
+// `fractalis` (the build tree's) with `arguments`.
+inline ProgramRun run_fractalis(const std::vector<std::string>& arguments,
+                                const Environment& environment = {}) {
+  return run_program(FRACTALIS_EXECUTABLE, arguments, environment);
 }
 
 }  // namespace fr::test
