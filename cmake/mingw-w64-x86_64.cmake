@@ -26,6 +26,9 @@ set(CMAKE_FIND_ROOT_PATH_MODE_PACKAGE ONLY)
 # its DLLs exits silently under Wine, and a Windows user has none of them.
 set(CMAKE_EXE_LINKER_FLAGS_INIT "-static")
 set(CMAKE_SHARED_LINKER_FLAGS_INIT "-static-libgcc -static-libstdc++")
+# Scenes too (the test fixtures include C++ ones, and one links pthread): a DLL that needs
+# libstdc++-6.dll or libwinpthread-1.dll fails to load on a PC without them.
+set(CMAKE_MODULE_LINKER_FLAGS_INIT "-static")
 find_program(FRACTALIS_WINE64 wine64 PATHS /usr/lib/wine NO_CMAKE_FIND_ROOT_PATH)
 if(FRACTALIS_WINE64)
   set(CMAKE_CROSSCOMPILING_EMULATOR ${FRACTALIS_WINE64})

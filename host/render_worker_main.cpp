@@ -11,6 +11,7 @@
 #include <string>
 
 int main(int argc, char** argv) {
+  fr::end_at_once_on_crash();
   std::string wire, device;
   fr::NativeHandle channel_handle = fr::kNoHandle, frame_handle = fr::kNoHandle;
   for (int i = 1; i + 1 < argc; i += 2) {

@@ -1,6 +1,7 @@
 // fractalis-scene-host: runs one scene plugin's code on behalf of the fractalis host, which
 // starts it with a channel to it and the plugin file open, each named by its handle on the
 // command line (see plugin/scene_host_process.hpp). Not meant to be run by hand.
+#include "platform/child_process.hpp"
 #include "plugin/scene_host_process.hpp"
 #include "plugin/scene_wire.hpp"
 
@@ -9,6 +10,7 @@
 #include <string>
 
 int main(int argc, char** argv) {
+  fr::end_at_once_on_crash();
   std::string wire, file;
   fr::NativeHandle channel_handle = fr::kNoHandle, plugin_handle = fr::kNoHandle;
   for (int i = 1; i + 1 < argc; i += 2) {

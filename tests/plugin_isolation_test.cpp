@@ -536,5 +536,20 @@ TEST(PluginIsolation, ScanIsCachedByFileIdentity) {
   EXPECT_NE(error.find("changed since it was loaded"), std::string::npos) << error;
 }
 
+// A library the system could not load is not kept: what it lacked (here a shared library it
+// needs) may be installed before the next scan, and then it loads.
+TEST(PluginIsolation, AFailedLoadIsNotKept) {
+  const auto cache = test::fresh_dir("scan_cache_missing_dep");
+  ScopedEnv cache_home("XDG_CACHE_HOME", cache.string());
+  const auto dir = test::fresh_dir("scan_cache_missing_dep_plugins");
+  std::filesystem::copy_file(hostile("missing_dep"), dir / "needs_lib" PLUGIN_SUFFIX);
+  const LoadOutcome before = load_scene_plugin(dir / "needs_lib" PLUGIN_SUFFIX, quick_policy());
+  ASSERT_EQ(before.result, LoadResult::NotLoadable) << before.message;
+  // "Installed": where the scene host's loader looks.
+  ScopedEnv library_path("LD_LIBRARY_PATH", MISSING_DEP_LIB_DIR);
+  const LoadOutcome after = load_scene_plugin(dir / "needs_lib" PLUGIN_SUFFIX, quick_policy());
+  EXPECT_EQ(after.result, LoadResult::Loaded) << after.message;
+}
+
 }  // namespace
 }  // namespace fr

@@ -228,10 +228,12 @@ TEST(SweepCommand, SmallSweepEndToEnd) {
   ASSERT_EQ(r.code, 0) << r.err;
   for (const char* f : {"sweep.csv", "sweep.json", "sweep.svg"})
     EXPECT_TRUE(std::filesystem::file_size(dir / f) > 100) << f;
-  std::ifstream csv(dir / "sweep.csv");
-  std::string line;
   int rows = 0;
-  while (std::getline(csv, line)) ++rows;
+  {  // closed before the next sweep replaces it (Windows cannot replace an open file)
+    std::ifstream csv(dir / "sweep.csv");
+    std::string line;
+    while (std::getline(csv, line)) ++rows;
+  }
   EXPECT_EQ(rows, 1 + 1 + 4 + 4) << "header, default, 4 thresholds, 4 sample counts";
   EXPECT_NE(r.out.find("hit_threshold_k=0.125"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("note: the default settings"), std::string::npos) << r.out;

@@ -78,6 +78,13 @@ std::string executable_file_name(const std::string& name);
 // file).
 bool is_executable_file(const std::filesystem::path& path);
 
+// Called first thing by a helper (the scene host, the render worker), which runs other people's
+// code: a crash ends it at once with the fault as its status, for fractalis to report. Windows:
+// an unhandled exception no longer waits for Windows' error reporting or a debugger (Wine starts
+// winedbg, which takes longer than a call's time limit: a crash read as a hang). Linux: nothing
+// to do, a fatal signal's default already does that.
+void end_at_once_on_crash();
+
 // Exit status of a Linux child whose exec (or the set-up before it) failed.
 constexpr int kChildExecFailedStatus = 127;
 

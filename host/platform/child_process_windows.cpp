@@ -122,6 +122,13 @@ std::mutex inherit_lock;
 
 }  // namespace
 
+void end_at_once_on_crash() {
+  SetUnhandledExceptionFilter([](EXCEPTION_POINTERS* fault) -> LONG {
+    TerminateProcess(GetCurrentProcess(), fault->ExceptionRecord->ExceptionCode);
+    return EXCEPTION_CONTINUE_SEARCH;  // not reached
+  });
+}
+
 std::string handle_in_child(size_t, NativeHandle ours) {
   // An inherited handle has the same value in the child.
   return std::to_string(static_cast<long long>(ours));

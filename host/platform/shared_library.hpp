@@ -13,6 +13,7 @@
 // scene-host process (plugin/scene_host_process.hpp) unless plugins.isolation = "none".
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -47,6 +48,11 @@ class SharedLibrary {
 // on the missing pages); otherwise why not ("built for AArch64, this host is x86-64",
 // "truncated: ...").
 std::string check_library_bytes(const std::string& bytes);
+
+// How many mappings of private copies this process holds (Linux: ranges of the memfds in
+// /proc/self/maps; Windows: modules loaded from the copies' folder). After every library was
+// unloaded, more than none means something pins one (a thread, a TLS destructor).
+size_t private_copy_mappings();
 
 // The file name of library `name` on this system: `name`.so on Linux, `name`.dll on Windows.
 std::string library_file_name(const std::string& name);

@@ -11,10 +11,15 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
+#include <string>
 #include <vector>
 
 namespace fr {
 namespace {
+
+// The memfd's name: /proc/self/maps shows its mappings as "/memfd:fractalis-plugin (deleted)".
+constexpr const char* kCopyName = "fractalis-plugin";
 
 const char* machine_name(unsigned machine) {
   switch (machine) {
@@ -144,7 +149,7 @@ std::unique_ptr<SharedLibrary> SharedLibrary::load_private_copy(
     *error = problem;
     return nullptr;
   }
-  const int memfd = memfd_create("fractalis-plugin", MFD_CLOEXEC | MFD_ALLOW_SEALING);
+  const int memfd = memfd_create(kCopyName, MFD_CLOEXEC | MFD_ALLOW_SEALING);
   if (memfd < 0) {
     *error = std::string("cannot make a private copy (memfd_create): ") + std::strerror(errno);
     return nullptr;
@@ -203,6 +208,15 @@ SharedLibrary::~SharedLibrary() {
 const void* SharedLibrary::symbol(const char* name) const {
   dlerror();
   return dlsym(handle_, name);
+}
+
+size_t private_copy_mappings() {
+  std::ifstream maps("/proc/self/maps");
+  std::string line;
+  size_t n = 0;
+  while (std::getline(maps, line))
+    if (line.find(kCopyName) != std::string::npos) ++n;
+  return n;
 }
 
 std::string library_file_name(const std::string& name) {

@@ -4,12 +4,17 @@
 #include "platform/user_folders.hpp"
 
 #include <windows.h>
+// (after windows.h)
+#include <tlhelp32.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstring>
 #include <cwctype>
 #include <random>
+#include <string>
+#include <vector>
 
 namespace fr {
 namespace {
@@ -78,6 +83,61 @@ void remove_stale_copies(const std::filesystem::path& folder) {
     if (entry.path().extension() == ".dll" && !time_ec && now - written > std::chrono::minutes(1))
       DeleteFileW(entry.path().c_str());
   }
+}
+
+// The DLLs a checked library's import table names (check_library_bytes passed it), as written.
+std::vector<std::string> imported_dll_names(const std::string& bytes) {
+  IMAGE_DOS_HEADER dos{};
+  IMAGE_FILE_HEADER file{};
+  IMAGE_OPTIONAL_HEADER optional{};
+  read_struct(bytes, 0, &dos);
+  const uint64_t nt_at = static_cast<uint32_t>(dos.e_lfanew);
+  const uint64_t optional_at = nt_at + 4 + sizeof(IMAGE_FILE_HEADER);
+  if (!read_struct(bytes, nt_at + 4, &file) || !read_struct(bytes, optional_at, &optional))
+    return {};
+  if (optional.NumberOfRvaAndSizes <= IMAGE_DIRECTORY_ENTRY_IMPORT) return {};
+  std::vector<IMAGE_SECTION_HEADER> sections(file.NumberOfSections);
+  for (size_t i = 0; i < sections.size(); ++i)
+    if (!read_struct(bytes, optional_at + file.SizeOfOptionalHeader + i * sizeof sections[i],
+                     &sections[i]))
+      return {};
+  // A relative virtual address as an offset into the file: through the section that holds it.
+  const auto file_offset = [&](uint64_t rva) -> uint64_t {
+    for (const auto& s : sections)
+      if (rva >= s.VirtualAddress && rva < uint64_t{s.VirtualAddress} + s.SizeOfRawData)
+        return rva - s.VirtualAddress + s.PointerToRawData;
+    return UINT64_MAX;
+  };
+  std::vector<std::string> names;
+  uint64_t at = file_offset(optional.DataDirectory[IMAGE_DIRECTORY_ENTRY_IMPORT].VirtualAddress);
+  IMAGE_IMPORT_DESCRIPTOR import{};
+  while (names.size() < 256 && read_struct(bytes, at, &import) && import.Name != 0) {
+    const uint64_t name_at = file_offset(import.Name);
+    if (name_at >= bytes.size()) break;
+    const size_t end = bytes.find('\0', name_at);
+    if (end == std::string::npos) break;
+    names.push_back(bytes.substr(name_at, std::min<size_t>(end - name_at, 260)));
+    at += sizeof import;
+  }
+  return names;
+}
+
+// Which DLLs a library needs that the system's folders do not have, for a failed load's
+// message: Windows says only "module not found". (The copy's own folder holds no other DLL.)
+std::string missing_dlls(const std::string& bytes) {
+  std::string missing;
+  for (const std::string& name : imported_dll_names(bytes)) {
+    if (name.rfind("api-ms-", 0) == 0 || name.rfind("ext-ms-", 0) == 0) continue;  // API sets
+    const std::wstring wide(name.begin(), name.end());
+    const HMODULE found = LoadLibraryExW(
+        wide.c_str(), nullptr, LOAD_LIBRARY_AS_DATAFILE | LOAD_LIBRARY_SEARCH_DEFAULT_DIRS);
+    if (found) {
+      FreeLibrary(found);
+      continue;
+    }
+    missing += (missing.empty() ? "" : ", ") + name;
+  }
+  return missing;
 }
 
 }  // namespace
@@ -171,7 +231,14 @@ std::unique_ptr<SharedLibrary> SharedLibrary::load_private_copy(
   // Only the copy's own folder and the system's are searched for the DLLs it needs.
   const HMODULE module = LoadLibraryExW(
       copy.c_str(), nullptr, LOAD_LIBRARY_SEARCH_DLL_LOAD_DIR | LOAD_LIBRARY_SEARCH_DEFAULT_DIRS);
-  if (!module) *error = "LoadLibrary failed for " + named_as.string() + ": " + last_error_text();
+  if (!module) {
+    const DWORD code = GetLastError();
+    *error = "LoadLibrary failed for " + named_as.string() + ": " + last_error_text();
+    if (code == ERROR_MOD_NOT_FOUND) {
+      if (const std::string missing = missing_dlls(bytes); !missing.empty())
+        *error += " (it needs " + missing + ", not found in the system's folders)";
+    }
+  }
   CloseHandle(guard);
   if (!module) {
     DeleteFileW(copy.c_str());
@@ -190,6 +257,24 @@ SharedLibrary::~SharedLibrary() {
 
 const void* SharedLibrary::symbol(const char* name) const {
   return reinterpret_cast<const void*>(GetProcAddress(static_cast<HMODULE>(handle_), name));
+}
+
+size_t private_copy_mappings() {
+  std::string error;
+  const std::filesystem::path folder = copies_folder(&error);
+  if (folder.empty()) return 0;
+  const HANDLE all = CreateToolhelp32Snapshot(TH32CS_SNAPMODULE, 0);
+  if (all == INVALID_HANDLE_VALUE) return 0;
+  MODULEENTRY32W entry{};
+  entry.dwSize = sizeof entry;
+  size_t n = 0;
+  std::error_code ec;
+  for (BOOL more = Module32FirstW(all, &entry); more; more = Module32NextW(all, &entry))
+    if (std::filesystem::equivalent(std::filesystem::path(entry.szExePath).parent_path(), folder,
+                                    ec))
+      ++n;
+  CloseHandle(all);
+  return n;
 }
 
 std::string library_file_name(const std::string& name) {

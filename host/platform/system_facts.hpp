@@ -2,6 +2,7 @@
 // much of it the allocator has handed out.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -31,6 +32,10 @@ std::vector<MemoryBound> memory_bounds();
 // HostStats). Linux: malloc's own count (AddressSanitizer's under that sanitizer); Windows: the
 // busy blocks of the process's heaps.
 uint64_t heap_bytes_in_use();
+
+// Threads this process runs now. The scene host compares it with the count it started with, to
+// see a plugin's threads that outlive it (`fractalis check`'s unload).
+size_t threads_in_this_process();
 
 // Empty when this process can open windows; otherwise why not, for the message. Linux: an X11 or
 // Wayland display named in the environment; Windows: a visible window station (not a service).

@@ -1,6 +1,8 @@
 #include "platform/system_facts.hpp"
 
 #include <windows.h>
+// (after windows.h)
+#include <tlhelp32.h>
 
 #include <string>
 
@@ -87,6 +89,19 @@ uint64_t heap_bytes_in_use() {
     HeapUnlock(heaps[i]);
   }
   return busy;
+}
+
+size_t threads_in_this_process() {
+  const HANDLE all = CreateToolhelp32Snapshot(TH32CS_SNAPTHREAD, 0);
+  if (all == INVALID_HANDLE_VALUE) return 0;
+  const DWORD self = GetCurrentProcessId();
+  THREADENTRY32 entry{};
+  entry.dwSize = sizeof entry;
+  size_t n = 0;
+  for (BOOL more = Thread32First(all, &entry); more; more = Thread32Next(all, &entry))
+    if (entry.th32OwnerProcessID == self) ++n;
+  CloseHandle(all);
+  return n;
 }
 
 std::string why_no_display() {

@@ -4,7 +4,9 @@
 // (same device, inode, size, modification and change times) gives the same answer, so the
 // answer is kept in $XDG_CACHE_HOME/fractalis/scenes/ and `fractalis list` or a start of the
 // explorer runs no plugin code for it. What is read back is checked exactly like a fresh answer.
-// Only answers that depend on the file alone are kept: a crash or a time-out is tried again.
+// Only answers that depend on the file alone are kept: a crash, a time-out or a library the
+// system could not load (it may lack a library the plugin needs, until that is installed) is
+// tried again.
 #pragma once
 
 #include "plugin/plugin_files.hpp"

@@ -382,7 +382,11 @@ std::vector<LoadOutcome> load_isolated(const std::vector<std::filesystem::path>&
           uint32_t callbacks = 0;
           p.outcome = parse_loaded(p.outcome.file, payload, &callbacks);
           attach_code(p.outcome, p.identity, payload, callbacks, policy);
-          if (p.outcome.result != LoadResult::Crashed) keep_scan(p.identity, payload);
+          // Not kept: a crash or time-out, nor a library the system could not load (what it
+          // lacked, a DLL or shared object it needs, may be installed before the next scan).
+          if (p.outcome.result != LoadResult::Crashed &&
+              p.outcome.result != LoadResult::NotLoadable)
+            keep_scan(p.identity, payload);
         }
       }
       outcomes.push_back(std::move(p.outcome));

@@ -1,14 +1,12 @@
 // The scene-host side of scene_host_process.hpp: runs in fractalis-scene-host, never in the host.
+#include "platform/shared_library.hpp"
 #include "platform/system_facts.hpp"
 #include "plugin/descriptor_copy.hpp"
 #include "plugin/plugin_library.hpp"
 #include "plugin/scene_host_process.hpp"
 #include "plugin/wire_io.hpp"
 
-#include <dirent.h>
-
-#include <cstdio>
-#include <cstring>
+#include <algorithm>
 
 namespace fr {
 namespace {
@@ -21,28 +19,17 @@ std::string reply_bytes(const CallOutcome& out, const WireWriter& result) {
   return w.bytes() + result.bytes();
 }
 
-size_t count_lines(const char* file, const char* part) {
-  FILE* f = std::fopen(file, "r");
-  if (!f) return 0;
-  char line[4096];
-  size_t n = 0;
-  while (std::fgets(line, sizeof line, f))
-    if (!part || std::strstr(line, part)) ++n;
-  std::fclose(f);
-  return n;
-}
+// Threads the scene host ran before any plugin code did: one on Linux; on Windows the system's
+// loader may keep worker threads of its own from the start.
+size_t threads_at_start = 1;
 
 HostStats own_stats() {
   HostStats s;
   s.heap_bytes = heap_bytes_in_use();
-  size_t threads = 0;
-  if (DIR* d = opendir("/proc/self/task")) {
-    while (const dirent* e = readdir(d))
-      if (e->d_name[0] != '.') ++threads;
-    closedir(d);
-  }
-  s.threads = static_cast<uint32_t>(threads);
-  s.plugin_mappings = static_cast<uint32_t>(count_lines("/proc/self/maps", "fractalis-plugin"));
+  // Reported as 1 + the threads more than at the start: more than 1 are the plugin's.
+  const size_t now = threads_in_this_process();
+  s.threads = static_cast<uint32_t>(1 + (now > threads_at_start ? now - threads_at_start : 0));
+  s.plugin_mappings = static_cast<uint32_t>(private_copy_mappings());
   return s;
 }
 
@@ -54,6 +41,7 @@ std::string init_error(const fr_scene_entry& entry, const std::string& file) {
 }
 
 int run_scene_host(Channel& channel, ReadableFile plugin, const std::string& file) {
+  threads_at_start = std::max<size_t>(threads_in_this_process(), 1);
   std::string error;
   std::shared_ptr<PluginLibrary> library =
       plugin.valid() ? PluginLibrary::open(plugin, file, &error) : nullptr;

@@ -50,6 +50,11 @@ function(fractalis_add_scene target)
     target_link_options(${target} PRIVATE
       "LINKER:--version-script=${FRACTALIS_SDK_CMAKE_DIR}/scene.map" "LINKER:-z,defs")
   endif()
+  # MinGW: the GCC runtime (libgcc, libstdc++, winpthread) linked into the DLL, which otherwise
+  # fails to load on a PC without those DLLs beside fractalis.exe.
+  if(MINGW)
+    target_link_options(${target} PRIVATE -static)
+  endif()
   # -z defs makes every undefined symbol an error, libm's (sin, pow, ...) included: link it.
   if(UNIX AND NOT APPLE)
     target_link_libraries(${target} PRIVATE m)
