@@ -164,8 +164,7 @@ inline ProgramRun run_program(const std::filesystem::path& program,
     run.how = "could not be started: " + error;
     return run;
   }
-  const auto deadline =
-      std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
   char buffer[4096];
   for (;;) {
     const auto left_ms = std::chrono::duration_cast<std::chrono::milliseconds>(

@@ -122,20 +122,24 @@ std::vector<std::string> imported_dll_names(const std::string& bytes) {
   return names;
 }
 
-// Which DLLs a library needs that the system's folders do not have, for a failed load's
-// message: Windows says only "module not found". (The copy's own folder holds no other DLL.)
+// Which DLLs a library needs that are in none of the folders its load searched (this program's
+// folder and the system's), for a failed load's message: Windows says only "module not found".
+// (The copy's own folder holds no other DLL.)
 std::string missing_dlls(const std::string& bytes) {
+  std::vector<std::filesystem::path> searched;
+  wchar_t path[MAX_PATH];
+  if (GetModuleFileNameW(nullptr, path, MAX_PATH) > 0)
+    searched.push_back(std::filesystem::path(path).parent_path());
+  if (GetSystemDirectoryW(path, MAX_PATH) > 0) searched.push_back(path);
   std::string missing;
   for (const std::string& name : imported_dll_names(bytes)) {
     if (name.rfind("api-ms-", 0) == 0 || name.rfind("ext-ms-", 0) == 0) continue;  // API sets
-    const std::wstring wide(name.begin(), name.end());
-    const HMODULE found = LoadLibraryExW(
-        wide.c_str(), nullptr, LOAD_LIBRARY_AS_DATAFILE | LOAD_LIBRARY_SEARCH_DEFAULT_DIRS);
-    if (found) {
-      FreeLibrary(found);
-      continue;
-    }
-    missing += (missing.empty() ? "" : ", ") + name;
+    const std::filesystem::path file(std::wstring(name.begin(), name.end()));
+    std::error_code ec;
+    if (!std::any_of(searched.begin(), searched.end(), [&](const auto& folder) {
+          return std::filesystem::exists(folder / file, ec);
+        }))
+      missing += (missing.empty() ? "" : ", ") + name;
   }
   return missing;
 }
@@ -236,7 +240,8 @@ std::unique_ptr<SharedLibrary> SharedLibrary::load_private_copy(
     *error = "LoadLibrary failed for " + named_as.string() + ": " + last_error_text();
     if (code == ERROR_MOD_NOT_FOUND) {
       if (const std::string missing = missing_dlls(bytes); !missing.empty())
-        *error += " (it needs " + missing + ", not found in the system's folders)";
+        *error += " (it needs " + missing +
+                  ", found neither in the system folder nor beside the scene host)";
     }
   }
   CloseHandle(guard);

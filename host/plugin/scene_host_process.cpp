@@ -349,7 +349,9 @@ std::vector<LoadOutcome> load_isolated(const std::vector<std::filesystem::path>&
       if (opened.valid() && (kept = find_scan(p.identity))) {
         uint32_t callbacks = 0;
         LoadOutcome cached = parse_loaded(files[i], *kept, &callbacks);
-        if (cached.result != LoadResult::Crashed) {  // a damaged entry is scanned again
+        // A damaged entry is scanned again, as is a load the system refused (kept by an
+        // earlier version, which kept those).
+        if (cached.result != LoadResult::Crashed && cached.result != LoadResult::NotLoadable) {
           attach_code(cached, p.identity, *kept, callbacks, policy);
           p.outcome = std::move(cached);
           batch.push_back(std::move(p));
