@@ -3,10 +3,11 @@
 //
 // The child gets the null device for stdin, the handles it is given (each under the name
 // handle_in_child says, which its command line passes on) and no other handle of ours: a
-// plugin must not inherit the window's or another plugin's. It dies with fractalis, so that no
-// helper outlives it (Linux: PR_SET_PDEATHSIG; Windows: a job object that kills its processes
-// when fractalis's handle to it closes). Its environment is ours less an MPI launcher's
-// variables (OMPI_*, PMIX_*, PMI_*): a helper of one rank is not a rank of the job.
+// plugin must not inherit the window's or another plugin's. (Windows: the handles are duplicated
+// into the suspended child rather than inherited, and their values come on its stdin.) It dies with
+// fractalis, so that no helper outlives it (Linux: PR_SET_PDEATHSIG; Windows: a job object that
+// kills its processes when fractalis's handle to it closes). Its environment is ours less an MPI
+// launcher's variables (OMPI_*, PMIX_*, PMI_*): a helper of one rank is not a rank of the job.
 //
 // Linux: fractalis is multithreaded (spdlog, OpenCL, the watcher), so between fork and exec the
 // child makes only async-signal-safe calls; everything is prepared before the fork, and the
@@ -32,8 +33,9 @@ struct ChildSpec {
   NativeHandle stderr_to = kNoHandle;  // and stderr; own_stderr() for ours
 };
 
-// What the index-th of ChildSpec::handles is called in the child, as text for its command line;
-// the child turns it back with handle_from_argument.
+// What the index-th of ChildSpec::handles is called in the child, as text for its command line
+// (Linux: the descriptor's number; Windows: "#index"); the child turns it back with
+// handle_from_argument.
 std::string handle_in_child(size_t index, NativeHandle ours);
 // kNoHandle when `text` names no handle.
 NativeHandle handle_from_argument(const char* text);

@@ -129,17 +129,36 @@ void end_at_once_on_crash() {
   });
 }
 
-std::string handle_in_child(size_t, NativeHandle ours) {
-  // An inherited handle has the same value in the child.
-  return std::to_string(static_cast<long long>(ours));
+std::string handle_in_child(size_t index, NativeHandle) {
+  // Its value in the child is known only once the child exists (DuplicateHandle, below): the
+  // command line names the index, and the child reads the values from its stdin.
+  return "#" + std::to_string(index);
 }
 
 NativeHandle handle_from_argument(const char* text) {
-  if (!text || !*text) return kNoHandle;
+  if (!text || text[0] != '#') return kNoHandle;
   char* end = nullptr;
-  const long long value = std::strtoll(text, &end, 10);
-  if (*end != '\0' || value <= 0) return kNoHandle;
-  return static_cast<NativeHandle>(value);
+  const long long index = std::strtoll(text + 1, &end, 10);
+  if (*end != '\0' || index < 0) return kNoHandle;
+  // The parent wrote one line, "value value ...\n", into our stdin before we ran (start below).
+  static const std::vector<long long> given = [] {
+    std::vector<long long> values;
+    std::string line;
+    const HANDLE in = GetStdHandle(STD_INPUT_HANDLE);
+    char c = 0;
+    DWORD got = 0;
+    while (line.size() < 4096 && ReadFile(in, &c, 1, &got, nullptr) && got == 1 && c != '\n')
+      line += c;
+    const char* at = line.c_str();
+    for (char* next = nullptr;; at = next) {
+      const long long v = std::strtoll(at, &next, 10);
+      if (next == at) break;
+      values.push_back(v);
+    }
+    return values;
+  }();
+  if (static_cast<size_t>(index) >= given.size() || given[index] <= 0) return kNoHandle;
+  return static_cast<NativeHandle>(given[index]);
 }
 
 NativeHandle own_stderr() {
@@ -171,13 +190,23 @@ std::unique_ptr<ChildProcess> ChildProcess::start(const ChildSpec& spec, std::st
   };
   const HANDLE out = or_null_device(spec.stdout_to);
   const HANDLE err = or_null_device(spec.stderr_to);
+  // The handles it is given are not inherited but duplicated into it while it is suspended, and
+  // their values written to its stdin (handle_from_argument): under Wine a file handle a child
+  // inherited stays in use until the child exits, even once it has closed it, so that a scene
+  // plugin's DLL could not be replaced while its scene host ran.
+  HANDLE stdin_read = null_device, stdin_write = nullptr;
+  if (!spec.handles.empty() && !CreatePipe(&stdin_read, &stdin_write, &inheritable, 0)) {
+    *error = "cannot make a pipe: " + last_error_text();
+    CloseHandle(null_device);
+    return nullptr;
+  }
+  if (stdin_write) SetHandleInformation(stdin_write, HANDLE_FLAG_INHERIT, 0);
   // Each handle once: the list refuses duplicates (stdout and stderr may be one pipe).
   std::vector<HANDLE> inherited;
   const auto inherit = [&](HANDLE h) {
     if (std::find(inherited.begin(), inherited.end(), h) == inherited.end()) inherited.push_back(h);
   };
-  for (const HANDLE h : {null_device, out, err}) inherit(h);
-  for (const NativeHandle h : spec.handles) inherit(as_handle(h));
+  for (const HANDLE h : {null_device, stdin_read, out, err}) inherit(h);
 
   SIZE_T attribute_bytes = 0;
   InitializeProcThreadAttributeList(nullptr, 1, 0, &attribute_bytes);
@@ -186,7 +215,7 @@ std::unique_ptr<ChildProcess> ChildProcess::start(const ChildSpec& spec, std::st
   STARTUPINFOEXW startup{};
   startup.StartupInfo.cb = sizeof startup;
   startup.StartupInfo.dwFlags = STARTF_USESTDHANDLES;
-  startup.StartupInfo.hStdInput = null_device;
+  startup.StartupInfo.hStdInput = stdin_read;
   startup.StartupInfo.hStdOutput = out;
   startup.StartupInfo.hStdError = err;
   PROCESS_INFORMATION info{};
@@ -223,14 +252,39 @@ std::unique_ptr<ChildProcess> ChildProcess::start(const ChildSpec& spec, std::st
       SetHandleInformation(inherited[i], HANDLE_FLAG_INHERIT, flags[i] & HANDLE_FLAG_INHERIT);
   }
   CloseHandle(null_device);
-  if (!started) return nullptr;
+  if (stdin_read != null_device) CloseHandle(stdin_read);
+  if (!started) {
+    if (stdin_write) CloseHandle(stdin_write);
+    return nullptr;
+  }
   const HANDLE job = helper_job();
   if (!job || !AssignProcessToJobObject(job, info.hProcess)) {
     *error = "cannot put the child in fractalis's job: " + last_error_text();
     TerminateProcess(info.hProcess, 1);
+    if (stdin_write) CloseHandle(stdin_write);
     CloseHandle(info.hThread);
     CloseHandle(info.hProcess);
     return nullptr;
+  }
+  std::string values;
+  for (const NativeHandle h : spec.handles) {
+    HANDLE theirs = nullptr;
+    if (!DuplicateHandle(GetCurrentProcess(), as_handle(h), info.hProcess, &theirs, 0, FALSE,
+                         DUPLICATE_SAME_ACCESS)) {
+      *error = "cannot hand a handle to the child: " + last_error_text();
+      TerminateProcess(info.hProcess, 1);
+      CloseHandle(stdin_write);
+      CloseHandle(info.hThread);
+      CloseHandle(info.hProcess);
+      return nullptr;
+    }
+    values += std::to_string(reinterpret_cast<intptr_t>(theirs)) + " ";
+  }
+  if (stdin_write) {
+    values += "\n";
+    DWORD written = 0;
+    WriteFile(stdin_write, values.data(), static_cast<DWORD>(values.size()), &written, nullptr);
+    CloseHandle(stdin_write);
   }
   ResumeThread(info.hThread);
   CloseHandle(info.hThread);
