@@ -132,7 +132,9 @@ void end_at_once_on_crash() {
 std::string handle_in_child(size_t index, NativeHandle) {
   // Its value in the child is known only once the child exists (DuplicateHandle, below): the
   // command line names the index, and the child reads the values from its stdin.
-  return "#" + std::to_string(index);
+  std::string name = "#";  // (not "#" + ...: GCC 12 warns wrongly of overlapping copies there)
+  name += std::to_string(index);
+  return name;
 }
 
 NativeHandle handle_from_argument(const char* text) {
