@@ -13,9 +13,10 @@ source "$FRACTALIS_ROOT/scripts/windows-build.sh"
 
 fractalis_windows_build wine64 ocl-icd-libopencl1 pocl-opencl-icd zip unzip xvfb xauth
 # The explorer's window needs a display, and Wine's desktop takes the one its server starts
-# with: without one, the rest runs again under Xvfb (the build above is then up to date).
+# with: without one, the rest runs again under Xvfb (the build above is then up to date), a
+# screen as large as the largest window explorer_window_test opens.
 if [ -z "${DISPLAY:-}" ]; then
-  exec xvfb-run -a -s "-screen 0 1280x1024x24" "$0" "$@"
+  exec xvfb-run -a -s "-screen 0 3840x2160x24" "$0" "$@"
 fi
 # Wine's own state (its "C: drive" and registry) lives in the build folder: made on the first
 # run (a few seconds), kept for the next.

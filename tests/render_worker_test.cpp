@@ -6,6 +6,7 @@
 // slider into a crash.
 #include "worker/render_worker.hpp"
 #include "app/explorer.hpp"
+#include "kernel_crash.hpp"
 #include "platform/files.hpp"
 #include "render/de_probe.hpp"
 #include "test_support.hpp"
@@ -37,21 +38,8 @@ namespace fs = std::filesystem;
 
 const bool kWindows = fs::path::preferred_separator == '\\';
 
-// Whether this is Windows as Wine provides it, whose OpenCL is the Linux PoCL underneath.
-bool under_wine() {
-#ifdef _WIN32
-  const HMODULE ntdll = GetModuleHandleW(L"ntdll.dll");
-  return ntdll && GetProcAddress(ntdll, "wine_get_version");
-#else
-  return false;
-#endif
-}
-
-// What a write through a bad pointer in a kernel ends the render worker with: a signal (Linux),
-// an access violation (Windows). Under Wine the kernel runs on one of PoCL's own Linux threads,
-// which Wine cannot turn into a Windows exception: the process just ends, with status 0.
-const std::string kSegv = std::string("crashed (SIGSEGV|crashed (access violation") +
-                          (under_wine() ? "|the render worker exited with status 0" : "");
+// What a write through a bad pointer in a kernel ends the render worker with (kernel_crash.hpp).
+const std::string kSegv = test::kernel_crash_words();
 
 fs::path kernel_fixture_dir(const std::string& name) {
   return fs::path(KERNEL_PLUGIN_DIR) / name;
@@ -176,7 +164,7 @@ const Hostile kHostile[] = {
     {"loop_some_pixels", {}, "did not finish"},
     // (Under Wine, PoCL's printf writes to the Linux descriptor 1 the process started with, not
     // to the Windows handle the worker was given: nothing reaches fractalis to cap.)
-    {"printf_flood", {}, under_wine() ? "" : "printed more than 20 lines", true},
+    {"printf_flood", {}, test::under_wine() ? "" : "printed more than 20 lines", true},
     {"macro_collision", {}, "fixture.cl:1: &v3_dot"},
     {"builtin_macro", {}, "rendered kernel_builtin_macro|median", true},
     {"function_collision", {}, "fixture.cl:4: &march"},
@@ -439,7 +427,8 @@ TEST(RenderWorker, HangsAndBombsEndAtTheirLimits) {
 
 // A DE's printf output is shown, escaped, attributed to its scene, and capped.
 TEST(RenderWorker, PrintedOutputIsCappedAndAttributed) {
-  if (under_wine()) GTEST_SKIP() << "PoCL's printf bypasses Windows' handles under Wine (above)";
+  if (test::under_wine())
+    GTEST_SKIP() << "PoCL's printf bypasses Windows' handles under Wine (above)";
   std::ostringstream log;
   auto sink = std::make_shared<spdlog::sinks::ostream_sink_mt>(log);
   auto previous = spdlog::default_logger();
