@@ -158,7 +158,8 @@ inline ProgramRun run_program(const std::filesystem::path& program,
     set_environment(name, value);
   }
   auto child = ChildProcess::start(spec, &error);
-  for (size_t i = 0; i < environment.size(); ++i) set_environment(environment[i].first, before[i]);
+  for (size_t i = environment.size(); i-- > 0;)  // backwards: a name given twice ends as it was
+    set_environment(environment[i].first, before[i]);
   pipe.theirs.close();  // the child's copy alone keeps the pipe open
   if (!child) {
     run.how = "could not be started: " + error;
@@ -183,7 +184,11 @@ inline ProgramRun run_program(const std::filesystem::path& program,
     }
     break;
   }
-  child->wait(-1);
+  // The pipe closed (or failed): the child is ending; still never waited on past the deadline.
+  const auto left_ms = std::chrono::duration_cast<std::chrono::milliseconds>(
+                           deadline - std::chrono::steady_clock::now())
+                           .count();
+  if (!child->wait(int(std::max<int64_t>(left_ms, 0)))) child->kill();
   run.how = child->how_it_ended();
   run.exit_code = child->exit_status();
   return run;
