@@ -71,6 +71,7 @@ TEST(Cli, UsageErrors) {
                      "--out: folder '/no/such/folder' does not exist");
   expect_usage_error({"bench", "--runs", "0"}, "--runs: 0 is outside");
   expect_usage_error({"bench", "--explore", "--scene", "nope"}, "unknown scene 'nope'");
+  expect_usage_error({"bench", "--counts"}, "--counts: only with --explore");
   // --config names what it got when that is not a file.
   expect_usage_error({"render", "--config", TEST_OUTPUT_DIR}, "is a folder, not a settings file");
   expect_usage_error({"render", "--config", NULL_DEVICE}, "'" NULL_DEVICE "' is a device");
@@ -223,6 +224,30 @@ TEST(Cli, RenderWritesThePng) {
       << "the PNG is not the headless render of the same view";
   EXPECT_GT(test::pixels_differing(power6.rgba8, power8.rgba8, 8), 48 * 32 / 20)
       << "power 6 and 8 should look different";
+}
+
+// The explorer's fly-through, counting: the moving frames' DE evaluations by stage, a plausible
+// total (the primary march and the normals, six evaluations per hit, at least), busy lanes.
+TEST(Cli, ExploreBenchCountsTheMovingFrames) {
+  const CliRun r = run({"bench", "--explore", "--counts", "--size", "96x54", "--frames", "4",
+                        "--set", "explorer.quality=\"fast\""});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto at = r.out.find("while moving");
+  ASSERT_NE(at, std::string::npos) << r.out;
+  const std::string counts = r.out.substr(at);
+  for (const char* stage : {"primary  march", "primary  normals", "total"})
+    EXPECT_NE(counts.find(stage), std::string::npos) << stage << " missing:\n" << counts;
+  double total = 0, busy = 0;
+  const auto line = counts.find("total");
+  ASSERT_EQ(std::sscanf(counts.c_str() + line, "total %lf %lf%%", &total, &busy), 2) << counts;
+  EXPECT_GT(total, 1.0) << counts;
+  EXPECT_LT(total, 200.0) << counts;
+  EXPECT_GT(busy, 10.0);
+  EXPECT_LE(busy, 100.0);
+  // Without --counts, no counting.
+  const CliRun plain = run({"bench", "--explore", "--size", "96x54", "--frames", "2"});
+  ASSERT_EQ(plain.code, 0) << plain.err;
+  EXPECT_EQ(plain.out.find("while moving"), std::string::npos) << plain.out;
 }
 
 // One channel: a warning reaches the error stream as "fractalis: warning: ...", -q hides it,

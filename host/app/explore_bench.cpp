@@ -16,6 +16,7 @@ ExploreBenchResult run_explore_bench(Explorer& explorer, int w, int h, int movin
   input.held.insert(Action::MoveForward);
   std::vector<double> frame_ms;
   double scale_sum = 0;
+  uint64_t moving_pixels = 0;
   double last = now_s();
   for (int i = 0; i < moving_frames; ++i) {
     // Weaving left and right while flying forward keeps the scene in view.
@@ -27,8 +28,16 @@ ExploreBenchResult run_explore_bench(Explorer& explorer, int w, int h, int movin
     explorer.render(w, h);
     frame_ms.push_back((now_s() - start) * 1000);
     scale_sum += explorer.stats().resolution_scale;
+    if (explorer.count_evaluations()) {
+      // Frames of different sizes: the sums over all their pixels, one sample each.
+      const EvalCounts& c = explorer.stats().eval_counts;
+      add_eval_counts(result.moving_counts, c);
+      moving_pixels += c.pixels;
+    }
     input.end_frame();
   }
+  result.moving_counts.pixels = moving_pixels;
+  result.moving_counts.samples = 1;
   result.moving = summarize_frames(frame_ms);
   result.mean_resolution_scale = scale_sum / moving_frames;
 

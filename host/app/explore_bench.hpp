@@ -15,6 +15,9 @@ struct ExploreBenchResult {
   double seconds_to_full_resolution = 0;  // after the camera stops: first full-size sample shown
   double seconds_to_full_quality = 0;     // ... and all anti-aliasing samples
   int refine_frames = 0;
+  // With the explorer counting (Explorer::set_count_evaluations): the moving frames' DE
+  // evaluations, per pixel over all their pixels.
+  EvalCounts moving_counts;
 };
 
 // Flies for `moving_frames` frames (forward, weaving left and right; each frame moves the camera

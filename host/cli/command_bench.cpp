@@ -27,6 +27,7 @@ int bench_explore(ParsedOptions options, std::ostream& out,
   ExplorerSetup setup = prepare_explorer(options);
   Explorer& explorer = *setup.explorer;
   const RenderSettings& render = setup.settings.render;
+  explorer.set_count_evaluations(options.has("counts"));
   // Warm-up: build the kernels the flight uses (render and DE probe), untimed.
   explorer.render(render.width_px, render.height_px);
   const ExploreBenchResult r =
@@ -42,7 +43,11 @@ int bench_explore(ParsedOptions options, std::ostream& out,
       r.moving.p50_ms, 1000.0 / r.moving.p50_ms, r.moving.p95_ms, r.moving.min_ms, r.moving.max_ms,
       r.mean_resolution_scale, r.seconds_to_full_resolution,
       setup.settings.explorer.full_quality_samples, r.seconds_to_full_quality, r.refine_frames);
-  out << line << "device " << setup.worker->device().name << "\n";
+  out << line;
+  if (explorer.count_evaluations())
+    out << "while moving, over all the moving frames' pixels:\n"
+        << format_eval_counts(r.moving_counts);
+  out << "device " << setup.worker->device().name << "\n";
   return 0;
 }
 
@@ -61,6 +66,10 @@ std::vector<OptionSpec> bench_option_specs() {
       {"explore", nullptr, false,
        "measure the explorer instead: a scripted fly-through at --size (default\n"
        "                                 1280x720), fps while moving, time to full quality"});
+  specs.push_back(
+      {"counts", nullptr, false,
+       "with --explore: also count the DE evaluations of the frames while moving\n"
+       "                                 (a counting kernel: its times are not comparable)"});
   specs.push_back({"help", nullptr, false, "show this help"});
   return specs;
 }
@@ -187,6 +196,8 @@ int command_bench(const std::vector<std::string>& args, std::ostream& out, std::
         << "  fractalis bench --explore --scene mandelbulb --size 1280x720\n";
     return 0;
   }
+  if (options.has("counts") && !options.has("explore"))
+    throw UsageError("--counts: only with --explore (bench always reports the counts)");
   if (options.has("explore")) {
     // Its figures go to the terminal only; a --json that would silently not be written is refused.
     if (options.has("json")) throw UsageError("--json: not written by bench --explore");
