@@ -58,6 +58,7 @@ std::string format_bench_json(const BenchReport& r) {
     stages.push_back({{"bounce", c.bounce},
                       {"stage", c.stage},
                       {"per_pixel", c.evals_per_pixel},
+                      {"made_per_pixel", c.made_per_pixel},
                       {"utilisation", c.utilisation}});
   nlohmann::ordered_json j = {
       {"scene", r.scene_id},
@@ -92,6 +93,7 @@ std::string format_bench_json(const BenchReport& r) {
   };
   if (r.counts.samples > 0)
     j["de_evaluations"] = {{"per_pixel", total_evals_per_pixel(r.counts)},
+                           {"made_per_pixel", total_made_per_pixel(r.counts)},
                            {"utilisation", total_utilisation(r.counts)},
                            {"lanes", r.counts.lanes},
                            {"stages", stages}};

@@ -70,6 +70,7 @@ std::vector<StageCount> stage_counts(const EvalCounts& c) {
       const int cell = bounce * FR_COUNT_KINDS + kind;
       if (c.issued[cell] == 0) continue;
       rows.push_back({bounce, kind_name(kind), per_pixel(c, c.active[cell]),
+                      per_pixel(c, c.issued[cell]),
                       utilisation(c.active[cell], c.issued[cell])});
     }
   return rows;
@@ -79,6 +80,12 @@ double total_evals_per_pixel(const EvalCounts& c) {
   uint64_t active = 0;
   for (uint64_t a : c.active) active += a;
   return per_pixel(c, active);
+}
+
+double total_made_per_pixel(const EvalCounts& c) {
+  uint64_t issued = 0;
+  for (uint64_t i : c.issued) issued += i;
+  return per_pixel(c, issued);
 }
 
 double total_utilisation(const EvalCounts& c) {
@@ -93,18 +100,21 @@ double total_utilisation(const EvalCounts& c) {
 std::string format_eval_counts(const EvalCounts& c) {
   std::ostringstream out;
   char line[160];
-  std::snprintf(line, sizeof line, "DE evaluations per pixel (lanes %d; utilisation: busy lanes)\n",
+  std::snprintf(line, sizeof line,
+                "DE evaluations per pixel (lanes %d; utilisation: busy lanes; made: lane "
+                "evaluations, busy or not)\n",
                 c.lanes);
   out << line;
   const std::vector<StageCount> rows = stage_counts(c);
   for (size_t i = 0; i < rows.size(); ++i) {
     const StageCount& r = rows[i];
-    std::snprintf(line, sizeof line, "  %-8s %-15s %9.2f  %5.1f%%\n", bounce_name(r.bounce).c_str(),
-                  r.stage.c_str(), r.evals_per_pixel, 100.0 * r.utilisation);
+    std::snprintf(line, sizeof line, "  %-8s %-15s %9.2f  %5.1f%%  made %7.2f\n",
+                  bounce_name(r.bounce).c_str(), r.stage.c_str(), r.evals_per_pixel,
+                  100.0 * r.utilisation, r.made_per_pixel);
     out << line;
   }
-  std::snprintf(line, sizeof line, "  %-24s %9.2f  %5.1f%%\n", "total", total_evals_per_pixel(c),
-                100.0 * total_utilisation(c));
+  std::snprintf(line, sizeof line, "  %-24s %9.2f  %5.1f%%  made %7.2f\n", "total",
+                total_evals_per_pixel(c), 100.0 * total_utilisation(c), total_made_per_pixel(c));
   out << line;
   return out.str();
 }

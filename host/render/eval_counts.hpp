@@ -34,7 +34,11 @@ struct StageCount {
   int bounce = 0;  // 0: primary rays; 1, 2, ...: mirror bounces
   std::string stage;
   double evals_per_pixel = 0;  // per pixel per sample, by the lanes that wanted them
-  double utilisation = 0;      // evaluations wanted / lane evaluations made, in [0, 1]
+  // Lane evaluations made per pixel per sample (lanes x packet evaluations): what the SIMD unit
+  // did, wanted or not. A packet marches at its slowest lane's pace, so this, not the
+  // evaluations wanted, is what frame time follows (README's Speed section).
+  double made_per_pixel = 0;
+  double utilisation = 0;  // evaluations wanted / lane evaluations made, in [0, 1]
 };
 
 // The stages that evaluated the DE at all, bounce by bounce, in pipeline order.
@@ -42,6 +46,7 @@ std::vector<StageCount> stage_counts(const EvalCounts& counts);
 
 // All evaluations per pixel per sample, and the utilisation over all of them.
 double total_evals_per_pixel(const EvalCounts& counts);
+double total_made_per_pixel(const EvalCounts& counts);  // lane evaluations made
 double total_utilisation(const EvalCounts& counts);
 
 // A table for people: one line per stage, bounce sums, the total.

@@ -135,13 +135,13 @@ void draw_statistics(Explorer& explorer, const OverlayState& overlay) {
   if (ImGui::Checkbox("Count them (a slower kernel)", &counting))
     explorer.set_count_evaluations(counting);
   if (counting && st.eval_counts.samples > 0) {
-    ImGui::Text("per pixel, busy lanes (lanes %d)", st.eval_counts.lanes);
+    ImGui::Text("per pixel, busy lanes, lane evaluations made (lanes %d)", st.eval_counts.lanes);
     for (const StageCount& c : stage_counts(st.eval_counts))
-      ImGui::Text("%s %-15s %7.2f %5.1f%%",
+      ImGui::Text("%s %-15s %7.2f %5.1f%% %7.2f",
                   c.bounce == 0 ? "primary " : ("bounce " + std::to_string(c.bounce)).c_str(),
-                  c.stage.c_str(), c.evals_per_pixel, 100 * c.utilisation);
-    ImGui::Text("total %24.2f %5.1f%%", total_evals_per_pixel(st.eval_counts),
-                100 * total_utilisation(st.eval_counts));
+                  c.stage.c_str(), c.evals_per_pixel, 100 * c.utilisation, c.made_per_pixel);
+    ImGui::Text("total %24.2f %5.1f%% %7.2f", total_evals_per_pixel(st.eval_counts),
+                100 * total_utilisation(st.eval_counts), total_made_per_pixel(st.eval_counts));
   }
 }
 
