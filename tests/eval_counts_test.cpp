@@ -88,7 +88,9 @@ TEST_P(UnitBallCounts, AgreeWithTheStepsAndTheHits) {
     }
   }
   // The normals are made once per packet with a hit, six evaluations for each of its lanes.
-  EXPECT_DOUBLE_EQ(std::fmod(normals->made_per_pixel * pixels, 6.0 * lanes), 0.0);
+  const auto normals_made = std::llround(normals->made_per_pixel * pixels);
+  EXPECT_NEAR(normals->made_per_pixel * pixels, static_cast<double>(normals_made), 1e-6);
+  EXPECT_EQ(normals_made % (6 * lanes), 0) << normals_made;
   // Packets of 16 rays along the sphere's silhouette carry lanes that are already done.
   if (lanes == 16) {
     EXPECT_LT(march->utilisation, 1.0);
