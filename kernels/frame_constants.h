@@ -117,6 +117,10 @@ typedef struct fr_frame_constants {
   int cone_phase_y;
   int cone_blocks_x; /* blocks covering this image (or window) */
   int cone_blocks_y;
+  /* Mirror bounces (reflect.cl) march at most this many steps (never more than max_steps), and
+   * their shadow rays at most this many (0: reflections show no shadows). */
+  int bounce_max_steps;
+  int bounce_shadow_max_steps;
 } fr_frame_constants;
 
 #endif /* FR_FRAME_CONSTANTS_H */

@@ -64,7 +64,7 @@ inline mask_t intersect_bounds(ray_t ray, scalar_t radius, real_t* t_enter, real
  *    (a ray creeping past an edge) as a miss. Either way `out_of_steps` is set, and the host
  *    counts these rays and warns when there are many. */
 #define FR_CANDIDATE_MAX_ERROR 4
-march_result_t march(ray_t ray, real_t path_t, real_t t_min,
+march_result_t march(ray_t ray, real_t path_t, real_t t_min, int max_steps,
                      __constant const fr_frame_constants* fc,
                      __constant const scene_params_t* params FR_COUNTS_PARAM) {
   real_t t, t_exit;
@@ -85,7 +85,7 @@ march_result_t march(ray_t ray, real_t path_t, real_t t_min,
   real_t previous_radius = (real_t)0;
   real_t step = (real_t)0;
   real_t best_t = t, best_error = (real_t)FR_SCALAR_MAX;
-  for (int i = 0; i < fc->max_steps && any_lane(active); ++i) {
+  for (int i = 0; i < max_steps && any_lane(active); ++i) {
     vec3_t p = v3_mad(ray.origin, ray.dir, t);
     real_t dist = scene_de(p, params) * (real_t)fc->step_scale;
     FR_COUNT(FR_COUNT_MARCH, active, 1);

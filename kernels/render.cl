@@ -74,7 +74,11 @@ __kernel void fr_render(__constant const fr_frame_constants* fc,
   const int bounces = FR_MAX_BOUNCES(fc);
   for (int bounce = 0; bounce <= bounces; ++bounce) {
     FR_COUNT_BOUNCE(bounce);
-    march_result_t m = march(ray, path_t, bounce == 0 ? cone_from : (real_t)0, fc, params FR_COUNTS_ARG);
+    /* Mirror bounces take their own, smaller budgets (frame_constants.h). */
+    const int max_steps = bounce == 0 ? fc->max_steps : fc->bounce_max_steps;
+    const int shadow_steps = bounce == 0 ? fc->shadow_max_steps : fc->bounce_shadow_max_steps;
+    march_result_t m = march(ray, path_t, bounce == 0 ? cone_from : (real_t)0, max_steps, fc,
+                             params FR_COUNTS_ARG);
     if (bounce == 0) m.ao_steps += cone_ao;
     const mask_t hit = active & m.hit;
     const mask_t miss = active & !m.hit & !m.inside;
@@ -100,8 +104,8 @@ __kernel void fr_render(__constant const fr_frame_constants* fc,
       FR_APPLY_AO(ao, p, n, m);
       FR_COUNT(FR_COUNT_AO, hit, FR_AO_EVALS);
       real_t shadow = (real_t)1;
-      vec3_t lit = shade_surface(p, n, ray.dir, surface, ao, h, hit, fc, params,
-                               &shadow FR_COUNTS_ARG);
+      vec3_t lit = shade_surface(p, n, ray.dir, surface, ao, h, hit, shadow_steps, fc, params,
+                                 &shadow FR_COUNTS_ARG);
       FR_APPLY_FOG(lit, path_t + m.t);
       segment = v3_select(hit, lit, segment);
       reflectivity = lane_select(hit, clamp(surface.reflectivity, (real_t)0, (real_t)1), 0);

@@ -9,7 +9,7 @@
  * Linear RGB, unbounded (tonemapped in post.cl). */
 
 #ifndef FR_APPLY_SHADOWS
-#define FR_APPLY_SHADOWS(shadow, p, n, h, lights, facing, count)
+#define FR_APPLY_SHADOWS(shadow, p, n, h, lights, facing, count, max_steps)
 #endif
 
 vec3_t sky_color(vec3_t dir, __constant const fr_frame_constants* fc) {
@@ -61,7 +61,7 @@ vec3_t brdf_cos(vec3_t n, vec3_t to_light, vec3_t to_eye, vec3_t albedo, real_t 
 
 /* The colour of the surface at p seen along view_dir, and the first light's shadow factor. */
 vec3_t shade_surface(vec3_t p, vec3_t n, vec3_t view_dir, surface_t surface, real_t ao, real_t h,
-                     mask_t lanes, __constant const fr_frame_constants* fc,
+                     mask_t lanes, int shadow_steps, __constant const fr_frame_constants* fc,
                      __constant const scene_params_t* params,
                      real_t* first_shadow FR_COUNTS_PARAM) {
   vec3_t to_eye = v3_neg(view_dir);
@@ -75,7 +75,7 @@ vec3_t shade_surface(vec3_t p, vec3_t n, vec3_t view_dir, surface_t surface, rea
     facing[i] = lanes & (v3_dot(n, lights[i].to_light) > (real_t)0);
     shadow[i] = (real_t)1;
   }
-  FR_APPLY_SHADOWS(shadow, p, n, h, lights, facing, count);
+  FR_APPLY_SHADOWS(shadow, p, n, h, lights, facing, count, shadow_steps);
   *first_shadow = (real_t)1;
   for (int i = 0; i < count; ++i) {
     const real_t lit = lane_select(facing[i], shadow[i], 0);

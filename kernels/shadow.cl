@@ -11,7 +11,7 @@
  * time (its own t, lit and step count), so the factors are the same. */
 
 void shadow_factors(vec3_t p, vec3_t n, real_t h, const light_sample_t* lights,
-                    const mask_t* facing, int light_count, real_t* shadow,
+                    const mask_t* facing, int light_count, int max_steps, real_t* shadow,
                     __constant const fr_frame_constants* fc,
                     __constant const scene_params_t* params FR_COUNTS_PARAM) {
   /* Start just off the surface, along the normal. */
@@ -26,10 +26,12 @@ void shadow_factors(vec3_t p, vec3_t n, real_t h, const light_sample_t* lights,
     t_exit[l] = fmin(t_exit[l], lights[l].distance);
     shadow[l] = (real_t)1;
   }
+  /* No steps: fully lit (a bounce's budget of 0, frame_constants.h). */
+  if (max_steps <= 0) return;
   /* Per lane: the light of the ray it marches (or last marched; -1 before the first). */
   real_t light = (real_t)-1, t = (real_t)0, lit = (real_t)1, steps = (real_t)0, exit = (real_t)0;
   mask_t active = FR_MASK_FALSE, more = FR_MASK_TRUE;
-  const int most = light_count * (fc->shadow_max_steps + 1);
+  const int most = light_count * (max_steps + 1);
   for (int i = 0; i < most; ++i) {
     /* Lanes between rays take their next light (a ray that starts at its end is lit at once). */
     while (any_lane((!active) & more)) {
@@ -64,7 +66,7 @@ void shadow_factors(vec3_t p, vec3_t n, real_t h, const light_sample_t* lights,
     steps += mask_to_real(active);
     mask_t going = active & (lit > (real_t)0.001) & (dist > (real_t)0);
     t = lane_select(going, t + fmax(dist, t_start * (real_t)0.5), t);
-    going &= (t < exit) & (steps < (real_t)fc->shadow_max_steps);
+    going &= (t < exit) & (steps < (real_t)max_steps);
     /* Rays that ended: their light's factor. */
     const mask_t ended = active & !going;
     for (int l = 0; l < light_count; ++l)
@@ -75,5 +77,5 @@ void shadow_factors(vec3_t p, vec3_t n, real_t h, const light_sample_t* lights,
 }
 
 /* The renderer's hook (shade.cl). */
-#define FR_APPLY_SHADOWS(shadow, p, n, h, lights, facing, count) \
-  shadow_factors(p, n, h, lights, facing, count, shadow, fc, params FR_COUNTS_ARG)
+#define FR_APPLY_SHADOWS(shadow, p, n, h, lights, facing, count, max_steps) \
+  shadow_factors(p, n, h, lights, facing, count, max_steps, shadow, fc, params FR_COUNTS_ARG)

@@ -210,7 +210,7 @@ INSTANTIATE_TEST_SUITE_P(InTreeScenes, PinnedCounts,
                                            PinnedView{"menger", 10.773, 3.978, 14.837},
                                            PinnedView{"sierpinski", 9.102, 5.148, 18.066},
                                            PinnedView{"julia", 11.933, 5.928, 18.168},
-                                           PinnedView{"benchmark", 45.260, 7.122, 79.845}),
+                                           PinnedView{"benchmark", 44.590, 7.122, 76.333}),
                          [](const auto& info) { return std::string(info.param.scene); });
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include "test_support.hpp"
 
 #ifndef _WIN32  // the interrupted sweep, at the end: POSIX signals
+#include <algorithm>
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -105,7 +106,8 @@ TEST(SweepReference, KeyFollowsEveryFieldThatShapesTheReference) {
   EXPECT_NE(reference_key(info, state, base, "another device"), key);
   const std::set<std::string> set_by_the_reference = {
       "samples",      "max_steps", "shadow_max_steps",  "refine_steps", "relaxation",
-      "cone_prepass", "fast_math", "count_evaluations", "watchdog_s"};
+      "cone_prepass", "fast_math", "count_evaluations", "watchdog_s",   "bounce_max_steps",
+      "bounce_shadow_max_steps"};
   size_t fields = 0;
   visit_render_fields(base, [&](const char* name, const auto& value) {
     using T = std::decay_t<decltype(value)>;
@@ -168,6 +170,19 @@ TEST(SweepPlan, OneKnobAtATimeAroundTheDefaults) {
     }
   }
   EXPECT_THROW(plan_sweep(info, defaults, {"warp_drive"}), std::invalid_argument);
+  // The mirror bounces' budgets, for a scene with mirrors (and their shadows, with shadows).
+  info.features = FR_FEATURE_REFLECTIONS;
+  const auto mirrors = knob_names(info);
+  EXPECT_NE(std::find(mirrors.begin(), mirrors.end(), "bounce_steps"), mirrors.end());
+  EXPECT_EQ(std::find(mirrors.begin(), mirrors.end(), "bounce_shadow_steps"), mirrors.end());
+  info.features = FR_FEATURE_REFLECTIONS | FR_FEATURE_SHADOWS;
+  const auto both = knob_names(info);
+  EXPECT_NE(std::find(both.begin(), both.end(), "bounce_shadow_steps"), both.end());
+  for (const auto& c : plan_sweep(info, defaults, {"bounce_shadow_steps"}))
+    if (c.knob == "bounce_shadow_steps") {
+      EXPECT_EQ(std::to_string(c.settings.bounce_shadow_max_steps), c.value);
+      EXPECT_EQ(c.settings.shadow_max_steps, defaults.shadow_max_steps);
+    }
 }
 
 TEST(SweepReport, DefaultOffTheFrontIsSaid) {

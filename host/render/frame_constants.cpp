@@ -17,7 +17,7 @@ static_assert(FR_KERNEL_LIGHT_DIRECTIONAL == FR_LIGHT_DIRECTIONAL &&
 
 // The kernels read this struct with OpenCL C's layout rules; with only 4-byte fields both sides
 // agree, and these checks keep it so.
-static_assert(sizeof(fr_frame_constants) == 856, "fr_frame_constants layout changed");
+static_assert(sizeof(fr_frame_constants) == 864, "fr_frame_constants layout changed");
 static_assert(offsetof(fr_frame_constants, first_pixel_dir) == 0);
 static_assert(offsetof(fr_frame_constants, light_vector) == 96);
 static_assert(offsetof(fr_frame_constants, light_kind) == 352);
@@ -141,6 +141,8 @@ fr_frame_constants make_frame_constants(const CameraRays& rays, const SceneState
   fc.height = rays.height_px;
   fc.max_steps = s.max_steps;
   fc.shadow_max_steps = s.shadow_max_steps;
+  fc.bounce_max_steps = std::min(s.bounce_max_steps, s.max_steps);
+  fc.bounce_shadow_max_steps = s.bounce_shadow_max_steps;
   fc.max_bounces = s.max_bounces;
   fc.ao_samples = std::max(1, s.ao_samples);
   fc.sample_index = sample_index;

@@ -118,6 +118,12 @@ struct RenderSettings {
   // scene with shadows.
   int shadow_max_steps = 32;
   int max_bounces = 2;  // mirror bounces, when reflections are on
+  // Budgets of the mirror bounces' rays: march steps (at most max_steps) and shadow steps (0:
+  // no shadows in reflections). 16 shadow steps: the sweep found the benchmark scene's error the
+  // same as with 32 (image MAE 7.483 against 7.477, the reference itself uncertain by ~1), and
+  // its frames 1.14x faster; its bounce rays never needed more than 64 march steps.
+  int bounce_max_steps = 160;
+  int bounce_shadow_max_steps = 16;
   int ao_samples = 5;
   float hit_threshold_k = 0.5f;  // epsilon = k * t * pixel angle
   float step_scale = 1.0f;
@@ -184,6 +190,8 @@ void visit_render_fields(Settings& s, Visit&& visit) {
   visit("refine_steps", s.refine_steps);
   visit("shadow_max_steps", s.shadow_max_steps);
   visit("max_bounces", s.max_bounces);
+  visit("bounce_max_steps", s.bounce_max_steps);
+  visit("bounce_shadow_max_steps", s.bounce_shadow_max_steps);
   visit("ao_samples", s.ao_samples);
   visit("hit_threshold_k", s.hit_threshold_k);
   visit("step_scale", s.step_scale);
@@ -233,7 +241,7 @@ constexpr size_t aggregate_member_count() {
 }  // namespace detail
 // RenderSettings' direct members (the window counts once): a new field changes the count. List
 // it in visit_render_fields, then update this number.
-static_assert(detail::aggregate_member_count<RenderSettings>() == 48,
+static_assert(detail::aggregate_member_count<RenderSettings>() == 50,
               "RenderSettings changed: list the new field in visit_render_fields");
 
 }  // namespace fr

@@ -84,6 +84,14 @@ std::vector<KnobValue> knob_values(const std::string& knob, const RenderSettings
     *default_value = number(d.shadow_max_steps);
     for (int n : {16, 32, 64, 128})
       v.push_back({number(n), [n](RenderSettings& s) { s.shadow_max_steps = n; }});
+  } else if (knob == "bounce_steps") {
+    *default_value = number(d.bounce_max_steps);
+    for (int n : {32, 64, 160})
+      v.push_back({number(n), [n](RenderSettings& s) { s.bounce_max_steps = n; }});
+  } else if (knob == "bounce_shadow_steps") {
+    *default_value = number(d.bounce_shadow_max_steps);
+    for (int n : {0, 8, 16, 32})
+      v.push_back({number(n), [n](RenderSettings& s) { s.bounce_shadow_max_steps = n; }});
   } else {
     std::string known;
     for (const auto& k : all_knob_names()) known += (known.empty() ? "" : ", ") + k;
@@ -100,7 +108,8 @@ const std::vector<std::string>& all_knob_names() {
                                                  "relaxation",   "adaptive_relaxation",
                                                  "cone_prepass", "normals",
                                                  "samples",      "lanes",
-                                                 "ao",           "shadow_steps"};
+                                                 "ao",           "shadow_steps",
+                                                 "bounce_steps", "bounce_shadow_steps"};
   return names;
 }
 
@@ -109,6 +118,11 @@ std::vector<std::string> knob_names(const SceneInfo& info) {
   for (const auto& k : all_knob_names()) {
     if (k == "ao" && !(info.features & FR_FEATURE_AO)) continue;
     if (k == "shadow_steps" && !(info.features & FR_FEATURE_SHADOWS)) continue;
+    if (k == "bounce_steps" && !(info.features & FR_FEATURE_REFLECTIONS)) continue;
+    if (k == "bounce_shadow_steps" &&
+        (info.features & (FR_FEATURE_REFLECTIONS | FR_FEATURE_SHADOWS)) !=
+            (FR_FEATURE_REFLECTIONS | FR_FEATURE_SHADOWS))
+      continue;
     names.push_back(k);
   }
   return names;

@@ -85,6 +85,8 @@ RenderSettings reference_settings(const RenderSettings& base) {
   ref.cone_prepass = false;  // every ray marches from its own origin
   ref.max_steps = 5000;
   ref.shadow_max_steps = std::max(ref.shadow_max_steps, 1024);
+  ref.bounce_max_steps = ref.max_steps;
+  ref.bounce_shadow_max_steps = ref.shadow_max_steps;
   ref.normals = NormalMethod::CentralDifferences;
   ref.refine_steps = 0;
   ref.fast_math = false;
