@@ -74,7 +74,7 @@ __kernel void fr_render(__constant const fr_frame_constants* fc,
   const int bounces = FR_MAX_BOUNCES(fc);
   for (int bounce = 0; bounce <= bounces; ++bounce) {
     FR_COUNT_BOUNCE(bounce);
-    /* Mirror bounces take their own, smaller budgets (frame_constants.h). */
+    /* Mirror bounces have budgets of their own (frame_constants.h). */
     const int max_steps = bounce == 0 ? fc->max_steps : fc->bounce_max_steps;
     const int shadow_steps = bounce == 0 ? fc->shadow_max_steps : fc->bounce_shadow_max_steps;
     march_result_t m = march(ray, path_t, bounce == 0 ? cone_from : (real_t)0, max_steps, fc,
