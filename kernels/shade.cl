@@ -59,7 +59,8 @@ vec3_t brdf_cos(vec3_t n, vec3_t to_light, vec3_t to_eye, vec3_t albedo, real_t 
 #endif
 }
 
-/* The colour of the surface at p seen along view_dir, and the first light's shadow factor. */
+/* The colour of the surface at p seen along view_dir, and the first light's shadow factor; its
+ * shadow rays march at most shadow_steps each (the primary rays' budget or a bounce's). */
 vec3_t shade_surface(vec3_t p, vec3_t n, vec3_t view_dir, surface_t surface, real_t ao, real_t h,
                      mask_t lanes, int shadow_steps, __constant const fr_frame_constants* fc,
                      __constant const scene_params_t* params,
