@@ -120,6 +120,9 @@ std::string describe_exit_code(DWORD code) {
 // flags' changes from overlapping.
 std::mutex inherit_lock;
 
+// How many times a start that failed in Wine's own start-up is tried (ChildProcess::start).
+constexpr int kStartAttempts = 4;
+
 }  // namespace
 
 void end_at_once_on_crash() {
@@ -240,11 +243,19 @@ std::unique_ptr<ChildProcess> ChildProcess::start(const ChildSpec& spec, std::st
                                   inherited.data(), inherited.size() * sizeof(HANDLE), nullptr,
                                   nullptr)) {
       startup.lpAttributeList = attributes;
-      // Suspended until it is in the job, so that no code of it runs outside.
-      started = CreateProcessW(spec.program.c_str(), line.data(), nullptr, nullptr, TRUE,
-                               CREATE_SUSPENDED | CREATE_UNICODE_ENVIRONMENT |
-                                   EXTENDED_STARTUPINFO_PRESENT | CREATE_NO_WINDOW,
-                               environment.data(), nullptr, &startup.StartupInfo, &info);
+      // Suspended until it is in the job, so that no code of it runs outside. Under Wine a new
+      // process now and then dies while Wine itself starts it, before any code of the program
+      // runs, and CreateProcessW says ERROR_INTERNAL_ERROR ("Internal error": it failed
+      // platform_test once in CI, not again in hundreds of runs here): nothing of it ran, so
+      // it is started again, a few times at most. Any other failure is final at once.
+      for (int attempt = 1;; ++attempt) {
+        started = CreateProcessW(spec.program.c_str(), line.data(), nullptr, nullptr, TRUE,
+                                 CREATE_SUSPENDED | CREATE_UNICODE_ENVIRONMENT |
+                                     EXTENDED_STARTUPINFO_PRESENT | CREATE_NO_WINDOW,
+                                 environment.data(), nullptr, &startup.StartupInfo, &info);
+        if (started || GetLastError() != ERROR_INTERNAL_ERROR || attempt == kStartAttempts) break;
+        Sleep(10 * attempt);
+      }
       if (!started) *error = last_error_text();
       DeleteProcThreadAttributeList(attributes);
     } else {
