@@ -6,7 +6,7 @@
 # lists and renders its scenes, flies the explorer for a few frames (Xvfb), and a scene built
 # with the zip's SDK passes `fractalis check`.
 #
-# README's Windows section says which tests run under Wine and what Wine is not.
+# docs/windows.md says which tests run under Wine and what Wine is not.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 source "$FRACTALIS_ROOT/scripts/windows-build.sh"

@@ -7,15 +7,42 @@
 # CMake find them as it finds /usr on Linux. Each library is built once: a stamp names the
 # version it was built from, so a new Debian version is built again and nothing else is.
 #
+# The prefix lives in the user's cache folder, not in the checkout, so a fresh clone (CI's) finds
+# it built: $XDG_CACHE_HOME/fractalis/windows-deps/KEY, where KEY is a digest of the MinGW-w64
+# packages' versions, the toolchain file and this script (a new compiler or recipe gets a
+# prefix of its own). A checksum list written when the prefix is complete is checked before each
+# use; a prefix that fails it is built again. A lock keeps two builds from writing one prefix.
+#
 # Not here: FFmpeg with x264 and libvpx (video needs all three cross-built, too much for CI's
 # time), OpenEXR with Imath (not yet) — the Windows build refuses those outputs with the reason
 # and writes PNG (CMakeLists.txt: FRACTALIS_VIDEO, FRACTALIS_OPENEXR) — and MPI (Microsoft MPI
 # is not in Debian; one machine only).
 
 FRACTALIS_BUILD="${FRACTALIS_WINDOWS_BUILD:-$FRACTALIS_ROOT/build-windows}"
-FRACTALIS_WINDOWS_DEPS="${FRACTALIS_WINDOWS_DEPS:-$FRACTALIS_BUILD/deps}"
-FRACTALIS_WINDOWS_PREFIX="$FRACTALIS_WINDOWS_DEPS/prefix"
 FRACTALIS_TOOLCHAIN="$FRACTALIS_ROOT/cmake/mingw-w64-x86_64.cmake"
+
+# Sets FRACTALIS_WINDOWS_DEPS (unless the caller chose one) and FRACTALIS_WINDOWS_PREFIX, once
+# the toolchain is installed: the cache folder keyed as the header says.
+fractalis_windows_deps_folder() {
+  if [ -z "${FRACTALIS_WINDOWS_DEPS:-}" ]; then
+    local key
+    key="$({
+      dpkg-query -W -f='${Package} ${Version}\n' g++-mingw-w64-x86-64-posix \
+        gcc-mingw-w64-x86-64-posix-runtime mingw-w64-x86-64-dev binutils-mingw-w64-x86-64 \
+        libz-mingw-w64-dev 2>/dev/null
+      sha256sum "$FRACTALIS_TOOLCHAIN" "$FRACTALIS_ROOT/scripts/windows-build.sh" | cut -d' ' -f1
+    } | sha256sum | cut -c1-16)"
+    FRACTALIS_WINDOWS_DEPS="${XDG_CACHE_HOME:-$HOME/.cache}/fractalis/windows-deps/$key"
+  fi
+  FRACTALIS_WINDOWS_PREFIX="$FRACTALIS_WINDOWS_DEPS/prefix"
+  mkdir -p "$FRACTALIS_WINDOWS_DEPS"
+}
+
+# The prefix's checksum list: every file under it, in a stable order.
+fractalis_windows_manifest() {
+  (cd "$FRACTALIS_WINDOWS_PREFIX" && find . -type f -print0 | LC_ALL=C sort -z |
+    xargs -0 -r sha256sum)
+}
 
 # `apt-get source` needs source lists, which a Debian image often lacks: the same mirror and
 # release as the binary packages, as one more list of our own.
@@ -218,6 +245,17 @@ EOF
 }
 
 fractalis_windows_deps() {
+  local manifest="$FRACTALIS_WINDOWS_DEPS/manifest.sha256"
+  if [ -f "$manifest" ]; then
+    if [ "$(fractalis_windows_manifest)" = "$(cat "$manifest")" ]; then
+      echo "fractalis: the Windows libraries, cached in $FRACTALIS_WINDOWS_DEPS, verified" >&2
+    else
+      echo "fractalis: the cached Windows libraries in $FRACTALIS_WINDOWS_DEPS differ from their" \
+        "checksum list; building them again" >&2
+      rm -rf "${FRACTALIS_WINDOWS_DEPS:?}/prefix" "$FRACTALIS_WINDOWS_DEPS/stamps" "$manifest"
+    fi
+  fi
+  rm -f "$manifest"
   fractalis_source_lists
   fractalis_opencl_import
   fractalis_cmake_package fmtlib libfmt-dev -DFMT_DOC=OFF -DFMT_TEST=OFF
@@ -238,6 +276,8 @@ fractalis_windows_deps() {
     fractalis_cmake_install googletest /usr/src/googletest -DINSTALL_GTEST=ON -DBUILD_GMOCK=OFF
     fractalis_stamp googletest "$gtest_version"
   fi
+  fractalis_windows_manifest >"$manifest.part"
+  mv -f "$manifest.part" "$manifest"
 }
 
 # Everything: the packages (MinGW-w64, the source tools, the headers some libraries come from),
@@ -247,8 +287,18 @@ fractalis_windows_build() {
   FRACTALIS_PACKAGES=(cmake make ccache pkg-config dpkg-dev g++-mingw-w64-x86-64-posix
     libz-mingw-w64-dev googletest opencl-c-headers libtomlplusplus-dev libstb-dev "$@")
   fractalis_install_packages
-  fractalis_windows_deps
+  fractalis_windows_deps_folder
+  (
+    flock 9
+    fractalis_windows_deps
+  ) 9>"$FRACTALIS_WINDOWS_DEPS/lock"
   echo "fractalis: cross-building for Windows in $FRACTALIS_BUILD" >&2
+  # A build folder configured with another prefix (an older key) is pointed at this one.
+  if [ -f "$FRACTALIS_BUILD/CMakeCache.txt" ] && [ "$FRACTALIS_WINDOWS_PREFIX" != \
+    "$(sed -n 's/^FRACTALIS_WINDOWS_PREFIX:[A-Z]*=//p' "$FRACTALIS_BUILD/CMakeCache.txt")" ]; then
+    cmake -S "$FRACTALIS_ROOT" -B "$FRACTALIS_BUILD" \
+      -DFRACTALIS_WINDOWS_PREFIX="$FRACTALIS_WINDOWS_PREFIX" >&2
+  fi
   fractalis_build -DCMAKE_TOOLCHAIN_FILE="$FRACTALIS_TOOLCHAIN" \
     -DFRACTALIS_WINDOWS_PREFIX="$FRACTALIS_WINDOWS_PREFIX" -DFRACTALIS_WERROR=ON
 }

@@ -164,13 +164,13 @@ TEST(EvalCounts, ExplorerCountsWhileAsked) {
 // The work each in-tree scene's frames take, pinned: a view of the scene's default camera at
 // 128x72 with every effect it declares. `now` is what this revision measured; a change that
 // makes the renderer do more than 3% more work fails, and one that makes it do much less must
-// update the figure here (and say so in README's Speed section).
+// update the figure here (and say so in docs/performance.md).
 struct PinnedView {
   const char* scene;
   double evals_per_pixel;  // all stages, per pixel
   double march_per_pixel;  // primary march alone
   // Lane evaluations made, all stages, per pixel: a packet runs at its slowest lane's pace, so a
-  // change can want fewer evaluations and still make more (README's Speed section).
+  // change can want fewer evaluations and still make more (docs/performance.md).
   double made_per_pixel;
 };
 

@@ -1,6 +1,6 @@
 // The host's folders in floors, each including only its own headers and those of the folders
 // below it (DESIGN.md: "a folder depends on the ones below it, never sideways in circles").
-// The order, bottom first, is the one in README's Layout section; an include that reaches up or
+// The order, bottom first, is the one in docs/architecture.md (Folders and floors); an include that reaches up or
 // sideways fails here with the file and line.
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // What isolation costs: one update call of a scene, through a scene-host process (the default)
 // and in-process (plugins.isolation = "none"), and loading a plugin either way. Google
-// Benchmark; run ./build/tests/plugin_call_bench (README reports its medians).
+// Benchmark; run ./build/tests/plugin_call_bench (docs/architecture.md reports its medians).
 #include "plugin/plugin_loader.hpp"
 #include "plugin/scene_instance.hpp"
 

@@ -3,7 +3,7 @@
 // fractalis-render-worker process and in this process (plugins.isolation = "none"), for a view
 // that looks away from the scene, so that the device's own work is as small as it gets and the
 // difference is the worker's. And what starting a worker costs. Google Benchmark; run
-// ./build/tests/render_worker_bench (README reports its medians).
+// ./build/tests/render_worker_bench (docs/architecture.md reports its medians).
 #include "plugin/plugin_loader.hpp"
 #include "plugin/scene_instance.hpp"
 #include "render/device.hpp"

@@ -130,6 +130,23 @@ inline void set_environment(const std::string& name, const std::optional<std::st
 #endif
 }
 
+// How many rounds a soak loop (a thousand worker restarts, a thousand hot reloads) runs: the
+// suite runs `suite_rounds`, enough for a per-round leak to pass each check's margin; the `soak`
+// CTest label (scripts/soak.sh) sets FRACTALIS_SOAK_ROUNDS to the whole count. A value that is
+// not a whole number from 1 to 1000000 fails the test that asked, naming it.
+inline int soak_rounds(int suite_rounds) {
+  const char* text = std::getenv("FRACTALIS_SOAK_ROUNDS");
+  if (!text) return suite_rounds;
+  char* end = nullptr;
+  const long rounds = std::strtol(text, &end, 10);
+  if (end == text || *end != '\0' || rounds < 1 || rounds > 1000000) {
+    ADD_FAILURE() << "FRACTALIS_SOAK_ROUNDS='" << text << "': expected a whole number from 1 to "
+                  << "1000000; running " << suite_rounds << " rounds";
+    return suite_rounds;
+  }
+  return static_cast<int>(rounds);
+}
+
 using Environment = std::vector<std::pair<std::string, std::string>>;
 
 // Runs `program` with `arguments` through the platform layer's child processes (the same code on

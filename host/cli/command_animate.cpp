@@ -319,7 +319,7 @@ int command_animate(const std::vector<std::string>& args, std::ostream& out, std
   if (options.has("help")) {
     out << "usage: fractalis animate --path FILE --out OUT [--scene ID] [--fps N] [--size WxH]\n"
            "                         [--samples N] [options]\n\n"
-           "Renders a scene along a camera path (see README: Camera paths). A path from its\n"
+           "Renders a scene along a camera path (see docs/rendering.md). A path from its\n"
            "first keyframe to its last, D seconds, at N fps has floor(D x N) + 1 frames: the\n"
            "first and the closing keyframe both included; a video shows each for 1/N s.\n"
            "A video (.mp4, .mkv: H.264; .webm: VP9; yuv420p, so even sizes) is written whole or\n"

@@ -36,7 +36,7 @@ struct StageCount {
   double evals_per_pixel = 0;  // per pixel per sample, by the lanes that wanted them
   // Lane evaluations made per pixel per sample (lanes x packet evaluations): what the SIMD unit
   // did, wanted or not. A packet marches at its slowest lane's pace, so this, not the
-  // evaluations wanted, is what frame time follows (README's Speed section).
+  // evaluations wanted, is what frame time follows (docs/performance.md).
   double made_per_pixel = 0;
   double utilisation = 0;  // evaluations wanted / lane evaluations made, in [0, 1]
 };
