@@ -4,6 +4,11 @@
 FRACTALIS_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 FRACTALIS_BUILD="${FRACTALIS_BUILD:-$FRACTALIS_ROOT/build}"
 
+# ccache hashes paths inside the checkout relative to it, and not the build folder's own path, so
+# that a clone elsewhere (a CI run's) reuses what another clone compiled.
+export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$FRACTALIS_ROOT}"
+export CCACHE_NOHASHDIR="${CCACHE_NOHASHDIR:-1}"
+
 # The Debian packages the project builds, runs and tests with.
 FRACTALIS_PACKAGES=(
   cmake g++ make pkg-config ccache

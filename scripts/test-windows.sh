@@ -11,7 +11,7 @@ set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 source "$FRACTALIS_ROOT/scripts/windows-build.sh"
 
-fractalis_windows_build wine64 ocl-icd-libopencl1 pocl-opencl-icd zip unzip xvfb xauth
+fractalis_windows_build "${FRACTALIS_WINDOWS_TEST_PACKAGES[@]}"
 # The explorer's window needs a display, and Wine's desktop takes the one its server starts
 # with: without one, the rest runs again under Xvfb (the build above is then up to date), a
 # screen as large as the largest window explorer_window_test opens.

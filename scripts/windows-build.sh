@@ -283,9 +283,13 @@ fractalis_windows_deps() {
 # Everything: the packages (MinGW-w64, the source tools, the headers some libraries come from),
 # the libraries, then fractalis itself in $FRACTALIS_BUILD, with the tests; extra arguments go to
 # cmake's first configure.
+FRACTALIS_WINDOWS_PACKAGES=(cmake make ccache pkg-config dpkg-dev g++-mingw-w64-x86-64-posix
+  libz-mingw-w64-dev googletest opencl-c-headers libtomlplusplus-dev libstb-dev)
+# What the Windows tests and the zip's test need besides (scripts/test-windows.sh; .ci/run installs
+# both lists with Linux's, up front).
+FRACTALIS_WINDOWS_TEST_PACKAGES=(wine64 ocl-icd-libopencl1 pocl-opencl-icd zip unzip xvfb xauth)
 fractalis_windows_build() {
-  FRACTALIS_PACKAGES=(cmake make ccache pkg-config dpkg-dev g++-mingw-w64-x86-64-posix
-    libz-mingw-w64-dev googletest opencl-c-headers libtomlplusplus-dev libstb-dev "$@")
+  FRACTALIS_PACKAGES=("${FRACTALIS_WINDOWS_PACKAGES[@]}" "$@")
   fractalis_install_packages
   fractalis_windows_deps_folder
   (
