@@ -1,5 +1,6 @@
 // `fractalis check` as an author runs it: every in-tree scene passes (exit 0), and each broken
 // fixture fails exactly the check that names its fault (exit 1), with JSON that says the same.
+#include "in_tree_scenes.hpp"
 #include "test_support.hpp"
 
 #include <nlohmann/json.hpp>
@@ -46,10 +47,11 @@ std::string status_of(const std::string& table, const std::string& check) {
 }
 
 TEST(Check, EveryInTreeScenePasses) {
-  for (const char* scene : {"mandelbulb", "menger", "sierpinski", "julia", "benchmark"}) {
+  const std::vector<std::string> scenes = test::in_tree_scene_ids();
+  ASSERT_GE(scenes.size(), 13u);
+  for (const std::string& scene : scenes) {
     SCOPED_TRACE(scene);
-    const CheckRun r =
-        run_check(std::filesystem::path(SCENE_PLUGIN_DIR) / (std::string(scene) + PLUGIN_SUFFIX));
+    const CheckRun r = run_check(std::filesystem::path(SCENE_PLUGIN_DIR) / (scene + PLUGIN_SUFFIX));
     EXPECT_EQ(r.exit_code, 0) << r.out;
     for (const char* check : {"descriptor", "de-compiles", "de-returns", "de-finite",
                               "de-lipschitz", "de-overestimate", "de-bounded", "lanes-agree",

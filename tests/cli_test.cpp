@@ -3,6 +3,7 @@
 #include "cli_run.hpp"
 #include "plugin/scene_instance.hpp"
 #include "render/renderer.hpp"
+#include "in_tree_scenes.hpp"
 #include "test_support.hpp"
 
 #include <filesystem>
@@ -25,9 +26,13 @@ TEST(Cli, UsageErrors) {
                      "--json: folder '/no/such/folder' does not exist");
   expect_usage_error({"bench", "--json", TEST_OUTPUT_DIR}, "is a folder, not a file");
   expect_usage_error({"render", "--out", TEST_OUTPUT_DIR}, "is a folder, not a file");
-  expect_usage_error(
-      {"render", "--scene", "nope"},
-      "unknown scene 'nope' (available: benchmark, julia, mandelbulb, menger, sierpinski)");
+  {
+    std::string available;
+    for (const std::string& id : test::in_tree_scene_ids())
+      available += (available.empty() ? "" : ", ") + id;
+    expect_usage_error({"render", "--scene", "nope"},
+                       "unknown scene 'nope' (available: " + available + ")");
+  }
   expect_usage_error({"render", "--param", "nokey=1"}, "has no parameter 'nokey'");
   expect_usage_error({"render", "--param", "power"}, "expected KEY=VALUE");
   expect_usage_error({"render", "--band-rows", "0"}, "--band-rows: 0 is outside [1, 65535]");

@@ -142,6 +142,31 @@ TEST(DeLibrary, Folds) {
             {"p_fold_sierpinski(p).z", {-1, -1, 1}, 1},
             {"p_fold_sierpinski(p).x", {0.5f, 0.2f, 0.1f}, 0.5},  // already in the domain
         });
+  // The box fold on two axes leaves z alone (Amazing Surf).
+  check("fr/mandelbox.cl", {
+                               {"p_fold_box_xy(p, 1).x", {3, -2.5f, 7}, -1},  // 2 * 1 - 3
+                               {"p_fold_box_xy(p, 1).y", {3, -2.5f, 7}, 0.5},  // -2 + 2.5
+                               {"p_fold_box_xy(p, 1).z", {3, -2.5f, 7}, 7},
+                           });
+  // The icosahedral fold against its chamber's image computed by reflecting across any of the 15
+  // mirrors that separates the point from (0.1, 0.35, 1) until none does (in double, by hand with
+  // a script, not with the kernel's three-round sequence); a point in the chamber stays put, a
+  // cyclic permutation of coordinates is a symmetry. Rotations: (1, 0, 0) turned by pi/2 about z.
+  check("fr/kifs.cl",
+        {
+            {"p_fold_icosahedral(p).x", {0.9f, -0.2f, 0.3f}, 0.145491503},
+            {"p_fold_icosahedral(p).y", {0.9f, -0.2f, 0.3f}, 0.266311896},
+            {"p_fold_icosahedral(p).z", {0.9f, -0.2f, 0.3f}, 0.920820393},
+            {"p_fold_icosahedral(p).x", {-0.5f, 0.4f, -0.3f}, 0.116311896},
+            {"p_fold_icosahedral(p).y", {-0.5f, 0.4f, -0.3f}, 0.019098301},
+            {"p_fold_icosahedral(p).z", {-0.5f, 0.4f, -0.3f}, 0.697213595},
+            {"p_fold_icosahedral(p).x", {0.2f, 0.8f, 0.1f}, 0.1},
+            {"p_fold_icosahedral(p).z", {0.2f, 0.8f, 0.1f}, 0.8},
+            {"p_fold_icosahedral(p).y", {0.1f, 0.35f, 1}, 0.35},
+            {"p_rotate_xyz(p, 0, 0, 1.5707963267948966).y", {1, 0, 0}, -1},
+            {"p_rotate_xyz(p, 1.5707963267948966, 0, 0).z", {0, 1, 0}, -1},
+            {"p_rotate_xyz(p, 0, 0, 0).x", {0.25f, 0, 0}, 0.25},
+        });
   // The sphere fold: inside the minimum radius scale by (fixed/min)^2 (here 4).
   check("fr/folds.cl",
         {{"({ real_t dr = 1; vec3_t q = p_fold_sphere(p, 0.5f, 1, &dr); q.x * 10 + dr; })",
@@ -158,8 +183,9 @@ TEST(DeLibrary, GuideListsEverySignature) {
   const std::string guide((std::istreambuf_iterator<char>(guide_file)), {});
   ASSERT_FALSE(guide.empty());
   // Helpers the library uses internally, not meant for scenes.
-  const std::set<std::string> internal = {"pow_int", "unit_complex_pow_int", "mandelbulb_pow_int",
-                                          "mandelbulb_pow_real"};
+  const std::set<std::string> internal = {"pow_int",          "unit_complex_pow_int",
+                                          "mandelbulb_pow_int", "mandelbulb_pow_real",
+                                          "mandelbox_iterate",  "kifs_iterate"};
   size_t found = 0;
   for (const auto& entry :
        std::filesystem::directory_iterator(std::string(SOURCE_DIR) + "/kernels/de")) {

@@ -30,11 +30,12 @@ for f in "$root"/bin/*.exe "$root"/libexec/fractalis/*.exe; do
   [[ -z "$deps" ]] || fail "$(basename "$f") needs DLLs the zip lacks: $deps"
 done
 
-echo "== list: the five scenes, found beside the executable"
+echo "== list: every in-tree scene (plugins/ID/), found beside the executable"
 fractalis list || fail "list failed: $(cat "$work/err.txt")"
 grep -q "plugin folder: .*lib.fractalis.plugins" "$work/out.txt" ||
   fail "list did not use the zip's scenes: $(head -1 "$work/out.txt")"
-for scene in mandelbulb menger sierpinski julia benchmark; do
+for folder in "$source_dir"/plugins/*/; do
+  scene="$(basename "$folder")"
   grep -q "^$scene " "$work/out.txt" || fail "list lacks $scene"
 done
 

@@ -126,3 +126,31 @@ real_t de_mandelbulb(vec3_t p, float power, real_t bailout, int iterations, real
   real_t safe_r = fmax(r, to_real(FR_SCALAR_EPSILON));
   return to_real(0.5) * log(safe_r) * r / dr;
 }
+
+/* The Mandelbulb's Julia set, the "Juliabulb" (after White and Nylander's bulb): z <- z^n + c
+ * with a constant c and z starting at p. The derivative has no +1 (c does not depend on p):
+ * dr <- n r^(n-1) dr, and the estimate is the same 0.5 r ln r / dr. Lanes stop at the bailout
+ * and once r < 1e-4 (deep inside, where r^(n^k) would underflow into 0 / 0). */
+real_t de_juliabulb(vec3_t p, float power, vec3_t c, real_t bailout, int iterations,
+                    real_t* trap) {
+  bool whole_power = power == rint(power) && power >= 1.0f && power <= 64.0f;
+  int power_int = (int)power;
+  vec3_t z = p;
+  real_t dr = to_real(1);
+  real_t r = v3_length(z);
+  real_t orbit_min = r * r;
+  for (int i = 0; i < iterations; ++i) {
+    mask_t live = (r < bailout) & (r > to_real(1e-4));
+    if (!any_lane(live)) break;
+    real_t r_pow;
+    vec3_t next = whole_power ? mandelbulb_pow_int(z, r, power_int, &r_pow)
+                              : mandelbulb_pow_real(z, r, to_real(power), &r_pow);
+    dr = lane_select(live, to_real(power) * r_pow * dr, dr);
+    z = v3_select(live, v3_add(next, c), z);
+    r = lane_select(live, v3_length(z), r);
+    orbit_min = lane_select(live, fmin(orbit_min, r * r), orbit_min);
+  }
+  *trap = orbit_min;
+  real_t safe_r = fmax(r, to_real(FR_SCALAR_EPSILON));
+  return to_real(0.5) * log(safe_r) * r / fmax(dr, to_real(FR_SCALAR_MIN));
+}

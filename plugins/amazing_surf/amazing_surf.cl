@@ -1,0 +1,8 @@
+/* amazing_surf.cl — the scene's DE: the library's Amazing Surf (the Mandelbox folded in two axes). */
+#include "fr/mandelbox.cl"
+
+real_t scene_de(vec3_t p, __constant const scene_params_t* params) {
+  real_t trap;
+  return de_amazing_surf(p, PARAM(iterations), PARAM(scale), PARAM(min_radius), PARAM(fixed_radius),
+                      PARAM(fold_limit), &trap);
+}

@@ -1,0 +1,9 @@
+/* quaternion_mandelbrot_surface.cl — colour by orbit trap. */
+#include "fr/palette.cl"
+
+surface_t scene_surface(vec3_t p, __constant const scene_params_t* params) {
+  real_t trap;
+  de_quaternion_mandelbrot(p, PARAM(slice_w), to_real(PARAM(bailout)), PARAM(iterations), &trap);
+  return surface_from_trap(trap * to_real(0.25), PARAM(color_near), PARAM(color_far),
+                           PARAM(color_contrast), 0);
+}
