@@ -115,7 +115,10 @@ fractalis_stamp() {
   rm -rf "$FRACTALIS_WINDOWS_DEPS/src/$package" "$FRACTALIS_WINDOWS_DEPS/build/$package"
 }
 
-# A CMake project from source folder $2, as package $1, static, into the prefix.
+# A CMake project from source folder $2, as package $1, static, into the prefix. With
+# FRACTALIS_INSTALL_ONLY=1 nothing is built, only installed: for a header-only library whose
+# project builds its own tests whatever BUILD_TESTING says (Debian's GLM: a thousand test
+# programs, minutes of compiling for nothing).
 fractalis_cmake_install() {
   local package="$1" source="$2"
   shift 2
@@ -126,7 +129,8 @@ fractalis_cmake_install() {
     -DFRACTALIS_WINDOWS_PREFIX="$FRACTALIS_WINDOWS_PREFIX" -DCMAKE_BUILD_TYPE=Release \
     -DCMAKE_INSTALL_PREFIX="$FRACTALIS_WINDOWS_PREFIX" -DBUILD_SHARED_LIBS=OFF \
     -DCMAKE_POLICY_DEFAULT_CMP0077=NEW "$@" >"$build.log" 2>&1 &&
-    cmake --build "$build" -j "$(nproc 2>/dev/null || echo 2)" >>"$build.log" 2>&1 &&
+    { [ "${FRACTALIS_INSTALL_ONLY:-0}" = 1 ] ||
+      cmake --build "$build" -j "$(nproc 2>/dev/null || echo 2)" >>"$build.log" 2>&1; } &&
     cmake --install "$build" >>"$build.log" 2>&1 || {
     tail -30 "$build.log" >&2
     echo "fractalis: cross-building $package failed (the whole log: $build.log)" >&2
@@ -261,7 +265,7 @@ fractalis_windows_deps() {
   fractalis_cmake_package fmtlib libfmt-dev -DFMT_DOC=OFF -DFMT_TEST=OFF
   fractalis_cmake_package spdlog libspdlog-dev -DSPDLOG_FMT_EXTERNAL=ON -DSPDLOG_BUILD_EXAMPLE=OFF \
     -DSPDLOG_BUILD_TESTS=OFF -DSPDLOG_BUILD_BENCH=OFF
-  fractalis_cmake_package glm libglm-dev -DBUILD_TESTING=OFF
+  FRACTALIS_INSTALL_ONLY=1 fractalis_cmake_package glm libglm-dev -DBUILD_TESTING=OFF
   fractalis_tomlplusplus
   fractalis_cmake_package nlohmann-json3 nlohmann-json3-dev -DJSON_BuildTests=OFF
   fractalis_cmake_package libpng1.6 libpng-dev -DPNG_SHARED=OFF -DPNG_TESTS=OFF \
