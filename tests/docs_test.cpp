@@ -13,7 +13,6 @@
 #include <cctype>
 #include <filesystem>
 #include <fstream>
-#include <regex>
 #include <set>
 #include <sstream>
 #include <string>
@@ -76,6 +75,33 @@ std::set<std::string> anchors_of(const fs::path& file) {
   return anchors;
 }
 
+// The targets of the Markdown links [text](target) and images ![alt](target) on a line: a "]("
+// after a "[", up to the ")" (a target with a space is not a link). Parsed by hand: std::regex
+// trips GCC 12's -Wmaybe-uninitialized in the sanitizer build, where warnings are errors.
+std::vector<std::string> link_targets(const std::string& line) {
+  std::vector<std::string> targets;
+  size_t opened = std::string::npos;
+  for (size_t i = 0; i + 1 < line.size(); ++i) {
+    if (line[i] == '[') {
+      opened = i;
+    } else if (line[i] == ']' && line[i + 1] == '(' && opened != std::string::npos) {
+      const size_t close = line.find(')', i + 2);
+      if (close == std::string::npos) break;
+      const std::string target = line.substr(i + 2, close - i - 2);
+      if (!target.empty() && target.find_first_of(" \t") == std::string::npos)
+        targets.push_back(target);
+      opened = std::string::npos;
+      i = close;
+    }
+  }
+  return targets;
+}
+
+TEST(Docs, LinksAreFoundAsMarkdownHasThem) {
+  EXPECT_EQ(link_targets("see [a](x.md#y), ![b](img.png) and [c] (not) [d](has space)"),
+            (std::vector<std::string>{"x.md#y", "img.png"}));
+}
+
 TEST(Docs, HeadingAnchorsFollowGitHub) {
   EXPECT_EQ(heading_anchor("What would reach the targets"), "what-would-reach-the-targets");
   EXPECT_EQ(heading_anchor("Many machines (MPI)"), "many-machines-mpi");
@@ -86,7 +112,6 @@ TEST(Docs, HeadingAnchorsFollowGitHub) {
 // Every [text](target) and ![alt](target) outside code: a relative target names a file or
 // folder that exists, and its #anchor a heading of that Markdown file.
 TEST(Docs, EveryLinkResolves) {
-  const std::regex link(R"(!?\[[^\]]*\]\(([^)\s]+)\))");
   size_t checked = 0;
   for (const fs::path& file : documents()) {
     bool in_code = false;
@@ -102,8 +127,7 @@ TEST(Docs, EveryLinkResolves) {
         if (c == '`') in_span = !in_span;
         prose += in_span ? ' ' : c;
       }
-      for (std::sregex_iterator m(prose.begin(), prose.end(), link), end; m != end; ++m) {
-        const std::string target = (*m)[1];
+      for (const std::string& target : link_targets(prose)) {
         const std::string where = fs::relative(file, kRoot).string() + ":" +
                                   std::to_string(line_number) + ": " + target;
         if (target.rfind("http://", 0) == 0 || target.rfind("https://", 0) == 0 ||
