@@ -44,7 +44,10 @@ static_assert(offsetof(fr_frame_state, light_stride) == 72);
 static_assert(offsetof(fr_frame_state, params) == 32);
 static_assert(offsetof(fr_frame_state, bounding_radius) == 64);
 
-static_assert(sizeof(fr_scene_desc) == 160);
+// 1.0 ended at 160; 1.2 added tags and credit.
+static_assert(sizeof(fr_scene_desc) == 176);
+static_assert(offsetof(fr_scene_desc, tags) == 160);
+static_assert(offsetof(fr_scene_desc, credit) == 168);
 static_assert(offsetof(fr_scene_desc, id) == 8);
 static_assert(offsetof(fr_scene_desc, de_source) == 56);
 static_assert(offsetof(fr_scene_desc, surface_source) == 72);
@@ -78,6 +81,6 @@ TEST(AbiLayout, CAndCppAgree) {
 
 TEST(AbiLayout, VersionMacros) {
   EXPECT_EQ(FR_ABI_VERSION_MAJOR, 1u);
-  EXPECT_EQ(FR_ABI_VERSION_MINOR, 1u);
+  EXPECT_EQ(FR_ABI_VERSION_MINOR, 2u);
   EXPECT_STREQ(FR_SCENE_ENTRY_SYMBOL, "fractalis_scene_entry");
 }

@@ -2,6 +2,7 @@
 // the message (what was wrong, what was expected) for each, and the good plugins still load.
 #include "plugin/plugin_loader.hpp"
 #include "plugin/plugin_library.hpp"
+#include "plugin/scene_checks.hpp"
 #include "plugin/scene_code.hpp"
 #include "plugin/scene_instance.hpp"
 #include "render/renderer.hpp"
@@ -60,6 +61,8 @@ TEST(PluginLoader, ValidFixtureLoadsAndCopiesStrings) {
   EXPECT_EQ(scene->info.id, "fixture_valid");
   EXPECT_EQ(scene->info.de_source_name, "fixture.cl");
   EXPECT_EQ(scene->info.bounding_radius, 2.0);
+  EXPECT_EQ(scene->info.credit, "the Fractalis tests");  // ABI 1.2's fields
+  EXPECT_EQ(scene_tags(scene->info), (std::vector<std::string>{"ifs", "test-fixture"}));
 
   const auto ranges = mapped_ranges("fractalis-plugin");
   ASSERT_FALSE(ranges.empty());
@@ -77,7 +80,8 @@ TEST(PluginLoader, ValidFixtureLoadsAndCopiesStrings) {
   const SceneInfo& info = scene->info;
   std::vector<const std::string*> strings = {
       &info.id,      &info.name,        &info.version,   &info.author,
-      &info.license, &info.description, &info.de_source, &info.de_source_name};
+      &info.license, &info.description, &info.de_source, &info.de_source_name,
+      &info.tags,    &info.credit};
   for (const ParamInfo& p : info.params)
     for (const std::string* s : {&p.key, &p.name, &p.group, &p.description}) strings.push_back(s);
   for (const std::string* s : strings)
@@ -90,6 +94,30 @@ TEST(PluginLoader, ValidFixtureLoadsAndCopiesStrings) {
   EXPECT_EQ(kept.id, "fixture_valid");
   EXPECT_EQ(kept.de_source, de_source);
   EXPECT_NE(kept.de_source.find("scene_de"), std::string::npos);
+}
+
+// Tags are words [a-z0-9][a-z0-9-]* separated by spaces, at most 16, none twice; anything else
+// is refused with the word that broke the rule.
+TEST(PluginLoader, TagRules) {
+  LoadOutcome o = load_scene_plugin(fixture_plugin("valid_scene"), in_process());
+  ASSERT_EQ(o.result, LoadResult::Loaded) << o.message;
+  SceneInfo info = o.scene->info;
+  for (const std::string ok : {"", "box", "  box   julia-set 3d ", "a b c d e f g h i j k l m n o p"}) {
+    info.tags = ok;
+    EXPECT_EQ(check_scene_info(info), std::nullopt) << "'" << ok << "'";
+  }
+  for (const auto& [bad, says] : std::vector<std::pair<std::string, std::string>>{
+           {"Box", "tag 'Box' must match"},
+           {"box,julia", "tag 'box,julia'"},
+           {"-box", "tag '-box'"},
+           {"box box", "tag 'box' appears twice"},
+           {"a b c d e f g h i j k l m n o p q", "more than 16 tags"},
+           {"box\tjulia", "tags is not clean text"}}) {
+    info.tags = bad;
+    const auto problem = check_scene_info(info);
+    ASSERT_TRUE(problem.has_value()) << bad;
+    EXPECT_NE(problem->find(says), std::string::npos) << *problem;
+  }
 }
 
 TEST(PluginLoader, NotElf) {

@@ -5,9 +5,11 @@
 #include "plugin/scene_instance.hpp"
 #include "render/kernel_assembly.hpp"
 
+#include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <cctype>
 #include <ostream>
 #include <set>
 #include <stdexcept>
@@ -57,41 +59,141 @@ void describe_kernel(const SceneInfo& info, const RenderSettings& settings, std:
       << " lines of OpenCL C\n";
 }
 
+std::string lower(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+std::vector<std::string> words_of(const std::string& text) {
+  std::vector<std::string> words;
+  std::string word;
+  for (char c : text + ' ') {
+    if (!std::isspace(static_cast<unsigned char>(c))) {
+      word += c;
+    } else if (!word.empty()) {
+      words.push_back(lower(word));
+      word.clear();
+    }
+  }
+  return words;
+}
+
+// Whether a scene is one the filters ask for: it has every --tag, and every word of --search
+// appears (case-insensitive, anywhere) in its id, name, description, tags, credit or author.
+bool matches(const SceneInfo& s, const std::vector<std::string>& tags,
+             const std::vector<std::string>& search_words) {
+  const std::vector<std::string> own = scene_tags(s);
+  for (const std::string& t : tags)
+    if (std::find(own.begin(), own.end(), lower(t)) == own.end()) return false;
+  const std::string haystack = lower(s.id + " " + s.name + " " + s.description + " " + s.tags +
+                                     " " + s.credit + " " + s.author);
+  for (const std::string& w : search_words)
+    if (haystack.find(w) == std::string::npos) return false;
+  return true;
+}
+
+nlohmann::json value_json(const ParamInfo& p, const fr_value& v) {
+  if (p.type == FR_PARAM_BOOL) return v.v[0] != 0;
+  if (p.type == FR_PARAM_INT) return static_cast<long long>(v.v[0]);
+  if (p.component_count() == 1) return v.v[0];
+  return nlohmann::json::array({v.v[0], v.v[1], v.v[2]});
+}
+
+nlohmann::json scene_json(const SceneInfo& s, const std::filesystem::path& file) {
+  nlohmann::json params = nlohmann::json::array();
+  for (const ParamInfo& p : s.params)
+    params.push_back({{"key", p.key},
+                      {"name", p.name},
+                      {"group", p.group},
+                      {"description", p.description},
+                      {"type", param_type_name(p.type)},
+                      {"default", value_json(p, p.default_value)},
+                      {"min", value_json(p, p.min_value)},
+                      {"max", value_json(p, p.max_value)},
+                      {"compiled_in", p.specialized()},
+                      {"animatable", (p.flags & FR_PARAM_ANIMATABLE) != 0}});
+  const fr_camera& c = s.camera;
+  return {{"id", s.id},
+          {"name", s.name},
+          {"version", s.version},
+          {"file", file.string()},
+          {"description", s.description},
+          {"tags", scene_tags(s)},
+          {"family", scene_tags(s).empty() ? "" : scene_tags(s).front()},
+          {"credit", s.credit},
+          {"author", s.author},
+          {"license", s.license},
+          {"bounding_radius", s.bounding_radius},
+          {"camera",
+           {{"eye", {c.eye[0], c.eye[1], c.eye[2]}},
+            {"target", {c.target[0], c.target[1], c.target[2]}},
+            {"up", {c.up[0], c.up[1], c.up[2]}},
+            {"fov_deg", c.fov_deg}}},
+          {"params", params}};
+}
+
 }  // namespace
 
 int command_list(const std::vector<std::string>& args, std::ostream& out,
                  std::ostream& /*err: messages go to spdlog*/) {
   auto specs = plugin_option_specs();
+  specs.push_back({"tag", "TAG", true, "only scenes with this tag (a family: bulb, box, kifs, ...)"});
+  specs.push_back({"search", "WORDS", false,
+                   "only scenes whose id, name, description, tags or credit hold every word"});
+  specs.push_back({"json", nullptr, false,
+                   "print one JSON document: every scene with its parameters, tags and credit"});
   specs.push_back({"help", nullptr, false, "show this help"});
   auto options = parse_options("list", args, specs);
   if (options.has("help")) {
-    out << "usage: fractalis list [--plugins DIR] [--verbose]\n\nLists every scene plugin found: "
-           "id, version, parameters with their ranges, or why it failed to load. Exits 1 when\n"
-           "a plugin failed to load. With --verbose (-v), also what each scene's kernel\n"
-           "compiles in: stages, DE library files, parameters baked in as constants.\n\n"
+    out << "usage: fractalis list [--tag TAG] [--search WORDS] [--json] [--plugins DIR] "
+           "[--verbose]\n\nLists every scene plugin found: id, family and tags, credit, "
+           "parameters with their ranges, or why\nit failed to load. Exits 1 when a plugin "
+           "failed to load. With --verbose (-v), also what each\nscene's kernel compiles in: "
+           "stages, DE library files, parameters baked in as constants.\n\n"
         << format_options(specs);
     return 0;
   }
+  const std::vector<std::string> tags =
+      options.values.count("tag") ? options.values.at("tag") : std::vector<std::string>{};
+  const std::vector<std::string> search_words = words_of(options.get("search").value_or(""));
+  const bool json = options.has("json");
   const Settings settings = load_settings(options);
   const auto folders = plugin_folders(settings, options);
   if (folders.empty()) {
     throw std::runtime_error("no plugin folder found (build the plugins, or pass --plugins DIR)");
   }
-  for (const auto& f : folders) out << "plugin folder: " << f.string() << "\n";
+  if (!json)
+    for (const auto& f : folders) out << "plugin folder: " << f.string() << "\n";
   bool any_failed = false;
+  size_t shown = 0;
+  nlohmann::json doc = {{"scenes", nlohmann::json::array()}, {"failed", nlohmann::json::array()}};
   for (const auto& o : load_scene_folder(folders, settings.plugins)) {
     if (!o.scene) {
       any_failed = true;
+      if (json) {
+        doc["failed"].push_back({{"file", o.file.string()},
+                                 {"result", load_result_name(o.result)},
+                                 {"message", o.message}});
+        continue;
+      }
       out << "\n"
           << printable(o.file.filename().string()) << ": FAILED (" << load_result_name(o.result)
           << "): " << o.message << "\n";
       continue;
     }
     const SceneInfo& s = o.scene->info;
+    if (!matches(s, tags, search_words)) continue;
+    ++shown;
+    if (json) {
+      doc["scenes"].push_back(scene_json(s, o.file));
+      continue;
+    }
     out << "\n"
         << s.id << " " << s.version << " — " << s.name << "  (" << o.file.filename().string()
         << ")\n";
     if (!s.description.empty()) out << "  " << s.description << "\n";
+    if (!s.tags.empty()) out << "  tags: " << s.tags << "\n";
+    if (!s.credit.empty()) out << "  credit: " << s.credit << "\n";
     if (!s.author.empty() || !s.license.empty())
       out << "  by " << s.author << ", " << s.license << "\n";
     for (const auto& p : s.params) {
@@ -102,6 +204,14 @@ int command_list(const std::vector<std::string>& args, std::ostream& out,
           << (p.flags & FR_PARAM_ANIMATABLE ? ", animatable" : "") << "  " << p.description << "\n";
     }
     if (log_verbosity() == LogVerbosity::Verbose) describe_kernel(s, settings.render, out);
+  }
+  if (json) {
+    out << doc.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
+  } else if (shown == 0 && (!tags.empty() || !search_words.empty())) {
+    out << "\nno scene matches";
+    for (const std::string& t : tags) out << " --tag " << t;
+    if (!search_words.empty()) out << " --search '" << options.get("search").value_or("") << "'";
+    out << "\n";
   }
   // A plugin that did not load is a failure a script should see (the listing still shows the
   // rest).

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <vector>
 
 namespace fr {
 namespace {
@@ -30,6 +31,34 @@ std::optional<std::string> check_text(const char* field, const std::string& text
            std::to_string(cap);
   if (std::string problem = utf8_text_problem(text, multiline); !problem.empty())
     return std::string(field) + " is not clean text: " + problem;
+  return std::nullopt;
+}
+
+// Tags: space-separated words [a-z0-9][a-z0-9-]*, at most kMaxSceneTags, none twice.
+std::optional<std::string> check_tags(const std::string& tags) {
+  std::vector<std::string> seen;
+  size_t i = 0;
+  while (i < tags.size()) {
+    if (tags[i] == ' ') {
+      ++i;
+      continue;
+    }
+    size_t end = tags.find(' ', i);
+    if (end == std::string::npos) end = tags.size();
+    const std::string word = tags.substr(i, end - i);
+    const bool first_ok = (word[0] >= 'a' && word[0] <= 'z') || (word[0] >= '0' && word[0] <= '9');
+    bool rest_ok = true;
+    for (char c : word)
+      rest_ok = rest_ok && ((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-');
+    if (!first_ok || !rest_ok)
+      return "tag '" + printable(word) + "' must match [a-z0-9][a-z0-9-]* (tags are separated by spaces)";
+    for (const std::string& s : seen)
+      if (s == word) return "tag '" + word + "' appears twice";
+    seen.push_back(word);
+    if (seen.size() > kMaxSceneTags)
+      return "more than " + std::to_string(kMaxSceneTags) + " tags";
+    i = end;
+  }
   return std::nullopt;
 }
 
@@ -107,12 +136,15 @@ std::optional<std::string> check_scene_info(const SceneInfo& info) {
                {"author", info.author, kMaxLabelBytes, false},
                {"license", info.license, kMaxLabelBytes, false},
                {"description", info.description, kMaxDescriptionBytes, false},
+               {"tags", info.tags, kMaxLabelBytes, false},
+               {"credit", info.credit, kMaxLabelBytes, false},
                {"de_source", info.de_source, kMaxSourceBytes, true},
                {"de_source_name", info.de_source_name, kMaxLabelBytes, false},
                {"surface_source", info.surface_source, kMaxSourceBytes, true},
                {"surface_source_name", info.surface_source_name, kMaxLabelBytes, false}};
   for (const auto& t : texts)
     if (auto e = check_text(t.field, t.text, t.cap, t.multiline)) return scene + *e;
+  if (auto e = check_tags(info.tags)) return scene + *e;
   if (info.de_source.empty())
     return scene + "de_source is empty (expected OpenCL C defining scene_de)";
   if (!(info.bounding_radius > 0 && std::isfinite(info.bounding_radius)))

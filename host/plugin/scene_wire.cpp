@@ -86,7 +86,7 @@ fr_light read_light(WireReader& r) {
 void write_scene_info(WireWriter& w, const SceneInfo& info) {
   for (const std::string* s :
        {&info.id, &info.name, &info.version, &info.author, &info.license, &info.description,
-        &info.de_source, &info.de_source_name, &info.surface_source, &info.surface_source_name})
+        &info.tags, &info.credit, &info.de_source, &info.de_source_name, &info.surface_source, &info.surface_source_name})
     w.str(*s);
   w.u32(static_cast<uint32_t>(info.params.size()));
   for (const ParamInfo& p : info.params) {
@@ -112,6 +112,8 @@ bool read_scene_info(WireReader& r, SceneInfo* info) {
   s.author = r.str(kMaxLabelBytes);
   s.license = r.str(kMaxLabelBytes);
   s.description = r.str(kMaxDescriptionBytes);
+  s.tags = r.str(kMaxLabelBytes);
+  s.credit = r.str(kMaxLabelBytes);
   s.de_source = r.str(kMaxSourceBytes);
   s.de_source_name = r.str(kMaxLabelBytes);
   s.surface_source = r.str(kMaxSourceBytes);

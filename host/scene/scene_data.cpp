@@ -26,6 +26,20 @@ const char* param_type_name(fr_param_type type) {
   return "unknown";
 }
 
+std::vector<std::string> scene_tags(const SceneInfo& info) {
+  std::vector<std::string> words;
+  std::string word;
+  for (char c : info.tags + ' ') {
+    if (c != ' ') {
+      word += c;
+    } else if (!word.empty()) {
+      words.push_back(word);
+      word.clear();
+    }
+  }
+  return words;
+}
+
 int SceneInfo::find_param(const std::string& key) const {
   for (size_t i = 0; i < params.size(); ++i)
     if (params[i].key == key) return static_cast<int>(i);

@@ -32,6 +32,10 @@ struct ParamInfo {
 
 const char* param_type_name(fr_param_type type);
 
+struct SceneInfo;
+// The scene's tags as words, in the order it gave them (its family first).
+std::vector<std::string> scene_tags(const SceneInfo& info);
+
 // Why a camera cannot make rays (a non-finite value, fov outside (0, 180) degrees, target at the
 // eye), or nullopt when it can. An up vector that is zero or parallel to the view is fine: the
 // camera then uses a stable perpendicular (camera_up.hpp). Checked on a scene's default
@@ -45,6 +49,8 @@ struct SceneInfo {
   std::string author;
   std::string license;
   std::string description;
+  std::string tags;    // space-separated words, family first ("" when none); see scene_tags
+  std::string credit;  // who found the formula, where published ("" when not given)
   std::string de_source;
   std::string de_source_name;  // for compiler messages; "<id>.cl" when the plugin gave none
   std::string surface_source;  // empty: the host's material settings

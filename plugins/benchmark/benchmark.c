@@ -54,6 +54,8 @@ static const fr_scene_desc scene = {
         "A Mandelbulb and a Menger sponge on a reflective floor with spheres, two "
         "coloured lights and every effect on; `fractalis bench` flies its fixed route, "
         "config/paths/benchmark.toml.",
+    .tags = "showcase primitives lights reflections",
+    .credit = "The Fractalis developers (a composed benchmark scene)",
     .de_source = fr_de_source,
     .de_source_name = "benchmark.cl",
     .surface_source = fr_surface_source,

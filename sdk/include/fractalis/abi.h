@@ -37,6 +37,7 @@
  *
  * ABI 1.1 added: fr_host.host_name, host_version and get_extension; the host extension
  * FR_EXT_THREAD_LOG; fr_scene_entry.init, deinit and get_extension; fr_frame_state.light_stride.
+ * ABI 1.2 added: fr_scene_desc.tags and credit.
  */
 #ifndef FRACTALIS_ABI_H
 #define FRACTALIS_ABI_H
@@ -49,7 +50,7 @@ extern "C" {
 #endif
 
 #define FR_ABI_VERSION_MAJOR 1u
-#define FR_ABI_VERSION_MINOR 1u
+#define FR_ABI_VERSION_MINOR 2u
 
 /* Whether a struct that starts with struct_size, as the other side built it, has `field`:
  * a 1.1 plugin on a 1.0 host must not read fields the host does not have, e.g.

@@ -142,6 +142,16 @@ typedef struct fr_scene_desc {
   fr_create_fn create;   /* optional */
   fr_destroy_fn destroy; /* optional */
   fr_update_fn update;   /* optional */
+
+  /* ABI 1.2 (a 1.0 or 1.1 host ignores them; a plugin that sets them still loads there): */
+  /* Words that file the scene for browsing and `fractalis list --tag`: its family first, then
+   * its traits, space-separated, e.g. "box julia animated". Each word matches [a-z0-9][a-z0-9-]*;
+   * at most 16 words and 256 bytes. The in-tree families: bulb, box, kifs, kleinian,
+   * hypercomplex, ifs, kali, hybrid, showcase. May be null. */
+  const char* tags;
+  /* Who found the formula and where it was published, one line, e.g. "Tom Lowe, 'Amazing
+   * Box', fractalforums.com, 2010". At most 256 bytes; may be null (then `author` is all). */
+  const char* credit;
 } fr_scene_desc;
 
 #ifdef __cplusplus
