@@ -1,5 +1,5 @@
 /* fr/kifs.cl — Knighty's kaleidoscopic IFS (fractalforums.com, "Kaleidoscopic (escape time)
- * IFS", 2010) on the octahedron, the icosahedron and the dodecahedron.
+ * IFS", 2010) on the octahedron, the icosahedron, the dodecahedron and the tetrahedron.
  *
  * Each iteration folds the point into one chamber of the polyhedron's reflection group, rotates
  * it (Euler angles in radians about x, then y, then z) and scales it about the offset point:
@@ -36,17 +36,8 @@ inline vec3_t p_fold_icosahedral(vec3_t p) {
   return z;
 }
 
-/* Rotation by Euler angles (radians, one value for all lanes) about x, then y, then z; zero
- * angles cost nothing. */
-inline vec3_t p_rotate_xyz(vec3_t p, scalar_t angle_x, scalar_t angle_y, scalar_t angle_z) {
-  vec3_t q = p;
-  if (angle_x != 0) q = p_rotate_x(q, angle_x);
-  if (angle_y != 0) q = p_rotate_y(q, angle_y);
-  if (angle_z != 0) q = p_rotate_z(q, angle_z);
-  return q;
-}
-
-/* The KIFS iteration with the group's fold chosen by `group`: 0 octahedral, 1 icosahedral. */
+/* The KIFS iteration with the group's fold chosen by `group`: 0 octahedral, 1 icosahedral,
+ * 2 tetrahedral (p_fold_sierpinski: the chamber around (1, 1, 1)). */
 inline real_t kifs_iterate(vec3_t p, int group, int iterations, scalar_t scale, vec3_t offset,
                            scalar_t angle_x, scalar_t angle_y, scalar_t angle_z, real_t* trap) {
   vec3_t z = p;
@@ -59,7 +50,8 @@ inline real_t kifs_iterate(vec3_t p, int group, int iterations, scalar_t scale, 
   for (int i = 0; i < iterations; ++i) {
     mask_t live = r2 < bailout2;
     if (!any_lane(live)) break;
-    vec3_t q = group == 0 ? p_fold_menger(z) : p_fold_icosahedral(z);
+    vec3_t q = group == 0 ? p_fold_menger(z)
+               : (group == 1 ? p_fold_icosahedral(z) : p_fold_sierpinski(z));
     q = p_rotate_xyz(q, angle_x, angle_y, angle_z);
     q = v3_sub(v3_scale(q, to_real(scale)), v3_scale(offset, step));
     z = v3_select(live, q, z);
@@ -88,4 +80,11 @@ real_t de_kifs_icosahedron(vec3_t p, int iterations, scalar_t scale, vec3_t offs
 real_t de_kifs_dodecahedron(vec3_t p, int iterations, scalar_t scale, vec3_t offset,
                             scalar_t angle_x, scalar_t angle_y, scalar_t angle_z, real_t* trap) {
   return kifs_iterate(p, 1, iterations, scale, offset, angle_x, angle_y, angle_z, trap);
+}
+
+/* Offset (1, 1, 1), a tetrahedron's vertex: Sierpinski's tetrahedron at scale 2, and with
+ * rotations Knighty's twisted tetrahedral KIFS. */
+real_t de_kifs_tetrahedron(vec3_t p, int iterations, scalar_t scale, vec3_t offset,
+                           scalar_t angle_x, scalar_t angle_y, scalar_t angle_z, real_t* trap) {
+  return kifs_iterate(p, 2, iterations, scale, offset, angle_x, angle_y, angle_z, trap);
 }

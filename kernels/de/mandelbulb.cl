@@ -127,30 +127,69 @@ real_t de_mandelbulb(vec3_t p, float power, real_t bailout, int iterations, real
   return to_real(0.5) * log(safe_r) * r / dr;
 }
 
-/* The Mandelbulb's Julia set, the "Juliabulb" (after White and Nylander's bulb): z <- z^n + c
- * with a constant c and z starting at p. The derivative has no +1 (c does not depend on p):
- * dr <- n r^(n-1) dr, and the estimate is the same 0.5 r ln r / dr. Lanes stop at the bailout
- * and once r < 1e-4 (deep inside, where r^(n^k) would underflow into 0 / 0). */
-real_t de_juliabulb(vec3_t p, float power, vec3_t c, real_t bailout, int iterations,
-                    real_t* trap) {
+/* The bulb's variants on one loop: `julia` adds the constant c instead of p (the Juliabulb: dr
+ * then gets no +1, and lanes at the origin stop, where r ln r / dr is 0/0), `burning` folds z
+ * into the positive octant before each power (the Burning Ship's abs, Michelitsch and Rossler,
+ * 1992, applied to the bulb: an isometry on each side of the planes, so dr is unchanged).
+ * The Mandelbulb itself keeps its own loop above: it is the benchmark's hot path. */
+__attribute__((always_inline)) inline real_t bulb_iterate(vec3_t p, float power, vec3_t c,
+                                                          int julia, int burning, real_t bailout,
+                                                          int iterations, real_t* trap) {
   bool whole_power = power == rint(power) && power >= 1.0f && power <= 64.0f;
   int power_int = (int)power;
+  const vec3_t added = julia ? c : p;
+  const real_t dr_added = julia ? to_real(0) : to_real(1);
   vec3_t z = p;
   real_t dr = to_real(1);
   real_t r = v3_length(z);
   real_t orbit_min = r * r;
   for (int i = 0; i < iterations; ++i) {
-    mask_t live = (r < bailout) & (r > to_real(1e-4));
+    mask_t live = julia ? (r < bailout) & (r > to_real(1e-4)) : r < bailout;
     if (!any_lane(live)) break;
+    const vec3_t base = burning ? v3_abs(z) : z;
     real_t r_pow;
-    vec3_t next = whole_power ? mandelbulb_pow_int(z, r, power_int, &r_pow)
-                              : mandelbulb_pow_real(z, r, to_real(power), &r_pow);
-    dr = lane_select(live, to_real(power) * r_pow * dr, dr);
-    z = v3_select(live, v3_add(next, c), z);
+    vec3_t next = whole_power ? mandelbulb_pow_int(base, r, power_int, &r_pow)
+                              : mandelbulb_pow_real(base, r, to_real(power), &r_pow);
+    dr = lane_select(live, to_real(power) * r_pow * dr + dr_added, dr);
+    z = v3_select(live, v3_add(next, added), z);
     r = lane_select(live, v3_length(z), r);
     orbit_min = lane_select(live, fmin(orbit_min, r * r), orbit_min);
   }
   *trap = orbit_min;
   real_t safe_r = fmax(r, to_real(FR_SCALAR_EPSILON));
   return to_real(0.5) * log(safe_r) * r / fmax(dr, to_real(FR_SCALAR_MIN));
+}
+
+/* The Mandelbulb's Julia set: z <- z^n + c. */
+real_t de_juliabulb(vec3_t p, float power, vec3_t c, real_t bailout, int iterations,
+                    real_t* trap) {
+  return bulb_iterate(p, power, c, 1, 0, bailout, iterations, trap);
+}
+
+/* The burning bulb: z <- |z|^n + p, |z| taken coordinate by coordinate. */
+real_t de_burning_bulb(vec3_t p, float power, real_t bailout, int iterations, real_t* trap) {
+  return bulb_iterate(p, power, p, 0, 1, bailout, iterations, trap);
+}
+
+/* Doug Bristor's "Bristorbrot" (fractalforums.com, 2012): a quadratic triplex map without
+ * trigonometry, z <- (x^2 - y^2 - z^2, y (2x - z), z (2x + y)) + p, with the bulb's estimate
+ * (dr <- 2 r dr + 1; 0.5 r ln r / dr). */
+real_t de_bristorbrot(vec3_t p, real_t bailout, int iterations, real_t* trap) {
+  vec3_t z = p;
+  real_t dr = to_real(1);
+  real_t r = v3_length(z);
+  real_t orbit_min = r * r;
+  for (int i = 0; i < iterations; ++i) {
+    mask_t live = r < bailout;
+    if (!any_lane(live)) break;
+    const vec3_t next = v3(z.x * z.x - z.y * z.y - z.z * z.z, z.y * (2 * z.x - z.z),
+                           z.z * (2 * z.x + z.y));
+    dr = lane_select(live, 2 * r * dr + to_real(1), dr);
+    z = v3_select(live, v3_add(next, p), z);
+    r = lane_select(live, v3_length(z), r);
+    orbit_min = lane_select(live, fmin(orbit_min, r * r), orbit_min);
+  }
+  *trap = orbit_min;
+  real_t safe_r = fmax(r, to_real(FR_SCALAR_EPSILON));
+  return to_real(0.5) * log(safe_r) * r / dr;
 }

@@ -48,6 +48,16 @@ inline vec3_t p_rotate_z(vec3_t p, scalar_t angle) {
   return v3(c * p.x + s * p.y, -s * p.x + c * p.y, p.z);
 }
 
+/* Rotation by Euler angles (radians, one value for all lanes) about x, then y, then z; zero
+ * angles cost nothing. */
+inline vec3_t p_rotate_xyz(vec3_t p, scalar_t angle_x, scalar_t angle_y, scalar_t angle_z) {
+  vec3_t q = p;
+  if (angle_x != 0) q = p_rotate_x(q, angle_x);
+  if (angle_y != 0) q = p_rotate_y(q, angle_y);
+  if (angle_z != 0) q = p_rotate_z(q, angle_z);
+  return q;
+}
+
 /* Uniform scale by s > 0: evaluate d = shape(p_scale(p, s)) and return op_rescale(d, s), which
  * keeps the distance exact (a scaled shape's distances scale by s). */
 inline vec3_t p_scale(vec3_t p, scalar_t s) { return v3_scale(p, (real_t)(1 / s)); }
@@ -76,4 +86,24 @@ inline vec3_t p_bend(vec3_t p, scalar_t k) {
   real_t a = (real_t)k * p.x;
   real_t c = cos(a), s = sin(a);
   return v3(c * p.x - s * p.y, s * p.x + c * p.y, p.z);
+}
+
+/* Inversion in the sphere of squared radius radius2 about `center`: p -> center + (p - center)
+ * radius2 / |p - center|^2. It turns a shape inside out about the centre (a point of the shape's
+ * outside), mapping lengths near p by radius2 / |p - center|^2. */
+inline vec3_t p_invert_sphere(vec3_t p, vec3_t center, scalar_t radius2) {
+  const vec3_t d = v3_sub(p, center);
+  const real_t k = to_real(radius2) / fmax(v3_length2(d), to_real(1e-30));
+  return v3_add(center, v3_scale(d, k));
+}
+
+/* The distance bound at p for the inverted shape, from a lower bound `de` of the distance to the
+ * shape at p's image (p_invert_sphere) and rho = |p - center|. The ball of radius
+ * de rho^2 / (radius2 + de rho) about p maps into the ball of radius de about the image (its
+ * farthest image point lies radius2 delta / (rho (rho - delta)) from it), so that ball misses the
+ * inverted shape: an exact lower bound, not a first-order estimate. Inside (de < 0) the sign is
+ * what matters; the local scale rho^2 / radius2 serves. */
+inline real_t op_invert_de(real_t de, real_t rho, scalar_t radius2) {
+  return lane_select(de >= 0, de * rho * rho / (to_real(radius2) + de * rho),
+                     de * rho * rho / to_real(radius2));
 }

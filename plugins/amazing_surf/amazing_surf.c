@@ -20,10 +20,8 @@ enum {
   P_COUNT
 };
 
-static const fr_param_desc scale =
-    FR_FLOAT_PARAM("scale", "Scale", "Fractal",
-                   "z <- scale * fold(z) + p.", 2, -3,
-                   3, FR_PARAM_ANIMATABLE);
+static const fr_param_desc scale = FR_FLOAT_PARAM(
+    "scale", "Scale", "Fractal", "z <- scale * fold(z) + p.", 2, -3, 3, FR_PARAM_ANIMATABLE);
 static const fr_param_desc min_radius =
     FR_FLOAT_PARAM("min_radius", "Min radius", "Fractal",
                    "Inside it the sphere fold scales by (fixed / min)^2.", 0.3, 0.05, 1, 0);
@@ -33,8 +31,8 @@ static const fr_param_desc fixed_radius =
 static const fr_param_desc fold_limit = FR_FLOAT_PARAM(
     "fold_limit", "Fold limit", "Fractal", "The box fold reflects beyond +-limit.", 1, 0.25, 2, 0);
 static const fr_param_desc iterations =
-    FR_INT_PARAM("iterations", "Iterations", "Fractal", "Folds per evaluation; more is finer.",
-                 12, 4, 40, FR_PARAM_SPECIALIZE);
+    FR_INT_PARAM("iterations", "Iterations", "Fractal", "Folds per evaluation; more is finer.", 12,
+                 4, 40, FR_PARAM_SPECIALIZE);
 static const fr_param_desc color_near =
     FR_COLOR_PARAM("color_near", "Colour (deep orbits)", "Colour",
                    "Albedo where the orbit came close to the origin.", 0.86, 0.62, 0.36);
@@ -45,9 +43,9 @@ static const fr_param_desc color_contrast =
     FR_FLOAT_PARAM("color_contrast", "Colour contrast", "Colour",
                    "Exponent of the orbit-trap blend.", 1.5, 0.25, 8, 0);
 
-static const fr_param_desc* const params[P_COUNT] = {
-    &scale, &min_radius, &fixed_radius, &fold_limit, &iterations, &color_near, &color_far,
-    &color_contrast};
+static const fr_param_desc* const params[P_COUNT] = {&scale,      &min_radius,    &fixed_radius,
+                                                     &fold_limit, &iterations,    &color_near,
+                                                     &color_far,  &color_contrast};
 
 /* Above a corner of the sheet, looking across its lace to the far edge. */
 static const fr_camera camera = FR_CAMERA(5.0, -7.0, 5.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 50.0);
@@ -57,9 +55,9 @@ static const fr_light* const lights[] = {&key, &fill};
 
 /* Lowe's bound, as for the Mandelbox: x and y beyond 2 (|s| + 1) / (|s| - 1) escape, and so
  * does z (never folded, it only grows under the scale and the sphere fold, whose factor is at
- * least 1); the corner of that cube is sqrt(3) times as far. Scales with |s| <= 1.05 have no such bound:
- * the cube of 2 (|s| + 1) / 0.05 then stands in (the set is mostly empty or all of space there,
- * and the DE still bounds it). */
+ * least 1); the corner of that cube is sqrt(3) times as far. Scales with |s| <= 1.05 have no such
+ * bound: the cube of 2 (|s| + 1) / 0.05 then stands in (the set is mostly empty or all of space
+ * there, and the DE still bounds it). */
 static double bounding_radius(double s) {
   double a = fabs(s);
   double half_side = 2.0 * (a + 1.0) / fmax(a - 1.0, 0.05);
@@ -82,7 +80,8 @@ static const fr_scene_desc scene = {
     .license = "MIT",
     .description = "The Mandelbox folded in two axes only: a flat sheet of lace and arches.",
     .tags = "box folds surface",
-    .credit = "Kali (Pablo Roman Andrioli) and Tom Lowe's folds, 'Amazing Surf', fractalforums.com, 2010",
+    .credit =
+        "Kali (Pablo Roman Andrioli) and Tom Lowe's folds, 'Amazing Surf', fractalforums.com, 2010",
     .de_source = fr_de_source,
     .de_source_name = "amazing_surf.cl",
     .surface_source = fr_surface_source,

@@ -8,9 +8,8 @@ extern const char fr_surface_source[];
 
 enum { P_ITERATIONS, P_COLOR_NEAR, P_COLOR_FAR, P_COUNT };
 
-static const fr_param_desc iterations =
-    FR_INT_PARAM("iterations", "Level", "Fractal", "Recursion level.", 5, 1, 10,
-                 FR_PARAM_SPECIALIZE);
+static const fr_param_desc iterations = FR_INT_PARAM(
+    "iterations", "Level", "Fractal", "Recursion level.", 5, 1, 10, FR_PARAM_SPECIALIZE);
 static const fr_param_desc color_near =
     FR_COLOR_PARAM("color_near", "Colour (corners)", "Colour",
                    "Albedo of points that descended through corner cubes.", 0.85, 0.78, 0.62);
@@ -32,7 +31,8 @@ static const fr_scene_desc scene = {
     .version = "1.0.0",
     .author = "The Fractalis developers",
     .license = "MIT",
-    .description = "Eric Baird's Jerusalem cube: corner and edge cubes of two sizes, crosses cut through.",
+    .description =
+        "Eric Baird's Jerusalem cube: corner and edge cubes of two sizes, crosses cut through.",
     .tags = "ifs cube cross",
     .credit = "Eric Baird, 'The Jerusalem Cube', 2011",
     .de_source = fr_de_source,

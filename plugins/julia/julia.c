@@ -91,7 +91,9 @@ static const fr_scene_desc scene = {
     .license = "MIT",
     .description = "A 3D slice of the quaternion Julia set z <- z^2 + c.",
     .tags = "hypercomplex quaternion julia",
-    .credit = "Alan Norton, 'Generation and Display of Geometric Fractals in 3-D', SIGGRAPH 1982; DE after Hart, Sandin and Kauffman, 1989",
+    .credit =
+        "Alan Norton, 'Generation and Display of Geometric Fractals in 3-D', SIGGRAPH 1982; DE "
+        "after Hart, Sandin and Kauffman, 1989",
     .de_source = fr_de_source,
     .de_source_name = "julia.cl",
     .surface_source = fr_surface_source,

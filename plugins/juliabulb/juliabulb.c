@@ -19,12 +19,11 @@ enum {
   P_COUNT
 };
 
-static const fr_param_desc power =
-    FR_FLOAT_PARAM("power", "Power", "Fractal", "Exponent n of z <- z^n + c.", 8, 2, 16,
-                   FR_PARAM_ANIMATABLE);
-static const fr_param_desc c = FR_VEC3_PARAM(
-    "c", "Julia constant c", "Fractal", "The constant added each iteration.", -0.55, 0.45, -0.25,
-    -1.5, 1.5, FR_PARAM_ANIMATABLE);
+static const fr_param_desc power = FR_FLOAT_PARAM(
+    "power", "Power", "Fractal", "Exponent n of z <- z^n + c.", 8, 2, 16, FR_PARAM_ANIMATABLE);
+static const fr_param_desc c =
+    FR_VEC3_PARAM("c", "Julia constant c", "Fractal", "The constant added each iteration.", -0.55,
+                  0.45, -0.25, -1.5, 1.5, FR_PARAM_ANIMATABLE);
 static const fr_param_desc iterations =
     FR_INT_PARAM("iterations", "Iterations", "Fractal", "Maximum escape-time iterations.", 10, 1,
                  64, FR_PARAM_SPECIALIZE);
@@ -68,7 +67,8 @@ static const fr_scene_desc scene = {
     .version = "1.0.0",
     .author = "The Fractalis developers",
     .license = "MIT",
-    .description = "The Mandelbulb's Julia set: the bulb's power with a constant c, a new shape per c.",
+    .description =
+        "The Mandelbulb's Julia set: the bulb's power with a constant c, a new shape per c.",
     .tags = "bulb julia power",
     .credit = "Daniel White and Paul Nylander's Mandelbulb (2009), as a Julia set",
     .de_source = fr_de_source,

@@ -22,8 +22,8 @@ enum {
 };
 
 static const fr_param_desc scale = FR_FLOAT_PARAM(
-    "scale", "Scale", "Fractal", "Scale about the offset point each iteration (above 1).",
-    2.618, 1.2, 4, FR_PARAM_ANIMATABLE);
+    "scale", "Scale", "Fractal", "Scale about the offset point each iteration (above 1).", 2.618,
+    1.2, 4, FR_PARAM_ANIMATABLE);
 static const fr_param_desc offset =
     FR_VEC3_PARAM("offset", "Offset", "Fractal",
                   "The point the scale is taken about; a vertex gives the classic shape.", 0.0,
@@ -38,24 +38,22 @@ static const fr_param_desc angle_z =
     FR_FLOAT_PARAM("angle_z_deg", "Rotation z", "Fractal",
                    "Rotation about z after each fold, degrees.", 0, -180, 180, FR_PARAM_ANIMATABLE);
 static const fr_param_desc iterations =
-    FR_INT_PARAM("iterations", "Iterations", "Fractal", "Levels of the IFS; more is finer.", 10,
-                 2, 30, FR_PARAM_SPECIALIZE);
+    FR_INT_PARAM("iterations", "Iterations", "Fractal", "Levels of the IFS; more is finer.", 10, 2,
+                 30, FR_PARAM_SPECIALIZE);
 static const fr_param_desc color_near =
     FR_COLOR_PARAM("color_near", "Colour (inner)", "Colour",
                    "Albedo where the orbit came close to the centre.", 0.55, 0.8, 0.9);
-static const fr_param_desc color_far =
-    FR_COLOR_PARAM("color_far", "Colour (outer)", "Colour",
-                   "Albedo where the orbit stayed out.", 0.62, 0.3, 0.42);
+static const fr_param_desc color_far = FR_COLOR_PARAM(
+    "color_far", "Colour (outer)", "Colour", "Albedo where the orbit stayed out.", 0.62, 0.3, 0.42);
 static const fr_param_desc color_contrast =
     FR_FLOAT_PARAM("color_contrast", "Colour contrast", "Colour",
                    "Exponent of the orbit-trap blend.", 1, 0.25, 8, 0);
 
-static const fr_param_desc* const params[P_COUNT] = {
-    &scale, &offset, &angle_x, &angle_y, &angle_z, &iterations, &color_near, &color_far,
-    &color_contrast};
+static const fr_param_desc* const params[P_COUNT] = {&scale,      &offset,    &angle_x,
+                                                     &angle_y,    &angle_z,   &iterations,
+                                                     &color_near, &color_far, &color_contrast};
 
-static const fr_camera camera =
-    FR_CAMERA(2.3, 1.6, 2.8, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 45.0);
+static const fr_camera camera = FR_CAMERA(2.3, 1.6, 2.8, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 45.0);
 static const fr_light key = FR_DIRECTIONAL_LIGHT(-0.45, -0.85, -0.35, 1.0, 0.95, 0.88, 1.3);
 static const fr_light fill = FR_DIRECTIONAL_LIGHT(0.6, -0.2, 0.5, 0.4, 0.5, 0.7, 0.3);
 static const fr_light* const lights[] = {&key, &fill};
@@ -77,7 +75,8 @@ static const fr_scene_desc scene = {
     .version = "1.0.0",
     .author = "The Fractalis developers",
     .license = "MIT",
-    .description = "Knighty's kaleidoscopic IFS on the icosahedron: twelve copies of itself, and so on down.",
+    .description =
+        "Knighty's kaleidoscopic IFS on the icosahedron: twelve copies of itself, and so on down.",
     .tags = "kifs icosahedron",
     .credit = "Knighty, 'Kaleidoscopic (escape time) IFS', fractalforums.com, 2010",
     .de_source = fr_de_source,

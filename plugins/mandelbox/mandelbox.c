@@ -22,8 +22,8 @@ enum {
 
 static const fr_param_desc scale =
     FR_FLOAT_PARAM("scale", "Scale", "Fractal",
-                   "z <- scale * fold(z) + p; 2 is the classic box, -1.5 the spiky ball.", 2, -3,
-                   3, FR_PARAM_ANIMATABLE);
+                   "z <- scale * fold(z) + p; 2 is the classic box, -1.5 the spiky ball.", 2, -3, 3,
+                   FR_PARAM_ANIMATABLE);
 static const fr_param_desc min_radius =
     FR_FLOAT_PARAM("min_radius", "Min radius", "Fractal",
                    "Inside it the sphere fold scales by (fixed / min)^2.", 0.5, 0.05, 1, 0);
@@ -33,8 +33,8 @@ static const fr_param_desc fixed_radius =
 static const fr_param_desc fold_limit = FR_FLOAT_PARAM(
     "fold_limit", "Fold limit", "Fractal", "The box fold reflects beyond +-limit.", 1, 0.25, 2, 0);
 static const fr_param_desc iterations =
-    FR_INT_PARAM("iterations", "Iterations", "Fractal", "Folds per evaluation; more is finer.",
-                 14, 4, 40, FR_PARAM_SPECIALIZE);
+    FR_INT_PARAM("iterations", "Iterations", "Fractal", "Folds per evaluation; more is finer.", 14,
+                 4, 40, FR_PARAM_SPECIALIZE);
 static const fr_param_desc color_near =
     FR_COLOR_PARAM("color_near", "Colour (deep orbits)", "Colour",
                    "Albedo where the orbit came close to the origin.", 0.86, 0.62, 0.36);
@@ -45,9 +45,9 @@ static const fr_param_desc color_contrast =
     FR_FLOAT_PARAM("color_contrast", "Colour contrast", "Colour",
                    "Exponent of the orbit-trap blend.", 1.5, 0.25, 8, 0);
 
-static const fr_param_desc* const params[P_COUNT] = {
-    &scale, &min_radius, &fixed_radius, &fold_limit, &iterations, &color_near, &color_far,
-    &color_contrast};
+static const fr_param_desc* const params[P_COUNT] = {&scale,      &min_radius,    &fixed_radius,
+                                                     &fold_limit, &iterations,    &color_near,
+                                                     &color_far,  &color_contrast};
 
 /* The scale-2 box (half-side 6) from a corner, whole. */
 static const fr_camera camera = FR_CAMERA(15.0, 11.0, 17.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 50.0);

@@ -103,7 +103,9 @@ static const fr_scene_desc scene = {
     .description =
         "The power-n Mandelbulb: a 3D analogue of the Mandelbrot set built on spherical powers.",
     .tags = "bulb power animated",
-    .credit = "Daniel White and Paul Nylander, 'The Unravelling of the Real 3D Mandelbulb', skytopia.com, 2009",
+    .credit =
+        "Daniel White and Paul Nylander, 'The Unravelling of the Real 3D Mandelbulb', "
+        "skytopia.com, 2009",
     .de_source = fr_de_source,
     .de_source_name = "mandelbulb.cl",
     .surface_source = fr_surface_source,

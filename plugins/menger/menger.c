@@ -55,7 +55,9 @@ static const fr_scene_desc scene = {
     .license = "MIT",
     .description = "The Menger sponge by folding: a cube with ever smaller square tunnels.",
     .tags = "ifs sponge cube",
-    .credit = "Karl Menger, 'Dimensionstheorie', 1928; the fold form after Knighty, fractalforums.com, 2010",
+    .credit =
+        "Karl Menger, 'Dimensionstheorie', 1928; the fold form after Knighty, fractalforums.com, "
+        "2010",
     .de_source = fr_de_source,
     .de_source_name = "menger.cl",
     .surface_source = fr_surface_source,

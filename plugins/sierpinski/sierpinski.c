@@ -51,7 +51,9 @@ static const fr_scene_desc scene = {
     .license = "MIT",
     .description = "The Sierpinski tetrahedron by folding: four half-size copies, recursively.",
     .tags = "ifs tetrahedron",
-    .credit = "Waclaw Sierpinski, 1915 (the triangle); the tetrahedron by folding after Knighty, fractalforums.com, 2010",
+    .credit =
+        "Waclaw Sierpinski, 1915 (the triangle); the tetrahedron by folding after Knighty, "
+        "fractalforums.com, 2010",
     .de_source = fr_de_source,
     .de_source_name = "sierpinski.cl",
     .surface_source = fr_surface_source,

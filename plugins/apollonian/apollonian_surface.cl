@@ -1,0 +1,9 @@
+/* apollonian_surface.cl — colour by orbit trap. */
+#include "fr/palette.cl"
+
+surface_t scene_surface(vec3_t p, __constant const scene_params_t* params) {
+  real_t trap;
+  de_apollonian(p, PARAM(iterations), PARAM(inversion_k), PARAM(extent), &trap);
+  return surface_from_trap(trap, PARAM(color_near), PARAM(color_far),
+                           PARAM(color_contrast), 0);
+}

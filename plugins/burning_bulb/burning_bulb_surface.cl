@@ -1,0 +1,9 @@
+/* burning_bulb_surface.cl — colour by orbit trap. */
+#include "fr/palette.cl"
+
+surface_t scene_surface(vec3_t p, __constant const scene_params_t* params) {
+  real_t trap;
+  de_burning_bulb(p, PARAM(power), to_real(2), PARAM(iterations), &trap);
+  return surface_from_trap(trap, PARAM(color_near), PARAM(color_far),
+                           PARAM(color_contrast), 0);
+}

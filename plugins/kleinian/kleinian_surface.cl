@@ -1,0 +1,10 @@
+/* kleinian_surface.cl — colour by orbit trap. */
+#include "fr/palette.cl"
+
+surface_t scene_surface(vec3_t p, __constant const scene_params_t* params) {
+  real_t trap;
+  de_kleinian(p, PARAM(iterations), PARAM(trace_re), PARAM(trace_im), PARAM(box_x), PARAM(box_z),
+                     PARAM(extent), &trap);
+  return surface_from_trap(trap / 4, PARAM(color_near), PARAM(color_far),
+                           PARAM(color_contrast), 0);
+}

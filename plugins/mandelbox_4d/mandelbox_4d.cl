@@ -1,0 +1,8 @@
+/* mandelbox_4d.cl — the scene's DE: the library's 4D Mandelbox, sliced. */
+#include "fr/mandelbox.cl"
+
+real_t scene_de(vec3_t p, __constant const scene_params_t* params) {
+  real_t trap;
+  return de_mandelbox_4d(p, PARAM(slice_w), PARAM(iterations), PARAM(scale), PARAM(min_radius),
+                         PARAM(fixed_radius), PARAM(fold_limit), &trap);
+}

@@ -1,0 +1,9 @@
+/* sphereflake_surface.cl — colour by orbit trap: the level of the nearest sphere. */
+#include "fr/palette.cl"
+
+surface_t scene_surface(vec3_t p, __constant const scene_params_t* params) {
+  real_t trap;
+  de_sphereflake(p, PARAM(levels), PARAM(child_scale), &trap);
+  return surface_from_trap(trap, PARAM(color_near), PARAM(color_far),
+                           PARAM(color_contrast), 0.25);
+}
