@@ -167,6 +167,41 @@ TEST(DeLibrary, Folds) {
             {"p_rotate_xyz(p, 1.5707963267948966, 0, 0).z", {0, 1, 0}, -1},
             {"p_rotate_xyz(p, 0, 0, 0).x", {0.25f, 0, 0}, 0.25},
         });
+  // Inversion: a unit sphere about (3, 0, 0) inverted in the unit sphere is the sphere about
+  // (0.375, 0, 0) of radius 0.125 (the images of x = 2 and x = 4); on the axis the bound is the
+  // exact distance to it: 0.5 from (1, 0, 0), 0 from its point (0.5, 0, 0).
+  check("fr/operators.cl",
+        {
+            {"p_invert_sphere(p, v3s(0, 0, 0), 4).x", {1, 0, 0}, 4},
+            {"p_invert_sphere(p, v3s(0, 0, 0), 4).x", {2, 0, 0}, 2},
+            {"p_invert_sphere(p, v3s(1, 0, 0), 1).y", {1, 0.5f, 0}, 2},
+            {"({ vec3_t q = p_invert_sphere(p, v3s(0, 0, 0), 1); "
+             "op_invert_de(v3_length(v3_sub(q, v3s(3, 0, 0))) - 1, v3_length(p), 1); })",
+             {1, 0, 0},
+             0.5},
+            {"({ vec3_t q = p_invert_sphere(p, v3s(0, 0, 0), 1); "
+             "op_invert_de(v3_length(v3_sub(q, v3s(3, 0, 0))) - 1, v3_length(p), 1); })",
+             {0.5f, 0, 0},
+             0},
+        });
+  // Cantor dust, one level at scale 3: the nearest corner cube is [1/3, 1]^3 (by hand: from
+  // (2, 0, 0) the offsets are 1, 1/3, 1/3; from the centre, the corner (1/3, 1/3, 1/3)).
+  check("fr/cantor.cl",
+        {
+            {"({ real_t t; de_cantor_dust(p, 1, 3, &t); })", {2, 0, 0}, std::sqrt(1 + 2.0 / 9)},
+            {"({ real_t t; de_cantor_dust(p, 1, 3, &t); })", {0, 0, 0}, kSqrt3 / 3},
+            {"({ real_t t; de_cantor_dust(p, 2, 3, &t); })", {2, 0, 0}, std::sqrt(1 + 2.0 / 9)},
+        });
+  // The sphereflake along an axis: its chain of spheres reaches 1 + 2k / (1 - k) = 2 for
+  // k = 1/3, so from (0, 3, 0) the distance is 1 at every depth (the last level's bounding ball
+  // touches the same point). The tree's trunk from below: 1 - width.
+  check("fr/recursive.cl",
+        {
+            {"({ real_t t; de_sphereflake(p, 1, 1.0f / 3, &t); })", {0, 3, 0}, 1},
+            {"({ real_t t; de_sphereflake(p, 4, 1.0f / 3, &t); })", {0, 3, 0}, 1},
+            {"({ real_t t; de_sphereflake(p, 4, 1.0f / 3, &t); })", {0, 0, 0}, -1},
+            {"({ real_t t; de_pythagoras_tree(p, 3, 0.5f, 0.7f, 0.1f, &t); })", {0, -1, 0}, 0.9},
+        });
   // The sphere fold: inside the minimum radius scale by (fixed/min)^2 (here 4).
   check("fr/folds.cl",
         {{"({ real_t dr = 1; vec3_t q = p_fold_sphere(p, 0.5f, 1, &dr); q.x * 10 + dr; })",
@@ -185,7 +220,9 @@ TEST(DeLibrary, GuideListsEverySignature) {
   // Helpers the library uses internally, not meant for scenes.
   const std::set<std::string> internal = {"pow_int",          "unit_complex_pow_int",
                                           "mandelbulb_pow_int", "mandelbulb_pow_real",
-                                          "mandelbox_iterate",  "kifs_iterate"};
+                                          "mandelbox_iterate",  "kifs_iterate",
+                                          "bulb_iterate",       "kleinian_separation",
+                                          "mandelbrot_distance_bound"};
   size_t found = 0;
   for (const auto& entry :
        std::filesystem::directory_iterator(std::string(SOURCE_DIR) + "/kernels/de")) {

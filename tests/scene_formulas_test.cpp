@@ -19,6 +19,7 @@
 
 #include <array>
 #include <cmath>
+#include <complex>
 #include <functional>
 #include <random>
 #include <sstream>
@@ -370,6 +371,331 @@ TEST(SceneFormulas, JerusalemCubeNeverExceedsTheExactDistance) {
   }
   // A lower bound of zero would pass the check above: most points must be within 2x.
   EXPECT_GE(tight, outside * 9 / 10) << tight << " of " << outside;
+}
+
+
+// Knighty's pseudo-Kleinian, written out: box fold, inversion where |z|^2 < k, + offset; the tube
+// max(rxy - r, |rxy z| / |z|) over the scale product, times the library's 3/4, cut to the ball.
+double pseudo_kleinian(Vec p, int iterations, Vec box, double k, Vec offset, double tube,
+                       double extent) {
+  Vec z = p;
+  double product = 1;
+  for (int i = 0; i < iterations; ++i) {
+    for (int c = 0; c < 3; ++c) z[c] = 2 * std::clamp(z[c], -box[c], box[c]) - z[c];
+    const double f = std::max(k / std::max(dot(z, z), 1e-20), 1.0);
+    z = add(scale(z, f), offset);
+    product *= f;
+  }
+  const double rxy = std::hypot(z[0], z[1]);
+  const double to_tube = std::max(rxy - tube, std::abs(rxy * z[2]) / length(z));
+  return std::max(0.75 * to_tube / product, length(p) - extent);
+}
+
+// The kernel receives vec3 parameters as floats: the box's half-sides (0.92436, ...) are rounded
+// to float here too, since the folds amplify a 1e-8 difference in them to 1e-5 near the surface.
+TEST(SceneFormulas, PseudoKleinian) {
+  Scene s = load("pseudo_kleinian");
+  auto as_float = [](double x) { return static_cast<double>(static_cast<float>(x)); };
+  for (double k : {1.0, 1.3}) {
+    s.set("inversion_k", k);
+    const Vec box = {as_float(s.get("box_size", 0)), as_float(s.get("box_size", 1)),
+                     as_float(s.get("box_size", 2))};
+    const Vec offset = {s.get("offset", 0), s.get("offset", 1), s.get("offset", 2)};
+    expect_matches(
+        s, random_points(4, 400, 11),
+        [&](const Vec& p) {
+          return pseudo_kleinian(p, static_cast<int>(s.get("iterations")), box, k, offset,
+                                 as_float(s.get("tube_radius")), s.get("extent"));
+        },
+        "pseudo_kleinian k " + std::to_string(k));
+  }
+}
+
+// Jos Leys' Kleinian group in the Maskit slice, written out from his description: wrap x (in the
+// frame sheared by b / a) and z into their periods, turn half-way about (-b/2, a/2) above the
+// separation line, then apply a: z -> -z / |z|^2, x -> -b - x, y -> a + y; stop on a two-cycle.
+double kleinian(Vec p, int iterations, double a, double b, double box_x, double box_z,
+                double extent) {
+  auto wrap = [](double x, double half) { return x - 2 * half * std::floor((x + half) / (2 * half)); };
+  Vec z = p, last = add(p, {1, 1, 1}), before_last = sub(p, {1, 1, 1});
+  double product = 1;
+  const double f = b > 0 ? 1 : (b < 0 ? -1 : 0);
+  for (int i = 0; i < iterations; ++i) {
+    z[0] += b / a * z[1];
+    z[0] = wrap(z[0], box_x);
+    z[2] = wrap(z[2], box_z);
+    z[0] -= b / a * z[1];
+    const double u = z[0] + b / 2;
+    const double line = a / 2 + f * (2 * a - 1.95) / 4 * (u > 0 ? 1 : (u < 0 ? -1 : 0)) *
+                                    (1 - std::exp(-(7.2 - (1.95 - a) * 15) * std::abs(u)));
+    if (z[1] >= line) z = sub({-b, a, 0}, z);
+    const double inv = 1 / std::max(dot(z, z), 1e-20);
+    z = scale(z, -inv);
+    z[0] = -b - z[0];
+    z[1] = a + z[1];
+    product *= inv;
+    const Vec d = sub(z, before_last);
+    if (dot(d, d) < 1e-5) break;
+    before_last = last;
+    last = z;
+  }
+  const double y = std::min(z[1], a - z[1]);
+  return std::max(0.25 * std::min(y, 0.3) / std::max(product, 2.0), length(p) - extent);
+}
+
+TEST(SceneFormulas, Kleinian) {
+  Scene s = load("kleinian");
+  for (double b : {0.0112785606117658, 0.0}) {
+    s.set("trace_im", b);
+    expect_matches(
+        s, random_points(2.5, 400, 12),
+        [&](const Vec& p) {
+          return kleinian(p, static_cast<int>(s.get("iterations")), s.get("trace_re"), b,
+                          s.get("box_x"), s.get("box_z"), s.get("extent"));
+        },
+        "kleinian b " + std::to_string(b));
+  }
+}
+
+// The Apollonian network: mirror cells, inversion in the sphere of squared radius k.
+double apollonian(Vec p, int iterations, double k, double extent) {
+  Vec z = p;
+  double product = 1;
+  for (int i = 0; i < iterations; ++i) {
+    for (double& c : z) c = -1 + 2 * (0.5 * c + 0.5 - std::floor(0.5 * c + 0.5));
+    const double f = k / std::max(dot(z, z), 1e-20);
+    z = scale(z, f);
+    product *= f;
+  }
+  return std::max(0.25 * std::abs(z[1]) / product, length(p) - extent);
+}
+
+TEST(SceneFormulas, Apollonian) {
+  Scene s = load("apollonian");
+  for (double k : {1.3, 1.12}) {
+    s.set("inversion_k", k);
+    expect_matches(
+        s, random_points(2.6, 400, 13),
+        [&](const Vec& p) {
+          return apollonian(p, static_cast<int>(s.get("iterations")), k, s.get("extent"));
+        },
+        "apollonian k " + std::to_string(k));
+  }
+}
+
+// The Tetrabrot through std::complex: u = x + i (y - z), w = x + i (y + z), each iterated as a
+// Mandelbrot point with its derivative, Koebe's bound (1 - e^(-2G)) |z| 2^n / (4 |z'|) for each,
+// combined as sqrt((b_u^2 + b_w^2) / 2).
+double mandelbrot_bound(std::complex<double> c, int iterations) {
+  std::complex<double> z = c, dz = 1;
+  double two_n = 1;
+  for (int i = 0; i < iterations && std::norm(z) < 65536.0 * 65536.0; ++i) {
+    dz = 2.0 * z * dz + 1.0;
+    z = z * z + c;
+    two_n *= 2;
+  }
+  if (std::norm(z) < 4) return 0;
+  const double g = std::log(std::abs(z)) / two_n;
+  return -std::expm1(-2 * g) * std::abs(z) * two_n / (4 * std::abs(dz));
+}
+
+TEST(SceneFormulas, Tetrabrot) {
+  Scene s = load("tetrabrot");
+  const int n = static_cast<int>(s.get("iterations"));
+  expect_matches(
+      s, random_points(2.2, 400, 14),
+      [&](const Vec& p) {
+        const double bu = mandelbrot_bound({p[0], p[1] - p[2]}, n);
+        const double bw = mandelbrot_bound({p[0], p[1] + p[2]}, n);
+        return std::sqrt(0.5 * (bu * bu + bw * bw));
+      },
+      "tetrabrot");
+}
+
+// The Tetrabrot's bound never exceeds the true distance: on the real axis (y = z = 0) both
+// complex points are x itself, and the Mandelbrot set's real part is [-2, 1/4], so from x > 1/4
+// the distance is at most x - 1/4 (the set's point 1/4 lies on the slice).
+TEST(SceneFormulas, TetrabrotIsABound) {
+  Scene s = load("tetrabrot");
+  ASSERT_TRUE(s.scene);
+  std::vector<std::array<float, 3>> points;
+  for (float x : {0.3f, 0.5f, 1.0f, 2.0f, 2.8f}) points.push_back({x, 0, 0});
+  const auto got = probe_de(test::runtime(), s.scene->info, s.values, points, 1,
+                            Precision::Double);
+  for (size_t i = 0; i < points.size(); ++i) {
+    EXPECT_LE(got[i], points[i][0] - 0.25 + 1e-9) << "x = " << points[i][0];
+    // Not zero either: a fifth of the distance from x = 1 on (near the cusp at 1/4 the escape
+    // is parabolic and the bound weak).
+    if (points[i][0] >= 1) EXPECT_GT(got[i], 0.2 * (points[i][0] - 0.25)) << "x = " << points[i][0];
+  }
+}
+
+// The cubic quaternion Julia set through a general quaternion product (q q q), p = x + y i + z j
+// + w k.
+double cubic_julia(Vec p, double w, Quaternion c, double bailout, int iterations) {
+  Quaternion q = {p[0], p[1], p[2], w};
+  double dr = 1, r = norm(q);
+  for (int i = 0; i < iterations && r < bailout && r > 1e-4; ++i) {
+    dr = 3 * r * r * dr;
+    q = multiply(multiply(q, q), q);
+    for (int k = 0; k < 4; ++k) q[k] += c[k];
+    r = norm(q);
+  }
+  return 0.5 * r * std::log(r) / dr;
+}
+
+TEST(SceneFormulas, QuaternionCubicJulia) {
+  Scene s = load("quaternion_cubic_julia");
+  for (double w : {0.0, 0.3}) {
+    s.set("slice_w", w);
+    const Quaternion c = {s.get("c", 0), s.get("c", 1), s.get("c", 2), s.get("c_w")};
+    expect_matches(
+        s, random_points(1.6, 400, 15),
+        [&](const Vec& p) {
+          return cubic_julia(p, w, c, 4, static_cast<int>(s.get("iterations")));
+        },
+        "quaternion_cubic_julia w " + std::to_string(w));
+  }
+}
+
+// Kali's Kalibox, written out: rotate, |z| + t, sphere fold factor clamp(max(m / r^2, m), 0, 1)
+// times scale / m, + c; Rrrola's estimate.
+double kalibox(Vec p, int iterations, double s, double m, Vec t, Vec c) {
+  Vec z = p;
+  double dr = 1;
+  for (int i = 0; i < iterations && dot(z, z) < 1e10; ++i) {
+    for (int k = 0; k < 3; ++k) z[k] = std::abs(z[k]) + t[k];
+    const double f = std::clamp(std::max(m / std::max(dot(z, z), 1e-30), m), 0.0, 1.0);
+    z = add(scale(z, f * s / m), c);
+    dr = dr * f * std::abs(s) / m + 1;
+  }
+  return (length(z) - std::abs(s - 1)) / dr - std::pow(std::abs(s), 1 - iterations);
+}
+
+TEST(SceneFormulas, Kalibox) {
+  Scene s = load("kalibox");
+  const Vec t = {s.get("translation", 0), s.get("translation", 1), s.get("translation", 2)};
+  const Vec c = {s.get("c", 0), s.get("c", 1), s.get("c", 2)};
+  expect_matches(
+      s, random_points(3, 400, 16),
+      [&](const Vec& p) {
+        return kalibox(p, static_cast<int>(s.get("iterations")), s.get("scale"),
+                       s.get("min_radius2"), t, c);
+      },
+      "kalibox");
+}
+
+// Cantor dust against the exact distance to its 64 level-2 cubes, found by trying every one.
+TEST(SceneFormulas, CantorDustIsTheExactDistanceToItsCubes) {
+  Scene s = load("cantor_dust");
+  s.set("iterations", 2);
+  std::vector<Box> cubes;
+  for (int i = 0; i < 64; ++i) {
+    Vec centre{};
+    for (int c = 0; c < 3; ++c) {
+      const int outer = (i >> c) & 1, inner = (i >> (c + 3)) & 1;
+      centre[c] = (outer ? 2.0 : -2.0) / 3 + (inner ? 2.0 : -2.0) / 9;
+    }
+    cubes.push_back({centre, 1.0 / 9});
+  }
+  expect_matches(
+      s, random_points(1.5, 400, 17),
+      [&](const Vec& p) {
+        double d = 1e300;
+        for (const Box& b : cubes) d = std::min(d, box_distance(p, b));
+        return d;
+      },
+      "cantor_dust");
+}
+
+// The sphereflake and the Pythagoras tree against the min over every sphere (every branch) of
+// their first levels, with the last level's bounding balls, found by trying each: the folds'
+// one-child-per-level walk must give the same.
+struct Ball {
+  Vec centre;
+  double radius;
+};
+
+TEST(SceneFormulas, SphereflakeIsTheNearestOfAllItsSpheres) {
+  Scene s = load("sphereflake");
+  const int levels = 3;
+  s.set("levels", levels);
+  const double k = s.get("child_scale");
+  std::vector<Ball> balls = {{{0, 0, 0}, 1}};
+  std::vector<Ball> generation = balls;
+  for (int level = 1; level <= levels; ++level) {
+    std::vector<Ball> next;
+    for (const Ball& b : generation)
+      for (int axis = 0; axis < 3; ++axis)
+        for (double sign : {-1.0, 1.0}) {
+          Vec centre = b.centre;
+          centre[axis] += sign * b.radius * (1 + k);
+          next.push_back({centre, b.radius * k});
+        }
+    generation = next;
+    for (const Ball& b : next)
+      balls.push_back({b.centre, level == levels ? b.radius * (1 + 2 * k / (1 - k)) : b.radius});
+  }
+  ASSERT_EQ(balls.size(), 1u + 6 + 36 + 216);
+  expect_matches(
+      s, random_points(2.2, 400, 18),
+      [&](const Vec& p) {
+        double d = 1e300;
+        for (const Ball& b : balls) d = std::min(d, length(sub(p, b.centre)) - b.radius);
+        return d;
+      },
+      "sphereflake");
+}
+
+double capsule_distance(Vec p, Vec a, Vec b, double r) {
+  const Vec pa = sub(p, a), ba = sub(b, a);
+  const double h = std::clamp(dot(pa, ba) / dot(ba, ba), 0.0, 1.0);
+  return length(sub(pa, scale(ba, h))) - r;
+}
+
+TEST(SceneFormulas, PythagorasTreeIsTheNearestOfAllItsBranches) {
+  Scene s = load("pythagoras_tree");
+  const int levels = 3;
+  s.set("levels", levels);
+  const double k = s.get("child_scale"), width = s.get("width");
+  const double tilt = s.get("tilt_deg") * std::acos(-1.0) / 180;
+  struct Branch {
+    Vec base, up, side;  // up: the branch's axis (its length), side: a unit normal to it
+    double size;
+  };
+  std::vector<Branch> generation = {{{0, 0, 0}, {0, 1, 0}, {1, 0, 0}, 1}};
+  std::vector<std::pair<Branch, bool>> all = {{generation[0], false}};
+  for (int level = 1; level <= levels; ++level) {
+    std::vector<Branch> next;
+    for (const Branch& b : generation) {
+      const Vec top = add(b.base, scale(b.up, b.size));
+      const Vec axis = scale(b.up, 1 / length(b.up));
+      const Vec side1 = b.side, side2 = {axis[1] * side1[2] - axis[2] * side1[1],
+                                          axis[2] * side1[0] - axis[0] * side1[2],
+                                          axis[0] * side1[1] - axis[1] * side1[0]};
+      for (const Vec& side : {side1, side2, scale(side1, -1), scale(side2, -1)}) {
+        const Vec up = add(scale(axis, std::cos(tilt)), scale(side, std::sin(tilt)));
+        const Vec new_side = sub(scale(side, std::cos(tilt)), scale(axis, std::sin(tilt)));
+        next.push_back({top, up, new_side, b.size * k});
+      }
+    }
+    generation = next;
+    for (const Branch& b : next) all.push_back({b, level == levels});
+  }
+  ASSERT_EQ(all.size(), 1u + 4 + 16 + 64);
+  const double reach = 1 / (1 - k) + width;
+  expect_matches(
+      s, random_points(2.5, 400, 19),
+      [&](const Vec& p) {
+        double d = 1e300;
+        for (const auto& [b, last] : all) {
+          d = std::min(d, last ? length(sub(p, b.base)) - reach * b.size
+                               : capsule_distance(p, b.base, add(b.base, scale(b.up, b.size)),
+                                                  width * b.size));
+        }
+        return d;
+      },
+      "pythagoras_tree");
 }
 
 }  // namespace
