@@ -22,7 +22,10 @@ static_assert(offsetof(fr_scene_entry, struct_size) == 8);
 static_assert(offsetof(fr_scene_entry, scene) == 16);
 
 static_assert(sizeof(fr_value) == 24);
-static_assert(sizeof(fr_param_desc) == 120);
+// 1.0 ended at 120; 1.2 added choices and choice_count.
+static_assert(sizeof(fr_param_desc) == 136);
+static_assert(offsetof(fr_param_desc, choices) == 120);
+static_assert(offsetof(fr_param_desc, choice_count) == 128);
 static_assert(offsetof(fr_param_desc, key) == 16);
 static_assert(offsetof(fr_param_desc, default_value) == 48);
 static_assert(offsetof(fr_param_desc, max_value) == 96);

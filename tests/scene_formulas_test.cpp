@@ -526,7 +526,9 @@ TEST(SceneFormulas, TetrabrotIsABound) {
     EXPECT_LE(got[i], points[i][0] - 0.25 + 1e-9) << "x = " << points[i][0];
     // Not zero either: a fifth of the distance from x = 1 on (near the cusp at 1/4 the escape
     // is parabolic and the bound weak).
-    if (points[i][0] >= 1) EXPECT_GT(got[i], 0.2 * (points[i][0] - 0.25)) << "x = " << points[i][0];
+    if (points[i][0] >= 1) {
+      EXPECT_GT(got[i], 0.2 * (points[i][0] - 0.25)) << "x = " << points[i][0];
+    }
   }
 }
 

@@ -25,6 +25,7 @@ std::string format_value(const ParamInfo& p, const fr_value& v) {
     return s;
   };
   if (p.type == FR_PARAM_BOOL) return v.v[0] != 0 ? "true" : "false";
+  if (p.type == FR_PARAM_CHOICE) return p.choice_name(v);
   if (p.component_count() == 1) return num(v.v[0]);
   return num(v.v[0]) + "," + num(v.v[1]) + "," + num(v.v[2]);
 }
@@ -94,6 +95,7 @@ bool matches(const SceneInfo& s, const std::vector<std::string>& tags,
 
 nlohmann::json value_json(const ParamInfo& p, const fr_value& v) {
   if (p.type == FR_PARAM_BOOL) return v.v[0] != 0;
+  if (p.type == FR_PARAM_CHOICE) return p.choice_name(v);
   if (p.type == FR_PARAM_INT) return static_cast<long long>(v.v[0]);
   if (p.component_count() == 1) return v.v[0];
   return nlohmann::json::array({v.v[0], v.v[1], v.v[2]});
@@ -101,7 +103,7 @@ nlohmann::json value_json(const ParamInfo& p, const fr_value& v) {
 
 nlohmann::json scene_json(const SceneInfo& s, const std::filesystem::path& file) {
   nlohmann::json params = nlohmann::json::array();
-  for (const ParamInfo& p : s.params)
+  for (const ParamInfo& p : s.params) {
     params.push_back({{"key", p.key},
                       {"name", p.name},
                       {"group", p.group},
@@ -112,6 +114,8 @@ nlohmann::json scene_json(const SceneInfo& s, const std::filesystem::path& file)
                       {"max", value_json(p, p.max_value)},
                       {"compiled_in", p.specialized()},
                       {"animatable", (p.flags & FR_PARAM_ANIMATABLE) != 0}});
+    if (p.type == FR_PARAM_CHOICE) params.back()["choices"] = p.choices;
+  }
   const fr_camera& c = s.camera;
   return {{"id", s.id},
           {"name", s.name},
@@ -197,9 +201,20 @@ int command_list(const std::vector<std::string>& args, std::ostream& out,
     if (!s.author.empty() || !s.license.empty())
       out << "  by " << s.author << ", " << s.license << "\n";
     for (const auto& p : s.params) {
+      std::string range = " in [";
+      range += format_value(p, p.min_value);
+      range += ", ";
+      range += format_value(p, p.max_value);
+      range += "]";
+      if (p.type == FR_PARAM_CHOICE) {
+        range = " of ";
+        for (size_t c = 0; c < p.choices.size(); ++c) {
+          if (c) range += "|";
+          range += p.choices[c];
+        }
+      }
       out << "  --param " << p.key << "=" << format_value(p, p.default_value) << "  "
-          << param_type_name(p.type) << " in [" << format_value(p, p.min_value) << ", "
-          << format_value(p, p.max_value) << "]"
+          << param_type_name(p.type) << range
           << (p.flags & FR_PARAM_SPECIALIZE ? ", compiled in" : "")
           << (p.flags & FR_PARAM_ANIMATABLE ? ", animatable" : "") << "  " << p.description << "\n";
     }

@@ -201,6 +201,21 @@ fr_value parse_param_value(const ParamInfo& p, const std::string& assignment,
       else
         throw UsageError(what + ": expected true or false for bool parameter '" + p.key + "'");
       return v;
+    case FR_PARAM_CHOICE: {
+      // By name only: an index would silently mean something else when the scene reorders.
+      const int index = p.choice_index(text);
+      if (index < 0) {
+        std::string names;
+        for (const std::string& c : p.choices) {
+          if (!names.empty()) names += ", ";
+          names += c;
+        }
+        throw UsageError(what + ": '" + printable(text) + "' is not a value of '" + p.key +
+                         "' (one of: " + names + ")");
+      }
+      v.v[0] = index;
+      return v;
+    }
     case FR_PARAM_INT:
       v.v[0] =
           static_cast<double>(parse_integer(what, text, static_cast<long long>(p.min_value.v[0]),

@@ -62,6 +62,22 @@ std::optional<fr_value> param_value(const toml::node& n, const ParamInfo& p, std
       }
       v.v[0] = *n.value<bool>() ? 1 : 0;
       return v;
+    case FR_PARAM_CHOICE: {
+      // A name, never an index (as on the command line).
+      const auto name = n.value<std::string>();
+      const int index = name ? p.choice_index(*name) : -1;
+      if (index < 0) {
+        std::string names;
+        for (const std::string& c : p.choices) {
+          if (!names.empty()) names += ", ";
+          names += c;
+        }
+        *why = "expected one of the names " + names;
+        return std::nullopt;
+      }
+      v.v[0] = index;
+      return v;
+    }
     case FR_PARAM_INT: {
       auto x = number(n);
       if (!x || *x != std::floor(*x)) {
@@ -292,6 +308,9 @@ std::string format_camera_path(const CameraPath& path, const SceneInfo& scene) {
         case FR_PARAM_INT:
           text = fmt::format("{}", static_cast<long long>(v.v[0]));
           break;
+        case FR_PARAM_CHOICE:
+          text = fmt::format("\"{}\"", p.choice_name(v));
+          break;
         case FR_PARAM_FLOAT:
           text = fmt::format("{}", v.v[0]);
           break;
@@ -345,7 +364,8 @@ PathSample sample_camera_path(const CameraPath& path, const SceneInfo& scene, do
       const double a = k1.params[p].v[c], b = k2.params[p].v[c];
       double v = (1 - u) * a + u * b;
       if (info.type == FR_PARAM_INT) v = std::round(v);
-      if (info.type == FR_PARAM_BOOL) v = u < 1 ? a : b;
+      // A bool or a choice switches at the next keyframe: there is nothing between two names.
+      if (info.type == FR_PARAM_BOOL || info.type == FR_PARAM_CHOICE) v = u < 1 ? a : b;
       s.params[p].v[c] = v;
     }
   }

@@ -156,6 +156,24 @@ DescriptorCopy copy_descriptor(const fr_scene_entry* entry,
     param.default_value = p.default_value;
     param.min_value = p.min_value;
     param.max_value = p.max_value;
+    if (p.type == FR_PARAM_CHOICE) {
+      // Counted before the table is read; each name copied within its cap.
+      if (p.choice_count == 0 || p.choice_count > kMaxChoices)
+        return invalid(where + ": choice_count " + std::to_string(p.choice_count) +
+                       " is not in 1.." + std::to_string(kMaxChoices));
+      if (!p.choices) return invalid(where + ": choices is null but choice_count > 0");
+      for (uint32_t c = 0; c < p.choice_count; ++c) {
+        if (!p.choices[c]) return invalid(where + ": choice " + std::to_string(c) + " is null");
+        std::string name;
+        if (!copy_string(p.choices[c], kMaxIdBytes, &name))
+          return invalid(where + ": choice " + std::to_string(c) + " is longer than " +
+                         std::to_string(kMaxIdBytes) + " bytes");
+        param.choices.push_back(std::move(name));
+      }
+    } else if (p.choices || p.choice_count || p.reserved2) {
+      return invalid(where + ": choices, choice_count and reserved2 must be null and 0 unless "
+                     "the type is choice");
+    }
     info.params.push_back(std::move(param));
   }
 

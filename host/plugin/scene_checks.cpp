@@ -92,9 +92,9 @@ std::optional<std::string> check_param_info(const ParamInfo& p, size_t index) {
   if (auto e = check_text("group", p.group, kMaxLabelBytes, false)) return where + ": " + *e;
   if (auto e = check_text("description", p.description, kMaxDescriptionBytes, false))
     return where + ": " + *e;
-  if (p.type < FR_PARAM_FLOAT || p.type > FR_PARAM_COLOR)
+  if (p.type < FR_PARAM_FLOAT || p.type > FR_PARAM_CHOICE)
     return where + ": type " + std::to_string(p.type) +
-           " is not one of float, int, bool, vec3, color";
+           " is not one of float, int, bool, vec3, color, choice";
   if (p.flags & ~fr_param_flags{FR_PARAM_ANIMATABLE | FR_PARAM_SPECIALIZE | FR_PARAM_LOG_SCALE})
     return where + ": unknown flag bits " + std::to_string(p.flags);
   if ((p.flags & FR_PARAM_SPECIALIZE) && (p.flags & FR_PARAM_ANIMATABLE))
@@ -107,9 +107,8 @@ std::optional<std::string> check_param_info(const ParamInfo& p, size_t index) {
       return where + ": needs finite min <= default <= max, got min " +
              describe_value(p.min_value, n) + ", default " + describe_value(p.default_value, n) +
              ", max " + describe_value(p.max_value, n);
-    if ((p.type == FR_PARAM_INT || p.type == FR_PARAM_BOOL) &&
-        (lo != std::floor(lo) || def != std::floor(def) || hi != std::floor(hi)))
-      return where + ": int and bool limits must be whole numbers";
+    if (p.whole() && (lo != std::floor(lo) || def != std::floor(def) || hi != std::floor(hi)))
+      return where + ": int, bool and choice limits must be whole numbers";
     if (p.type == FR_PARAM_INT && (lo < -2147483648.0 || hi > 2147483647.0))
       return where + ": int limits must fit in 32 bits";
   }
@@ -117,6 +116,24 @@ std::optional<std::string> check_param_info(const ParamInfo& p, size_t index) {
     return where + ": a bool's min must be 0 and max 1";
   if ((p.flags & FR_PARAM_LOG_SCALE) && !(p.min_value.v[0] > 0))
     return where + ": LOG_SCALE needs min > 0";
+  if (p.type == FR_PARAM_CHOICE) {
+    if (p.choices.empty() || p.choices.size() > kMaxChoices)
+      return where + ": a choice needs 1 to " + std::to_string(kMaxChoices) + " names";
+    for (size_t c = 0; c < p.choices.size(); ++c) {
+      if (!is_identifier(p.choices[c], false))
+        return where + ": choice name '" + printable(p.choices[c]) +
+               "' must match [a-z][a-z0-9_]* (at most 63 bytes)";
+      for (size_t d = 0; d < c; ++d)
+        if (p.choices[d] == p.choices[c])
+          return where + ": choice name '" + p.choices[c] + "' appears twice";
+    }
+    if (p.min_value.v[0] != 0 || p.max_value.v[0] != static_cast<double>(p.choices.size() - 1))
+      return where + ": a choice's min must be 0 and max its number of names minus 1 (" +
+             std::to_string(p.choices.size() - 1) + ")";
+    if (p.flags & FR_PARAM_LOG_SCALE) return where + ": a choice cannot be LOG_SCALE";
+  } else if (!p.choices.empty()) {
+    return where + ": only a choice has names";
+  }
   return std::nullopt;
 }
 

@@ -20,6 +20,7 @@ constexpr size_t kMaxDescriptionBytes = 4096;  // descriptions
 constexpr size_t kMaxSourceBytes = 1 << 20;    // OpenCL sources
 constexpr uint32_t kMaxSceneParams = 256;
 constexpr size_t kMaxSceneTags = 16;
+constexpr uint32_t kMaxChoices = 64;  // values of one choice parameter
 
 // Why `info` breaks a rule ("parameter 2 'scale': needs finite min <= default <= max ..."), or
 // nullopt when it keeps them all. Messages start with "scene '<id>': " once the id is known.

@@ -64,7 +64,7 @@ void clamp_params(const SceneInfo& info, std::vector<fr_value>& values) {
     for (int c = 0; c < p.component_count(); ++c) {
       double v = values[i].v[c];
       if (!std::isfinite(v)) v = p.default_value.v[c];
-      if (p.type == FR_PARAM_INT || p.type == FR_PARAM_BOOL) v = std::round(v);
+      if (p.whole()) v = std::round(v);
       values[i].v[c] = std::clamp(v, p.min_value.v[c], p.max_value.v[c]);
     }
   }

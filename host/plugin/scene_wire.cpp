@@ -96,6 +96,8 @@ void write_scene_info(WireWriter& w, const SceneInfo& info) {
     write_value(w, p.default_value);
     write_value(w, p.min_value);
     write_value(w, p.max_value);
+    w.u32(static_cast<uint32_t>(p.choices.size()));
+    for (const std::string& c : p.choices) w.str(c);
   }
   w.u64(info.features);
   write_camera(w, info.camera);
@@ -131,6 +133,9 @@ bool read_scene_info(WireReader& r, SceneInfo* info) {
     p.default_value = read_value(r);
     p.min_value = read_value(r);
     p.max_value = read_value(r);
+    const uint32_t choice_count = r.u32();
+    if (r.failed() || choice_count > kMaxChoices) return false;
+    for (uint32_t c = 0; c < choice_count; ++c) p.choices.push_back(r.str(kMaxIdBytes));
     s.params.push_back(std::move(p));
   }
   s.features = r.u64();

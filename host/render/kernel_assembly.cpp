@@ -139,6 +139,7 @@ void append_params(std::ostringstream& out, const SceneInfo& info,
         break;
       case FR_PARAM_INT:
       case FR_PARAM_BOOL:
+      case FR_PARAM_CHOICE:
         out << "  int " << p.key << ";\n";
         break;
       default:
@@ -160,6 +161,7 @@ void append_params(std::ostringstream& out, const SceneInfo& info,
           break;
         case FR_PARAM_INT:
         case FR_PARAM_BOOL:
+        case FR_PARAM_CHOICE:
           out << "(" << static_cast<long long>(v.v[0]) << ")";
           break;
         default:
@@ -173,6 +175,7 @@ void append_params(std::ostringstream& out, const SceneInfo& info,
           break;
         case FR_PARAM_INT:
         case FR_PARAM_BOOL:
+        case FR_PARAM_CHOICE:
           out << "(params->" << p.key << ")";
           break;
         default:
@@ -181,6 +184,8 @@ void append_params(std::ostringstream& out, const SceneInfo& info,
       }
     }
     out << "\n";
+    for (size_t c = 0; c < p.choices.size(); ++c)
+      out << "#define FR_CHOICE_" << p.key << "_" << p.choices[c] << " " << c << "\n";
   }
 }
 
@@ -335,7 +340,7 @@ std::vector<uint8_t> pack_scene_params(const SceneInfo& info, const std::vector<
   for (size_t i = 0; i < info.params.size(); ++i) {
     const ParamInfo& p = info.params[i];
     if (p.specialized()) continue;
-    if (p.type == FR_PARAM_INT || p.type == FR_PARAM_BOOL) {
+    if (p.whole()) {
       int32_t v = static_cast<int32_t>(values[i].v[0]);
       push(&v);
     } else {

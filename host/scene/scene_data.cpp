@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace fr {
@@ -22,6 +23,8 @@ const char* param_type_name(fr_param_type type) {
       return "vec3";
     case FR_PARAM_COLOR:
       return "color";
+    case FR_PARAM_CHOICE:
+      return "choice";
   }
   return "unknown";
 }
@@ -38,6 +41,18 @@ std::vector<std::string> scene_tags(const SceneInfo& info) {
     }
   }
   return words;
+}
+
+std::string ParamInfo::choice_name(const fr_value& v) const {
+  if (type != FR_PARAM_CHOICE || choices.empty()) return "";
+  const double i = std::clamp(std::round(v.v[0]), 0.0, static_cast<double>(choices.size() - 1));
+  return choices[static_cast<size_t>(i)];
+}
+
+int ParamInfo::choice_index(const std::string& name) const {
+  for (size_t i = 0; i < choices.size(); ++i)
+    if (choices[i] == name) return static_cast<int>(i);
+  return -1;
 }
 
 int SceneInfo::find_param(const std::string& key) const {

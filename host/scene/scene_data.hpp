@@ -25,8 +25,17 @@ struct ParamInfo {
   fr_value default_value{};
   fr_value min_value{};
   fr_value max_value{};
+  std::vector<std::string> choices;  // FR_PARAM_CHOICE: the names of its values, by index
 
   int component_count() const { return type == FR_PARAM_VEC3 || type == FR_PARAM_COLOR ? 3 : 1; }
+  // Whole-number types (int, bool, choice): an int in the kernel, rounded when clamped.
+  bool whole() const {
+    return type == FR_PARAM_INT || type == FR_PARAM_BOOL || type == FR_PARAM_CHOICE;
+  }
+  // The name of a choice value (its index clamped into range), or "" for other types.
+  std::string choice_name(const fr_value& v) const;
+  // The index of a choice's name, or -1.
+  int choice_index(const std::string& name) const;
   bool specialized() const { return (flags & FR_PARAM_SPECIALIZE) != 0; }
 };
 

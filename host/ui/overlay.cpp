@@ -42,6 +42,21 @@ bool edit_param(const ParamInfo& p, fr_value& v) {
       if (changed) v.v[0] = i;
       break;
     }
+    case FR_PARAM_CHOICE: {
+      const std::string current = p.choice_name(v);
+      if (ImGui::BeginCombo(label, current.c_str())) {
+        for (size_t c = 0; c < p.choices.size(); ++c) {
+          const bool selected = p.choices[c] == current;
+          if (ImGui::Selectable(p.choices[c].c_str(), selected) && !selected) {
+            v.v[0] = static_cast<double>(c);
+            changed = true;
+          }
+          if (selected) ImGui::SetItemDefaultFocus();
+        }
+        ImGui::EndCombo();
+      }
+      break;
+    }
     case FR_PARAM_BOOL: {
       bool b = v.v[0] != 0;
       changed = ImGui::Checkbox(label, &b);

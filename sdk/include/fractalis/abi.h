@@ -37,7 +37,8 @@
  *
  * ABI 1.1 added: fr_host.host_name, host_version and get_extension; the host extension
  * FR_EXT_THREAD_LOG; fr_scene_entry.init, deinit and get_extension; fr_frame_state.light_stride.
- * ABI 1.2 added: fr_scene_desc.tags and credit.
+ * ABI 1.2 added: fr_scene_desc.tags and credit; FR_PARAM_CHOICE with fr_param_desc.choices and
+ * choice_count; FR_SCENE_ENTRY_V1_2.
  */
 #ifndef FRACTALIS_ABI_H
 #define FRACTALIS_ABI_H

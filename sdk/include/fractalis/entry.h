@@ -60,6 +60,12 @@ typedef struct fr_scene_entry {
   FR_ENTRY_DECL_;                 \
   FR_ENTRY_DECL_ = {              \
       FR_ABI_VERSION_MAJOR, 0, sizeof(fr_scene_entry), 0, (scene_ptr), NULL, NULL, NULL}
+/* FR_SCENE_ENTRY_V1_2(&scene): uses what ABI 1.2 added to the descriptor that a 1.1 host could
+ * not read right (FR_PARAM_CHOICE), so it needs a 1.2 host. Tags and credit alone do not: a 1.1
+ * host ignores them. */
+#define FR_SCENE_ENTRY_V1_2(scene_ptr) \
+  FR_ENTRY_DECL_;                      \
+  FR_ENTRY_DECL_ = {FR_ABI_VERSION_MAJOR, 2, sizeof(fr_scene_entry), 0, (scene_ptr), NULL, NULL, NULL}
 #define FR_SCENE_ENTRY_V1_1(scene_ptr, init_fn, deinit_fn, extension_fn)                       \
   FR_ENTRY_DECL_;                                                                              \
   FR_ENTRY_DECL_ = {                                                                           \

@@ -35,6 +35,17 @@
 #define FR_COLOR_PARAM(key, name, group, desc, r, g, b) \
   FR_PARAM_DESC_(FR_PARAM_COLOR, key, name, group, desc, 0, r, g, b, 0, 0, 0, 1, 1, 1)
 
+/* A choice among named values (ABI 1.2): `names_` a static array of strings, `def` the index of
+ * the default. Declare the scene with FR_SCENE_ENTRY_V1_2, since a 1.1 host does not know it. */
+#define FR_CHOICE_PARAM(key_, name_, group_, desc_, def, names_, flags_)                           \
+  {                                                                                                \
+    .struct_size = sizeof(fr_param_desc), .type = FR_PARAM_CHOICE, .flags = (flags_),               \
+    .reserved = 0, .key = (key_), .name = (name_), .group = (group_), .description = (desc_),       \
+    .default_value = {{(def), 0, 0}}, .min_value = {{0, 0, 0}},                                     \
+    .max_value = {{(double)(sizeof(names_) / sizeof((names_)[0])) - 1, 0, 0}}, .choices = (names_), \
+    .choice_count = (uint32_t)(sizeof(names_) / sizeof((names_)[0])), .reserved2 = 0               \
+  }
+
 /* The number of elements of a static array, for fr_scene_desc.param_count and .light_count, so a
  * count can never disagree with its table. */
 #define FR_ARRAY_COUNT(array) ((uint32_t)(sizeof(array) / sizeof((array)[0])))

@@ -20,13 +20,17 @@ extern "C" {
  *   FR_PARAM_INT    int
  *   FR_PARAM_BOOL   int, 0 or 1
  *   FR_PARAM_VEC3   vec3_t, the same value in every lane
- *   FR_PARAM_COLOR  vec3_t, linear RGB in [0, 1] */
+ *   FR_PARAM_COLOR  vec3_t, linear RGB in [0, 1]
+ *   FR_PARAM_CHOICE int, the index of one of the parameter's named values (ABI 1.2); the kernel
+ *                   also gets FR_CHOICE_<key>_<name> for each name, so a scene compares
+ *                   PARAM(step) == FR_CHOICE_step_box_fold rather than a bare number */
 typedef uint32_t fr_param_type;
 #define FR_PARAM_FLOAT 1u
 #define FR_PARAM_INT 2u
 #define FR_PARAM_BOOL 3u
 #define FR_PARAM_VEC3 4u
 #define FR_PARAM_COLOR 5u
+#define FR_PARAM_CHOICE 6u /* ABI 1.2: needs a 1.2 host (FR_SCENE_ENTRY_V1_2) */
 
 /* Parameter flags, OR-ed together. */
 typedef uint32_t fr_param_flags;
@@ -61,6 +65,15 @@ typedef struct fr_param_desc {
   fr_value default_value;
   fr_value min_value;
   fr_value max_value;
+
+  /* ABI 1.2. For FR_PARAM_CHOICE: the names of its values, choice_count of them (1 to 64), each
+   * [a-z][a-z0-9_]* and at most 63 bytes, none twice. The value is an index: min 0, max
+   * choice_count - 1, and the default one of them. Users see and type only the names (the
+   * overlay's combo box, --param key=name, path files). Null and 0 for every other type.
+   * [plugin-owned] */
+  const char* const* choices;
+  uint32_t choice_count;
+  uint32_t reserved2; /* zero */
 } fr_param_desc;
 
 #ifdef __cplusplus
