@@ -112,6 +112,20 @@ class Checker {
         "'" + info.id + "' " + info.version + ": " + std::to_string(info.params.size()) +
             " parameters, " + std::to_string(info.lights.size()) + " lights; every rule kept");
     defaults_ = make_default_state(info);
+    if (options_.preset) {
+      // Every check then starts from the preset, and its bounding radius is the one the scene's
+      // update derives from the preset's values.
+      const std::vector<std::string> problems = apply_preset(*options_.preset, info, defaults_);
+      std::string error;
+      auto instance = problems.empty() ? SceneInstance::create(scene_, &error) : nullptr;
+      if (!problems.empty() || !instance || !instance->update(defaults_, 0, &error)) {
+        report_.rows.back() = {"descriptor", CheckStatus::Fail,
+                               "preset '" + options_.preset->id +
+                                   "': " + (problems.empty() ? error : problems.front())};
+        return false;
+      }
+      report_.rows.back().detail += "; at preset '" + options_.preset->id + "'";
+    }
     return true;
   }
 

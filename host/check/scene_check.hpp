@@ -27,6 +27,7 @@
 #pragma once
 
 #include "check/check_report.hpp"
+#include "path/preset.hpp"
 #include "plugin/plugin_policy.hpp"
 #include "worker/render_worker.hpp"
 #include "render/render_settings.hpp"
@@ -44,6 +45,8 @@ struct CheckOptions {
   // Surface closer than DE(p) / (1 + tol) to p: pass when at most 1% of the tested points have
   // it, fail above 5%.
   double overestimate_tolerance = 0.1;
+  // Checks the scene at this preset's values and view instead of its defaults (check --preset).
+  std::optional<Preset> preset;
 };
 
 CheckReport check_scene_plugin(const std::filesystem::path& file, const CheckOptions& options,

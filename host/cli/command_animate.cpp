@@ -150,7 +150,7 @@ void render_frame(AnimateJob& job, const ParsedOptions& options, RenderWorker& r
   const PathSample sample = sample_camera_path(job.path, info, t);
   p.state.camera = sample.camera;
   p.state.params = sample.params;
-  apply_scene_overrides(info, options, p.state);  // --param and the like hold for every frame
+  apply_scene_overrides(info, options, p.state, p.preset);  // they hold for every frame
   p.state.time_s = t;
   p.state.frame_index = static_cast<uint64_t>(i);
   update_scene(p, t);

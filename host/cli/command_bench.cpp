@@ -114,7 +114,7 @@ BenchReport run_bench(BenchJob& job, const ParsedOptions& options) {
           sample_camera_path(*job.path, p.scene->info, job.path->start_s() + time_s);
       p.state.camera = sample.camera;
       p.state.params = sample.params;
-      apply_scene_overrides(p.scene->info, options, p.state);
+      apply_scene_overrides(p.scene->info, options, p.state, p.preset);
     }
     update_scene(p, time_s);
     renderer.render(p.scene->info, p.state, p.render);

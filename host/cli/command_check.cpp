@@ -20,6 +20,9 @@ int command_check(const std::vector<std::string>& args, std::ostream& out, std::
       config_option_spec(),
       {"set", "KEY=VALUE", true, "any setting, as in config/default.toml (repeatable)"},
       {"device", "SEL", false, "OpenCL device: gpu, cpu, P:D or part of its name"},
+      {"preset", "NAME", false,
+       "check at this preset's values and view (from the presets/ folder beside the plugin or "
+       "the plugin folders)"},
       {"help", nullptr, false, "show this help"},
   };
   // The plugin file comes first; the options after it.
@@ -31,7 +34,7 @@ int command_check(const std::vector<std::string>& args, std::ostream& out, std::
   }
   auto options = parse_options("check", rest, specs);
   if (options.has("help")) {
-    out << "usage: fractalis check PLUGIN.so [--json FILE] [--device SEL]\n\n"
+    out << "usage: fractalis check PLUGIN.so [--json FILE] [--device SEL] [--preset NAME]\n\n"
            "Runs the conformance checks on a scene plugin (in a scene-host process, so a crash "
            "is a\nfinding): descriptor rules, DE builds, DE values (finite, Lipschitz, never "
            "longer than\nthe distance to the surface, bounded, the same at every lane width and "
@@ -47,6 +50,11 @@ int command_check(const std::vector<std::string>& args, std::ostream& out, std::
   CheckOptions check;
   check.policy = settings.plugins;
   check.render = render_settings_from(settings, options);
+  if (options.has("preset")) {
+    std::vector<std::filesystem::path> folders = {file->parent_path()};
+    for (const auto& f : plugin_folders(settings, options)) folders.push_back(f);
+    check.preset = preset_option(options, folders);
+  }
   // Every kernel of the plugin compiles and runs in a render worker: a DE that crashes it fails
   // the check it was in, and the next check starts a fresh worker.
   RenderWorker worker(choose_device(settings, options),

@@ -1,6 +1,7 @@
 #include "cli/commands.hpp"
 #include "cli/scene_options.hpp"
 #include "io/log.hpp"
+#include "io/echo.hpp"
 #include "io/printable.hpp"
 #include "plugin/scene_instance.hpp"
 #include "render/kernel_assembly.hpp"
@@ -151,8 +152,8 @@ int command_list(const std::vector<std::string>& args, std::ostream& out,
   if (options.has("help")) {
     out << "usage: fractalis list [--tag TAG] [--search WORDS] [--json] [--plugins DIR] "
            "[--verbose]\n\nLists every scene plugin found: id, family and tags, credit, "
-           "parameters with their ranges, or why\nit failed to load. Exits 1 when a plugin "
-           "failed to load. With --verbose (-v), also what each\nscene's kernel compiles in: "
+           "parameters with their ranges, presets, or why\nit failed to load. Exits 1 when a plugin "
+           "or a preset failed to load. With --verbose (-v), also what each\nscene's kernel compiles in: "
            "stages, DE library files, parameters baked in as constants.\n\n"
         << format_options(specs);
     return 0;
@@ -170,8 +171,32 @@ int command_list(const std::vector<std::string>& args, std::ostream& out,
     for (const auto& f : folders) out << "plugin folder: " << f.string() << "\n";
   bool any_failed = false;
   size_t shown = 0;
-  nlohmann::json doc = {{"scenes", nlohmann::json::array()}, {"failed", nlohmann::json::array()}};
-  for (const auto& o : load_scene_folder(folders, settings.plugins)) {
+  nlohmann::json doc = {{"scenes", nlohmann::json::array()},
+                        {"failed", nlohmann::json::array()},
+                        {"failed_presets", nlohmann::json::array()}};
+  // Presets: each checked against its scene's table; one that does not fit (or whose scene is
+  // missing) is reported as a failure, like a plugin that does not load.
+  std::vector<PresetProblem> preset_problems;
+  const std::vector<Preset> presets = load_presets(folders, &preset_problems);
+  std::set<std::string> scene_ids;
+  const auto outcomes = load_scene_folder(folders, settings.plugins);
+  for (const auto& o : outcomes)
+    if (o.scene) scene_ids.insert(o.scene->info.id);
+  for (const Preset& preset : presets)
+    if (!scene_ids.count(preset.scene_id))
+      preset_problems.push_back({preset.file, preset.file.string() + ": preset '" + preset.id +
+                                                  "' is for scene '" + echo(preset.scene_id) +
+                                                  "', which is not there"});
+  for (const auto& o : outcomes) {
+    if (!o.scene) continue;
+    for (const Preset& preset : presets) {
+      if (preset.scene_id != o.scene->info.id) continue;
+      SceneState state = make_default_state(o.scene->info);
+      for (const std::string& problem : apply_preset(preset, o.scene->info, state))
+        preset_problems.push_back({preset.file, problem});
+    }
+  }
+  for (const auto& o : outcomes) {
     if (!o.scene) {
       any_failed = true;
       if (json) {
@@ -188,8 +213,16 @@ int command_list(const std::vector<std::string>& args, std::ostream& out,
     const SceneInfo& s = o.scene->info;
     if (!matches(s, tags, search_words)) continue;
     ++shown;
+    nlohmann::json scene_presets = nlohmann::json::array();
+    for (const Preset& preset : presets)
+      if (preset.scene_id == s.id)
+        scene_presets.push_back({{"id", preset.id},
+                                 {"name", preset.name},
+                                 {"description", preset.description},
+                                 {"file", preset.file.string()}});
     if (json) {
       doc["scenes"].push_back(scene_json(s, o.file));
+      doc["scenes"].back()["presets"] = scene_presets;
       continue;
     }
     out << "\n"
@@ -218,7 +251,19 @@ int command_list(const std::vector<std::string>& args, std::ostream& out,
           << (p.flags & FR_PARAM_SPECIALIZE ? ", compiled in" : "")
           << (p.flags & FR_PARAM_ANIMATABLE ? ", animatable" : "") << "  " << p.description << "\n";
     }
+    for (const auto& preset : scene_presets)
+      out << "  --preset " << preset["id"].get<std::string>() << "  "
+          << preset["name"].get<std::string>()
+          << (preset["description"].get<std::string>().empty() ? "" : ": ")
+          << preset["description"].get<std::string>() << "\n";
     if (log_verbosity() == LogVerbosity::Verbose) describe_kernel(s, settings.render, out);
+  }
+  for (const PresetProblem& problem : preset_problems) {
+    any_failed = true;
+    if (json)
+      doc["failed_presets"].push_back({{"file", problem.file.string()}, {"message", problem.message}});
+    else
+      out << "\npreset FAILED: " << printable(problem.message) << "\n";
   }
   if (json) {
     out << doc.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";

@@ -101,11 +101,10 @@ SweepJob plan_job(ParsedOptions& options) {
   SweepJob job;
   job.frames =
       static_cast<int>(parse_integer("--frames", options.get("frames").value_or("9"), 1, 1000));
-  const std::string scene_id = options.get("scene").value_or("mandelbulb");
-  job.out_dir = options.get("out").value_or("sweep-" + scene_id);
-  if (job.out_dir.empty()) throw UsageError("--out: empty folder name");
   job.cache_dir = options.get("cache").value_or(default_cache_dir().string());
   job.p = prepare_scene(options);
+  job.out_dir = options.get("out").value_or("sweep-" + job.p.scene->info.id);
+  if (job.out_dir.empty()) throw UsageError("--out: empty folder name");
   check_memory(job.p.render, job.p.device, true);
   std::vector<std::string> knobs = knob_names(job.p.scene->info);
   if (auto list = options.get("knobs")) {

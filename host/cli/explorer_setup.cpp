@@ -33,7 +33,8 @@ ExplorerSetup prepare_explorer(ParsedOptions options) {
     else
       spdlog::debug("{}", e.to_string());
   }
-  const std::string scene_id = options.get("scene").value_or("mandelbulb");
+  const std::optional<Preset> preset = preset_option(options, folders);
+  const std::string scene_id = scene_id_option(options, preset);
   if (x.library->find(scene_id) < 0) {
     std::vector<std::string> available;
     for (const auto& slot : x.library->slots()) available.push_back(slot.scene->info.id);
@@ -41,7 +42,7 @@ ExplorerSetup prepare_explorer(ParsedOptions options) {
   }
   x.explorer = std::make_unique<Explorer>(x.settings, *x.worker, *x.library, scene_id);
   const SceneInfo& info = x.explorer->current().scene->info;
-  apply_scene_overrides(info, options, x.explorer->current().state);
+  apply_scene_overrides(info, options, x.explorer->current().state, preset);
   if (auto file = options.get("path")) {  // explore --path: play it from the start
     PathRecorder& recorder = x.explorer->path();
     recorder.scene_id = info.id;

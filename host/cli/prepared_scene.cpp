@@ -44,11 +44,12 @@ PreparedScene prepare_scene(const ParsedOptions& options, int max_side) {
   if (folders.empty())
     throw std::runtime_error("no plugin folder found (build the plugins, or pass --plugins DIR)");
   const auto outcomes = load_plugins(folders, p.settings.plugins);
-  p.scene = find_scene(outcomes, options.get("scene").value_or("mandelbulb"));
+  p.preset = preset_option(options, folders);
+  p.scene = find_scene(outcomes, scene_id_option(options, p.preset));
   p.state = make_default_state(p.scene->info);
   if (auto t = options.get("time")) p.state.time_s = parse_finite("--time", *t);
   if (auto file = options.get("path")) apply_camera_path(p.scene->info, *file, options, p.state);
-  apply_scene_overrides(p.scene->info, options, p.state);
+  apply_scene_overrides(p.scene->info, options, p.state, p.preset);
   p.device = choose_device(p.settings, options);
   if (p.render.precision == Precision::Double && !p.device.has_fp64)
     throw UsageError("--precision double: device " + p.device.name + " has no double precision");

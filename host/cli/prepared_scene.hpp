@@ -20,6 +20,7 @@ struct PreparedScene {
   // Renders on `device` in a render worker process (started on first use), each sample within
   // render.watchdog_s.
   std::unique_ptr<RenderWorker> worker;
+  std::optional<Preset> preset;  // --preset, applied again wherever the overrides are
 };
 
 // Settings, plugins (failures logged as warnings), scene (--scene, default mandelbulb), overrides,

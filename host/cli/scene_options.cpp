@@ -37,6 +37,9 @@ std::vector<OptionSpec> scene_option_specs() {
       {"up", "X,Y,Z", false,
        "camera up direction (default: the scene's); parallel to the view: a stable perpendicular"},
       {"fov", "DEG", false, "horizontal field of view in degrees, (0, 180)"},
+      {"preset", "NAME", false,
+       "start from a preset (values and view; `fractalis list` shows them); --scene may be left "
+       "out"},
       {"param", "KEY=VALUE", true, "set a scene parameter (repeatable); vec3 as x,y,z"},
       {"time", "SECONDS", false, "scene time for the update callback (default 0)"},
       {"lanes", "1|4|8|16", false, "rays per work-item (default: 16 on CPUs, 1 on GPUs)"},
@@ -239,7 +242,44 @@ fr_value parse_param_value(const ParamInfo& p, const std::string& assignment,
 
 }  // namespace
 
-void apply_scene_overrides(const SceneInfo& info, const ParsedOptions& options, SceneState& state) {
+std::optional<Preset> preset_option(const ParsedOptions& options,
+                                    const std::vector<std::filesystem::path>& folders) {
+  const auto id = options.get("preset");
+  if (!id) return std::nullopt;
+  std::vector<PresetProblem> problems;
+  const std::vector<Preset> presets = load_presets(folders, &problems);
+  if (auto found = find_preset(presets, *id)) return found;
+  for (const PresetProblem& p : problems)
+    if (p.file.stem().string() == *id) throw UsageError("--preset " + echo(*id) + ": " + p.message);
+  std::string names;
+  for (const Preset& p : presets) {
+    if (!names.empty()) names += ", ";
+    names += p.id;
+  }
+  throw UsageError("--preset: no preset '" + echo(*id) + "' (there are: " +
+                   (names.empty() ? std::string("none") : names) + ")");
+}
+
+std::string scene_id_option(const ParsedOptions& options, const std::optional<Preset>& preset) {
+  const auto scene = options.get("scene");
+  if (preset && scene && *scene != preset->scene_id)
+    throw UsageError("--preset " + preset->id + " is for scene '" + preset->scene_id +
+                     "', not --scene " + echo(*scene));
+  if (preset) return preset->scene_id;
+  return scene.value_or("mandelbulb");
+}
+
+void apply_scene_overrides(const SceneInfo& info, const ParsedOptions& options, SceneState& state,
+                           const std::optional<Preset>& preset) {
+  if (preset) {
+    const std::vector<std::string> problems = apply_preset(*preset, info, state);
+    if (!problems.empty()) {
+      std::string message = "--preset " + preset->id + ": " + problems.front();
+      if (problems.size() > 1)
+        message += " (and " + std::to_string(problems.size() - 1) + " more)";
+      throw UsageError(message);
+    }
+  }
   if (auto it = options.values.find("param"); it != options.values.end()) {
     for (const std::string& assignment : it->second) {
       auto eq = assignment.find('=');

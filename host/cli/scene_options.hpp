@@ -5,6 +5,7 @@
 
 #include "cli/options.hpp"
 #include "path/camera_path.hpp"
+#include "path/preset.hpp"
 #include "plugin/plugin_loader.hpp"
 #include "plugin/scene_instance.hpp"
 #include "render/device.hpp"
@@ -53,8 +54,17 @@ UsageError unknown_scene(const std::string& id, const std::vector<std::string>& 
 std::shared_ptr<const LoadedScene> find_scene(const std::vector<LoadOutcome>& outcomes,
                                               const std::string& id);
 
-// Applies --param key=value (repeatable) and --eye/--target/--fov to `state`.
-void apply_scene_overrides(const SceneInfo& info, const ParsedOptions& options, SceneState& state);
+// --preset NAME, found in the plugin folders' presets/ (nullopt without --preset). A UsageError
+// names an unknown preset (with the ones there are) or one whose file has a problem.
+std::optional<Preset> preset_option(const ParsedOptions& options,
+                                    const std::vector<std::filesystem::path>& folders);
+// The scene to use: --scene, else the preset's, else mandelbulb; a --scene that differs from the
+// preset's scene is a UsageError.
+std::string scene_id_option(const ParsedOptions& options, const std::optional<Preset>& preset);
+// Applies the preset (its values and view, if any), then --param key=value (repeatable) and
+// --eye/--target/--fov, to `state`.
+void apply_scene_overrides(const SceneInfo& info, const ParsedOptions& options, SceneState& state,
+                           const std::optional<Preset>& preset = std::nullopt);
 
 // --size, --lanes, --precision over the settings' render defaults.
 RenderSettings render_settings_from(const Settings& settings, const ParsedOptions& options,

@@ -1,5 +1,7 @@
 #include "path/camera_path.hpp"
 
+#include "path/toml_values.hpp"
+
 #include "io/echo.hpp"
 #include "io/toml_guard.hpp"
 #include "scene/camera_up.hpp"
@@ -21,97 +23,6 @@ namespace fr {
 namespace {
 
 const char* const kKeyframeKeys[] = {"time_s", "eye", "target", "up", "fov_deg", "params"};
-
-int line_of(const toml::node& n) {
-  return static_cast<int>(n.source().begin.line);
-}
-
-// A finite number (integers too), or nullopt.
-std::optional<double> number(const toml::node& n) {
-  if (!n.is_number()) return std::nullopt;
-  const double v = *n.value<double>();
-  return std::isfinite(v) ? std::optional<double>(v) : std::nullopt;
-}
-
-std::optional<glm::dvec3> vec3(const toml::node& n) {
-  const auto* a = n.as_array();
-  if (!a || a->size() != 3) return std::nullopt;
-  glm::dvec3 v;
-  for (int i = 0; i < 3; ++i) {
-    auto c = number(*a->get(static_cast<size_t>(i)));
-    if (!c) return std::nullopt;
-    v[i] = *c;
-  }
-  return v;
-}
-
-std::string range_text(const ParamInfo& p) {
-  std::ostringstream out;
-  out << "[" << p.min_value.v[0] << ", " << p.max_value.v[0] << "]";
-  return out.str();
-}
-
-// The value of parameter `p` in `n`, or why not.
-std::optional<fr_value> param_value(const toml::node& n, const ParamInfo& p, std::string* why) {
-  fr_value v{};
-  switch (p.type) {
-    case FR_PARAM_BOOL:
-      if (!n.is_boolean()) {
-        *why = "expected true or false";
-        return std::nullopt;
-      }
-      v.v[0] = *n.value<bool>() ? 1 : 0;
-      return v;
-    case FR_PARAM_CHOICE: {
-      // A name, never an index (as on the command line).
-      const auto name = n.value<std::string>();
-      const int index = name ? p.choice_index(*name) : -1;
-      if (index < 0) {
-        std::string names;
-        for (const std::string& c : p.choices) {
-          if (!names.empty()) names += ", ";
-          names += c;
-        }
-        *why = "expected one of the names " + names;
-        return std::nullopt;
-      }
-      v.v[0] = index;
-      return v;
-    }
-    case FR_PARAM_INT: {
-      auto x = number(n);
-      if (!x || *x != std::floor(*x)) {
-        *why = "expected a whole number";
-        return std::nullopt;
-      }
-      v.v[0] = *x;
-      break;
-    }
-    case FR_PARAM_FLOAT: {
-      auto x = number(n);
-      if (!x) {
-        *why = "expected a finite number";
-        return std::nullopt;
-      }
-      v.v[0] = *x;
-      break;
-    }
-    default: {
-      auto x = vec3(n);
-      if (!x) {
-        *why = "expected [x, y, z] (three finite numbers)";
-        return std::nullopt;
-      }
-      for (int i = 0; i < 3; ++i) v.v[i] = (*x)[i];
-    }
-  }
-  for (int i = 0; i < p.component_count(); ++i)
-    if (!(v.v[i] >= p.min_value.v[i] && v.v[i] <= p.max_value.v[i])) {
-      *why = "outside the range of '" + p.key + "' " + range_text(p);
-      return std::nullopt;
-    }
-  return v;
-}
 
 // The keyframe's orientation: right, up and back (-forward) as the rotation's columns.
 glm::dquat orientation(const Keyframe& k) {
@@ -175,11 +86,11 @@ std::optional<CameraPath> parse_camera_path(const std::string& text, const std::
   }
   for (const auto& [key, node] : root)
     if (key.str() != "keyframe")
-      problem(line_of(node),
+      problem(toml_line(node),
               "unknown key '" + echo(key.str()) + "' (a path holds [[keyframe]] tables only)");
   const toml::array* keys = root["keyframe"].as_array();
   if (!keys || !keys->is_array_of_tables()) {
-    problem(keys ? line_of(*keys) : 0, "expected [[keyframe]] tables");
+    problem(keys ? toml_line(*keys) : 0, "expected [[keyframe]] tables");
     return std::nullopt;
   }
   CameraPath path;
@@ -192,12 +103,12 @@ std::optional<CameraPath> parse_camera_path(const std::string& text, const std::
   for (const toml::node& node : *keys) {
     const toml::table& t = *node.as_table();
     Keyframe k = previous;
-    k.line = line_of(node);
+    k.line = toml_line(node);
     const std::string where = "keyframe " + std::to_string(path.keyframes.size() + 1) + ": ";
     for (const auto& [key, value] : t)
       if (std::find(std::begin(kKeyframeKeys), std::end(kKeyframeKeys), key.str()) ==
           std::end(kKeyframeKeys))
-        problem(line_of(value), where + "unknown key '" + echo(key.str()) +
+        problem(toml_line(value), where + "unknown key '" + echo(key.str()) +
                                     "' (expected time_s, eye, target, up, fov_deg, params)");
     auto need_vec3 = [&](const char* name, glm::dvec3* out, bool required) {
       const toml::node* n = t.get(name);
@@ -205,18 +116,18 @@ std::optional<CameraPath> parse_camera_path(const std::string& text, const std::
         if (required) problem(k.line, where + "'" + name + "' is missing");
         return;
       }
-      if (auto v = vec3(*n))
+      if (auto v = toml_vec3(*n))
         *out = *v;
       else
-        problem(line_of(*n), where + "'" + name + "': expected [x, y, z] (three finite numbers)");
+        problem(toml_line(*n), where + "'" + name + "': expected [x, y, z] (three finite numbers)");
     };
     int time_line = k.line;
     if (const toml::node* n = t.get("time_s")) {
-      time_line = line_of(*n);
-      if (auto v = number(*n))
+      time_line = toml_line(*n);
+      if (auto v = toml_number(*n))
         k.time_s = *v;
       else
-        problem(line_of(*n), where + "'time_s': expected a finite number of seconds");
+        problem(toml_line(*n), where + "'time_s': expected a finite number of seconds");
     } else {
       problem(k.line, where + "'time_s' is missing");
     }
@@ -225,9 +136,9 @@ std::optional<CameraPath> parse_camera_path(const std::string& text, const std::
     need_vec3("up", &k.up, false);
     if (glm::length(k.up) == 0) problem(k.line, where + "'up' is [0, 0, 0]: it has no direction");
     if (const toml::node* n = t.get("fov_deg")) {
-      auto v = number(*n);
+      auto v = toml_number(*n);
       if (!v || !(*v > 0 && *v < 180))
-        problem(line_of(*n), where + "'fov_deg': expected degrees in (0, 180)");
+        problem(toml_line(*n), where + "'fov_deg': expected degrees in (0, 180)");
       else
         k.fov_deg = *v;
     }
@@ -237,18 +148,18 @@ std::optional<CameraPath> parse_camera_path(const std::string& text, const std::
         for (const auto& [key, value] : *params) {
           const int index = scene.find_param(std::string(key.str()));
           if (index < 0) {
-            problem(line_of(value),
+            problem(toml_line(value),
                     where + "scene '" + scene.id + "' has no parameter '" + echo(key.str()) + "'");
             continue;
           }
           std::string why;
-          if (auto v = param_value(value, scene.params[index], &why))
+          if (auto v = toml_param_value(value, scene.params[index], &why))
             k.params[index] = *v;
           else
-            problem(line_of(value), where + "parameter '" + scene.params[index].key + "': " + why);
+            problem(toml_line(value), where + "parameter '" + scene.params[index].key + "': " + why);
         }
       } else {
-        problem(line_of(*n), where + "'params': expected a table of key = value");
+        problem(toml_line(*n), where + "'params': expected a table of key = value");
       }
     }
     if (!path.keyframes.empty() && !(k.time_s > path.keyframes.back().time_s))

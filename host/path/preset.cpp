@@ -1,0 +1,202 @@
+#include "path/preset.hpp"
+
+#include "io/echo.hpp"
+#include "io/toml_guard.hpp"
+#include "path/toml_values.hpp"
+#include "scene/vec3.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace fr {
+namespace {
+
+bool is_preset_id(const std::string& s) {
+  if (s.empty() || s.size() > 63 || !(s[0] >= 'a' && s[0] <= 'z')) return false;
+  for (char c : s)
+    if (!((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '-')) return false;
+  return true;
+}
+
+std::string where(const std::filesystem::path& file, int line) {
+  std::string out = file.string();
+  if (line > 0) out.append(":").append(std::to_string(line));
+  return out.append(": ");
+}
+
+// Parses a preset's text; nullopt (with a problem) when it is not TOML or nests too deep.
+std::optional<toml::table> parse(const std::string& text, const std::filesystem::path& file,
+                                 std::vector<std::string>* problems) {
+  int deep_line = 0;
+  if (std::string why = toml_nesting_problem(text, &deep_line); !why.empty()) {
+    problems->push_back(where(file, deep_line) + why);
+    return std::nullopt;
+  }
+  try {
+    return toml::parse(text, file.string());
+  } catch (const toml::parse_error& e) {
+    problems->push_back(where(file, static_cast<int>(e.source().begin.line)) +
+                        "not valid TOML: " + std::string(e.description()));
+    return std::nullopt;
+  }
+}
+
+const char* const kTopKeys[] = {"scene", "name", "description", "params", "camera"};
+const char* const kCameraKeys[] = {"eye", "target", "up", "fov_deg"};
+
+}  // namespace
+
+std::vector<Preset> load_presets(const std::vector<std::filesystem::path>& plugin_folders,
+                                 std::vector<PresetProblem>* problems) {
+  std::map<std::string, Preset> by_id;
+  for (const auto& folder : plugin_folders) {
+    const auto dir = folder / "presets";
+    std::error_code ec;
+    if (!std::filesystem::is_directory(dir, ec)) continue;
+    std::vector<std::filesystem::path> files;
+    for (const auto& entry : std::filesystem::directory_iterator(dir, ec))
+      if (entry.path().extension() == ".toml") files.push_back(entry.path());
+    std::sort(files.begin(), files.end());
+    for (const auto& file : files) {
+      auto problem = [&](int line, const std::string& what) {
+        problems->push_back({file, where(file, line) + what});
+      };
+      const std::string id = file.stem().string();
+      if (!is_preset_id(id)) {
+        problem(0, "the file name must be the preset's id, [a-z][a-z0-9_-]* (at most 63 bytes)");
+        continue;
+      }
+      if (auto it = by_id.find(id); it != by_id.end()) {
+        problem(0, "preset '" + id + "' is already defined by " + it->second.file.string() +
+                       "; this one is not used");
+        continue;
+      }
+      std::ifstream in(file, std::ios::binary);
+      std::string text;
+      text.resize(kMaxPresetBytes + 1);
+      in.read(text.data(), static_cast<std::streamsize>(text.size()));
+      text.resize(static_cast<size_t>(in.gcount()));
+      if (!in.eof() && text.size() > kMaxPresetBytes) {
+        problem(0, "larger than " + std::to_string(kMaxPresetBytes) + " bytes");
+        continue;
+      }
+      if (in.bad() || (!in.eof() && !in)) {
+        problem(0, "cannot be read");
+        continue;
+      }
+      std::vector<std::string> parse_problems;
+      auto root = parse(text, file, &parse_problems);
+      if (!root) {
+        for (auto& m : parse_problems) problems->push_back({file, std::move(m)});
+        continue;
+      }
+      bool ok = true;
+      for (const auto& [key, node] : *root)
+        if (std::find(std::begin(kTopKeys), std::end(kTopKeys), key.str()) == std::end(kTopKeys)) {
+          problem(toml_line(node), "unknown key '" + echo(key.str()) +
+                                       "' (a preset has scene, name, description, [params], "
+                                       "[camera])");
+          ok = false;
+        }
+      Preset p;
+      p.id = id;
+      p.file = file;
+      p.text = text;
+      const auto scene = (*root)["scene"].value<std::string>();
+      const auto name = (*root)["name"].value<std::string>();
+      if (!scene || scene->empty()) {
+        problem(0, "needs scene = \"ID\", the scene it is for");
+        ok = false;
+      }
+      if (!name || name->empty()) {
+        problem(0, "needs name = \"...\", its display name");
+        ok = false;
+      }
+      if (!ok) continue;
+      p.scene_id = *scene;
+      p.name = *name;
+      p.description = (*root)["description"].value<std::string>().value_or("");
+      by_id.emplace(id, std::move(p));
+    }
+  }
+  std::vector<Preset> out;
+  for (auto& [id, p] : by_id) out.push_back(std::move(p));
+  return out;
+}
+
+std::vector<std::string> apply_preset(const Preset& preset, const SceneInfo& scene,
+                                      SceneState& state) {
+  std::vector<std::string> problems;
+  auto root = parse(preset.text, preset.file, &problems);
+  if (!root) return problems;
+  auto problem = [&](int line, const std::string& what) {
+    problems.push_back(where(preset.file, line) + what);
+  };
+  if (preset.scene_id != scene.id)
+    problem(0, "is for scene '" + echo(preset.scene_id) + "', not '" + scene.id + "'");
+  SceneState next = state;
+  if (const toml::node* n = root->get("params")) {
+    const toml::table* t = n->as_table();
+    if (!t) {
+      problem(toml_line(*n), "[params] must be a table of values by key");
+    } else {
+      for (const auto& [key, value] : *t) {
+        const int index = scene.find_param(std::string(key.str()));
+        if (index < 0) {
+          problem(toml_line(value), "scene '" + scene.id + "' has no parameter '" +
+                                        echo(key.str()) + "'");
+          continue;
+        }
+        std::string why;
+        if (auto v = toml_param_value(value, scene.params[index], &why))
+          next.params[index] = *v;
+        else
+          problem(toml_line(value), std::string(key.str()).append(": ").append(why));
+      }
+    }
+  }
+  if (const toml::node* n = root->get("camera")) {
+    const toml::table* t = n->as_table();
+    if (!t) {
+      problem(toml_line(*n), "[camera] must be a table (eye, target, up, fov_deg)");
+    } else {
+      for (const auto& [key, value] : *t) {
+        const std::string k(key.str());
+        if (std::find(std::begin(kCameraKeys), std::end(kCameraKeys), k) ==
+            std::end(kCameraKeys)) {
+          problem(toml_line(value), "unknown camera key '" + echo(k) +
+                                        "' (eye, target, up, fov_deg)");
+          continue;
+        }
+        if (k == "fov_deg") {
+          if (auto f = toml_number(value))
+            next.camera.fov_deg = *f;
+          else
+            problem(toml_line(value), "fov_deg: expected a finite number");
+          continue;
+        }
+        auto v = toml_vec3(value);
+        if (!v) {
+          problem(toml_line(value), k + ": expected [x, y, z] (three finite numbers)");
+          continue;
+        }
+        store_dvec3(k == "eye" ? next.camera.eye : k == "target" ? next.camera.target
+                                                                  : next.camera.up,
+                    *v);
+      }
+      if (auto why = check_camera(next.camera)) problem(toml_line(*n), "camera: " + *why);
+    }
+  }
+  if (problems.empty()) state = std::move(next);
+  return problems;
+}
+
+std::optional<Preset> find_preset(const std::vector<Preset>& presets, const std::string& id) {
+  for (const Preset& p : presets)
+    if (p.id == id) return p;
+  return std::nullopt;
+}
+
+}  // namespace fr

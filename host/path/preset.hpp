@@ -1,0 +1,60 @@
+// preset.hpp — presets: a named set of parameter values and a view for a scene, from a TOML file
+// (as Fragmentarium's #preset and Mandelbulber2's example settings).
+//
+//   scene = "mandelbox"                 # the scene it is for (required)
+//   name = "Spiky ball"                 # display name (required)
+//   description = "Scale -1.5: ..."     # one sentence (optional)
+//   [params]                            # values by key, as in a camera path (choices by name)
+//   scale = -1.5
+//   [camera]                            # optional; any of eye, target, up, fov_deg
+//   eye = [9.0, 6.0, 10.0]
+//   target = [0.0, 0.0, 0.0]
+//
+// A preset's id is its file's name without ".toml": [a-z][a-z0-9_-]*, unique over all folders
+// (the first folder wins; a later file with the same id is reported, not used). Presets live in
+// a `presets` folder inside each plugin folder; the in-tree ones beside their scene
+// (plugins/ID/presets/) and the user's in their scene folder's presets/.
+#pragma once
+
+#include "scene/scene_data.hpp"
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace fr {
+
+struct Preset {
+  std::string id;        // the file's stem
+  std::string scene_id;  // `scene`
+  std::string name;
+  std::string description;
+  std::filesystem::path file;
+  std::string text;  // the whole file, for applying to the scene's parameter table
+};
+
+struct PresetProblem {
+  std::filesystem::path file;
+  std::string message;  // "FILE:LINE: what" already, or "FILE: what"
+};
+
+// Every preset in `folders`/presets/*.toml, sorted by id. A file that cannot be read, is not
+// valid TOML, lacks `scene` or `name`, has a key it should not, or repeats an id goes to
+// `problems` (with file and line) and is left out. At most kMaxPresetBytes a file.
+std::vector<Preset> load_presets(const std::vector<std::filesystem::path>& plugin_folders,
+                                 std::vector<PresetProblem>* problems);
+
+constexpr size_t kMaxPresetBytes = 64 * 1024;
+
+// Applies the preset's values and camera over `state` (which holds the scene's defaults or
+// more). Every problem — a key the scene does not have, a value of the wrong type or outside its
+// range, a choice's name that names nothing, a camera that cannot make rays — is returned as
+// "FILE:LINE: what", and then `state` is left as it was.
+std::vector<std::string> apply_preset(const Preset& preset, const SceneInfo& scene,
+                                      SceneState& state);
+
+// The preset with this id, or nullopt.
+std::optional<Preset> find_preset(const std::vector<Preset>& presets, const std::string& id);
+
+}  // namespace fr

@@ -1,0 +1,26 @@
+// toml_values.hpp — reading scene parameter values and vectors from TOML nodes, shared by the
+// camera path and preset files (so a value means the same in both, and a choice is a name in
+// both). Only path/'s own sources include it: it brings toml++ with it.
+#pragma once
+
+#include "scene/scene_data.hpp"
+
+#include <toml++/toml.h>
+#include <glm/vec3.hpp>
+
+#include <optional>
+#include <string>
+
+namespace fr {
+
+// The line a node starts on (0 when unknown).
+int toml_line(const toml::node& n);
+// A finite number (integers too), or nullopt.
+std::optional<double> toml_number(const toml::node& n);
+// [x, y, z] of finite numbers, or nullopt.
+std::optional<glm::dvec3> toml_vec3(const toml::node& n);
+// The value of parameter `p` in `n` (a bool, a number, [x, y, z], a choice's name), within its
+// range; or nullopt with *why set ("expected a whole number", "outside the range of ...").
+std::optional<fr_value> toml_param_value(const toml::node& n, const ParamInfo& p, std::string* why);
+
+}  // namespace fr
