@@ -202,6 +202,23 @@ TEST(DeLibrary, Folds) {
             {"({ real_t t; de_sphereflake(p, 4, 1.0f / 3, &t); })", {0, 0, 0}, -1},
             {"({ real_t t; de_pythagoras_tree(p, 3, 0.5f, 0.7f, 0.1f, &t); })", {0, -1, 0}, 0.9},
         });
+  // The smooth Menger sponge with no smoothing is the sponge itself (its last fold's sign is
+  // undone by the box's symmetry); with smoothing, outside the cube it is still a lower bound of
+  // the cube's distance (the sponge lies in the cube).
+  check("fr/menger.cl",
+        {
+            {"({ real_t t; de_menger_smooth(p, 3, 3, v3s(1, 1, 1), 0, &t) - "
+             "de_menger(p, 3, 3, v3s(1, 1, 1), 0, &t); })",
+             {0.7f, 0.2f, 1.3f},
+             0},
+            {"({ real_t t; de_menger_smooth(p, 3, 3, v3s(1, 1, 1), 0, &t) - "
+             "de_menger(p, 3, 3, v3s(1, 1, 1), 0, &t); })",
+             {-0.45f, 0.05f, 0.61f},
+             0},
+            {"({ real_t t; fmin(de_menger_smooth(p, 4, 3, v3s(1, 1, 1), 0.01f, &t), 1.0f); })",
+             {3, 0, 0},
+             1},
+        });
   // The sphere fold: inside the minimum radius scale by (fixed/min)^2 (here 4).
   check("fr/folds.cl",
         {{"({ real_t dr = 1; vec3_t q = p_fold_sphere(p, 0.5f, 1, &dr); q.x * 10 + dr; })",
@@ -222,7 +239,8 @@ TEST(DeLibrary, GuideListsEverySignature) {
                                           "mandelbulb_pow_int", "mandelbulb_pow_real",
                                           "mandelbox_iterate",  "kifs_iterate",
                                           "bulb_iterate",       "kleinian_separation",
-                                          "mandelbrot_distance_bound"};
+                                          "mandelbrot_distance_bound", "smooth_order",
+                                          "hybrid_rotate"};
   size_t found = 0;
   for (const auto& entry :
        std::filesystem::directory_iterator(std::string(SOURCE_DIR) + "/kernels/de")) {

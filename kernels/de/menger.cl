@@ -26,3 +26,39 @@ real_t de_menger(vec3_t p, int iterations, scalar_t scale, vec3_t offset, scalar
   *trap = orbit_min;
   return sd_box(z, v3s(1, 1, 1)) * to_real(pown_scalar(1 / scale, iterations));
 }
+
+/* Smooth folds (after Darkbeam's smooth Menger, fractalforums.com, 2012): |x| becomes
+ * sqrt(x^2 + s), and each compare-and-swap of the sort becomes its smooth blend, so the sponge's
+ * edges round off with `smoothness` s. Both maps are 1-Lipschitz (the blend's Jacobian has
+ * eigenvalues 1 and 1 - 2 f', f' in [0, 1]), so one step is scale-Lipschitz and box(z) / scale^n
+ * stays a lower bound of the distance. */
+inline void smooth_order(real_t* a, real_t* b, real_t s) {
+  const real_t d = *a - *b;
+  const real_t t = to_real(0.5) * (d - sqrt(d * d + s));
+  *a -= t;
+  *b += t;
+}
+
+real_t de_menger_smooth(vec3_t p, int iterations, scalar_t scale, vec3_t offset,
+                        scalar_t smoothness, real_t* trap) {
+  vec3_t z = p;
+  real_t orbit_min = v3_length2(z);
+  const real_t s = to_real(smoothness);
+  const real_t step = to_real(scale - 1);
+  for (int i = 0; i < iterations; ++i) {
+    z = v3(sqrt(z.x * z.x + s), sqrt(z.y * z.y + s), sqrt(z.z * z.z + s));
+    smooth_order(&z.x, &z.y, s);
+    smooth_order(&z.x, &z.z, s);
+    smooth_order(&z.y, &z.z, s);
+    z.x = to_real(scale) * z.x - offset.x * step;
+    z.y = to_real(scale) * z.y - offset.y * step;
+    /* Menger's choice for the last coordinate, c - |z - c| (the sign is undone by the next fold
+     * and by the box's symmetry), smoothed likewise. */
+    const real_t c = to_real(0.5) * offset.z * step;
+    const real_t zz = to_real(scale) * z.z - c;
+    z.z = c - sqrt(zz * zz + s);
+    orbit_min = fmin(orbit_min, v3_length2(z));
+  }
+  *trap = orbit_min;
+  return sd_box(z, v3s(1, 1, 1)) * to_real(pown_scalar(1 / scale, iterations));
+}
