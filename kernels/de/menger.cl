@@ -62,3 +62,44 @@ real_t de_menger_smooth(vec3_t p, int iterations, scalar_t scale, vec3_t offset,
   *trap = orbit_min;
   return sd_box(z, v3s(1, 1, 1)) * to_real(pown_scalar(1 / scale, iterations));
 }
+
+/* The Menger sponge's four-dimensional sibling, sliced at w = slice_w: in a hypercube split 3^4
+ * ways, the cells with at most one middle coordinate are kept (the 3D sponge's rule), by the same
+ * folds: |.| on four coordinates, a sort into x >= y >= z >= w, the three largest scaled towards
+ * their corner and the smallest given Menger's choice. Distances in 4D bound those in any slice,
+ * so box4(z) / scale^n is a lower bound. The slice w = 0 is Cantor's dust (all of x, y, z outer);
+ * others cut its tunnels into lattices. */
+inline void sort_pair(real_t* a, real_t* b) {
+  const real_t hi = fmax(*a, *b), lo = fmin(*a, *b);
+  *a = hi;
+  *b = lo;
+}
+
+real_t de_menger_4d(vec3_t p, scalar_t slice_w, int iterations, scalar_t scale, real_t* trap) {
+  real_t x = p.x, y = p.y, z = p.z, w = to_real(slice_w);
+  real_t orbit_min = x * x + y * y + z * z + w * w;
+  const real_t step = to_real(scale - 1);
+  for (int i = 0; i < iterations; ++i) {
+    x = fabs(x);
+    y = fabs(y);
+    z = fabs(z);
+    w = fabs(w);
+    sort_pair(&x, &y);
+    sort_pair(&z, &w);
+    sort_pair(&x, &z);
+    sort_pair(&y, &w);
+    sort_pair(&y, &z);
+    x = to_real(scale) * x - step;
+    y = to_real(scale) * y - step;
+    z = to_real(scale) * z - step;
+    const real_t c = to_real(0.5) * step;
+    w = c - fabs(to_real(scale) * w - c);
+    orbit_min = fmin(orbit_min, x * x + y * y + z * z + w * w);
+  }
+  *trap = orbit_min;
+  const real_t ox = fmax(fabs(x) - 1, to_real(0)), oy = fmax(fabs(y) - 1, to_real(0));
+  const real_t oz = fmax(fabs(z) - 1, to_real(0)), ow = fmax(fabs(w) - 1, to_real(0));
+  const real_t inside = fmin(fmax(fmax(fabs(x), fabs(y)), fmax(fabs(z), fabs(w))) - 1, to_real(0));
+  return (sqrt(ox * ox + oy * oy + oz * oz + ow * ow) + inside) *
+         to_real(pown_scalar(1 / scale, iterations));
+}
