@@ -47,14 +47,15 @@ std::string status_of(const std::string& table, const std::string& check) {
 }
 
 TEST(Check, EveryInTreeScenePasses) {
-  const std::vector<std::string> scenes = test::in_tree_scene_ids();
-  ASSERT_GE(scenes.size(), 13u);
+  const std::vector<std::string> scenes = test::scene_ids_for_this_platform();
+  ASSERT_GE(scenes.size(), kWindows ? 12u : 40u);
   for (const std::string& scene : scenes) {
     SCOPED_TRACE(scene);
     const CheckRun r = run_check(std::filesystem::path(SCENE_PLUGIN_DIR) / (scene + PLUGIN_SUFFIX));
     EXPECT_EQ(r.exit_code, 0) << r.out;
     for (const char* check : {"descriptor", "de-compiles", "de-returns", "de-finite",
-                              "de-lipschitz", "de-overestimate", "de-bounded", "lanes-agree",
+                              "de-lipschitz", "de-overestimate", "de-near-surface", "de-bounded",
+                              "lanes-agree",
                               "update", "create-destroy", "render", "render-careful", "unload"})
       EXPECT_EQ(status_of(r.out, check), "PASS") << check << "\n" << r.out;
     const auto json = nlohmann::json::parse(r.json);
@@ -95,6 +96,23 @@ TEST(Check, OverEstimatingDeFails) {
                 row["detail"].get<std::string>().find("over-estimates") != std::string::npos;
     EXPECT_TRUE(named) << r.json;
   }
+}
+
+// The Mandelbox, Cantor's dust and the icosahedral KIFS with their DE multiplied by 1.5 and 3
+// (tests/CMakeLists.txt generates them from the scenes' own sources) fail de-near-surface: near
+// the surface each steps past it. Over the Mandelbox's bounding sphere its DE under-estimates
+// several-fold, which is why a check that samples only there let 3x pass; the unscaled scenes
+// pass (EveryInTreeScenePasses).
+TEST(Check, DeThatOverestimatesNearTheSurfaceFails) {
+  for (const std::string scene : {"mandelbox", "cantor_dust", "kifs_icosahedron"})
+    for (const std::string tag : {"1_5", "3"}) {
+      SCOPED_TRACE(scene + " x" + tag);
+      const CheckRun r = run_check(std::filesystem::path(OVERESTIMATE_PLUGIN_DIR) /
+                                   ("overestimate_" + scene + "_x" + tag + PLUGIN_SUFFIX));
+      EXPECT_EQ(r.exit_code, 1) << r.out;
+      EXPECT_EQ(status_of(r.out, "de-near-surface"), "FAIL") << r.out;
+      EXPECT_NE(r.out.find("(the DE steps past the surface)"), std::string::npos) << r.out;
+    }
 }
 
 // The compatibility scene, built against the frozen ABI 1.0 headers, passes on this 1.1 host.

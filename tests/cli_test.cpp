@@ -26,13 +26,15 @@ TEST(Cli, UsageErrors) {
                      "--json: folder '/no/such/folder' does not exist");
   expect_usage_error({"bench", "--json", TEST_OUTPUT_DIR}, "is a folder, not a file");
   expect_usage_error({"render", "--out", TEST_OUTPUT_DIR}, "is a folder, not a file");
-  {
-    std::string available;
-    for (const std::string& id : test::in_tree_scene_ids())
-      available += (available.empty() ? "" : ", ") + id;
-    expect_usage_error({"render", "--scene", "nope"},
-                       "unknown scene 'nope' (available: " + available + ")");
-  }
+  // Forty scenes are too many for one line: the count, and the ids that look like the typo.
+  expect_usage_error({"render", "--scene", "nope"},
+                     "unknown scene 'nope' (" + std::to_string(test::in_tree_scene_ids().size()) +
+                         " scenes, `fractalis list` shows them)");
+  expect_usage_error({"render", "--scene", "mandelbix"},
+                     "scenes, `fractalis list` shows them; did you mean: mandelbox");
+  expect_usage_error({"render", "--scene", "kifs"},
+                     "did you mean: kifs_cube, kifs_dodecahedron, kifs_icosahedron, "
+                     "kifs_octahedron, kifs_tetrahedron)");
   expect_usage_error({"render", "--param", "nokey=1"}, "has no parameter 'nokey'");
   expect_usage_error({"render", "--param", "power"}, "expected KEY=VALUE");
   expect_usage_error({"render", "--band-rows", "0"}, "--band-rows: 0 is outside [1, 65535]");

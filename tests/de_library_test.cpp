@@ -239,7 +239,7 @@ TEST(DeLibrary, GuideListsEverySignature) {
                                           "mandelbulb_pow_int", "mandelbulb_pow_real",
                                           "mandelbox_iterate",  "kifs_iterate",
                                           "bulb_iterate",       "kleinian_separation",
-                                          "mandelbrot_distance_bound", "smooth_order", "sort_pair",
+                                          "mandelbrot_distance_bound", "smooth_order", "sort_pair", "bristor_jacobian_times",
                                           "hybrid_rotate"};
   size_t found = 0;
   for (const auto& entry :

@@ -2,6 +2,7 @@
 // geometry in double precision: true distances to a sphere and to a box pass, the same distances
 // multiplied by k fail with the worst ratio k, a DE that is too short is never "over", and a DE
 // that is too long only near the surface (where a marcher decides its last steps) is caught.
+#include "check/de_near_surface.hpp"
 #include "check/de_overestimate.hpp"
 
 #include <gtest/gtest.h>
@@ -131,5 +132,34 @@ TEST(DeOverestimate, NothingToTestAndDeterministic) {
   EXPECT_EQ(a.worst_at, b.worst_at);
 }
 
+
+// de-near-surface (check/de_near_surface.cpp) on the same exact geometry: true distances pass;
+// the true distance multiplied by 1.5 or 3 fails at most points; a DE that is only a quarter of
+// the distance never fails; and a DE that is far too short far out but 1.5x too long near the
+// surface (the Mandelbox's shape of error, which a search over the whole ball misses) fails.
+TEST(DeNearSurface, ExactPassesScaledFails) {
+  for (const Field& f : {Field(sphere), Field(box)}) {
+    const DeNearSurface exact = measure_de_near_surface(batch_of(f), kRadius);
+    EXPECT_GT(exact.surface_points, 100u);
+    EXPECT_GT(exact.points_tested, 300u);
+    EXPECT_EQ(exact.points_over, 0u) << "worst " << exact.worst_ratio;
+    EXPECT_LE(exact.worst_ratio, 1.01);
+    for (double k : {1.5, 3.0}) {
+      const Field scaled = [&](double x, double y, double z) { return k * f(x, y, z); };
+      const DeNearSurface over = measure_de_near_surface(batch_of(scaled), kRadius);
+      EXPECT_GT(over.percent_over(), 50) << "k " << k;
+      EXPECT_GE(over.worst_ratio, 0.99 * k) << "k " << k;
+      EXPECT_LE(over.worst_ratio, 1.01 * k) << "k " << k;
+    }
+    const Field short_de = [&](double x, double y, double z) { return 0.25 * f(x, y, z); };
+    EXPECT_EQ(measure_de_near_surface(batch_of(short_de), kRadius).points_over, 0u);
+  }
+  // Short by 4x beyond 0.1 of the sphere, 1.5x long within it.
+  const Field near_long = [](double x, double y, double z) {
+    const double d = sphere(x, y, z);
+    return d < 0.1 ? 1.5 * d : 0.25 * d;
+  };
+  EXPECT_GT(measure_de_near_surface(batch_of(near_long), kRadius).percent_over(), 50);
+}
 }  // namespace
 }  // namespace fr

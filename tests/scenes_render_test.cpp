@@ -78,7 +78,7 @@ TEST_P(EveryScene, LambertShading) {
   expect_sane(render_scene(GetParam(), s), std::string(GetParam()) + " (Lambert)");
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, EveryScene, ::testing::ValuesIn(test::in_tree_scene_ids()),
+INSTANTIATE_TEST_SUITE_P(Scenes, EveryScene, ::testing::ValuesIn(test::scene_ids_for_this_platform()),
                          [](const auto& info) { return info.param; });
 
 // Shadows darken: switching them on never raises a pixel's first-light factor and puts many hit

@@ -1,5 +1,6 @@
 #include "check/scene_check.hpp"
 
+#include "check/de_near_surface.hpp"
 #include "check/de_overestimate.hpp"
 #include "io/printable.hpp"
 #include "plugin/plugin_loader.hpp"
@@ -292,6 +293,35 @@ class Checker {
                   "), " + fmt(found.worst_ratio) + "x too far";
       if (percent > 5) detail += " (the DE over-estimates: rays pass through surface)";
       add("de-overestimate",
+          percent <= 1   ? CheckStatus::Pass
+          : percent <= 5 ? CheckStatus::Warn
+                         : CheckStatus::Fail,
+          detail);
+    }
+
+    // Near the surface, where the marcher's steps are decided: points at known small distances
+    // off surface points found by fixed-step marching (de_near_surface.hpp).
+    {
+      const Precision precision = fp64 ? Precision::Double : Precision::Float;
+      const DeBatch batch = [&](const std::vector<DePoint>& at) {
+        return worker_.probe_de(info, defaults_.params, at, 16, precision);
+      };
+      DeNearSurfaceOptions o;
+      o.tolerance = options_.overestimate_tolerance;
+      const DeNearSurface found = measure_de_near_surface(batch, r, o);
+      const double percent = found.percent_over();
+      std::string detail = fmt(percent) + "% of " + std::to_string(found.points_tested) +
+                           " points 0.001 R to 0.016 R off " +
+                           std::to_string(found.surface_points) +
+                           " surface points have DE > " + fmt(1 + o.tolerance) +
+                           " x their distance";
+      if (found.worst_ratio > 0)
+        detail += "; worst: DE " + fmt(found.worst_de) + " at " + fmt(found.worst_at) + ", " +
+                  fmt(found.worst_t) + " from surface (" + fmt(found.worst_ratio) + "x)";
+      if (found.surface_points == 0) detail = "no surface met by " + std::to_string(o.rays) +
+                                              " rays across the bounding sphere";
+      if (percent > 5) detail += " (the DE steps past the surface)";
+      add("de-near-surface",
           percent <= 1   ? CheckStatus::Pass
           : percent <= 5 ? CheckStatus::Warn
                          : CheckStatus::Fail,

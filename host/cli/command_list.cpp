@@ -102,6 +102,19 @@ nlohmann::json value_json(const ParamInfo& p, const fr_value& v) {
   return nlohmann::json::array({v.v[0], v.v[1], v.v[2]});
 }
 
+// The effects a scene asks the renderer for, by name.
+std::vector<std::string> effects_of(fr_features features) {
+  std::vector<std::string> names;
+  const std::pair<fr_features, const char*> known[] = {{FR_FEATURE_AO, "ao"},
+                                                       {FR_FEATURE_SHADOWS, "shadows"},
+                                                       {FR_FEATURE_GLOW, "glow"},
+                                                       {FR_FEATURE_FOG, "fog"},
+                                                       {FR_FEATURE_REFLECTIONS, "reflections"}};
+  for (const auto& [bit, name] : known)
+    if (features & bit) names.push_back(name);
+  return names;
+}
+
 nlohmann::json scene_json(const SceneInfo& s, const std::filesystem::path& file) {
   nlohmann::json params = nlohmann::json::array();
   for (const ParamInfo& p : s.params) {
@@ -129,6 +142,7 @@ nlohmann::json scene_json(const SceneInfo& s, const std::filesystem::path& file)
           {"author", s.author},
           {"license", s.license},
           {"bounding_radius", s.bounding_radius},
+          {"effects", effects_of(s.features)},
           {"camera",
            {{"eye", {c.eye[0], c.eye[1], c.eye[2]}},
             {"target", {c.target[0], c.target[1], c.target[2]}},

@@ -9,6 +9,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <ostream>
 
@@ -171,11 +172,55 @@ std::vector<LoadOutcome> load_plugins(const std::vector<std::filesystem::path>& 
   return outcomes;
 }
 
+namespace {
+
+// Edits (insert, delete, replace) from a to b, giving up past `limit`.
+size_t edit_distance(const std::string& a, const std::string& b, size_t limit) {
+  if (a.size() > b.size() + limit || b.size() > a.size() + limit) return limit + 1;
+  std::vector<size_t> row(b.size() + 1);
+  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    size_t diagonal = row[0];
+    row[0] = i;
+    for (size_t j = 1; j <= b.size(); ++j) {
+      const size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+}  // namespace
+
 UsageError unknown_scene(const std::string& id, const std::vector<std::string>& available) {
-  std::string list;
-  for (const auto& a : available) list += (list.empty() ? "" : ", ") + a;
-  return UsageError("unknown scene '" + echo(id) +
-                    "' (available: " + (list.empty() ? "none" : list) + ")");
+  std::string message = "unknown scene '" + echo(id) + "' (";
+  if (available.empty()) return UsageError(message + "no scenes were found)");
+  // A short list is given whole; a long one (the gallery has forty) by the ids that look like
+  // what was typed, so the message stays one readable line.
+  std::vector<std::string> shown;
+  if (available.size() <= 12) {
+    shown = available;
+    message += "available: ";
+  } else {
+    const size_t limit = std::max<size_t>(2, id.size() / 3);
+    std::vector<std::pair<size_t, std::string>> near;
+    if (id.size() <= 64)
+      for (const std::string& a : available) {
+        const size_t d = a.find(id) != std::string::npos ? 0 : edit_distance(id, a, limit);
+        if (d <= limit) near.emplace_back(d, a);
+      }
+    std::stable_sort(near.begin(), near.end(),
+                     [](const auto& x, const auto& y) { return x.first < y.first; });
+    for (size_t i = 0; i < near.size() && i < 5; ++i) shown.push_back(near[i].second);
+    message += std::to_string(available.size()) + " scenes, `fractalis list` shows them";
+    if (!shown.empty()) message += "; did you mean: ";
+  }
+  for (size_t i = 0; i < shown.size(); ++i) {
+    if (i) message += ", ";
+    message += shown[i];
+  }
+  return UsageError(message + ")");
 }
 
 std::shared_ptr<const LoadedScene> find_scene(const std::vector<LoadOutcome>& outcomes,

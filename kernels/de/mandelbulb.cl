@@ -172,24 +172,40 @@ real_t de_burning_bulb(vec3_t p, float power, real_t bailout, int iterations, re
 }
 
 /* Doug Bristor's "Bristorbrot" (fractalforums.com, 2012): a quadratic triplex map without
- * trigonometry, z <- (x^2 - y^2 - z^2, y (2x - z), z (2x + y)) + p, with the bulb's estimate
- * (dr <- 2 r dr + 1; 0.5 r ln r / dr). */
+ * trigonometry, z <- (x^2 - y^2 - z^2, y (2x - z), z (2x + y)) + p. The map is not conformal, so
+ * the bulbs' scalar derivative 2 r dr undercounts its stretch; the whole Jacobian J (J <- Df(z) J
+ * + I) is carried instead, and the estimate 0.5 r ln r / |J| uses its Frobenius norm, which
+ * bounds the stretch in every direction. */
+/* Df(z) c, Df(z) = [[2x, -2y, -2z], [2y, 2x - z, -y], [2z, z, 2x + y]]. */
+inline vec3_t bristor_jacobian_times(vec3_t z, vec3_t c) {
+  return v3(2 * (z.x * c.x - z.y * c.y - z.z * c.z),
+            2 * z.y * c.x + (2 * z.x - z.z) * c.y - z.y * c.z,
+            2 * z.z * c.x + z.z * c.y + (2 * z.x + z.y) * c.z);
+}
+
 real_t de_bristorbrot(vec3_t p, real_t bailout, int iterations, real_t* trap) {
   vec3_t z = p;
-  real_t dr = to_real(1);
+  /* J's columns: the derivatives of z along x, y and z. */
+  vec3_t jx = v3s(1, 0, 0), jy = v3s(0, 1, 0), jz = v3s(0, 0, 1);
   real_t r = v3_length(z);
   real_t orbit_min = r * r;
   for (int i = 0; i < iterations; ++i) {
     mask_t live = r < bailout;
     if (!any_lane(live)) break;
+    const vec3_t nx = v3_add(bristor_jacobian_times(z, jx), v3s(1, 0, 0));
+    const vec3_t ny = v3_add(bristor_jacobian_times(z, jy), v3s(0, 1, 0));
+    const vec3_t nz = v3_add(bristor_jacobian_times(z, jz), v3s(0, 0, 1));
     const vec3_t next = v3(z.x * z.x - z.y * z.y - z.z * z.z, z.y * (2 * z.x - z.z),
                            z.z * (2 * z.x + z.y));
-    dr = lane_select(live, 2 * r * dr + to_real(1), dr);
+    jx = v3_select(live, nx, jx);
+    jy = v3_select(live, ny, jy);
+    jz = v3_select(live, nz, jz);
     z = v3_select(live, v3_add(next, p), z);
     r = lane_select(live, v3_length(z), r);
     orbit_min = lane_select(live, fmin(orbit_min, r * r), orbit_min);
   }
   *trap = orbit_min;
+  const real_t j_norm = sqrt(v3_length2(jx) + v3_length2(jy) + v3_length2(jz));
   real_t safe_r = fmax(r, to_real(FR_SCALAR_EPSILON));
-  return to_real(0.5) * log(safe_r) * r / dr;
+  return to_real(0.5) * log(safe_r) * r / fmax(j_norm, to_real(FR_SCALAR_MIN));
 }
