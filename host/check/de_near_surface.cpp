@@ -127,19 +127,40 @@ DeNearSurface measure_de_near_surface(const DeBatch& de, double bounding_radius,
     }
   }
   const std::vector<float> at = de(tests);
-  for (size_t i = 0; i < tests.size(); ++i) {
-    // A point back inside the surface (a thin wall, a fold) says nothing about over-estimates.
-    if (!(at[i] >= eps)) continue;
+  // The offset point is at most t from the surface point it came from, but a rough surface (a
+  // fractal's) has other surface nearer still: search each point's own ball as de-overestimate
+  // does (the downhill direction and 23 others, fixed steps out to DE(p), bisected), and compare
+  // DE(p) with the nearest surface found, or with t where that is nearer.
+  std::vector<DePoint> outside;
+  std::vector<float> outside_de;
+  std::vector<double> outside_t;
+  for (size_t i = 0; i < tests.size(); ++i)
+    if (at[i] >= eps) {  // back inside the surface (a thin wall, a fold) says nothing
+      outside.push_back(tests[i]);
+      outside_de.push_back(at[i]);
+      outside_t.push_back(test_t[i]);
+    }
+  DeOverestimateOptions search;
+  search.surface_eps_rel = options.surface_eps_rel;
+  search.tolerance = options.tolerance;
+  search.max_points = outside.size();
+  search.directions = options.search_directions;
+  std::vector<double> nearest;
+  const DeOverestimate found =
+      measure_de_overestimate(de, outside, outside_de, bounding_radius, search, &nearest);
+  for (size_t i = 0; i < outside.size(); ++i) {
+    const double distance = std::min(outside_t[i], nearest[i]);
     ++result.points_tested;
-    const double ratio = double(at[i]) / test_t[i];
+    const double ratio = double(outside_de[i]) / distance;
     result.points_over += ratio > 1 + options.tolerance;
     if (ratio > result.worst_ratio) {
       result.worst_ratio = ratio;
-      result.worst_at = tests[i];
-      result.worst_de = at[i];
-      result.worst_t = test_t[i];
+      result.worst_at = outside[i];
+      result.worst_de = outside_de[i];
+      result.worst_t = distance;
     }
   }
+  (void)found;
   return result;
 }
 

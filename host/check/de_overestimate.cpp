@@ -27,8 +27,10 @@ double distance(const DePoint& a, const DePoint& b) {
 
 DeOverestimate measure_de_overestimate(const DeBatch& de, const std::vector<DePoint>& points,
                                        const std::vector<float>& values, double bounding_radius,
-                                       const DeOverestimateOptions& options) {
+                                       const DeOverestimateOptions& options,
+                                       std::vector<double>* nearest) {
   DeOverestimate result;
+  if (nearest) nearest->assign(points.size(), INFINITY);
   const double eps = options.surface_eps_rel * bounding_radius;
   // Candidates: outside the surface by at least 100 thresholds, so that a true distance, whose
   // ball ends exactly at the surface, is not judged by where the threshold cuts it (the ray
@@ -129,6 +131,7 @@ DeOverestimate measure_de_overestimate(const DeBatch& de, const std::vector<DePo
   }
   for (size_t k = 0; k < tested.size(); ++k) {
     const size_t i = tested[k];
+    if (nearest) (*nearest)[i] = surface[k];
     ++result.points_tested;
     if (!std::isfinite(surface[k])) continue;  // no surface inside the ball: nothing over
     const double ratio = double(values[i]) / surface[k];

@@ -49,8 +49,11 @@ struct DeOverestimate {
 // `points` and `values` are candidate points and their DE (already evaluated); those with a DE
 // of at least 100 surface thresholds are tested. Deterministic: the same inputs give the same
 // answer.
+// With `nearest`, it also receives, for each of `points`, the distance to the nearest surface
+// the search found (infinity where it found none or did not test the point).
 DeOverestimate measure_de_overestimate(const DeBatch& de, const std::vector<DePoint>& points,
                                        const std::vector<float>& values, double bounding_radius,
-                                       const DeOverestimateOptions& options = {});
+                                       const DeOverestimateOptions& options = {},
+                                       std::vector<double>* nearest = nullptr);
 
 }  // namespace fr

@@ -130,6 +130,23 @@ class Checker {
     return true;
   }
 
+  // DE values at many points, a million at a time: one probe's points and results travel
+  // through the render worker's shared memory, which a search of millions would outgrow.
+  std::vector<float> probe_in_chunks(const SceneInfo& info, const std::vector<DePoint>& at,
+                                     Precision precision) {
+    constexpr size_t kChunk = 1 << 20;
+    std::vector<float> values;
+    values.reserve(at.size());
+    for (size_t start = 0; start < at.size(); start += kChunk) {
+      const std::vector<DePoint> part(at.begin() + static_cast<std::ptrdiff_t>(start),
+                                      at.begin() + static_cast<std::ptrdiff_t>(
+                                                       std::min(at.size(), start + kChunk)));
+      const std::vector<float> got = worker_.probe_de(info, defaults_.params, part, 16, precision);
+      values.insert(values.end(), got.begin(), got.end());
+    }
+    return values;
+  }
+
   bool check_compiles() {
     const SceneInfo& info = scene_->info;
     std::vector<std::string> built, failed;
@@ -278,7 +295,7 @@ class Checker {
     {
       const Precision precision = fp64 ? Precision::Double : Precision::Float;
       const DeBatch batch = [&](const std::vector<DePoint>& at) {
-        return worker_.probe_de(info, defaults_.params, at, 16, precision);
+        return probe_in_chunks(info, at, precision);
       };
       DeOverestimateOptions o;
       o.tolerance = options_.overestimate_tolerance;
@@ -304,7 +321,7 @@ class Checker {
     {
       const Precision precision = fp64 ? Precision::Double : Precision::Float;
       const DeBatch batch = [&](const std::vector<DePoint>& at) {
-        return worker_.probe_de(info, defaults_.params, at, 16, precision);
+        return probe_in_chunks(info, at, precision);
       };
       DeNearSurfaceOptions o;
       o.tolerance = options_.overestimate_tolerance;
@@ -320,10 +337,14 @@ class Checker {
                   fmt(found.worst_t) + " from surface (" + fmt(found.worst_ratio) + "x)";
       if (found.surface_points == 0) detail = "no surface met by " + std::to_string(o.rays) +
                                               " rays across the bounding sphere";
-      if (percent > 5) detail += " (the DE steps past the surface)";
+      // Escape-time DEs (the Mandelbulb's) run long at about 1% of these points, near thin
+      // features, without a visible error; a DE that steps past the surface everywhere does so
+      // at tens of percent (a KIFS or the Cantor dust times 1.5), and the Mandelbox's DE, which
+      // near its surface is at most 0.82 and typically a third of the distance, times 3 at 4.7%.
+      if (percent > 3) detail += " (the DE steps past the surface)";
       add("de-near-surface",
-          percent <= 1   ? CheckStatus::Pass
-          : percent <= 5 ? CheckStatus::Warn
+          percent <= 2   ? CheckStatus::Pass
+          : percent <= 3 ? CheckStatus::Warn
                          : CheckStatus::Fail,
           detail);
     }
