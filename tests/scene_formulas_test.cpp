@@ -256,6 +256,8 @@ double juliabulb(Vec p, double n, Vec c, double bailout, int iterations) {
   return 0.5 * std::log(r) * r / dr;
 }
 
+// The scene takes 0.55 of the library's estimate (plugins/juliabulb/juliabulb.cl: near its poles
+// the estimate runs long, as de-near-surface measured).
 TEST(SceneFormulas, Juliabulb) {
   Scene s = load("juliabulb");
   const Vec c = {s.get("c", 0), s.get("c", 1), s.get("c", 2)};
@@ -264,7 +266,8 @@ TEST(SceneFormulas, Juliabulb) {
     expect_matches(
         s, random_points(1.6, 400, 4),
         [&](const Vec& p) {
-          return juliabulb(p, power, c, s.get("bailout"), static_cast<int>(s.get("iterations")));
+          return 0.55 *
+                 juliabulb(p, power, c, s.get("bailout"), static_cast<int>(s.get("iterations")));
         },
         "juliabulb power " + std::to_string(power));
   }

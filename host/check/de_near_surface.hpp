@@ -26,7 +26,7 @@ struct DeNearSurfaceOptions {
   double surface_eps_rel = 1e-5;  // DE below this times R counts as surface
   std::vector<double> offsets_rel = {1e-3, 4e-3, 1.6e-2};  // t, times R (100x the threshold up)
   double tolerance = 0.1;         // an over-estimate is DE > (1 + tolerance) t
-  int search_directions = 64;     // per offset point, for nearer surface than t
+  int search_directions = 24;     // per offset point, for nearer surface than t
 };
 
 struct DeNearSurface {
