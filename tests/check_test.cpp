@@ -49,7 +49,9 @@ std::string status_of(const std::string& table, const std::string& check) {
 TEST(Check, EnoughInTreeScenes) {
   const std::vector<std::string> scenes = test::scene_ids_for_this_platform();
   ASSERT_GE(scenes.size(), 12u);
-  if (!std::getenv("FRACTALIS_TEST_SCENES") && !kWindows) ASSERT_GE(scenes.size(), 40u);
+  if (!std::getenv("FRACTALIS_TEST_SCENES") && !kWindows) {
+    ASSERT_GE(scenes.size(), 40u);
+  }
 }
 
 // Every in-tree scene passes every check. One test per scene, so that CTest's shards of this
