@@ -1,4 +1,4 @@
-/* hybrid.c — the hybrid composer: up to six formula steps, each chosen from thirteen kinds
+/* hybrid.c — the hybrid composer: up to six formula steps, each chosen from twelve kinds (or none)
  * (fr/hybrid.cl) with its own parameters and repeat count, applied in order every iteration, as
  * Mandelbulber's hybrids chain formulas. Each step's kind and repeat count are compiled into the
  * kernel (FR_PARAM_SPECIALIZE), so a step set to "none" and every kind not chosen cost nothing.
@@ -108,7 +108,7 @@ static const fr_scene_desc scene = {
     .author = "The Fractalis developers",
     .license = "MIT",
     .description =
-        "Six formula steps of thirteen kinds, chained: bulbs, folds, KIFS, "
+        "Six formula steps of twelve kinds, chained: bulbs, folds, KIFS, "
         "rotations, Kali's inversion. Make your own hybrid.",
     .tags = "hybrid composer bulb box kifs",
     .credit =
