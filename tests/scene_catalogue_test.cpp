@@ -250,5 +250,49 @@ TEST(SceneCatalogue, BrokenPresetsAreReportedNotUsed) {
                      "typo.toml:3: unknown key 'colour'");
 }
 
+
+// The width and height a PNG file's header states (bytes 16 to 23, big-endian), or 0, 0.
+std::pair<int, int> png_size(const std::string& bytes) {
+  if (bytes.size() < 24 || bytes.compare(1, 3, "PNG") != 0) return {0, 0};
+  auto be32 = [&](size_t at) {
+    return (int(uint8_t(bytes[at])) << 24) | (int(uint8_t(bytes[at + 1])) << 16) |
+           (int(uint8_t(bytes[at + 2])) << 8) | int(uint8_t(bytes[at + 3]));
+  };
+  return {be32(16), be32(20)};
+}
+
+// `gallery` on a folder of two scenes and one preset: a picture of each at the size asked for,
+// an index.html that names each with its family, credit and command and links its picture, and
+// a sheet with every picture in a grid; a --out that is a file is refused.
+TEST(SceneCatalogue, GalleryWritesPicturesIndexAndSheet) {
+  const auto dir = test::fresh_dir("catalogue_gallery");
+  const auto plugins = dir / "plugins";
+  std::filesystem::create_directories(plugins / "presets");
+  for (const char* scene : {"menger", "sierpinski"})
+    std::filesystem::copy_file(std::filesystem::path(SCENE_PLUGIN_DIR) / (scene + std::string(PLUGIN_SUFFIX)),
+                               plugins / (scene + std::string(PLUGIN_SUFFIX)));
+  std::ofstream(plugins / "presets" / "deep_sponge.toml")
+      << "scene = \"menger\"\nname = \"Deep\"\ndescription = \"Five levels.\"\n[params]\n"
+         "iterations = 5\n";
+  const auto out = dir / "gallery";
+  const auto sheet = dir / "sheet.png";
+  const CliRun r = run({"gallery", "--plugins", plugins.string(), "--out", out.string(), "--size",
+                        "40x24", "--sheet", sheet.string(), "--columns", "2"});
+  ASSERT_EQ(r.code, 0) << r.err << r.out;
+  EXPECT_NE(r.out.find("wrote 3 pictures"), std::string::npos) << r.out;
+  for (const char* file : {"menger.png", "menger--deep_sponge.png", "sierpinski.png"})
+    EXPECT_EQ(png_size(test::read_file(out / file)), std::make_pair(40, 24)) << file;
+  // Two columns of 40 + 4 and two rows of 24 + 4, and the outer 4-pixel margin.
+  EXPECT_EQ(png_size(test::read_file(sheet)), std::make_pair(2 * 44 + 4, 2 * 28 + 4));
+  const std::string index = test::read_file(out / "index.html");
+  for (const char* part :
+       {"<img src=\"menger.png\"", "<img src=\"menger--deep_sponge.png\"", "<img src=\"sierpinski.png\"",
+        "--preset deep_sponge", "--scene sierpinski", "Menger sponge: Deep", "Five levels.",
+        "Karl Menger", "<small>ifs</small>"})
+    EXPECT_NE(index.find(part), std::string::npos) << part << "\n" << index;
+  std::ofstream(dir / "a_file") << "x";
+  expect_usage_error({"gallery", "--plugins", plugins.string(), "--out", (dir / "a_file").string()},
+                     "cannot make that folder");
+}
 }  // namespace
 }  // namespace fr

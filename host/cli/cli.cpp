@@ -40,6 +40,8 @@ const CommandEntry kCommands[] = {
      command_bench},
     {"sweep", "measure image error against frame time over the quality knobs", command_sweep},
     {"list", "list scene plugins, their parameters, or why they failed to load", command_list},
+    {"gallery", "render every scene and preset into a folder with an index.html contact sheet",
+     command_gallery},
     {"devices", "list OpenCL platforms and devices", command_devices},
     {"check", "run the conformance checks on a scene plugin (for scene authors)", command_check},
     {"cache", "show fractalis's cache folders and their sizes; --clear empties them",
