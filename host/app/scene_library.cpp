@@ -7,7 +7,9 @@
 
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <future>
+#include <thread>
 
 namespace fr {
 
@@ -49,16 +51,28 @@ SceneLibrary::SceneLibrary(std::vector<std::filesystem::path> folders, const Plu
                            std::vector<SceneEvent>* events)
     : policy_(policy), worker_(worker) {
   std::vector<LoadOutcome> outcomes = load_scene_folder(folders, policy_);
-  // Test renders of the scenes not vetted before, at once (each waits on its own process).
+  // Test renders of the scenes not vetted before, as many at a time as there are cores: each
+  // compiles a kernel within plugins.build_timeout_s, and forty compiling at once on two cores
+  // (a first start with empty caches, since the gallery grew) ran every one of them past it.
   std::vector<uint64_t> hashes(outcomes.size());
   std::vector<std::future<VetResult>> vets(outcomes.size());
+  const size_t at_once = std::clamp<size_t>(std::thread::hardware_concurrency(), 1, 8);
+  std::vector<size_t> pending;
   for (size_t i = 0; i < outcomes.size(); ++i) {
     if (!outcomes[i].scene) continue;
     hashes[i] = VettedScenes::content_hash(outcomes[i].file);
-    if (vetted_.contains(hashes[i], settings)) continue;
-    vets[i] = std::async(std::launch::async, vet_scene, outcomes[i].file, settings,
-                         worker_.device().name, policy_);
+    if (!vetted_.contains(hashes[i], settings)) pending.push_back(i);
   }
+  std::vector<VetResult> results(outcomes.size());
+  for (size_t start = 0; start < pending.size(); start += at_once) {
+    const size_t end = std::min(pending.size(), start + at_once);
+    for (size_t k = start; k < end; ++k)
+      vets[pending[k]] = std::async(std::launch::async, vet_scene, outcomes[pending[k]].file,
+                                    settings, worker_.device().name, policy_);
+    for (size_t k = start; k < end; ++k) results[pending[k]] = vets[pending[k]].get();
+  }
+  std::vector<bool> was_vetted(outcomes.size(), false);
+  for (size_t i : pending) was_vetted[i] = true;
   for (size_t i = 0; i < outcomes.size(); ++i) {
     const LoadOutcome& o = outcomes[i];
     auto skipped = [&](const std::string& why) {
@@ -68,8 +82,8 @@ SceneLibrary::SceneLibrary(std::vector<std::filesystem::path> folders, const Plu
       skipped(o.message);
       continue;
     }
-    if (vets[i].valid()) {
-      const VetResult vet = vets[i].get();
+    if (was_vetted[i]) {
+      const VetResult& vet = results[i];
       if (!vet.ok) {
         skipped(vet.error);
         continue;

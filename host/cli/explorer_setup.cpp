@@ -19,6 +19,20 @@ ExplorerSetup prepare_explorer(ParsedOptions options) {
   const auto folders = plugin_folders(x.settings, options);
   if (folders.empty())
     throw std::runtime_error("no plugin folder found (build the plugins, or pass --plugins DIR)");
+  // The scene asked for, checked against the plugins' descriptors (the scan cache: no kernel
+  // built) before the library vets every scene's kernel, which on a first start can take minutes.
+  const std::optional<Preset> preset = preset_option(options, folders);
+  const std::string scene_id = scene_id_option(options, preset);
+  {
+    std::vector<std::string> available;
+    bool found = false;
+    for (const auto& o : load_plugins(folders, x.settings.plugins)) {
+      if (!o.scene) continue;
+      found = found || o.scene->info.id == scene_id;
+      available.push_back(o.scene->info.id);
+    }
+    if (!found) throw unknown_scene(scene_id, available);
+  }
   const DeviceInfo device = choose_device(x.settings, options);
   check_memory(x.settings.render, device, false);  // the window's size, at full resolution
   x.worker = std::make_unique<RenderWorker>(device, explorer_worker_limits(x.settings.plugins));
@@ -33,8 +47,6 @@ ExplorerSetup prepare_explorer(ParsedOptions options) {
     else
       spdlog::debug("{}", e.to_string());
   }
-  const std::optional<Preset> preset = preset_option(options, folders);
-  const std::string scene_id = scene_id_option(options, preset);
   if (x.library->find(scene_id) < 0) {
     std::vector<std::string> available;
     for (const auto& slot : x.library->slots()) available.push_back(slot.scene->info.id);
