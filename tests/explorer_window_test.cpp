@@ -16,7 +16,9 @@
 #include <imgui.h>
 #include <stb_image.h>
 
+#include <array>
 #include <cmath>
+#include <iostream>
 #include <sstream>
 
 namespace fr {
@@ -299,33 +301,30 @@ TEST(ExplorerWindowHostile, TheOverlaysSliderCrashesOnlyTheRenderWorker) {
   const int y = static_cast<int>(slider.y_px + 0.5f * slider.height_px);
   // The X server moves the pointer and says it entered the window in its own time (and ignores a
   // move into a window it has not shown yet): moved again every 20 frames until ImGui sees it
-  // over the slider. (Still fails about 1 run in 10 of the whole file, never alone: the window
-  // then has neither the pointer nor the keyboard throughout, and ImGui no position at all —
-  // raising it, giving it the input focus and moving by way of the pixel beside did not help:
-  // after 200 frames the move comes as SDL's own motion event instead, which ImGui takes from a
-  // window without the pointer.)
+  // over the slider. Under load (CI's suite, two programs at a time) the window now and then never
+  // gets the pointer nor the keyboard, and ImGui 1.86's SDL backend then reads no position at all
+  // (it polls SDL's pointer state, so a pushed SDL motion event does not reach it): after 200
+  // frames the pointer is placed for the overlay directly, which is all the rest of this test
+  // needs of it (the slider, the click and the worker's crash are what it is about).
   const auto over_slider = [&] {
     const ImVec2 at = ImGui::GetIO().MousePos;
     return std::abs(at.x - x) < 1 && std::abs(at.y - y) < 1;
   };
-  for (int i = 0; i < 600 && !over_slider(); ++i) {
+  for (int i = 0; i < 200 && !over_slider(); ++i) {
     if (i % 20 == 0) SDL_WarpMouseInWindow(sdl_window, x, y);
-    if (i >= 200) {
-      SDL_Event motion{};
-      motion.type = SDL_MOUSEMOTION;
-      motion.motion.windowID = SDL_GetWindowID(sdl_window);
-      motion.motion.x = x;
-      motion.motion.y = y;
-      SDL_PushEvent(&motion);
-    }
     frame();
     SDL_Delay(10);
   }
-  ASSERT_TRUE(over_slider()) << "the pointer never reached the slider: ImGui has it at "
-                             << ImGui::GetIO().MousePos.x << "," << ImGui::GetIO().MousePos.y
-                             << ", the slider's point is " << x << "," << y << "; mouse focus "
-                             << (SDL_GetMouseFocus() == sdl_window) << ", keyboard focus "
-                             << (SDL_GetKeyboardFocus() == sdl_window);
+  if (!over_slider()) {
+    std::cerr << "the X server did not move the pointer into the window (mouse focus "
+              << (SDL_GetMouseFocus() == sdl_window) << ", keyboard focus "
+              << (SDL_GetKeyboardFocus() == sdl_window) << "): placed for the overlay instead\n";
+    window.place_overlay_pointer(std::array<float, 2>{float(x), float(y)});
+    frame();
+  }
+  ASSERT_TRUE(over_slider()) << "ImGui has the pointer at " << ImGui::GetIO().MousePos.x << ","
+                             << ImGui::GetIO().MousePos.y << ", the slider's point is " << x
+                             << "," << y;
   SDL_Event press{};
   press.type = SDL_MOUSEBUTTONDOWN;
   press.button.windowID = SDL_GetWindowID(sdl_window);

@@ -146,6 +146,8 @@ void Window::present(const FrameView* image, const std::function<void()>& draw_o
   }
   ImGui_ImplSDLRenderer_NewFrame();
   ImGui_ImplSDL2_NewFrame();
+  if (overlay_pointer_px_)
+    ImGui::GetIO().MousePos = ImVec2((*overlay_pointer_px_)[0], (*overlay_pointer_px_)[1]);
   ImGui::NewFrame();
   if (draw_overlay) draw_overlay();
   ImGui::Render();

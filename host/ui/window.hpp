@@ -5,8 +5,10 @@
 
 #include "app/input.hpp"
 
+#include <array>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -44,6 +46,12 @@ class Window {
   // Asks the next present() to keep a copy of what it draws (image and overlay), RGBA8, rows top
   // to bottom, returned by captured().
   void capture_next_frame() { capture_ = true; }
+  // Where the overlay sees the pointer in the next frames, in window pixels, whatever the system
+  // says, until cleared with std::nullopt. For tests under a virtual X server, which moves the
+  // pointer in its own time and, now and then under load, never into a newly shown window.
+  void place_overlay_pointer(std::optional<std::array<float, 2>> at_px) {
+    overlay_pointer_px_ = at_px;
+  }
   const std::vector<uint8_t>& captured(int* width_px, int* height_px) const {
     *width_px = captured_w_;
     *height_px = captured_h_;
@@ -58,6 +66,7 @@ class Window {
   bool fullscreen_ = false;
   bool imgui_ready_ = false;
   bool capture_ = false;
+  std::optional<std::array<float, 2>> overlay_pointer_px_;
   float ui_scale_ = 0;  // the overlay scale the ImGui style and font have now
   std::vector<uint8_t> captured_;
   int captured_w_ = 0, captured_h_ = 0;
