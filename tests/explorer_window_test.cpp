@@ -10,6 +10,7 @@
 #include "platform/system_facts.hpp"
 #include "test_support.hpp"
 #include "ui/overlay.hpp"
+#include "ui/scene_browser_view.hpp"
 #include "ui/window.hpp"
 
 #include <SDL.h>
@@ -18,6 +19,7 @@
 
 #include <array>
 #include <cmath>
+#include <fstream>
 #include <iostream>
 #include <sstream>
 
@@ -346,6 +348,205 @@ TEST(ExplorerWindowHostile, TheOverlaysSliderCrashesOnlyTheRenderWorker) {
   for (int i = 0; i < 5; ++i) frame();
   EXPECT_GT(rendered, before) << "a fresh worker renders again";
   EXPECT_EQ(slot.state.params[0].v[0], 0);
+}
+
+// The scene browser as a user meets it: three scenes, a preset, a preset for a scene that is not
+// there and a file that is no plugin. Every picture arrives (rendered in the background), is
+// what the window shows in its cell, and a preset's differs from its scene's; the two failures
+// are listed with why. Typing searches, the arrows and Enter open the preset (its values applied),
+// B opens the browser again and Escape closes it without quitting; a second browser on the same
+// cache (a second start) has every picture at once, none rendered.
+void push_scancode(SDL_Scancode code, SDL_Keycode key, bool down) {
+  SDL_Event e{};
+  e.type = down ? SDL_KEYDOWN : SDL_KEYUP;
+  e.key.keysym.scancode = code;
+  e.key.keysym.sym = key;
+  e.key.state = down ? SDL_PRESSED : SDL_RELEASED;
+  SDL_PushEvent(&e);
+}
+
+TEST(SceneBrowserWindow, SearchOpenAndPicturesFromTheCacheOnASecondStart) {
+  ASSERT_EQ(why_no_display(), "") << "run under xvfb-run";
+  const auto dir = test::fresh_dir("browser_plugins");
+  for (const char* id : {"mandelbulb", "menger", "sierpinski"})
+    std::filesystem::copy_file(std::filesystem::path(SCENE_PLUGIN_DIR) / (std::string(id) + PLUGIN_SUFFIX),
+                               dir / (std::string(id) + PLUGIN_SUFFIX));
+  std::ofstream(dir / (std::string("broken") + PLUGIN_SUFFIX)) << "not a plugin";
+  std::filesystem::create_directories(dir / "presets");
+  std::ofstream(dir / "presets" / "low_sponge.toml")
+      << "scene = \"menger\"\nname = \"Low sponge\"\ndescription = \"Two levels.\"\n"
+         "[params]\niterations = 2\n";
+  std::ofstream(dir / "presets" / "orphan.toml")
+      << "scene = \"no_such_scene\"\nname = \"Orphan\"\n";
+  const auto thumbs = test::fresh_dir("browser_thumbnails");
+
+  Window window("Fractalis browser test", kW, kH, false);
+  std::vector<SceneEvent> events;
+  SceneLibrary library({dir}, PluginPolicy{}, RenderSettings{}, test::worker(), &events);
+  ASSERT_EQ(library.slots().size(), 3u);
+  ASSERT_EQ(library.failed_files().size(), 1u);
+  Explorer explorer(Settings{}, test::worker(), library, "mandelbulb");
+  std::vector<PresetProblem> preset_problems;
+  const std::vector<Preset> presets = load_presets({dir}, &preset_problems);
+  ASSERT_EQ(presets.size(), 2u);
+  const SceneBrowserOptions options{192, 108, thumbs};
+  const auto limits = explorer_worker_limits(PluginPolicy{});
+  SceneBrowser browser(presets, preset_problems, options, test::runtime().device(), limits);
+  browser.set_visible(true);
+  BrowserViewState view;
+  InputState input;
+  const auto frame = [&](bool capture = false) {
+    window.poll(KeyBindings::defaults(), input, browser.visible());
+    if (input.quit) return;
+    explorer.update(input, 1.0 / 30, 0.0);
+    for (Action a : explorer.pending_window_actions())
+      if (a == Action::ToggleBrowser) browser.set_visible(!browser.visible());
+    browser.update(explorer.library(), explorer.render_settings());
+    const FrameView* image = browser.visible() ? nullptr : explorer.render(kW, kH);
+    if (capture) window.capture_next_frame();
+    window.present(image, [&] {
+      if (browser.visible()) draw_scene_browser(browser, explorer, window, view);
+    });
+    input.end_frame();
+  };
+  for (int i = 0; i < 3000 && (i < 2 || browser.pending() > 0); ++i) {
+    frame();
+    SDL_Delay(20);
+  }
+  ASSERT_EQ(browser.pending(), 0) << "every picture arrives within a minute";
+  frame(true);
+  int w = 0, h = 0;
+  const std::vector<uint8_t> shown = window.captured(&w, &h);
+  std::string error;
+  ASSERT_TRUE(write_png_atomic(std::filesystem::path(TEST_OUTPUT_DIR) / "browser.png", w, h,
+                               shown, &error))
+      << error;
+
+  // Three scenes, the sponge's preset, the orphan preset and the broken file.
+  const auto& entries = browser.entries();
+  ASSERT_EQ(entries.size(), 6u);
+  ASSERT_EQ(view.cells.size(), 6u) << "every entry drawn";
+  const RgbaImage* sponge = nullptr;
+  const RgbaImage* low_sponge = nullptr;
+  int failed = 0;
+  for (size_t i = 0; i < entries.size(); ++i) {
+    const BrowserEntry& e = entries[i];
+    SCOPED_TRACE(e.title);
+    const std::string why = browser.failed_reason(e);
+    if (e.scene_id.empty()) {
+      ++failed;
+      EXPECT_FALSE(why.empty());
+      EXPECT_EQ(browser.thumbnail(e), nullptr);
+      continue;
+    }
+    EXPECT_EQ(why, "");
+    const RgbaImage* picture = browser.thumbnail(e);
+    ASSERT_NE(picture, nullptr);
+    ASSERT_EQ(picture->width_px, 192);
+    ASSERT_EQ(picture->height_px, 108);
+    EXPECT_GT(luminance_spread(picture->rgba8), 8) << "a picture, not a blank";
+    if (e.scene_id == "menger") (e.preset_id.empty() ? sponge : low_sponge) = picture;
+    // What the window shows in the cell is that picture (inside the selection's frame).
+    const DrawnControl& cell = view.cells[i];
+    size_t same = 0, compared = 0;
+    for (int y = 4; y < 104; ++y)
+      for (int x = 4; x < 188; ++x) {
+        const int sx = static_cast<int>(cell.x_px) + x, sy = static_cast<int>(cell.y_px) + y;
+        if (sx >= w || sy >= h) continue;
+        const uint8_t* a = &shown[(static_cast<size_t>(sy) * w + sx) * 4];
+        const uint8_t* b = &picture->rgba8[(static_cast<size_t>(y) * 192 + x) * 4];
+        bool close = true;
+        for (int c = 0; c < 3; ++c) close = close && std::abs(int(a[c]) - int(b[c])) <= 6;
+        same += close;
+        ++compared;
+      }
+    ASSERT_GT(compared, 1000u) << "the cell is on screen";
+    EXPECT_GT(double(same) / double(compared), 0.97) << "the window shows the picture";
+  }
+  EXPECT_EQ(failed, 2) << "the orphan preset and the broken file";
+  ASSERT_TRUE(sponge && low_sponge);
+  EXPECT_GT(test::pixels_differing(sponge->rgba8, low_sponge->rgba8, 0.05), 192u * 108 / 50)
+      << "the preset's picture is its own";
+  for (const BrowserEntry& e : entries) {
+    if (e.preset_id == "orphan") {
+      EXPECT_NE(e.error.find("no_such_scene"), std::string::npos) << e.error;
+    }
+    if (e.title == std::string("broken") + PLUGIN_SUFFIX) {
+      EXPECT_FALSE(e.error.empty());
+    }
+  }
+
+  // Typing searches: "sponge" is in the Menger sponge's text and so its preset's, nowhere else.
+  SDL_Event text{};
+  text.type = SDL_TEXTINPUT;
+  std::snprintf(text.text.text, sizeof text.text.text, "%s", "Sponge");
+  SDL_PushEvent(&text);
+  for (int i = 0; i < 3; ++i) frame();
+  EXPECT_EQ(browser.query(), "Sponge");
+  size_t expected = 0;
+  for (const BrowserEntry& e : entries) {
+    const SceneInfo* info = nullptr;
+    for (const auto& slot : library.slots())
+      if (slot.scene->info.id == e.scene_id) info = &slot.scene->info;
+    const std::string haystack = info ? info->id + " " + info->name + " " + info->tags + " " +
+                                            info->description
+                                      : e.title + " " + e.description;
+    std::string lowered = haystack;
+    for (char& c : lowered) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    expected += lowered.find("sponge") != std::string::npos;
+  }
+  ASSERT_EQ(browser.shown().size(), expected);
+  ASSERT_EQ(expected, 2u) << "the sponge and its preset";
+  // Right arrow to the second (the preset), Enter opens it with its values.
+  push_scancode(SDL_SCANCODE_RIGHT, SDLK_RIGHT, true);
+  frame();
+  push_scancode(SDL_SCANCODE_RIGHT, SDLK_RIGHT, false);
+  frame();
+  ASSERT_EQ(browser.selected(), 1);
+  EXPECT_EQ(entries[browser.shown()[1]].preset_id, "low_sponge");
+  push_scancode(SDL_SCANCODE_RETURN, SDLK_RETURN, true);
+  frame();
+  push_scancode(SDL_SCANCODE_RETURN, SDLK_RETURN, false);
+  frame();
+  EXPECT_FALSE(browser.visible()) << "opening closes the browser";
+  ASSERT_EQ(explorer.current().scene->info.id, "menger");
+  const int level = explorer.current().scene->info.find_param("iterations");
+  EXPECT_EQ(explorer.current().state.params[level].v[0], 2) << "the preset's value";
+  // B opens it again (over the new scene); Escape closes it and does not quit.
+  for (int i = 0; i < 3; ++i) frame();
+  push_scancode(SDL_SCANCODE_B, SDLK_b, true);
+  frame();
+  push_scancode(SDL_SCANCODE_B, SDLK_b, false);
+  frame();
+  EXPECT_TRUE(browser.visible());
+  push_scancode(SDL_SCANCODE_ESCAPE, SDLK_ESCAPE, true);
+  frame();
+  push_scancode(SDL_SCANCODE_ESCAPE, SDLK_ESCAPE, false);
+  frame();
+  EXPECT_FALSE(input.quit) << "Escape in the browser closes it, not the explorer";
+  EXPECT_FALSE(browser.visible());
+  // Tab still cycles the scenes.
+  const std::string before = explorer.current().scene->info.id;
+  push_scancode(SDL_SCANCODE_TAB, SDLK_TAB, true);
+  frame();
+  push_scancode(SDL_SCANCODE_TAB, SDLK_TAB, false);
+  frame();
+  EXPECT_NE(explorer.current().scene->info.id, before);
+
+  // A second start: every picture from the cache at once, none rendered.
+  SceneBrowser second(presets, preset_problems, options, test::runtime().device(), limits);
+  second.set_visible(true);
+  second.update(library, explorer.render_settings());
+  EXPECT_EQ(second.pending(), 0);
+  EXPECT_EQ(second.rendered(), 0);
+  EXPECT_TRUE(second.cache().problems().empty());
+  for (size_t i = 0; i < entries.size(); ++i) {
+    if (entries[i].thumbnail_key.empty()) continue;
+    const RgbaImage* a = browser.thumbnail(entries[i]);
+    const RgbaImage* b = second.thumbnail(second.entries()[i]);
+    ASSERT_TRUE(a && b) << entries[i].title;
+    EXPECT_EQ(a->rgba8, b->rgba8) << entries[i].title;
+  }
 }
 
 TEST(OverlayOnEveryScreen, ReadableWithNoLabelCut) {

@@ -77,6 +77,7 @@ SceneLibrary::SceneLibrary(std::vector<std::filesystem::path> folders, const Plu
     const LoadOutcome& o = outcomes[i];
     auto skipped = [&](const std::string& why) {
       events->push_back({SceneEvent::Kind::Skipped, "", o.file, why});
+      failed_files_.push_back(events->back());
     };
     if (!o.scene) {
       skipped(o.message);
@@ -175,6 +176,7 @@ std::vector<SceneEvent> SceneLibrary::poll(double now_s, const RenderSettings& s
   for (auto& w : watchers_) {
     for (const PluginChange& c : w->poll(now_s)) {
       if (c.kind == PluginChange::Kind::Removed) {
+        std::erase_if(failed_files_, [&](const SceneEvent& f) { return f.file == c.file; });
         for (auto& slot : slots_)
           if (slot.scene->file == c.file && !slot.removed) {
             slot.removed = true;
@@ -184,6 +186,11 @@ std::vector<SceneEvent> SceneLibrary::poll(double now_s, const RenderSettings& s
       }
       events.push_back(add_or_replace(c.file, settings));
     }
+  }
+  // What failed now and what no longer does.
+  for (const SceneEvent& e : events) {
+    std::erase_if(failed_files_, [&](const SceneEvent& f) { return f.file == e.file; });
+    if (e.kind == SceneEvent::Kind::Skipped) failed_files_.push_back(e);
   }
   return events;
 }

@@ -57,6 +57,10 @@ class SceneLibrary {
   // Applies the folder changes that became stable by now_s; returns what happened, in order.
   std::vector<SceneEvent> poll(double now_s, const RenderSettings& settings);
 
+  // The files in the folders that give no scene now (each a Skipped event: the file and why),
+  // for the scene browser. A file that loads later leaves the list; one removed leaves it too.
+  const std::vector<SceneEvent>& failed_files() const { return failed_files_; }
+
   // Drops a removed scene's slot (call when the user switches away from it).
   void drop_if_removed(int index);
 
@@ -67,6 +71,7 @@ class SceneLibrary {
   VettedScenes vetted_;
   RenderWorker& worker_;
   std::vector<SceneSlot> slots_;
+  std::vector<SceneEvent> failed_files_;
   std::vector<std::unique_ptr<PluginWatcher>> watchers_;
 };
 

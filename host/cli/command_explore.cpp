@@ -3,7 +3,9 @@
 #include "cli/commands.hpp"
 #include "cli/explorer_setup.hpp"
 #include "platform/system_facts.hpp"
+#include "io/cache_dirs.hpp"
 #include "ui/overlay.hpp"
+#include "ui/scene_browser_view.hpp"
 #include "ui/window.hpp"
 
 #include <spdlog/spdlog.h>
@@ -52,6 +54,14 @@ int command_explore(const std::vector<std::string>& args, std::ostream& out,
   Window window("Fractalis", render.width_px, render.height_px,
                 options.has("fullscreen") || settings.explorer.fullscreen);
   OverlayState overlay;
+  // The scene browser: open at start when no scene was asked for.
+  SceneBrowserOptions browser_options;
+  if (const auto cache = fractalis_cache_dir(); !cache.empty())
+    browser_options.cache_folder = cache / "thumbnails";
+  SceneBrowser browser(setup.presets, setup.preset_problems, browser_options,
+                       setup.worker->device(), explorer_worker_limits(settings.plugins));
+  browser.set_visible(!setup.scene_asked);
+  BrowserViewState browser_view;
   overlay.settings_file = user_settings_path();
   const KeyBindings bindings = KeyBindings::with_extra(settings.explorer.key_bindings);
   overlay.keys = bindings;
@@ -62,22 +72,32 @@ int command_explore(const std::vector<std::string>& args, std::ostream& out,
 
   LoopSteps steps;
   steps.now_s = now_s;
-  steps.poll = [&](InputState& input) { window.poll(bindings, input); };
+  // The browser is modal: while it is open, keys search and choose in it.
+  steps.poll = [&](InputState& input) { window.poll(bindings, input, browser.visible()); };
   steps.update = [&](const InputState& input, double dt_s) {
     explorer.update(input, dt_s, now_s());
     for (Action a : explorer.pending_window_actions()) {
       if (a == Action::ToggleOverlay) overlay.visible = !overlay.visible;
       if (a == Action::ToggleFullscreen) window.set_fullscreen(!window.fullscreen());
       if (a == Action::Screenshot) overlay.screenshot_requested = true;
+      if (a == Action::ToggleBrowser) browser.set_visible(!browser.visible());
     }
+    browser.update(explorer.library(), explorer.render_settings());
     if (explorer.mouse_look() != mouse_captured) {
       mouse_captured = explorer.mouse_look();
       window.set_mouse_capture(mouse_captured);
     }
   };
   steps.render = [&] {
-    const FrameView* image = explorer.render(window.width_px(), window.height_px());
-    window.present(image, [&] { draw_overlay(explorer, overlay); });
+    // Behind the browser the last picture stays: the CPU goes to the browser's pictures.
+    const FrameView* image =
+        browser.visible() ? nullptr : explorer.render(window.width_px(), window.height_px());
+    window.present(image, [&] {
+      if (browser.visible())
+        draw_scene_browser(browser, explorer, window, browser_view);
+      else
+        draw_overlay(explorer, overlay);
+    });
     if (overlay.screenshot_requested) {
       overlay.screenshot_requested = false;
       const int w =

@@ -17,6 +17,10 @@ struct ExplorerSetup {
   std::unique_ptr<RenderWorker> worker;  // renders for the explorer, on the chosen device
   std::unique_ptr<SceneLibrary> library;
   std::unique_ptr<Explorer> explorer;
+  // Every preset in the plugin folders, and the files that failed to load as presets.
+  std::vector<Preset> presets;
+  std::vector<PresetProblem> preset_problems;
+  bool scene_asked = false;  // --scene, --preset or --path was given
 };
 ExplorerSetup prepare_explorer(ParsedOptions options);
 

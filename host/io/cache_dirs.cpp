@@ -14,6 +14,7 @@ const std::vector<CacheFolder>& cache_folders() {
       {"scenes", "which plugin files loaded, by file identity"},
       {"vetted", "which scene files passed the explorer's test render"},
       {"sweep", "reference images of fractalis sweep"},
+      {"thumbnails", "the explorer's scene browser pictures"},
   };
   return folders;
 }

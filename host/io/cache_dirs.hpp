@@ -18,7 +18,7 @@ struct CacheFolder {
 };
 // kernels: compiled OpenCL programs (render/kernel_cache.hpp); scenes: plugin scan verdicts
 // (plugin/scan_cache.hpp); vetted: test-render markers (render/scene_vetting.hpp); sweep: reference
-// images of `fractalis sweep`.
+// images of `fractalis sweep`; thumbnails: the scene browser's pictures (app/thumbnail_cache.hpp).
 const std::vector<CacheFolder>& cache_folders();
 
 }  // namespace fr

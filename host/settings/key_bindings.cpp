@@ -20,6 +20,7 @@ KeyBindings KeyBindings::defaults() {
       {"F11", Action::ToggleFullscreen},
       {"Tab", Action::NextScene},
       {"Backspace", Action::PreviousScene},
+      {"B", Action::ToggleBrowser},
       {"F12", Action::Screenshot},
       {"K", Action::AddKeyframe},
       {"P", Action::PlayPath},

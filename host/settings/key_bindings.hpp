@@ -25,6 +25,7 @@ enum class Action {
   ToggleFullscreen,
   NextScene,
   PreviousScene,
+  ToggleBrowser,  // the scene browser (ui/scene_browser_view.hpp)
   Screenshot,
   AddKeyframe,  // the view on screen becomes the camera path's next keyframe
   PlayPath,     // play the camera path from its start, or stop it
@@ -46,6 +47,7 @@ inline constexpr EnumName<Action> kActionNames[] = {
     {Action::ToggleFullscreen, "fullscreen", "fullscreen", nullptr},
     {Action::NextScene, "next_scene", "next scene", nullptr},
     {Action::PreviousScene, "previous_scene", "previous scene", nullptr},
+    {Action::ToggleBrowser, "browser", "scene browser", nullptr},
     {Action::Screenshot, "screenshot", "screenshot", nullptr},
     {Action::AddKeyframe, "add_keyframe", "add keyframe", nullptr},
     {Action::PlayPath, "play_path", "play / stop path", nullptr},

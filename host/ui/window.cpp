@@ -50,6 +50,7 @@ Window::~Window() {
     ImGui::DestroyContext();
   }
   if (texture_) SDL_DestroyTexture(texture_);
+  for (auto& [key, picture] : pictures_) SDL_DestroyTexture(picture);
   if (renderer_) SDL_DestroyRenderer(renderer_);
   if (window_) SDL_DestroyWindow(window_);
   SDL_Quit();
@@ -67,6 +68,17 @@ int Window::height_px() const {
   return h;
 }
 
+void* Window::picture_texture(const std::string& key, int width_px, int height_px,
+                              const uint8_t* rgba8) {
+  if (const auto it = pictures_.find(key); it != pictures_.end()) return it->second;
+  SDL_Texture* picture = SDL_CreateTexture(renderer_, SDL_PIXELFORMAT_ABGR8888,
+                                           SDL_TEXTUREACCESS_STATIC, width_px, height_px);
+  if (!picture) return nullptr;
+  SDL_UpdateTexture(picture, nullptr, rgba8, width_px * 4);
+  pictures_[key] = picture;
+  return picture;
+}
+
 void Window::set_fullscreen(bool on) {
   SDL_SetWindowFullscreen(window_, on ? SDL_WINDOW_FULLSCREEN_DESKTOP : 0);
   fullscreen_ = on;
@@ -76,11 +88,11 @@ void Window::set_mouse_capture(bool on) {
   SDL_SetRelativeMouseMode(on ? SDL_TRUE : SDL_FALSE);
 }
 
-void Window::poll(const KeyBindings& bindings, InputState& input) {
+void Window::poll(const KeyBindings& bindings, InputState& input, bool keys_to_overlay) {
   SDL_Event e;
   while (SDL_PollEvent(&e)) {
     ImGui_ImplSDL2_ProcessEvent(&e);
-    const bool overlay_keys = ImGui::GetIO().WantCaptureKeyboard;
+    const bool overlay_keys = keys_to_overlay || ImGui::GetIO().WantCaptureKeyboard;
     const bool overlay_mouse = ImGui::GetIO().WantCaptureMouse && !SDL_GetRelativeMouseMode();
     InputEvent ev;
     switch (e.type) {

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -30,8 +31,9 @@ class Window {
   Window& operator=(const Window&) = delete;
 
   // Folds pending SDL events into `input` (key repeats ignored; keys typed into the overlay go to
-  // the overlay).
-  void poll(const KeyBindings& bindings, InputState& input);
+  // the overlay). With `keys_to_overlay` every key press goes to the overlay alone (a modal
+  // panel such as the scene browser: Escape closes it rather than quitting).
+  void poll(const KeyBindings& bindings, InputState& input, bool keys_to_overlay = false);
 
   // Uploads a new image (null: keep showing the last one), draws it over the whole window, then
   // the overlay that `draw_overlay` builds with ImGui calls, and presents.
@@ -46,6 +48,10 @@ class Window {
   // Asks the next present() to keep a copy of what it draws (image and overlay), RGBA8, rows top
   // to bottom, returned by captured().
   void capture_next_frame() { capture_ = true; }
+  // A texture of an RGBA picture for the overlay's ImGui::Image (an SDL_Texture*), made the
+  // first time `key` is asked for and kept until the window closes; null if SDL cannot make it.
+  void* picture_texture(const std::string& key, int width_px, int height_px,
+                        const uint8_t* rgba8);
   // Where the overlay sees the pointer in the next frames, in window pixels, whatever the system
   // says, until cleared with std::nullopt. For tests under a virtual X server, which moves the
   // pointer in its own time and, now and then under load, never into a newly shown window.
@@ -62,6 +68,7 @@ class Window {
   SDL_Window* window_ = nullptr;
   SDL_Renderer* renderer_ = nullptr;
   SDL_Texture* texture_ = nullptr;
+  std::map<std::string, SDL_Texture*> pictures_;  // picture_texture's, by key
   int texture_w_ = 0, texture_h_ = 0;
   bool fullscreen_ = false;
   bool imgui_ready_ = false;
