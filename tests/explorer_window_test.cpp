@@ -15,6 +15,7 @@
 
 #include <SDL.h>
 #include <imgui.h>
+#include <imgui_internal.h>
 #include <stb_image.h>
 
 #include <array>
@@ -547,6 +548,81 @@ TEST(SceneBrowserWindow, SearchOpenAndPicturesFromTheCacheOnASecondStart) {
     ASSERT_TRUE(a && b) << entries[i].title;
     EXPECT_EQ(a->rgba8, b->rgba8) << entries[i].title;
   }
+}
+
+// A choice parameter in the overlay is a combo box of its names: the pointer opens the hybrid's
+// "Step 1" combo and picks "menger" (index 5 of none, bulb, box_fold, sphere_fold,
+// scale_translate, menger, ...); the value is that index, and the scene renders with it (the
+// choice is compiled in: a new kernel).
+TEST(OverlayChoice, TheComboBoxSetsAChoiceByItsName) {
+  ASSERT_EQ(why_no_display(), "") << "run under xvfb-run";
+  const auto dir = test::fresh_dir("choice_plugins");
+  std::filesystem::copy_file(std::filesystem::path(SCENE_PLUGIN_DIR) / (std::string("hybrid") + PLUGIN_SUFFIX),
+                             dir / (std::string("hybrid") + PLUGIN_SUFFIX));
+  Window window("Fractalis choice test", 1280, 1000, false);
+  std::vector<SceneEvent> events;
+  SceneLibrary library({dir}, PluginPolicy{}, RenderSettings{}, test::worker(), &events);
+  ASSERT_EQ(library.slots().size(), 1u);
+  Explorer explorer(Settings{}, test::worker(), library, "hybrid");
+  const SceneInfo& info = explorer.current().scene->info;
+  const int step1 = info.find_param("step1");
+  ASSERT_GE(step1, 0);
+  ASSERT_EQ(info.params[step1].choices.at(5), "menger");
+  ASSERT_NE(explorer.current().state.params[step1].v[0], 5);
+  OverlayState overlay;
+  InputState input;
+  float font_px = 0, list_top = 0, list_pitch = 0;
+  int rendered = 0;
+  const auto frame = [&] {
+    window.poll(KeyBindings::defaults(), input);
+    explorer.update(input, 1.0 / 30, 0.0);
+    if (explorer.render(160, 125)) ++rendered;  // (small: the overlay is what is tested)
+    window.present(nullptr, [&] {
+      draw_overlay(explorer, overlay);
+      font_px = ImGui::GetFontSize();
+      // The open list (ImGui names a combo's popup so): where its first line is (it scrolls, to
+      // show the value chosen) and the pitch of its thirteen lines.
+      if (ImGuiWindow* list = ImGui::FindWindowByName("##Combo_00"); list && list->Active) {
+        list_top = list->Pos.y + list->WindowPadding.y - list->Scroll.y;
+        list_pitch = (list->ContentSize.y + ImGui::GetStyle().ItemSpacing.y) / 13;
+      }
+    });
+    input.end_frame();
+  };
+  const auto click = [&](float x, float y) {
+    window.place_overlay_pointer(std::array<float, 2>{x, y});
+    frame();
+    for (const bool down : {true, false}) {
+      SDL_Event e{};
+      e.type = down ? SDL_MOUSEBUTTONDOWN : SDL_MOUSEBUTTONUP;
+      e.button.windowID = SDL_GetWindowID(window_titled("Fractalis choice test"));
+      e.button.button = SDL_BUTTON_LEFT;
+      e.button.state = down ? SDL_PRESSED : SDL_RELEASED;
+      e.button.clicks = 1;
+      e.button.x = static_cast<int>(x);
+      e.button.y = static_cast<int>(y);
+      SDL_PushEvent(&e);
+      frame();
+    }
+  };
+  for (int i = 0; i < 3; ++i) frame();
+  const DrawnControl* combo = nullptr;
+  for (const DrawnControl& c : overlay.layout.param_controls)
+    if (c.name == "step1") combo = &c;
+  ASSERT_NE(combo, nullptr);
+  const float x = combo->x_px + 0.3f * combo->width_px;
+  click(x, combo->y_px + 0.5f * combo->height_px);
+  frame();  // (the list's first frame has no size yet)
+  ASSERT_GT(list_pitch, 0.5f * font_px) << "the list opened";
+  click(x, list_top + 5 * list_pitch + 0.5f * font_px);
+  EXPECT_EQ(explorer.current().state.params[step1].v[0], 5)
+      << info.params[step1].choice_name(explorer.current().state.params[step1]);
+  EXPECT_EQ(info.params[step1].choice_name(explorer.current().state.params[step1]), "menger");
+  const int before = rendered;
+  window.place_overlay_pointer(std::nullopt);
+  for (int i = 0; i < 5; ++i) frame();
+  EXPECT_GT(rendered, before) << "the scene renders with the new step";
+  EXPECT_EQ(explorer.current().error, "");
 }
 
 TEST(OverlayOnEveryScreen, ReadableWithNoLabelCut) {
