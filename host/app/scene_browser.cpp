@@ -128,19 +128,6 @@ void SceneBrowser::rebuild(SceneLibrary& library, const RenderSettings& settings
 }
 
 void SceneBrowser::update(SceneLibrary& library, const RenderSettings& settings) {
-  // The library as it is now: every slot's scene (a reload is a new one) and every failed file.
-  std::ostringstream signature;
-  for (const SceneSlot& slot : library.slots())
-    signature << slot.scene.get() << ' ' << slot.removed << '\n';
-  for (const SceneEvent& failed : library.failed_files())
-    signature << failed.file.string() << ' ' << failed.reason << '\n';
-  Settings all;
-  all.render = settings;
-  signature << hex16(fnv1a(format_settings_toml(all, "")));
-  if (signature.str() != library_signature_ || entries_.empty()) {
-    library_signature_ = signature.str();
-    rebuild(library, settings);
-  }
   for (ThumbnailResult& done : renderer_.take_done()) {
     if (!done.error.empty()) {
       failed_[done.key] = done.error;
@@ -151,6 +138,16 @@ void SceneBrowser::update(SceneLibrary& library, const RenderSettings& settings)
     images_[done.key] = std::move(done.image);
   }
   if (!visible_) return;
+  // Built again when the library changed (a scene added, reloaded, failed or removed) or the
+  // settings the pictures are rendered with did.
+  Settings all;
+  all.render = settings;
+  const std::string signature = std::to_string(library.generation()) + " " +
+                                hex16(fnv1a(format_settings_toml(all, "")));
+  if (signature != library_signature_) {
+    library_signature_ = signature;
+    rebuild(library, settings);
+  }
   // The selected entry first, then the rest of what is shown, in order.
   std::vector<int> order;
   if (selected_ >= 0) order.push_back(shown_[selected_]);

@@ -89,7 +89,7 @@ class SceneBrowser {
   ThumbnailCache cache_;
   ThumbnailRenderer renderer_;
   bool visible_ = false;
-  std::string library_signature_;  // what the entries were built from
+  std::string library_signature_;  // the library's generation and the settings built from
   std::vector<BrowserEntry> entries_;
   std::vector<ThumbnailJob> jobs_;  // by entry: what its picture is rendered from
   std::vector<int> shown_;

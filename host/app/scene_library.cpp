@@ -176,7 +176,8 @@ std::vector<SceneEvent> SceneLibrary::poll(double now_s, const RenderSettings& s
   for (auto& w : watchers_) {
     for (const PluginChange& c : w->poll(now_s)) {
       if (c.kind == PluginChange::Kind::Removed) {
-        std::erase_if(failed_files_, [&](const SceneEvent& f) { return f.file == c.file; });
+        if (std::erase_if(failed_files_, [&](const SceneEvent& f) { return f.file == c.file; }))
+          ++generation_;
         for (auto& slot : slots_)
           if (slot.scene->file == c.file && !slot.removed) {
             slot.removed = true;
@@ -192,12 +193,15 @@ std::vector<SceneEvent> SceneLibrary::poll(double now_s, const RenderSettings& s
     std::erase_if(failed_files_, [&](const SceneEvent& f) { return f.file == e.file; });
     if (e.kind == SceneEvent::Kind::Skipped) failed_files_.push_back(e);
   }
+  if (!events.empty()) ++generation_;
   return events;
 }
 
 void SceneLibrary::drop_if_removed(int index) {
-  if (index >= 0 && index < static_cast<int>(slots_.size()) && slots_[index].removed)
+  if (index >= 0 && index < static_cast<int>(slots_.size()) && slots_[index].removed) {
     slots_.erase(slots_.begin() + index);
+    ++generation_;
+  }
 }
 
 }  // namespace fr

@@ -60,6 +60,9 @@ class SceneLibrary {
   // The files in the folders that give no scene now (each a Skipped event: the file and why),
   // for the scene browser. A file that loads later leaves the list; one removed leaves it too.
   const std::vector<SceneEvent>& failed_files() const { return failed_files_; }
+  // Counts the changes: a poll that added, reloaded, kept, skipped or removed anything (or a
+  // dropped slot) makes it one larger, so a view of the library knows when to look again.
+  uint64_t generation() const { return generation_; }
 
   // Drops a removed scene's slot (call when the user switches away from it).
   void drop_if_removed(int index);
@@ -72,6 +75,7 @@ class SceneLibrary {
   RenderWorker& worker_;
   std::vector<SceneSlot> slots_;
   std::vector<SceneEvent> failed_files_;
+  uint64_t generation_ = 0;
   std::vector<std::unique_ptr<PluginWatcher>> watchers_;
 };
 
