@@ -192,7 +192,7 @@ TEST(Cli, HelpAndVersion) {
     EXPECT_EQ(r.code, 0) << name;
     EXPECT_NE(r.out.find("usage: fractalis " + name), std::string::npos) << r.out;
   }
-  EXPECT_EQ(listed, 10);
+  EXPECT_EQ(listed, 11);
   const CliRun v = run({"--version"});
   EXPECT_EQ(v.code, 0);
   EXPECT_NE(v.out.find("scene ABI 1.2"), std::string::npos);

@@ -30,6 +30,7 @@ const std::vector<std::string> kFloors = {
     "bench",     // frame timing and reports
     "sweep",     // error against run time
     "check",     // the conformance checks
+    "authoring", // scene projects: `fractalis new`
     "app",       // the explorer core, the scene library, the explorer benchmark (drivers)
     "ui",        // the SDL window and the overlay
     "cli",       // the commands

@@ -42,6 +42,7 @@ const CommandEntry kCommands[] = {
     {"list", "list scene plugins, their parameters, or why they failed to load", command_list},
     {"gallery", "render every scene and preset into a folder with an index.html contact sheet",
      command_gallery},
+    {"new", "write, build and install a new scene project (for scene authors)", command_new},
     {"devices", "list OpenCL platforms and devices", command_devices},
     {"check", "run the conformance checks on a scene plugin (for scene authors)", command_check},
     {"cache", "show fractalis's cache folders and their sizes; --clear empties them",

@@ -40,6 +40,7 @@ int command_animate(const std::vector<std::string>& args, std::ostream& out, std
 int command_bench(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 int command_list(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 int command_gallery(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+int command_new(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 int command_explore(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 int command_sweep(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 int command_check(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);

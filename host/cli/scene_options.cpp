@@ -158,6 +158,13 @@ std::filesystem::path shipped_path_file(const std::string& name) {
   return (exe.parent_path().parent_path() / FRACTALIS_PATHS_INSTALL_DIR / name).lexically_normal();
 }
 
+std::filesystem::path shipped_folder(const std::filesystem::path& in_source_tree,
+                                     const std::filesystem::path& installed) {
+  const std::filesystem::path exe = executable_path();
+  if (runs_from_build_tree(exe)) return in_source_tree.lexically_normal();
+  return (exe.parent_path().parent_path() / installed).lexically_normal();
+}
+
 std::filesystem::path user_scene_folder() {
   const std::filesystem::path folder = user_folder(UserFolder::Data);
   return folder.empty() ? folder : folder / "scenes";

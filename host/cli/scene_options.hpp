@@ -39,6 +39,10 @@ std::vector<std::filesystem::path> plugin_folders(const Settings& settings,
 // A camera path that ships with fractalis (config/paths/ in the source tree, share/fractalis/paths
 // installed), for the executable that runs: "benchmark.toml" is the benchmark scene's route.
 std::filesystem::path shipped_path_file(const std::string& name);
+// A folder fractalis ships: `in_source_tree` when it runs from the build tree, else
+// `installed` (relative to the install prefix, found from the executable).
+std::filesystem::path shipped_folder(const std::filesystem::path& in_source_tree,
+                                     const std::filesystem::path& installed);
 
 // Where a user drops scenes: $XDG_DATA_HOME/fractalis/scenes (~/.local/share/fractalis/scenes).
 std::filesystem::path user_scene_folder();
