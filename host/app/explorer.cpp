@@ -161,6 +161,7 @@ const FrameView* Explorer::render(int window_width_px, int window_height_px) {
   good_scene_id_ = slot.scene->info.id;
   good_state_ = slot.state;
   failed_state_.reset();
+  ++frames_rendered_;
   stats_.frame_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   frames_.report(stats_.frame_ms);
@@ -183,6 +184,7 @@ bool Explorer::took_the_worker_down(const SceneSlot& slot) const {
 
 void Explorer::worker_failed(SceneSlot& slot, const RenderWorkerFailure& failure) {
   const std::string& id = slot.scene->info.id;
+  ++worker_failures_;
   spdlog::error("{}", failure.what());
   slot.error = failure.what();
   failed_scene_id_ = id;

@@ -55,6 +55,7 @@ class Explorer {
   int current_index() const { return current_; }
   SceneSlot& current() { return library_.slots()[current_]; }
   SceneLibrary& library() { return library_; }
+  RenderWorker& worker() { return worker_; }
   RenderSettings& render_settings() { return settings_.render; }
   Settings& settings() { return settings_; }
   CameraMode camera_mode() const { return mode_; }
@@ -66,6 +67,15 @@ class Explorer {
   void set_count_evaluations(bool on);
   // Something outside update() (the overlay) changed the scene or settings: refine again.
   void mark_changed() { changed_ = true; }
+  // The current scene's code changed under it (edit mode swapped its DE): whatever took the
+  // render worker down before is tried again, and the view refines again.
+  void scene_code_changed() {
+    failed_state_.reset();
+    changed_ = true;
+  }
+  // Frames rendered, and render-worker failures (a crash, a hang, a limit), since the start.
+  uint64_t frames_rendered() const { return frames_rendered_; }
+  int worker_failures() const { return worker_failures_; }
 
   // The camera path being recorded or played (app/path_recorder.hpp). While it plays, the
   // camera and parameters follow it and flying is paused.
@@ -98,6 +108,8 @@ class Explorer {
   int current_ = 0;
   bool changed_ = true;
   bool count_evaluations_ = false;
+  uint64_t frames_rendered_ = 0;
+  int worker_failures_ = 0;
   ExplorerStats stats_;
   PathRecorder path_;
   FrameView last_;                      // the last frame rendered (see render)

@@ -3,7 +3,9 @@
 #include "cli/commands.hpp"
 #include "cli/explorer_setup.hpp"
 #include "platform/system_facts.hpp"
+#include "app/scene_edit.hpp"
 #include "io/cache_dirs.hpp"
+#include "platform/child_process.hpp"
 #include "ui/overlay.hpp"
 #include "ui/scene_browser_view.hpp"
 #include "ui/window.hpp"
@@ -24,6 +26,9 @@ int command_explore(const std::vector<std::string>& args, std::ostream& out,
       {"path", "FILE", false,
        "camera path to play from the start (P stops and replays it; K adds keyframes)"});
   specs.push_back({"fullscreen", nullptr, false, "start in fullscreen"});
+  specs.push_back({"edit", "DIR", false,
+                   "watch the scene project DIR (as `fractalis new` makes): a saved .cl shows at "
+                   "once, a saved .c is rebuilt and reloaded"});
   specs.push_back({"help", nullptr, false, "show this help"});
   auto options = parse_options("explore", args, specs);
   if (options.has("help")) {
@@ -46,6 +51,24 @@ int command_explore(const std::vector<std::string>& args, std::ostream& out,
                             : -1;
   if (const std::string why = why_no_display(); !why.empty())
     throw std::runtime_error(why + "; use `fractalis render` instead");
+  // Edit mode: the project's scene, watched (app/scene_edit.hpp).
+  std::unique_ptr<SceneEdit> edit;
+  if (const auto dir = options.get("edit")) {
+    std::string error;
+    const std::optional<SceneProject> project = read_scene_project(*dir, &error);
+    if (!project) throw UsageError("--edit: " + error);
+    if (!std::filesystem::exists(project->dir / "build" / "CMakeCache.txt"))
+      throw UsageError("--edit: " + (project->dir / "build").string() +
+                       " is not built: `fractalis new` builds a project, or cmake -S " +
+                       project->dir.string() + " -B " + (project->dir / "build").string());
+    const std::filesystem::path cmake = find_program_on_path("cmake");
+    if (cmake.empty()) throw std::runtime_error("--edit: CMake is not on the PATH (apt-get install cmake)");
+    if (options.has("scene") && *options.get("scene") != project->scene_id)
+      throw UsageError("--edit: the project is scene '" + project->scene_id + "', not --scene " +
+                       *options.get("scene"));
+    options.values["scene"] = {project->scene_id};
+    edit = std::make_unique<SceneEdit>(*project, cmake);
+  }
   ExplorerSetup setup = prepare_explorer(options);
   Explorer& explorer = *setup.explorer;
   const Settings& settings = setup.settings;
@@ -90,6 +113,11 @@ int command_explore(const std::vector<std::string>& args, std::ostream& out,
   };
   steps.render = [&] {
     // Behind the browser the last picture stays: the CPU goes to the browser's pictures.
+    if (edit) {
+      edit->poll(explorer, now_s());
+      overlay.edit_status = edit->status();
+      overlay.edit_failed = edit->failed();
+    }
     const FrameView* image =
         browser.visible() ? nullptr : explorer.render(window.width_px(), window.height_px());
     window.present(image, [&] {

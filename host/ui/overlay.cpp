@@ -327,6 +327,9 @@ void draw_overlay(Explorer& explorer, OverlayState& overlay) {
   const std::string title =
       "Fractalis (" + overlay.keys.label(Action::ToggleOverlay) + " hides)###main";
   ImGui::Begin(title.c_str(), nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+  if (!overlay.edit_status.empty())
+    ImGui::TextColored(overlay.edit_failed ? ImVec4(1, 0.45f, 0.35f, 1) : ImVec4(0.6f, 0.9f, 0.6f, 1),
+                       "%s", overlay.edit_status.c_str());
   draw_statistics(explorer, overlay);
   std::vector<DrawnControl> param_controls;
   draw_scene(explorer, overlay, &param_controls);

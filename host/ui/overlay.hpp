@@ -43,6 +43,10 @@ struct OverlayState {
   std::array<char, 1024> path_file{"fractalis-path.toml"};  // the camera path's Save / Load file
   std::filesystem::path settings_file;  // where "Save settings" writes (the user's config.toml)
   KeyBindings keys = KeyBindings::defaults();  // in force: the labels name these keys
+  // Edit mode (app/scene_edit.hpp): what the last saved change did, shown at the top; red when
+  // it failed. Empty outside edit mode.
+  std::string edit_status;
+  bool edit_failed = false;
 };
 
 // Builds the panel; changes go straight into the explorer's scene state and settings (and mark

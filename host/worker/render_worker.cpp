@@ -230,6 +230,8 @@ std::string RenderWorker::call(uint32_t kind, const std::string& request, const 
       std::string which;  // the setting behind the limit
       if (limit_s == limits_.frame.first_s)
         which = limits_.frame.adaptive ? " (plugins.frame_limit_s)" : " (render.watchdog_s)";
+      else if (limit_s == kProbeLimitOfAnEditS && stage == std::string("probing the DE"))
+        which = " (a changed DE's first probe)";
       else if (limits_.frame.adaptive && stage != std::string("starting"))
         which = " (the scene's slowest time per pixel so far, times 20)";
       fail(scene, stage, "did not finish within " + seconds_text(limit_s) + which, true);
@@ -470,9 +472,15 @@ std::vector<float> RenderWorker::probe_de(const SceneInfo& info,
   w.raw(points.data(), points.size() * sizeof(points[0]));
   w.i32(lanes);
   w.u32(static_cast<uint32_t>(precision));
-  const std::string reply =
-      call(static_cast<uint32_t>(RenderWireKind::Probe), w.bytes(), info.id, "probing the DE",
-           frame_limit_.limit_s(key, static_cast<double>(points.size())));
+  // A scene probed before whose DE changed (the explorer's edit mode) gets 10 s, not a new
+  // scene's first-sample limit: a probe is a few points, and its build the DE alone, so an edit
+  // that never returns is said within seconds.
+  double limit_s = frame_limit_.limit_s(key, static_cast<double>(points.size()));
+  if (probed_ids_.count(info.id) && (limit_s <= 0 || limit_s > kProbeLimitOfAnEditS))
+    limit_s = kProbeLimitOfAnEditS;
+  const std::string reply = call(static_cast<uint32_t>(RenderWireKind::Probe), w.bytes(),
+                                 info.id, "probing the DE", limit_s);
+  probed_ids_.insert(info.id);
   WireReader r(reply);
   const uint32_t count = r.u32();
   std::vector<float> values(points.size());

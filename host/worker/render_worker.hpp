@@ -30,6 +30,7 @@
 #include <chrono>
 #include <filesystem>
 #include <map>
+#include <set>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -139,7 +140,11 @@ class RenderWorker {
   int pending_samples_ = 0;  // samples asked for since the last finish
   std::chrono::steady_clock::time_point samples_started_;
   std::string last_scene_id_;  // of the last sample: the scene a finish reads back
+  std::set<std::string> probed_ids_;  // scenes whose DE a probe has answered for
 };
+
+// The probe's limit for a scene probed before under another DE (an edit): seconds.
+constexpr double kProbeLimitOfAnEditS = 10;
 
 // The largest file a worker may write (RLIMIT_FSIZE): a kernel cache entry is a few MB.
 constexpr uint64_t kWorkerFileSizeLimitBytes = uint64_t{64} << 20;
