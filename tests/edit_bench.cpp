@@ -1,0 +1,125 @@
+// Edit mode's loop, timed as an author feels it (app/scene_edit.hpp): from saving a file of a
+// project `fractalis new` made to the first frame that shows the change. A .cl save (a constant
+// changed each time, so every save compiles anew: no kernel cache helps) and a .c save (a rebuilt
+// plugin, installed and reloaded by the scene library). Medians over the iterations:
+//   ./build/tests/edit_bench --benchmark_repetitions=1
+#include "app/explorer.hpp"
+#include "app/scene_edit.hpp"
+#include "cli/cli.hpp"
+#include "platform/child_process.hpp"
+#include "render/device.hpp"
+#include "platform/user_folders.hpp"
+
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <thread>
+
+namespace fr {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct EditSession {
+  std::filesystem::path root = std::filesystem::temp_directory_path() / "fractalis_edit_bench";
+  std::filesystem::path dir = root / "bench_blob";
+  std::unique_ptr<RenderWorker> worker;
+  std::unique_ptr<SceneLibrary> library;
+  std::unique_ptr<Explorer> explorer;
+  std::unique_ptr<SceneEdit> edit;
+  std::vector<SceneEvent> events;
+  InputState input;
+  Clock::time_point start = Clock::now();
+  std::string cl, c;
+
+  EditSession() {
+    std::filesystem::remove_all(root);
+    set_environment_variable("XDG_DATA_HOME", root / "data");
+    std::ostringstream out, err;
+    if (run_cli({"new", "bench_blob", "--dir", dir.string()}, out, err) != 0)
+      throw std::runtime_error("fractalis new failed: " + err.str());
+    std::string error;
+    const auto project = read_scene_project(dir, &error);
+    if (!project) throw std::runtime_error(error);
+    const auto device = select_device(list_devices(), "", &error);
+    if (!device) throw std::runtime_error(error);
+    worker = std::make_unique<RenderWorker>(*device, explorer_worker_limits({}));
+    library = std::make_unique<SceneLibrary>(
+        std::vector<std::filesystem::path>{root / "data" / "fractalis" / "scenes"},
+        PluginPolicy{}, RenderSettings{}, *worker, &events);
+    explorer = std::make_unique<Explorer>(Settings{}, *worker, *library, "bench_blob");
+    edit = std::make_unique<SceneEdit>(*project, find_program_on_path("cmake"));
+    cl = read(dir / "bench_blob.cl");
+    c = read(dir / "bench_blob.c");
+    frames_until([&] { return explorer->frames_rendered() > 3; });
+  }
+  static std::string read(const std::filesystem::path& f) {
+    std::ifstream in(f, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  }
+  double now_s() const { return std::chrono::duration<double>(Clock::now() - start).count(); }
+  // The explorer's loop at a 1280x720 window (it renders at the resolution its frame rate allows).
+  void frames_until(const std::function<bool()>& done) {
+    for (int i = 0; i < 100000 && !done(); ++i) {
+      explorer->update(input, 1.0 / 30, now_s());
+      edit->poll(*explorer, now_s());
+      explorer->render(1280, 720);
+      input.end_frame();
+    }
+  }
+};
+
+EditSession& session() {
+  static EditSession s;
+  return s;
+}
+
+std::string with(std::string text, const std::string& from, const std::string& to) {
+  const size_t at = text.find(from);
+  if (at == std::string::npos) throw std::runtime_error("no '" + from + "'");
+  return text.replace(at, from.size(), to);
+}
+
+void SaveOpenCLToNewFrame(benchmark::State& state) {
+  EditSession& s = session();
+  int n = 0;
+  for (auto _ : state) {
+    ++n;
+    const int applied = s.edit->opencl_applied();
+    const auto t0 = Clock::now();
+    std::ofstream(s.dir / "bench_blob.cl", std::ios::trunc)
+        << with(s.cl, "r - PARAM(radius)", "r - " + std::to_string(1.0 + 0.001 * n) + "f * PARAM(radius)");
+    s.frames_until([&] { return s.edit->opencl_applied() > applied || s.edit->failed(); });
+    state.SetIterationTime(std::chrono::duration<double>(Clock::now() - t0).count());
+    if (s.edit->failed()) state.SkipWithError(s.edit->status().c_str());
+  }
+}
+BENCHMARK(SaveOpenCLToNewFrame)->UseManualTime()->Iterations(7)->Unit(benchmark::kMillisecond);
+
+void SaveCToNewFrame(benchmark::State& state) {
+  EditSession& s = session();
+  int n = 0;
+  for (auto _ : state) {
+    const std::string marker = "Edit " + std::to_string(++n) + ":";
+    const auto t0 = Clock::now();
+    const uint64_t frames = s.explorer->frames_rendered();
+    std::ofstream(s.dir / "bench_blob.c", std::ios::trunc)
+        << with(s.c, "A rippled sphere", marker + " a rippled sphere");
+    s.frames_until([&] {
+      return (s.explorer->current().scene->info.description.rfind(marker, 0) == 0 &&
+              s.explorer->frames_rendered() > frames) ||
+             s.edit->failed();
+    });
+    state.SetIterationTime(std::chrono::duration<double>(Clock::now() - t0).count());
+    if (s.edit->failed()) state.SkipWithError(s.edit->status().c_str());
+  }
+}
+BENCHMARK(SaveCToNewFrame)->UseManualTime()->Iterations(5)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace fr
+
+BENCHMARK_MAIN();
