@@ -21,7 +21,7 @@ for f in my_blob.c my_blob.cl CMakeLists.txt README.md; do
   [[ -f "$work/my_blob/$f" ]] || fail "missing $f"
 done
 [[ -f "$scenes/my_blob.so" ]] || fail "not installed into $scenes"
-grep -q "fractalis explore --scene my_blob" "$work/new.out" || fail "no next step printed"
+grep -q "fractalis explore --edit $work/my_blob" "$work/new.out" || fail "no next step printed"
 "$fractalis" list --plugins "$scenes" --json > "$work/list.json"
 python3 - "$work/list.json" <<'PY'
 import json, sys

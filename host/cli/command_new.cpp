@@ -169,11 +169,10 @@ int command_new(const std::vector<std::string>& args, std::ostream& out, std::os
                              "; CMake's output is above)");
   out << "built and installed it into " << user_scene_folder().string() << "\n\n"
       << "next:\n"
-      << "  fractalis explore --scene " << name << "       # fly it\n"
-      << "  edit " << (dir / (name + ".cl")).string() << " (the distance estimator) and "
-      << (dir / (name + ".c")).string() << " (parameters, camera, lights)\n"
-      << "  cmake --build " << build.string() << " && cmake --install " << build.string()
-      << "   # after an edit; a running explorer reloads it\n";
+      << "  fractalis explore --edit " << dir.string() << "\n"
+      << "      flies it while you edit: a saved " << name
+      << ".cl (the distance estimator) shows at once,\n"
+      << "      a saved " << name << ".c (parameters, camera, lights) is rebuilt and reloaded\n";
   return 0;
 }
 
