@@ -672,3 +672,34 @@ TEST(ExploreCommand, RunsAndExitsCleanly) {
       << err.str();
   EXPECT_NE(out.str().find("explored for 5 frames"), std::string::npos);
 }
+
+// `explore --edit DIR` on a project `fractalis new` made opens on its scene and runs; a folder
+// that is no scene project, or one not built, is refused with why (scene_edit_test drives the
+// editing itself).
+TEST(ExploreCommand, EditModeOpensAProjectAndRefusesOthers) {
+#ifdef _WIN32
+  GTEST_SKIP() << "`new` builds with CMake and a C compiler, which the Windows test run lacks";
+#endif
+  const auto root = fr::test::fresh_dir("explore_edit");
+  fr::test::set_environment("XDG_DATA_HOME", (root / "data").string());
+  std::ostringstream out, err;
+  ASSERT_EQ(fr::run_cli({"new", "window_blob", "--dir", (root / "blob").string()}, out, err), 0)
+      << err.str();
+  std::ostringstream out2, err2;
+  EXPECT_EQ(fr::run_cli({"explore", "--edit", (root / "blob").string(), "--frames", "5", "--size",
+                         "160x90"},
+                        out2, err2),
+            0)
+      << err2.str();
+  EXPECT_NE(out2.str().find("explored for 5 frames"), std::string::npos);
+  std::ostringstream out3, err3;
+  EXPECT_EQ(fr::run_cli({"explore", "--edit", root.string(), "--frames", "1"}, out3, err3), 2);
+  EXPECT_NE(err3.str().find("not a scene project"), std::string::npos) << err3.str();
+  std::filesystem::remove_all(root / "blob" / "build");
+  std::ostringstream out4, err4;
+  EXPECT_EQ(fr::run_cli({"explore", "--edit", (root / "blob").string(), "--frames", "1"}, out4,
+                        err4),
+            2);
+  EXPECT_NE(err4.str().find("is not built"), std::string::npos) << err4.str();
+  fr::test::set_environment("XDG_DATA_HOME", std::nullopt);
+}
