@@ -6,7 +6,7 @@
 #include "app/explorer.hpp"
 #include "app/scene_edit.hpp"
 #include "cli/cli.hpp"
-#include "platform/child_process.hpp"
+#include "io/run_program.hpp"
 #include "render/device.hpp"
 #include "platform/user_folders.hpp"
 

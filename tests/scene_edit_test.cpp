@@ -8,7 +8,7 @@
 #include "app/explorer.hpp"
 #include "app/scene_edit.hpp"
 #include "cli_run.hpp"
-#include "platform/child_process.hpp"
+#include "io/run_program.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>

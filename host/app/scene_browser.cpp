@@ -106,24 +106,18 @@ void SceneBrowser::rebuild(SceneLibrary& library, const RenderSettings& settings
     entries_.push_back(std::move(e));
     jobs_.emplace_back();
   }
-  for (const PresetProblem& problem : preset_problems_) {
+  // Files that gave no scene or preset: shown with why, so a broken one is found.
+  const auto failed = [&](const std::filesystem::path& file, const std::string& why) {
     BrowserEntry e;
-    e.title = printable(problem.file.filename().string());
+    e.title = printable(file.filename().string());
     e.family = "failed";
-    e.error = problem.message;
-    e.search_text = lower(e.title + " failed preset " + problem.message);
+    e.error = why;
+    e.search_text = lower(e.title + " failed " + why);
     entries_.push_back(std::move(e));
     jobs_.emplace_back();
-  }
-  for (const SceneEvent& failed : library.failed_files()) {
-    BrowserEntry e;
-    e.title = printable(failed.file.filename().string());
-    e.family = "failed";
-    e.error = failed.reason;
-    e.search_text = lower(e.title + " failed " + failed.reason);
-    entries_.push_back(std::move(e));
-    jobs_.emplace_back();
-  }
+  };
+  for (const PresetProblem& problem : preset_problems_) failed(problem.file, problem.message);
+  for (const SceneEvent& event : library.failed_files()) failed(event.file, event.reason);
   filter();
 }
 

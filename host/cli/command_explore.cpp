@@ -5,7 +5,7 @@
 #include "platform/system_facts.hpp"
 #include "app/scene_edit.hpp"
 #include "io/cache_dirs.hpp"
-#include "platform/child_process.hpp"
+#include "io/run_program.hpp"
 #include "ui/overlay.hpp"
 #include "ui/scene_browser_view.hpp"
 #include "ui/window.hpp"

@@ -5,6 +5,7 @@
 #include "cli/commands.hpp"
 #include "cli/scene_options.hpp"
 #include "io/echo.hpp"
+#include "io/run_program.hpp"
 #include "platform/child_process.hpp"
 #include "platform/user_folders.hpp"
 

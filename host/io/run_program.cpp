@@ -3,7 +3,27 @@
 #include "platform/channel.hpp"
 #include "platform/child_process.hpp"
 
+#include <cstdlib>
+
 namespace fr {
+
+std::filesystem::path find_program_on_path(const std::string& name) {
+  const char* path = std::getenv("PATH");
+  if (!path) return {};
+  const std::string folders = path;
+  size_t start = 0;
+  while (start <= folders.size()) {
+    size_t end = folders.find(path_list_separator(), start);
+    if (end == std::string::npos) end = folders.size();
+    if (end > start) {
+      const std::filesystem::path candidate =
+          std::filesystem::path(folders.substr(start, end - start)) / executable_file_name(name);
+      if (is_executable_file(candidate)) return candidate;
+    }
+    start = end + 1;
+  }
+  return {};
+}
 
 ProgramOutcome run_program(const std::filesystem::path& program,
                            const std::vector<std::string>& arguments, size_t max_bytes) {

@@ -14,6 +14,10 @@ struct ProgramOutcome {
   std::string output;  // its stdout and stderr, interleaved as written (the last `max_bytes`)
 };
 
+// The program `name` (executable_file_name(name)) in the first folder of the PATH that has it,
+// or empty.
+std::filesystem::path find_program_on_path(const std::string& name);
+
 // Runs `program` with `arguments` (its stdin the null device) and waits for it to end.
 ProgramOutcome run_program(const std::filesystem::path& program,
                            const std::vector<std::string>& arguments,

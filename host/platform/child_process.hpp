@@ -76,9 +76,8 @@ class ChildProcess {
 
 // The file name of program `name` on this system: `name` on Linux, `name`.exe on Windows.
 std::string executable_file_name(const std::string& name);
-// The program `name` (executable_file_name(name)) in the first folder of the PATH that has it,
-// or empty.
-std::filesystem::path find_program_on_path(const std::string& name);
+// What separates the folders of the PATH: ':' on Linux, ';' on Windows.
+char path_list_separator();
 // Whether `path` is a program this process may start (Linux: a file it may execute; Windows: a
 // file).
 bool is_executable_file(const std::filesystem::path& path);

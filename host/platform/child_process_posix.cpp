@@ -10,7 +10,6 @@
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
-#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <thread>
@@ -177,22 +176,8 @@ std::string executable_file_name(const std::string& name) {
   return name;
 }
 
-std::filesystem::path find_program_on_path(const std::string& name) {
-  const char* path = std::getenv("PATH");
-  if (!path) return {};
-  std::string folders = path;
-  size_t start = 0;
-  while (start <= folders.size()) {
-    size_t end = folders.find(':', start);
-    if (end == std::string::npos) end = folders.size();
-    if (end > start) {
-      const std::filesystem::path candidate =
-          std::filesystem::path(folders.substr(start, end - start)) / executable_file_name(name);
-      if (is_executable_file(candidate)) return candidate;
-    }
-    start = end + 1;
-  }
-  return {};
+char path_list_separator() {
+  return ':';
 }
 
 bool is_executable_file(const std::filesystem::path& path) {
