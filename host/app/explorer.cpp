@@ -95,13 +95,16 @@ bool Explorer::update(const InputState& input, double dt_s, double now_s) {
   }
 
   SceneSlot& slot = current();
-  // The flying speed follows the scene's own DE at the eye, evaluated on the device.
+  // The flying speed follows the scene's own DE at the eye, evaluated on the device. Not while a
+  // changed DE waits for its quick frame: the probe would be a kernel build before it (the last
+  // distance serves for a frame), and one that hangs is better found by that frame, which edit
+  // mode then undoes before anything probes it again.
   const std::array<float, 3> eye_f = to_float3(slot.state.camera.eye);
   try {
-    stats_.surface_distance =
-        took_the_worker_down(slot)
-            ? 0.1
-            : worker_.probe_de(slot.scene->info, slot.state.params, {eye_f})[0];
+    if (took_the_worker_down(slot))
+      stats_.surface_distance = 0.1;
+    else if (!quick_frame_)
+      stats_.surface_distance = worker_.probe_de(slot.scene->info, slot.state.params, {eye_f})[0];
   } catch (const RenderWorkerFailure& e) {
     worker_failed(slot, e);
     stats_.surface_distance = 0.1;
@@ -142,6 +145,14 @@ const FrameView* Explorer::render(int window_width_px, int window_height_px) {
   s.count_evaluations = count_evaluations_;
   SceneSlot& slot = current();
   if (took_the_worker_down(slot)) return nullptr;
+  const bool quick = quick_frame_;
+  if (quick) {
+    s.quick_build = true;
+    s.cone_prepass = false;
+    // Auto would probe the new DE in double first: another kernel build before the frame.
+    if (s.precision == Precision::Auto && good_scene_id_ == slot.scene->info.id)
+      s.precision = stats_.precision;
+  }
   const auto start = std::chrono::steady_clock::now();
   last_ = FrameView{};  // the last frame's memory may go with a failing worker
   try {
@@ -164,7 +175,14 @@ const FrameView* Explorer::render(int window_width_px, int window_height_px) {
   ++frames_rendered_;
   stats_.frame_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  frames_.report(stats_.frame_ms);
+  if (quick) {
+    // Its time is a build's and an unoptimized kernel's: no measure of the frames to come, which
+    // start again with the optimized build.
+    quick_frame_ = false;
+    changed_ = true;
+  } else {
+    frames_.report(stats_.frame_ms);
+  }
   if (plan.sample_index == 0 && last_.steps && last_.pixel_count() > 0) {
     const size_t n = last_.pixel_count();
     double total = 0;

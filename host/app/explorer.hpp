@@ -68,10 +68,15 @@ class Explorer {
   // Something outside update() (the overlay) changed the scene or settings: refine again.
   void mark_changed() { changed_ = true; }
   // The current scene's code changed under it (edit mode swapped its DE): whatever took the
-  // render worker down before is tried again, and the view refines again.
-  void scene_code_changed() {
+  // render worker down before is tried again, and the view refines again. `quick_first_frame`:
+  // that frame is built without LLVM's optimizations (RenderSettings::quick_build), in the
+  // precision the last frame used and without the cone pre-pass (both only ever make a frame
+  // faster, at the cost of another kernel build), so that it is on screen sooner; the frames
+  // after it are the optimized build's.
+  void scene_code_changed(bool quick_first_frame = false) {
     failed_state_.reset();
     changed_ = true;
+    quick_frame_ = quick_first_frame;
   }
   // Frames rendered, and render-worker failures (a crash, a hang, a limit), since the start.
   uint64_t frames_rendered() const { return frames_rendered_; }
@@ -107,6 +112,7 @@ class Explorer {
   bool mouse_look_ = false;
   int current_ = 0;
   bool changed_ = true;
+  bool quick_frame_ = false;  // the next frame is a quick build (scene_code_changed)
   bool count_evaluations_ = false;
   uint64_t frames_rendered_ = 0;
   int worker_failures_ = 0;

@@ -135,10 +135,15 @@ void SceneEdit::poll(Explorer& explorer, double now_s) {
       slot.error.clear();
       explorer.scene_code_changed();
       say(project_.de_file + " did not work, so the last good one renders on:\n" + why, true);
-    } else if (explorer.frames_rendered() > frames_at_apply_) {
+    } else if (explorer.frames_rendered() > frames_at_apply_ + 1) {
+      // The quick build's frame and then the optimized build's: kept.
       before_.reset();
       ++opencl_applied_;
       say("applied " + project_.de_file, false);
+    } else if (explorer.frames_rendered() > frames_at_apply_ && !shown_) {
+      shown_ = true;
+      ++opencl_shown_;
+      say("showing " + project_.de_file + " (a quick build; the optimized one follows)", false);
     }
   }
   // A C build that ended: the library reloads the installed plugin by itself.
@@ -153,7 +158,7 @@ void SceneEdit::poll(Explorer& explorer, double now_s) {
           true);
   }
   if (now_s < next_look_s_) return;
-  next_look_s_ = now_s + 0.1;
+  next_look_s_ = now_s + 0.03;
   std::map<std::string, Stamp> now;
   std::string error;
   if (!look(&now, &error)) {
@@ -212,25 +217,18 @@ void SceneEdit::apply_opencl(Explorer& explorer) {
   auto changed = std::make_shared<LoadedScene>(*slot.scene);
   changed->info.de_source = de;
   if (!project_.surface_file.empty()) changed->info.surface_source = surface;
-  // The DE alone first, at the eye (a small kernel, within the worker's short limit for a changed
-  // DE): one that does not compile or never returns is said now, before any frame tries it.
-  try {
-    const fr_camera& c = slot.state.camera;
-    explorer.worker().probe_de(changed->info, slot.state.params,
-                               {{static_cast<float>(c.eye[0]), static_cast<float>(c.eye[1]),
-                                 static_cast<float>(c.eye[2])}});
-  } catch (const std::exception& e) {
-    explorer.scene_code_changed();  // a worker it ended is started afresh for the good DE
-    say(project_.de_file + " did not work, so the last good one renders on:\n" + e.what(), true);
-    return;
-  }
-  // On trial until a frame renders with it (poll).
+  // On trial until a frame renders with it (poll). No probe of the DE alone first: that is a
+  // kernel build of its own before the frame's (a third of a second on two cores). The frame's
+  // build reports a compile error as well, with the user's file and line, and the render worker
+  // gives a changed DE's first frame, and the probe at the eye that follows it, a short limit
+  // (render_worker.hpp's kFirstLimitOfAnEditS): one that never returns is said within seconds.
   if (!before_) before_ = slot.scene;
   slot.scene = changed;
   slot.error.clear();
   frames_at_apply_ = explorer.frames_rendered();
   failures_at_apply_ = explorer.worker_failures();
-  explorer.scene_code_changed();
+  shown_ = false;
+  explorer.scene_code_changed(/*quick_first_frame=*/true);
   say("compiling " + project_.de_file + " ...", false);
 }
 

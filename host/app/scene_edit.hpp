@@ -2,14 +2,15 @@
 // `fractalis new` writes one, watched while the explorer shows its scene.
 //
 // Saving the project's OpenCL (NAME.cl, NAME_surface.cl) swaps the scene's DE for the file's text
-// at once, with no C build: the next frame compiles it. Saving its C (or a header, or its
+// at once, with no C build: the next frame compiles it, first without LLVM's optimizations (on
+// screen within a second on two cores), then optimized (a second or two more). Saving its C (or a header, or its
 // CMakeLists.txt) rebuilds and installs the plugin in the background, and the scene library
 // reloads it as it reloads any rebuilt plugin. Either way the camera and parameter values stay.
 // A change that does not compile, or whose DE crashes or hangs the render worker, is undone: the
 // last good DE renders on, and the status line says what failed, in the user's own file and line
 // (the kernel's #line directives name them). Changes settle first (an editor's save storm is one
-// change), the folder is looked at no more than ten times a second, and a folder that vanishes or
-// cannot be read is said, and waited for.
+// change), the folder is looked at about thirty times a second (a listing of a few files), and a
+// folder that vanishes or cannot be read is said, and waited for.
 #pragma once
 
 #include "app/explorer.hpp"
@@ -57,7 +58,10 @@ class SceneEdit {
   // One line for the overlay: what the last change did, or why it failed.
   const std::string& status() const { return status_; }
   bool failed() const { return failed_; }
-  // OpenCL changes applied (and kept), C builds that ended (either way): for tests and benches.
+  // OpenCL changes on screen (their first frame, a quick build), applied (the optimized build's
+  // frame followed, and the change is kept), C builds that ended (either way): for tests and
+  // benches.
+  int opencl_shown() const { return opencl_shown_; }
   int opencl_applied() const { return opencl_applied_; }
   int c_builds() const { return c_builds_; }
 
@@ -84,13 +88,14 @@ class SceneEdit {
   std::shared_ptr<const LoadedScene> before_;
   uint64_t frames_at_apply_ = 0;
   int failures_at_apply_ = 0;
+  bool shown_ = false;  // its quick frame rendered
   // The C build in the background.
   std::thread build_;
   std::atomic<bool> build_done_{false};
   ProgramOutcome build_outcome_;
   std::string status_;
   bool failed_ = false;
-  int opencl_applied_ = 0, c_builds_ = 0;
+  int opencl_shown_ = 0, opencl_applied_ = 0, c_builds_ = 0;
 };
 
 }  // namespace fr

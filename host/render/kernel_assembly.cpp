@@ -248,12 +248,14 @@ AssembledKernel finish(std::ostringstream& out, const SceneInfo& info, const Ker
   // with the build log, still do.
   k.build_options = "-cl-std=CL1.2 -cl-mad-enable -w";
   if (config.fast_math) k.build_options += " -cl-fast-relaxed-math";
+  if (config.quick_build) k.build_options += " -cl-opt-disable";
   k.description = "scene '" + info.id + "' " + kind + " kernel (lanes " +
                   std::to_string(config.lanes) + ", " +
                   (config.precision == Precision::Double ? "double" : "float") +
                   ", stages: " + stage_names(config.stages) +
                   ((config.stages & kStageCone) ? ", cone pre-pass" : "") +
-                  (config.count_evaluations ? ", counting DE evaluations" : "") + ")";
+                  (config.count_evaluations ? ", counting DE evaluations" : "") +
+                  (config.quick_build ? ", quick build" : "") + ")";
   return k;
 }
 
@@ -292,6 +294,7 @@ KernelConfig make_kernel_config(const SceneInfo& info, const RenderSettings& s, 
   c.shadow_method = s.shadow_method;
   c.fog_method = s.fog_method;
   c.fast_math = s.fast_math;
+  c.quick_build = s.quick_build;
   c.count_evaluations = s.count_evaluations;
   c.adaptive_relaxation = s.adaptive_relaxation;
   c.outputs = s.outputs;

@@ -35,6 +35,7 @@ struct KernelConfig {
   ShadowMethod shadow_method = RenderSettings{}.shadow_method;
   FogMethod fog_method = RenderSettings{}.fog_method;
   bool fast_math = RenderSettings{}.fast_math;  // -cl-fast-relaxed-math (kernel_assembly.cpp)
+  bool quick_build = RenderSettings{}.quick_build;  // -cl-opt-disable (render_settings.hpp)
   // FR_COUNT_EVALS: per-stage DE counters (eval_counts.cl)
   bool count_evaluations = RenderSettings{}.count_evaluations;
   // FR_RELAX_ADAPTIVE: march.cl's omega follows the DE's slope

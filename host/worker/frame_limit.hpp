@@ -29,6 +29,8 @@ class FrameLimit {
   double limit_s(uint64_t scene_key, double pixels) const;
   // A sample of the scene took `seconds`.
   void record(uint64_t scene_key, double pixels, double seconds);
+  // Whether a sample of the scene has been recorded.
+  bool knows(uint64_t scene_key) const { return slowest_s_per_pixel_.count(scene_key) != 0; }
 
  private:
   FrameLimitRule rule_;

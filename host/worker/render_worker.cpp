@@ -230,8 +230,10 @@ std::string RenderWorker::call(uint32_t kind, const std::string& request, const 
       std::string which;  // the setting behind the limit
       if (limit_s == limits_.frame.first_s)
         which = limits_.frame.adaptive ? " (plugins.frame_limit_s)" : " (render.watchdog_s)";
-      else if (limit_s == kProbeLimitOfAnEditS && stage == std::string("probing the DE"))
-        which = " (a changed DE's first probe)";
+      else if (limit_s == kFirstLimitOfAnEditS && stage == std::string("probing the DE"))
+        which = " (a changed DE's probe)";
+      else if (limit_s == kFirstLimitOfAnEditS && stage == std::string(kFrameStage))
+        which = " (a changed DE's first frame)";
       else if (limits_.frame.adaptive && stage != std::string("starting"))
         which = " (the scene's slowest time per pixel so far, times 20)";
       fail(scene, stage, "did not finish within " + seconds_text(limit_s) + which, true);
@@ -297,6 +299,11 @@ uint64_t RenderWorker::send_scene(const SceneInfo& info) {
   WireWriter scene;
   write_scene_info(scene, info);
   const uint64_t key = std::max<uint64_t>(1, std::hash<std::string>{}(scene.bytes()));  // 0: none
+  if (const auto [known, fresh] = key_of_id_.try_emplace(info.id, key);
+      !fresh && known->second != key) {
+    edited_keys_.insert(key);
+    known->second = key;
+  }
   auto& held = process_->scenes;
   const auto same_key =
       std::find_if(held.begin(), held.end(), [&](const auto& h) { return h.first == key; });
@@ -351,6 +358,14 @@ void RenderWorker::write_sample(WireWriter& w, const SceneInfo& info, const Scen
   last_sample_scene_ = key;
 }
 
+double RenderWorker::sample_limit_s() const {
+  const double limit_s = frame_limit_.limit_s(last_sample_scene_, last_sample_pixels_);
+  if (edited_keys_.count(last_sample_scene_) && !frame_limit_.knows(last_sample_scene_) &&
+      (limit_s <= 0 || limit_s > kFirstLimitOfAnEditS))
+    return kFirstLimitOfAnEditS;
+  return limit_s;
+}
+
 void RenderWorker::render_sample(const SceneInfo& info, const SceneState& state,
                                  const RenderSettings& settings, int sample_index,
                                  Readback outputs) {
@@ -361,7 +376,7 @@ void RenderWorker::render_sample(const SceneInfo& info, const SceneState& state,
   // The worker answers once the sample is queued; this call also waits for the sample before
   // (its upload is a blocking write), and `finish` for the last: each within one sample's limit.
   call(static_cast<uint32_t>(RenderWireKind::RenderSample), w.bytes(), info.id, kFrameStage,
-       frame_limit_.limit_s(last_sample_scene_, last_sample_pixels_));
+       sample_limit_s());
   ++pending_samples_;
 }
 
@@ -376,7 +391,7 @@ FramePassPointers RenderWorker::finish_in_place(const RenderSettings& settings, 
   request.u64(bytes);
   const std::string reply =
       call(static_cast<uint32_t>(kind), request.bytes(), last_scene_id_, kFrameStage,
-           frame_limit_.limit_s(last_sample_scene_, last_sample_pixels_));
+           sample_limit_s());
   // The samples' mean time (kernel builds included: that only makes later limits longer).
   if (pending_samples_ > 0)
     frame_limit_.record(last_sample_scene_, last_sample_pixels_,
@@ -472,15 +487,13 @@ std::vector<float> RenderWorker::probe_de(const SceneInfo& info,
   w.raw(points.data(), points.size() * sizeof(points[0]));
   w.i32(lanes);
   w.u32(static_cast<uint32_t>(precision));
-  // A scene probed before whose DE changed (the explorer's edit mode) gets 10 s, not a new
-  // scene's first-sample limit: a probe is a few points, and its build the DE alone, so an edit
-  // that never returns is said within seconds.
+  // A changed DE's probe gets 10 s, not a new scene's first-sample limit: a probe is a few
+  // points, so an edit that never returns is said within seconds.
   double limit_s = frame_limit_.limit_s(key, static_cast<double>(points.size()));
-  if (probed_ids_.count(info.id) && (limit_s <= 0 || limit_s > kProbeLimitOfAnEditS))
-    limit_s = kProbeLimitOfAnEditS;
+  if (edited_keys_.count(key) && (limit_s <= 0 || limit_s > kFirstLimitOfAnEditS))
+    limit_s = kFirstLimitOfAnEditS;
   const std::string reply = call(static_cast<uint32_t>(RenderWireKind::Probe), w.bytes(),
                                  info.id, "probing the DE", limit_s);
-  probed_ids_.insert(info.id);
   WireReader r(reply);
   const uint32_t count = r.u32();
   std::vector<float> values(points.size());

@@ -140,11 +140,16 @@ class RenderWorker {
   int pending_samples_ = 0;  // samples asked for since the last finish
   std::chrono::steady_clock::time_point samples_started_;
   std::string last_scene_id_;  // of the last sample: the scene a finish reads back
-  std::set<std::string> probed_ids_;  // scenes whose DE a probe has answered for
+  // A changed DE's first frame and its probes get at most kFirstLimitOfAnEditS.
+  double sample_limit_s() const;
+  std::map<std::string, uint64_t> key_of_id_;  // the last scene key sent under each scene id
+  std::set<uint64_t> edited_keys_;  // keys sent under an id that had another key before
 };
 
-// The probe's limit for a scene probed before under another DE (an edit): seconds.
-constexpr double kProbeLimitOfAnEditS = 10;
+// The limit of a scene's first frame and of its probes, in seconds, when the scene's id was sent
+// before under another DE (the explorer's edit mode, a rebuilt plugin): a new scene's first frame
+// otherwise gets plugins.frame_limit_s (30 s), and an edit that never returns is said sooner.
+constexpr double kFirstLimitOfAnEditS = 10;
 
 // The largest file a worker may write (RLIMIT_FSIZE): a kernel cache entry is a few MB.
 constexpr uint64_t kWorkerFileSizeLimitBytes = uint64_t{64} << 20;
