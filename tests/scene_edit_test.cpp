@@ -71,7 +71,10 @@ class SceneEditTest : public ::testing::Test {
     while (now_s() < until) {
       // (The library's watcher reads the clock too: it reloads a plugin once it stopped changing.)
       explorer->update(input, 1.0 / 30, now_s());
+      const int shown = edit->opencl_shown();
       edit->poll(*explorer, now_s());  // between update and render, as the explorer's loop does
+      // The frame before this poll was a change's first, the quick build's.
+      if (edit->opencl_shown() > shown) quick_hit = last_hit;
       if (const FrameView* f = explorer->render(96, 64); f && f->steps) last_hit = hit_share(*f);
       if (done()) return true;
       std::this_thread::sleep_for(std::chrono::milliseconds(15));
@@ -92,6 +95,7 @@ class SceneEditTest : public ::testing::Test {
   InputState input;
   clock_type::time_point start;
   double last_hit = -1;
+  double quick_hit = -1;  // the share of pixels hit in the last quick build's frame
 };
 
 TEST_F(SceneEditTest, OpenCLAndCEditsBreakagesAndRecovery) {
@@ -114,6 +118,8 @@ TEST_F(SceneEditTest, OpenCLAndCEditsBreakagesAndRecovery) {
   EXPECT_EQ(edit->c_builds(), 0);
   EXPECT_FALSE(edit->failed()) << edit->status();
   EXPECT_LT(last_hit, 0.6 * hit_before) << "a sphere of half the radius covers about a quarter";
+  EXPECT_EQ(edit->opencl_shown(), 1) << "its first frame was the quick build's";
+  EXPECT_NEAR(quick_hit, last_hit, 0.03) << "the quick build renders the same picture";
   EXPECT_NE(explorer->current().scene->info.de_source.find("0.5f * PARAM(radius)"), std::string::npos);
   const std::string smaller_cl = read(dir / "edit_blob.cl");
 
