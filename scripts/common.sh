@@ -11,7 +11,7 @@ export CCACHE_NOHASHDIR="${CCACHE_NOHASHDIR:-1}"
 
 # The Debian packages the project builds, runs and tests with.
 FRACTALIS_PACKAGES=(
-  cmake g++ make pkg-config ccache
+  cmake g++ make pkg-config ccache lld
   ocl-icd-opencl-dev opencl-c-headers pocl-opencl-icd
   libglm-dev libspdlog-dev libtomlplusplus-dev libstb-dev libpng-dev libsdl2-dev libimgui-dev
   xvfb xauth

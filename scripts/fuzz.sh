@@ -24,19 +24,39 @@ cmake --build "$FRACTALIS_BUILD" -j "$(nproc 2>/dev/null || echo 2)" \
 
 scratch="$(mktemp -d)"
 trap 'rm -rf "$scratch"' EXIT
-for target in "${targets[@]}"; do
-  mkdir -p "$scratch/$target" "$FRACTALIS_BUILD/crashes"
-  echo "fractalis: fuzzing $target for ${seconds} s" >&2
+mkdir -p "$FRACTALIS_BUILD/crashes"
+# fuzz_one TARGET: runs it for the time given; its log in the scratch folder.
+fuzz_one() {
+  local target="$1"
+  mkdir -p "$scratch/$target"
   # -timeout: one input over 10 s is a hang; -rss_limit_mb: one over 2 GiB is a memory blow-up.
-  if ! "$FRACTALIS_BUILD/fuzz/fuzz_$target" "$scratch/$target" "$FRACTALIS_ROOT/fuzz/corpus/$target" \
-      "$FRACTALIS_ROOT/fuzz/regressions/$target" -max_total_time="$seconds" -timeout=10 \
-      -rss_limit_mb=2048 -print_final_stats=1 \
-      -artifact_prefix="$FRACTALIS_BUILD/crashes/$target-" 2> "$scratch/$target.log"; then
-    tail -n 40 "$scratch/$target.log" >&2
-    echo "fractalis: fuzz target $target failed; the input is in $FRACTALIS_BUILD/crashes/" \
-         "(copy it to fuzz/regressions/$target/ with the fix)" >&2
-    exit 1
-  fi
-  grep -E "^stat::number_of_executed_units|^Done" "$scratch/$target.log" >&2 || true
+  "$FRACTALIS_BUILD/fuzz/fuzz_$target" "$scratch/$target" "$FRACTALIS_ROOT/fuzz/corpus/$target" \
+    "$FRACTALIS_ROOT/fuzz/regressions/$target" -max_total_time="$seconds" -timeout=10 \
+    -rss_limit_mb=2048 -print_final_stats=1 \
+    -artifact_prefix="$FRACTALIS_BUILD/crashes/$target-" 2> "$scratch/$target.log"
+}
+# One target per core at a time (each fuzzer is one process on one core): each still runs its
+# whole time, and the stage takes the time of the targets divided by the cores.
+jobs="$(nproc 2>/dev/null || echo 2)"
+failed=""
+for ((first = 0; first < ${#targets[@]}; first += jobs)); do
+  batch=("${targets[@]:first:jobs}")
+  pids=()
+  for target in "${batch[@]}"; do
+    echo "fractalis: fuzzing $target for ${seconds} s" >&2
+    fuzz_one "$target" &
+    pids+=($!)
+  done
+  for i in "${!batch[@]}"; do
+    target="${batch[$i]}"
+    if ! wait "${pids[$i]}"; then
+      tail -n 40 "$scratch/$target.log" >&2
+      echo "fractalis: fuzz target $target failed; the input is in $FRACTALIS_BUILD/crashes/" \
+           "(copy it to fuzz/regressions/$target/ with the fix)" >&2
+      failed+=" $target"
+    fi
+    grep -E "^stat::number_of_executed_units|^Done" "$scratch/$target.log" >&2 || true
+  done
 done
+[ -z "$failed" ] || exit 1
 echo "fractalis: ${#targets[@]} fuzz targets ran ${seconds} s each without a crash" >&2

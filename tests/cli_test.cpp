@@ -102,6 +102,15 @@ TEST(Cli, LongAndHostileValuesAreEchoedShort) {
     EXPECT_NE(r.err.find(" bytes)"), std::string::npos) << r.err.substr(0, 400);
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err.substr(0, 400);
   }
+  // A measurement never runs with a setting that does not exist (bench --explore as render).
+  for (const std::string command : {"render", "bench"}) {
+    std::vector<std::string> args = {command, "--set", "render.nonsense=1"};
+    if (command == "bench") args.push_back("--explore");
+    const CliRun r = run(args);
+    EXPECT_EQ(r.code, 2) << command;
+    EXPECT_NE(r.err.find("render.nonsense"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("unknown key"), std::string::npos) << r.err;
+  }
   const CliRun escape = run({"render", "--scene", "\x1b]0;owned\x07"});
   EXPECT_EQ(escape.code, 2);
   EXPECT_NE(escape.err.find("unknown scene '\\x1b]0;owned\\x07'"), std::string::npos) << escape.err;

@@ -181,7 +181,7 @@ void SceneEdit::poll(Explorer& explorer, double now_s) {
   stamps_ = std::move(now);
   if (first_change_s_ < 0) return;
   // Settled: nothing new for 0.12 s, or changing for 0.6 s already (an editor that saves ten
-  // times a second still shows its latest text twice a second).
+  // times a second still shows its latest text twice a second, not ten builds a second).
   if (now_s - last_change_s_ < 0.12 && now_s - first_change_s_ < 0.6) return;
   if (c_changed_) {
     if (build_.joinable()) return;  // one build at a time: this change waits for it

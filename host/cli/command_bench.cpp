@@ -24,7 +24,7 @@ int bench_explore(ParsedOptions options, std::ostream& out,
   if (!options.has("scene")) options.values["scene"] = {"mandelbulb"};
   const int frames =
       static_cast<int>(parse_integer("--frames", options.get("frames").value_or("120"), 1, 100000));
-  ExplorerSetup setup = prepare_explorer(options);
+  ExplorerSetup setup = prepare_explorer(options, /*settings_problems_are_errors=*/true);
   Explorer& explorer = *setup.explorer;
   const RenderSettings& render = setup.settings.render;
   explorer.set_count_evaluations(options.has("counts"));

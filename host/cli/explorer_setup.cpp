@@ -7,10 +7,11 @@
 
 namespace fr {
 
-ExplorerSetup prepare_explorer(ParsedOptions options) {
+ExplorerSetup prepare_explorer(ParsedOptions options, bool settings_problems_are_errors) {
   ExplorerSetup x;
   std::vector<SettingsProblem> problems;
-  x.settings = load_settings(options, &problems);
+  // (nullptr: load_settings throws the first problem as a usage error)
+  x.settings = load_settings(options, settings_problems_are_errors ? nullptr : &problems);
   for (const auto& p : problems) spdlog::warn("{}", p.to_string());
   if (!options.has("size"))
     options.values["size"] = {std::to_string(x.settings.explorer.window_width_px) + "x" +

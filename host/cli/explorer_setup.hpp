@@ -22,6 +22,9 @@ struct ExplorerSetup {
   std::vector<PresetProblem> preset_problems;
   bool scene_asked = false;  // --scene, --preset or --path was given
 };
-ExplorerSetup prepare_explorer(ParsedOptions options);
+// A problem in the settings file or a --set (an unknown key, a bad value) is said as a warning,
+// and the explorer opens with the rest; with `settings_problems_are_errors` (a measurement, as
+// `bench --explore`) it is a usage error, as it is for `render` and `bench`.
+ExplorerSetup prepare_explorer(ParsedOptions options, bool settings_problems_are_errors = false);
 
 }  // namespace fr

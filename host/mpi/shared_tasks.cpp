@@ -124,15 +124,19 @@ class TaskLeader {
     return delivered;
   }
 
-  // Hands tasks to the ranks that asked, within the window; dismisses them once there are none
-  // (or the job failed).
+  // Hands tasks to the ranks that asked, within the window; dismisses them once every result has
+  // been delivered (or the job failed).
   bool hand_out() {
     bool handed = false;
     while (!waiting_.empty()) {
       const int rank = waiting_.front();
-      if (failure_ || next_ == tasks_.size()) {
+      if (failure_ || written_ == tasks_.size()) {
         send_to_rank(rank, kTagNext, next_message(-1, failure_ ? 1 : 0));
         ++dismissed_;
+      } else if (next_ == tasks_.size()) {
+        // None left to hand out, but results still to deliver: the rank is dismissed once they
+        // are, so that a writer's failure reaches it too (dismissed now, it would end with 0).
+        break;
       } else if (how_.window == 0 || next_ < written_ + how_.window) {
         send_to_rank(rank, kTagNext, next_message(tasks_[next_], 0));
         in_hand_[rank] = {next_++, Clock::now()};
