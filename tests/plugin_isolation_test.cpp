@@ -16,6 +16,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cstring>
 #include <fstream>
 #include <map>
@@ -400,7 +401,8 @@ TEST(PluginIsolation, RepeatedLoadsLeakNothing) {
 
 // A DE that never returns, in the commands that render one scene. Each first renders the scene
 // at 8x8 in a child process, as the explorer does: `render`, `bench`, `animate` and `sweep` end
-// after plugins.vet_timeout_s (not render.watchdog_s, here far longer) with exit status 3, an
+// after plugins.vet_timeout_s (not render.watchdog_s, here far longer), or its render's own
+// plugins.vet_render_timeout_s when that is shorter, with exit status 3, an
 // error naming the scene, its file and the limit, and nothing left behind. With isolation
 // "none" (one process, for a debugger) there is no child: the watchdog ends them instead.
 TEST(PluginIsolation, DeThatNeverReturnsEndsTheCommand) {
@@ -412,11 +414,18 @@ TEST(PluginIsolation, DeThatNeverReturnsEndsTheCommand) {
                              "2 s (plugins.vet_timeout_s)";
   const std::string watchdog =
       "rendering scene 'fixture_de_loop' did not finish within 2 s (render.watchdog_s)";
+  // The test render's own limit, shorter than the whole test's: said by it, soon.
+  const std::string render_limit =
+      "did not finish within 2 s (plugins.vet_render_timeout_s)";
   const std::vector<Case> cases = {
       {"render --out never.png", "--set render.watchdog_s=60", vetted},
       {"animate --out never.mkv --path path.toml", "--set render.watchdog_s=60", vetted},
       {"bench --frames 1 --runs 1", "--set render.watchdog_s=60", vetted},
       {"sweep --out sweep --knobs max_steps", "", vetted},
+      {"render --out never.png",
+       "--set plugins.vet_timeout_s=60 --set plugins.vet_render_timeout_s=2 "
+       "--set render.watchdog_s=60",
+       render_limit},
       {"render --out never.png", "--set plugins.isolation=none --set render.watchdog_s=2",
        watchdog},
       {"animate --out never.mkv --path path.toml",
@@ -439,9 +448,13 @@ TEST(PluginIsolation, DeThatNeverReturnsEndsTheCommand) {
                                 " --scene fixture_de_loop --size 16x16 --set "
                                 "plugins.vet_timeout_s=2 " +
                                 c.extra + " 2> " + log.string();
+    const auto started = std::chrono::steady_clock::now();
     const int status = std::system(command.c_str());
+    const double took_s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     ASSERT_TRUE(WIFEXITED(status)) << command;
     EXPECT_EQ(WEXITSTATUS(status), 3) << command;
+    EXPECT_LT(took_s, 40) << "within a limit, not after a minute: " << command;
     std::ifstream in(log);
     std::string said((std::istreambuf_iterator<char>(in)), {});
     for (size_t at; (at = said.find(plugins.string())) != std::string::npos;)

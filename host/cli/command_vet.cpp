@@ -37,10 +37,13 @@ int command_vet_scene(const std::vector<std::string>& args, std::ostream& out, s
     throw std::runtime_error(error);
   }
   // In a render worker of its own, with its build and memory limits (a compiler bomb must not
-  // take this process, or the machine, with it); the parent's plugins.vet_timeout_s is the time
-  // limit of the whole test.
-  RenderWorker renderer(choose_device(settings, options),
-                        command_worker_limits(settings.plugins, 0));
+  // take this process, or the machine, with it) and the render's own limit
+  // (plugins.vet_render_timeout_s: a DE that never returns ends it, status 3); the parent's
+  // plugins.vet_timeout_s is the time limit of the whole test.
+  RenderWorkerLimits limits =
+      command_worker_limits(settings.plugins, settings.plugins.vet_render_timeout_s);
+  limits.frame_setting = "plugins.vet_render_timeout_s";
+  RenderWorker renderer(choose_device(settings, options), limits);
   renderer.name_scene_file(o.scene->info.id, printable(*file));
   RenderSettings render = render_settings_from(settings, options);
   renderer.render(o.scene->info, state, render);

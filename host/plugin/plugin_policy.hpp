@@ -26,6 +26,9 @@ struct PluginPolicy {
   double call_timeout_s = 2;    // one create, update or destroy call
   bool allow_writable = false;  // load from folders and files that other users can write to
   double vet_timeout_s = 60;    // the explorer's test render of a new or rebuilt scene
+  // That test's render alone, its kernel build not counted (build_timeout_s has that): a DE that
+  // never returns is said in seconds, not at vet_timeout_s.
+  double vet_render_timeout_s = 10;
   // The render worker (worker/render_worker.hpp), which compiles and runs scene kernels:
   // One kernel build: the in-tree scenes' take under 1 s here, cold; a preprocessor bomb ends here.
   double build_timeout_s = 20;

@@ -46,6 +46,7 @@ VetResult vet_scene(const std::filesystem::path& file, const RenderSettings& set
     args.insert(args.end(), {"--set", text.str()});
   };
   set("plugins.build_timeout_s", policy.build_timeout_s);
+  set("plugins.vet_render_timeout_s", policy.vet_render_timeout_s);
   set("plugins.worker_memory_mib", policy.worker_memory_mib);
   ChannelPair said_pipe;
   std::string error;
@@ -102,6 +103,10 @@ VetResult vet_scene(const std::filesystem::path& file, const RenderSettings& set
     result.ok = true;
     return result;
   }
+  // The render outlasted plugins.vet_render_timeout_s in the child (the watchdog's status).
+  // (3: cli/watchdog.hpp's kWatchdogExitStatus, the status of every time limit; cli/ is a floor
+  // above this one.)
+  result.timed_out = child->exit_status() == 3;
   // The child's last line is its error ("fractalis: error: ...").
   while (!said.empty() && said.back() == '\n') said.pop_back();
   const size_t line = said.rfind('\n');

@@ -160,6 +160,11 @@ std::vector<SettingSpec> make_table() {
       "Seconds the 8x8 test render of a scene (in a child process, before the explorer, "
       "`render`,\n`bench`, `animate` or `sweep` first use it; once per file content) may take, "
       "kernel build\nincluded, before the scene is refused as one whose DE may never return."));
+  t.push_back(number_setting<&S::plugins, &P::vet_render_timeout_s>(
+      "plugins.vet_render_timeout_s", 0, 3600, true,
+      "Seconds the 8x8 test render itself may take, its kernel build not counted "
+      "(plugins.build_timeout_s\nhas that): a DE that never returns is said this soon. 0: no limit of its own "
+      "(plugins.vet_timeout_s\nstill ends the test)."));
   t.push_back(number_setting<&S::plugins, &P::build_timeout_s>(
       "plugins.build_timeout_s", 1, 3600, true,
       "Seconds one kernel build of a scene may take in the render worker (the process that "

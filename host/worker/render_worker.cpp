@@ -1,5 +1,6 @@
 #include "worker/render_worker.hpp"
 
+#include "io/build_paths.hpp"
 #include "io/helper_executable.hpp"
 #include "io/printable.hpp"
 #include "platform/channel.hpp"
@@ -229,7 +230,9 @@ std::string RenderWorker::call(uint32_t kind, const std::string& request, const 
             true);
       std::string which;  // the setting behind the limit
       if (limit_s == limits_.frame.first_s)
-        which = limits_.frame.adaptive ? " (plugins.frame_limit_s)" : " (render.watchdog_s)";
+        which = limits_.frame_setting          ? " (" + std::string(limits_.frame_setting) + ")"
+                : limits_.frame.adaptive ? " (plugins.frame_limit_s)"
+                                         : " (render.watchdog_s)";
       else if (limit_s == kFirstLimitOfAnEditS && stage == std::string("probing the DE"))
         which = " (a changed DE's probe)";
       else if (limit_s == kFirstLimitOfAnEditS && stage == std::string(kFrameStage))

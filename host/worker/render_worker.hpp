@@ -58,6 +58,9 @@ struct RenderWorkerLimits {
   double build_s = 20;                           // one kernel build (plugins.build_timeout_s)
   uint64_t memory_bytes = uint64_t{4096} << 20;  // resident (plugins.worker_memory_mib); 0: none
   FrameLimitRule frame;                          // one sample, one probe
+  // The setting behind frame.first_s, named when a sample outlasts it; nullptr: the command's
+  // render.watchdog_s, or the explorer's plugins.frame_limit_s.
+  const char* frame_setting = nullptr;
   size_t printed_lines = 20;                     // lines of a scene's printf output shown
 };
 
