@@ -6,6 +6,7 @@
 // test holds no list of options of its own.
 #include "cli_run.hpp"
 #include "settings/settings.hpp"
+#include "test_paths.hpp"
 
 #include <gtest/gtest.h>
 

@@ -5,6 +5,7 @@
 #include "app/game_loop.hpp"
 #include "app/input.hpp"
 #include "app/scene_slot.hpp"
+#include "test_paths.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,8 @@
 // in_tree_scenes.hpp — the in-tree scenes' ids, for tests that hold for every scene.
 #pragma once
 
+#include "test_paths.hpp"
+
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>

@@ -2,6 +2,8 @@
 // below it (DESIGN.md: "a folder depends on the ones below it, never sideways in circles").
 // The order, bottom first, is the one in docs/architecture.md (Folders and floors); an include that reaches up or
 // sideways fails here with the file and line.
+#include "test_paths.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -3,6 +3,8 @@
 // EXR, a PNG folder) or frame for frame (a video, decoded). A rank that is killed or stopped ends
 // the job with a message naming it and what it had, leaving nothing half-written; a PNG folder
 // keeps its finished frames and resumes.
+#include "test_paths.hpp"
+
 #include <gtest/gtest.h>
 
 #include <signal.h>

@@ -3,6 +3,7 @@
 // Benchmark; run ./build/tests/plugin_call_bench (docs/architecture.md reports its medians).
 #include "plugin/plugin_loader.hpp"
 #include "plugin/scene_instance.hpp"
+#include "test_paths.hpp"
 
 #include <benchmark/benchmark.h>
 

@@ -9,6 +9,7 @@
 // (tests/plugin_isolation_test.cpp has the whole Linux table.)
 #include "plugin/plugin_loader.hpp"
 #include "plugin/scene_instance.hpp"
+#include "test_paths.hpp"
 
 #include <gtest/gtest.h>
 

@@ -8,6 +8,7 @@
 #include "plugin/scene_instance.hpp"
 #include "render/device.hpp"
 #include "worker/render_worker.hpp"
+#include "test_paths.hpp"
 
 #include <benchmark/benchmark.h>
 

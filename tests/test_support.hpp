@@ -7,6 +7,7 @@
 #include "render/cl_runtime.hpp"
 #include "render/device.hpp"
 #include "worker/render_worker.hpp"
+#include "test_paths.hpp"
 
 #include <gtest/gtest.h>
 #include <stb_image.h>

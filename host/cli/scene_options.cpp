@@ -1,5 +1,6 @@
 #include "cli/scene_options.hpp"
 
+#include "io/build_paths.hpp"
 #include "io/echo.hpp"
 #include "io/printable.hpp"
 #include "platform/files.hpp"
@@ -118,7 +119,7 @@ bool runs_from_build_tree(const std::filesystem::path& exe) {
   // Folders compared as folders, not as strings: a Windows build run under Wine has a Linux
   // build root compiled in (/work/build) and a Windows path of its own (Z:\work\build\...).
   for (auto dir = exe.parent_path(); dir.has_relative_path(); dir = dir.parent_path())
-    if (std::filesystem::equivalent(dir, FRACTALIS_BUILD_ROOT, ec)) return true;
+    if (std::filesystem::equivalent(dir, build_paths::root, ec)) return true;
   return false;
 }
 
@@ -144,7 +145,7 @@ std::vector<std::filesystem::path> plugin_folders(const Settings& settings,
   const std::filesystem::path exe = executable_path();
   // Normalised: one kind of separator on Windows too, where the compiled-in parts use '/'.
   if (runs_from_build_tree(exe))
-    add(std::filesystem::path(FRACTALIS_PLUGIN_BUILD_DIR).lexically_normal());
+    add(std::filesystem::path(build_paths::plugin_dir).lexically_normal());
   else
     add((exe.parent_path().parent_path() / FRACTALIS_PLUGIN_INSTALL_DIR).lexically_normal());
   add(user_scene_folder());
@@ -154,7 +155,7 @@ std::vector<std::filesystem::path> plugin_folders(const Settings& settings,
 std::filesystem::path shipped_path_file(const std::string& name) {
   const std::filesystem::path exe = executable_path();
   if (runs_from_build_tree(exe))
-    return (std::filesystem::path(FRACTALIS_PATHS_SOURCE_DIR) / name).lexically_normal();
+    return (std::filesystem::path(build_paths::paths_dir) / name).lexically_normal();
   return (exe.parent_path().parent_path() / FRACTALIS_PATHS_INSTALL_DIR / name).lexically_normal();
 }
 

@@ -1,5 +1,6 @@
 #include "plugin/scene_host_process.hpp"
 
+#include "io/build_paths.hpp"
 #include "io/helper_executable.hpp"
 #include "io/printable.hpp"
 #include "plugin/scan_cache.hpp"
@@ -229,7 +230,7 @@ void attach_code(LoadOutcome& outcome, const FileIdentity& identity, const std::
 
 std::filesystem::path scene_host_executable() {
   return helper_executable("fractalis-scene-host", "FRACTALIS_SCENE_HOST",
-                           FRACTALIS_SCENE_HOST_BUILD_PATH);
+                           build_paths::scene_host);
 }
 
 std::unique_ptr<SceneHostProcess> SceneHostProcess::start(const ReadableFile& plugin,

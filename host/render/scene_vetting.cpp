@@ -1,5 +1,6 @@
 #include "render/scene_vetting.hpp"
 
+#include "io/build_paths.hpp"
 #include "io/cache_dirs.hpp"
 #include "io/fnv1a.hpp"
 #include "platform/channel.hpp"
@@ -22,7 +23,7 @@ namespace fr {
 std::filesystem::path fractalis_executable() {
   const std::filesystem::path self = executable_path();
   if (self.filename() == "fractalis" || self.filename() == "fractalis.exe") return self;
-  return FRACTALIS_EXECUTABLE_BUILD_PATH;
+  return build_paths::fractalis;
 }
 
 VetResult vet_scene(const std::filesystem::path& file, const RenderSettings& settings,

@@ -141,7 +141,7 @@ void RenderWorker::ensure_started() {
   }
   if (process_) return;
   const std::filesystem::path exe = helper_executable(
-      "fractalis-render-worker", "FRACTALIS_RENDER_WORKER", FRACTALIS_RENDER_WORKER_BUILD_PATH);
+      "fractalis-render-worker", "FRACTALIS_RENDER_WORKER", build_paths::render_worker);
   if (exe.empty())
     throw std::runtime_error(
         "the render worker executable fractalis-render-worker was not found (beside fractalis, "
