@@ -266,6 +266,36 @@ TEST(Cli, ExploreBenchCountsTheMovingFrames) {
   EXPECT_EQ(plain.out.find("while moving"), std::string::npos) << plain.out;
 }
 
+// --error judges each moving frame as the window showed it (a half-size frame stretched, with
+// 60% of the steps: bench/image_error.hpp) against a fully traced one of the same camera: some
+// error, never more than full scale, each worst frame at least as bad as the mean.
+TEST(Cli, ExploreBenchJudgesTheShownFrames) {
+  const CliRun r = run({"bench", "--explore", "--error", "--size", "96x54", "--frames", "3",
+                        "--set", "explorer.quality=\"fast\""});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto at = r.out.find("shown while moving");
+  ASSERT_NE(at, std::string::npos) << r.out;
+  int frames = 0;
+  double mae = -1, worst_mae = -1, ssim = 2, worst_ssim = 2;
+  ASSERT_EQ(std::sscanf(r.out.c_str() + at,
+                        "shown while moving, against fully traced frames (%d frames): mean "
+                        "absolute error %lf (worst frame %lf), SSIM %lf (worst frame %lf)",
+                        &frames, &mae, &worst_mae, &ssim, &worst_ssim),
+            5)
+      << r.out;
+  EXPECT_EQ(frames, 3);
+  EXPECT_GT(mae, 0);
+  EXPECT_GE(worst_mae, mae);
+  EXPECT_LE(worst_mae, 1);
+  EXPECT_LT(ssim, 1);
+  EXPECT_LE(worst_ssim, ssim);
+  EXPECT_GE(worst_ssim, -1);
+  // Only with --explore.
+  const CliRun alone = run({"bench", "--error", "--size", "16x16"});
+  EXPECT_EQ(alone.code, 2);
+  EXPECT_NE(alone.err.find("--error: only with --explore"), std::string::npos) << alone.err;
+}
+
 // One channel: a warning reaches the error stream as "fractalis: warning: ...", -q hides it,
 // --log-file gets it time-stamped whatever the verbosity, and -v with -q is refused.
 TEST(Cli, WarningsGoThroughTheLogChannel) {

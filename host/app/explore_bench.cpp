@@ -1,12 +1,56 @@
 #include "app/explore_bench.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <numbers>
 
 namespace fr {
 
-ExploreBenchResult run_explore_bench(Explorer& explorer, int w, int h, int moving_frames) {
+namespace {
+
+// A moving frame as rendered, and what it showed.
+struct KeptFrame {
+  Rgba8Image frame;  // at the frame's own size (the window stretches it)
+  SceneState state;
+};
+
+DisplayedError judge_displayed(Explorer& explorer, const std::vector<KeptFrame>& kept, int w,
+                               int h) {
+  DisplayedError e;
+  RenderSettings reference = explorer.render_settings();
+  reference.width_px = w;
+  reference.height_px = h;
+  const SceneInfo& info = explorer.current().scene->info;
+  double mae_sum = 0, ssim_sum = 0;
+  for (const KeptFrame& k : kept) {
+    const FrameView full =
+        explorer.worker().render_frame(info, k.state, reference, 0, Readback::Display,
+                                       Readback::Display);
+    const Rgba8Image truth{w, h, std::vector<uint8_t>(full.rgba8, full.rgba8 + size_t(w) * h * 4)};
+    const Rgba8Image shown =
+        upscale_bilinear(k.frame.rgba.data(), k.frame.width_px, k.frame.height_px, w, h);
+    const double mae = mean_absolute_error(shown, truth);
+    const double ssim = structural_similarity(shown, truth);
+    mae_sum += mae;
+    ssim_sum += ssim;
+    e.max_mae = std::max(e.max_mae, mae);
+    e.min_ssim = std::min(e.min_ssim, ssim);
+    ++e.frames;
+  }
+  if (e.frames > 0) {
+    e.mean_mae = mae_sum / e.frames;
+    e.mean_ssim = ssim_sum / e.frames;
+  }
+  return e;
+}
+
+}  // namespace
+
+ExploreBenchResult run_explore_bench(Explorer& explorer, int w, int h,
+                                     const ExploreBenchOptions& options) {
+  const int moving_frames = options.moving_frames;
+  std::vector<KeptFrame> kept;
   using clock = std::chrono::steady_clock;
   const auto origin = clock::now();
   auto now_s = [&] { return std::chrono::duration<double>(clock::now() - origin).count(); };
@@ -25,8 +69,12 @@ ExploreBenchResult run_explore_bench(Explorer& explorer, int w, int h, int movin
     const double start = now_s();
     explorer.update(input, 1.0 / 30.0, i / 30.0);
     last = start;
-    explorer.render(w, h);
+    const FrameView* shown = explorer.render(w, h);
     frame_ms.push_back((now_s() - start) * 1000);
+    if (options.measure_error && shown && shown->rgba8)
+      kept.push_back({{shown->width_px, shown->height_px,
+                       std::vector<uint8_t>(shown->rgba8, shown->rgba8 + shown->pixel_count() * 4)},
+                      explorer.current().state});
     scale_sum += explorer.stats().resolution_scale;
     if (explorer.count_evaluations()) {
       // Frames of different sizes: the sums over all their pixels, one sample each.
@@ -53,6 +101,7 @@ ExploreBenchResult run_explore_bench(Explorer& explorer, int w, int h, int movin
     ++result.refine_frames;
   }
   result.seconds_to_full_quality = now_s() - stopped;
+  if (options.measure_error) result.moving_error = judge_displayed(explorer, kept, w, h);
   return result;
 }
 

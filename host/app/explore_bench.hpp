@@ -1,13 +1,23 @@
 // explore_bench.hpp — the explorer's interactivity measured: a scripted fly-through (a fixed
 // path of key presses and mouse turns) at a given window size, frames timed while moving, then
 // the time from stopping until the image reaches full quality. Headless: everything the
-// explorer does per frame except drawing to a window.
+// explorer does per frame except drawing to a window. Optionally, what the user saw while moving
+// judged against fully traced frames at the same cameras (image error, bench/image_error.hpp).
 #pragma once
 
 #include "app/explorer.hpp"
 #include "bench/frame_stats.hpp"
+#include "bench/image_error.hpp"
 
 namespace fr {
+
+// The moving frames as displayed (stretched to the window) against a full-resolution frame of
+// the same camera and scene state with every step (the explorer's first sample once parked).
+struct DisplayedError {
+  int frames = 0;  // moving frames judged
+  double mean_mae = 0, max_mae = 0;    // mean absolute error, 0 to 1 (bench/image_error.hpp)
+  double mean_ssim = 1, min_ssim = 1;  // structural similarity, 1 is identical
+};
 
 struct ExploreBenchResult {
   FrameStats moving;  // frames while the camera moves
@@ -18,12 +28,20 @@ struct ExploreBenchResult {
   // With the explorer counting (Explorer::set_count_evaluations): the moving frames' DE
   // evaluations, per pixel over all their pixels.
   EvalCounts moving_counts;
+  DisplayedError moving_error;  // with measure_error
 };
 
-// Flies for `moving_frames` frames (forward, weaving left and right; each frame moves the camera
+struct ExploreBenchOptions {
+  int moving_frames = 120;
+  // Keep each moving frame and its camera, and after the run (so that no timing includes it)
+  // render the reference of each and compare.
+  bool measure_error = false;
+};
+
+// Flies for `options.moving_frames` frames (forward, weaving left and right; each frame moves the camera
 // by 1/30 s of flight, so the path does not depend on the machine's speed), then stops and renders until
 // the frame controller reports full quality.
 ExploreBenchResult run_explore_bench(Explorer& explorer, int window_width_px, int window_height_px,
-                                     int moving_frames);
+                                     const ExploreBenchOptions& options);
 
 }  // namespace fr

@@ -30,8 +30,11 @@ int bench_explore(ParsedOptions options, std::ostream& out,
   explorer.set_count_evaluations(options.has("counts"));
   // Warm-up: build the kernels the flight uses (render and DE probe), untimed.
   explorer.render(render.width_px, render.height_px);
+  ExploreBenchOptions bench;
+  bench.moving_frames = frames;
+  bench.measure_error = options.has("error");
   const ExploreBenchResult r =
-      run_explore_bench(explorer, render.width_px, render.height_px, frames);
+      run_explore_bench(explorer, render.width_px, render.height_px, bench);
   char line[512];
   std::snprintf(
       line, sizeof line,
@@ -47,6 +50,14 @@ int bench_explore(ParsedOptions options, std::ostream& out,
   if (explorer.count_evaluations())
     out << "while moving, over all the moving frames' pixels:\n"
         << format_eval_counts(r.moving_counts);
+  if (bench.measure_error) {
+    const DisplayedError& e = r.moving_error;
+    std::snprintf(line, sizeof line,
+                  "shown while moving, against fully traced frames (%d frames): mean absolute "
+                  "error %.4f (worst frame %.4f), SSIM %.4f (worst frame %.4f)\n",
+                  e.frames, e.mean_mae, e.max_mae, e.mean_ssim, e.min_ssim);
+    out << line;
+  }
   out << "device " << setup.worker->device().name << "\n";
   return 0;
 }
@@ -70,6 +81,10 @@ std::vector<OptionSpec> bench_option_specs() {
       {"counts", nullptr, false,
        "with --explore: also count the DE evaluations of the frames while moving\n"
        "                                 (a counting kernel: its times are not comparable)"});
+  specs.push_back(
+      {"error", nullptr, false,
+       "with --explore: also judge each moving frame as shown (stretched to the\n"
+       "                                 window) against a fully traced frame of the same camera"});
   specs.push_back({"help", nullptr, false, "show this help"});
   return specs;
 }
@@ -193,11 +208,14 @@ int command_bench(const std::vector<std::string>& args, std::ostream& out, std::
         << format_options(specs) << "\nexamples:\n"
         << "  fractalis bench --size 1366x768 --json bench.json\n"
         << "  fractalis bench --scene mandelbulb --size 640x360 --lanes 16\n"
-        << "  fractalis bench --explore --scene mandelbulb --size 1280x720\n";
+        << "  fractalis bench --explore --scene mandelbulb --size 1280x720\n"
+        << "  fractalis bench --explore --error --frames 60 --size 640x360\n";
     return 0;
   }
   if (options.has("counts") && !options.has("explore"))
     throw UsageError("--counts: only with --explore (bench always reports the counts)");
+  if (options.has("error") && !options.has("explore"))
+    throw UsageError("--error: only with --explore");
   if (options.has("explore")) {
     // Its figures go to the terminal only; a --json that would silently not be written is refused.
     if (options.has("json")) throw UsageError("--json: not written by bench --explore");
