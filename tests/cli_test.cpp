@@ -290,6 +290,13 @@ TEST(Cli, ExploreBenchJudgesTheShownFrames) {
   EXPECT_LT(ssim, 1);
   EXPECT_LE(worst_ssim, ssim);
   EXPECT_GE(worst_ssim, -1);
+  // Every kept frame must fit: 1000 frames of 3840x2160 would be 31 GiB.
+  const CliRun huge = run({"bench", "--explore", "--error", "--size", "3840x2160", "--frames",
+                           "1000"});
+  EXPECT_EQ(huge.code, 2);
+  EXPECT_NE(huge.err.find("could take 30.9 GiB; at most 129 frames at this size"),
+            std::string::npos)
+      << huge.err;
   // Only with --explore.
   const CliRun alone = run({"bench", "--error", "--size", "16x16"});
   EXPECT_EQ(alone.code, 2);

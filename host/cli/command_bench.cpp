@@ -11,6 +11,7 @@
 #include <spdlog/spdlog.h>
 
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <ostream>
 #include <stdexcept>
@@ -27,6 +28,18 @@ int bench_explore(ParsedOptions options, std::ostream& out,
   ExplorerSetup setup = prepare_explorer(options, /*settings_problems_are_errors=*/true);
   Explorer& explorer = *setup.explorer;
   const RenderSettings& render = setup.settings.render;
+  // --error keeps every moving frame (up to the window's size each) until the flight ends.
+  const double frame_bytes = 4.0 * render.width_px * render.height_px;
+  constexpr double kKeptBytes = 4.0 * (uint64_t{1} << 30);
+  if (options.has("error") && frames * frame_bytes > kKeptBytes) {
+    char what[256];
+    std::snprintf(what, sizeof what,
+                  "--error keeps each moving frame until the flight ends: --frames %d at %dx%d "
+                  "could take %.1f GiB; at most %d frames at this size",
+                  frames, render.width_px, render.height_px, frames * frame_bytes / (1 << 30),
+                  static_cast<int>(kKeptBytes / frame_bytes));
+    throw UsageError(what);
+  }
   explorer.set_count_evaluations(options.has("counts"));
   // Warm-up: build the kernels the flight uses (render and DE probe), untimed.
   explorer.render(render.width_px, render.height_px);
