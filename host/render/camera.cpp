@@ -47,4 +47,19 @@ glm::dvec3 camera_ray_dir(const CameraRays& r, double x, double y) {
   return glm::normalize(r.first_pixel_dir + r.pixel_step_x * i + r.pixel_step_y * j);
 }
 
+std::optional<glm::dvec2> camera_project(const CameraRays& r, const glm::dvec3& point) {
+  const glm::dvec3 d = point - r.eye;
+  const double forward = glm::dot(d, r.forward);
+  if (!(forward > 0)) return std::nullopt;
+  // Scaled to forward distance 1, the ray is first_pixel_dir + pixel_step_x i + pixel_step_y j:
+  // both steps are across the view (perpendicular to it and to each other), and the first
+  // pixel's direction is 1 along it, so i and j are the offset's components along the steps.
+  const glm::dvec3 offset = d / forward - r.first_pixel_dir;
+  const double step_x2 = glm::dot(r.pixel_step_x, r.pixel_step_x);
+  const double step_y2 = glm::dot(r.pixel_step_y, r.pixel_step_y);
+  const double i = step_x2 > 0 ? glm::dot(offset, r.pixel_step_x) / step_x2 : 0;
+  const double j = step_y2 > 0 ? glm::dot(offset, r.pixel_step_y) / step_y2 : 0;
+  return glm::dvec2((r.width_px - 1) - i, (r.height_px - 1) - j);
+}
+
 }  // namespace fr

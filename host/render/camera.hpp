@@ -14,6 +14,7 @@
 
 #include <fractalis/scene.h>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include <optional>
@@ -46,5 +47,10 @@ CameraRays window_rays(const CameraRays& full, int x0, int y0, int w, int h);
 // Unit direction of the ray through image pixel (x, y), row 0 at the top; the same arithmetic
 // as kernels/rays.cl, in double.
 glm::dvec3 camera_ray_dir(const CameraRays& rays, double x, double y);
+
+// Where `point` lies in the image: the (continuous) pixel coordinates whose ray passes through it
+// (camera_ray_dir's inverse), or nothing when it is not in front of the eye. Coordinates outside
+// [0, width - 1] x [0, height - 1] are outside the image.
+std::optional<glm::dvec2> camera_project(const CameraRays& rays, const glm::dvec3& point);
 
 }  // namespace fr
