@@ -24,9 +24,8 @@ DisplayedError judge_displayed(Explorer& explorer, const std::vector<KeptFrame>&
   const SceneInfo& info = explorer.current().scene->info;
   double mae_sum = 0, ssim_sum = 0;
   for (const KeptFrame& k : kept) {
-    const FrameView full =
-        explorer.worker().render_frame(info, k.state, reference, 0, Readback::Display,
-                                       Readback::Display);
+    const FrameView full = explorer.worker().render_frame(info, k.state, reference, 0,
+                                                          Readback::Display, Readback::Display);
     const Rgba8Image truth{w, h, std::vector<uint8_t>(full.rgba8, full.rgba8 + size_t(w) * h * 4)};
     const Rgba8Image shown =
         upscale_bilinear(k.frame.rgba.data(), k.frame.width_px, k.frame.height_px, w, h);
@@ -76,6 +75,13 @@ ExploreBenchResult run_explore_bench(Explorer& explorer, int w, int h,
                        std::vector<uint8_t>(shown->rgba8, shown->rgba8 + shown->pixel_count() * 4)},
                       explorer.current().state});
     scale_sum += explorer.stats().resolution_scale;
+    if (const ExplorerStats& st = explorer.stats(); st.temporal) {
+      ++result.temporal_frames;
+      result.mean_fresh_px += static_cast<double>(st.reuse.fresh);
+      result.mean_reused_px += static_cast<double>(st.reuse.reused);
+      result.mean_rejected_px += static_cast<double>(st.reuse.rejected);
+      result.mean_filled_px += static_cast<double>(st.reuse.filled);
+    }
     if (explorer.count_evaluations()) {
       // Frames of different sizes: the sums over all their pixels, one sample each.
       const EvalCounts& c = explorer.stats().eval_counts;
@@ -88,6 +94,13 @@ ExploreBenchResult run_explore_bench(Explorer& explorer, int w, int h,
   result.moving_counts.samples = 1;
   result.moving = summarize_frames(frame_ms);
   result.mean_resolution_scale = scale_sum / moving_frames;
+  if (result.temporal_frames > 0) {
+    const double f = result.temporal_frames;
+    result.mean_fresh_px /= f;
+    result.mean_reused_px /= f;
+    result.mean_rejected_px /= f;
+    result.mean_filled_px /= f;
+  }
 
   InputState still;
   const double stopped = now_s();

@@ -14,7 +14,7 @@ namespace fr {
 // The moving frames as displayed (stretched to the window) against a full-resolution frame of
 // the same camera and scene state with every step (the explorer's first sample once parked).
 struct DisplayedError {
-  int frames = 0;  // moving frames judged
+  int frames = 0;                      // moving frames judged
   double mean_mae = 0, max_mae = 0;    // mean absolute error, 0 to 1 (bench/image_error.hpp)
   double mean_ssim = 1, min_ssim = 1;  // structural similarity, 1 is identical
 };
@@ -22,6 +22,9 @@ struct DisplayedError {
 struct ExploreBenchResult {
   FrameStats moving;  // frames while the camera moves
   double mean_resolution_scale = 0;
+  // Temporal reuse: the moving frames that used it, and their pixels per frame (means).
+  int temporal_frames = 0;
+  double mean_fresh_px = 0, mean_reused_px = 0, mean_rejected_px = 0, mean_filled_px = 0;
   double seconds_to_full_resolution = 0;  // after the camera stops: first full-size sample shown
   double seconds_to_full_quality = 0;     // ... and all anti-aliasing samples
   int refine_frames = 0;
@@ -38,9 +41,9 @@ struct ExploreBenchOptions {
   bool measure_error = false;
 };
 
-// Flies for `options.moving_frames` frames (forward, weaving left and right; each frame moves the camera
-// by 1/30 s of flight, so the path does not depend on the machine's speed), then stops and renders until
-// the frame controller reports full quality.
+// Flies for `options.moving_frames` frames (forward, weaving left and right; each frame moves the
+// camera by 1/30 s of flight, so the path does not depend on the machine's speed), then stops and
+// renders until the frame controller reports full quality.
 ExploreBenchResult run_explore_bench(Explorer& explorer, int window_width_px, int window_height_px,
                                      const ExploreBenchOptions& options);
 

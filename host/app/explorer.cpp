@@ -2,6 +2,7 @@
 
 #include "image/exr_write.hpp"
 #include "image/poster.hpp"
+#include "render/camera.hpp"
 #include "render/device.hpp"
 #include "render/memory_budget.hpp"
 #include "scene/vec3.hpp"
@@ -15,13 +16,20 @@
 namespace fr {
 namespace {
 
-bool same_state(const SceneState& a, const SceneState& b) {
-  // (No memcmp of a scene without parameters: its empty vectors' data() may be null.)
+// Everything of the state that the image depends on, but the camera.
+bool same_scene(const SceneState& a, const SceneState& b) {
+  // (No memcmp of empty vectors: their data() may be null.)
   return a.params.size() == b.params.size() &&
          (a.params.empty() ||
           std::memcmp(a.params.data(), b.params.data(), a.params.size() * sizeof(fr_value)) == 0) &&
-         std::memcmp(&a.camera, &b.camera, sizeof(fr_camera)) == 0 &&
+         a.lights.size() == b.lights.size() &&
+         (a.lights.empty() ||
+          std::memcmp(a.lights.data(), b.lights.data(), a.lights.size() * sizeof(fr_light)) == 0) &&
          a.bounding_radius == b.bounding_radius;
+}
+
+bool same_state(const SceneState& a, const SceneState& b) {
+  return same_scene(a, b) && std::memcmp(&a.camera, &b.camera, sizeof(fr_camera)) == 0;
 }
 
 }  // namespace
@@ -55,6 +63,7 @@ void Explorer::select_scene(int index) {
     if (previous < current_) --current_;
   }
   changed_ = true;
+  scene_changed_ = true;
 }
 
 bool Explorer::update(const InputState& input, double dt_s, double now_s) {
@@ -88,10 +97,10 @@ bool Explorer::update(const InputState& input, double dt_s, double now_s) {
         break;
     }
   }
-  if (input.resized) changed_ = true;
+  if (input.resized) changed_ = scene_changed_ = true;
   for (const SceneEvent& e : library_.poll(now_s, settings_.render)) {
     if (e.kind == SceneEvent::Kind::Reloaded && e.scene_id == current().scene->info.id)
-      changed_ = true;
+      changed_ = scene_changed_ = true;
     log_scene_event(e);
   }
 
@@ -128,20 +137,35 @@ bool Explorer::update(const InputState& input, double dt_s, double now_s) {
     spdlog::error("scene '{}': {}", slot.scene->info.id, error);
   }
   if (!same_state(before, slot.state)) changed_ = true;
+  // An animated parameter or light: nothing of the frames before may be reused (FR-2.4).
+  if (!same_scene(before, slot.state)) scene_changed_ = true;
   return true;
 }
 
 const FrameView* Explorer::render(int window_width_px, int window_height_px) {
-  const FramePlan plan = frames_.plan(changed_);
+  // Temporal reuse (app/temporal_reuse.hpp) while only the camera moves; a frame after anything
+  // else changed is scaled, as with reuse off, and keeps nothing of the frames before it.
+  const bool temporal = settings_.explorer.temporal && !quick_frame_;
+  if (scene_changed_) reuse_.reset();
+  const FramePlan plan = frames_.plan(changed_, temporal && !scene_changed_);
   changed_ = false;
+  scene_changed_ = false;
   stats_.resolution_scale = plan.resolution_scale;
   stats_.sample_index = plan.sample_index;
   stats_.refined = plan.done;
   if (plan.done) return nullptr;
   RenderSettings s = settings_.render;
-  s.width_px = std::max(1, static_cast<int>(std::lround(window_width_px * plan.resolution_scale)));
-  s.height_px =
-      std::max(1, static_cast<int>(std::lround(window_height_px * plan.resolution_scale)));
+  const int window_w = std::max(1, window_width_px), window_h = std::max(1, window_height_px);
+  LatticePhase phase;  // strides 1: the whole window (a full frame kept for reuse)
+  if (plan.lattice) {
+    phase = lattice_phase(plan.stride_x, plan.stride_y, lattice_frames_++);
+    s.window = ImageWindow{window_w, window_h, phase.x0, phase.y0, phase.stride_x, phase.stride_y};
+    s.width_px = phase.width_px(window_w);
+    s.height_px = phase.height_px(window_h);
+  } else {
+    s.width_px = std::max(1, static_cast<int>(std::lround(window_w * plan.resolution_scale)));
+    s.height_px = std::max(1, static_cast<int>(std::lround(window_h * plan.resolution_scale)));
+  }
   s.max_steps = std::max(16, static_cast<int>(s.max_steps * plan.step_budget));
   s.count_evaluations = count_evaluations_;
   SceneSlot& slot = current();
@@ -162,13 +186,20 @@ const FrameView* Explorer::render(int window_width_px, int window_height_px) {
     if (s.precision == Precision::Auto && good_scene_id_ == slot.scene->info.id)
       s.precision = stats_.precision;
   }
+  // The frames whose pixels are kept for reuse: the lattices, and the first full-resolution
+  // sample once parked (the next flight starts from it).
+  const bool keep =
+      temporal && !quick && plan.sample_index == 0 && (plan.lattice || plan.resolution_scale == 1);
   const auto start = std::chrono::steady_clock::now();
   last_ = FrameView{};  // the last frame's memory may go with a failing worker
   try {
-    // Steps and ray status on every sample, so that one kernel serves the whole refinement.
-    last_ = worker_.render_frame(
-        slot.scene->info, slot.state, s, plan.sample_index, Readback::DisplayAndSteps,
-        plan.sample_index == 0 ? Readback::DisplayAndSteps : Readback::Display);
+    // Steps and ray status (with reuse, every pass: the depth) on every sample, so that one
+    // kernel serves the whole refinement.
+    const Readback outputs = temporal && !quick ? Readback::Everything : Readback::DisplayAndSteps;
+    last_ = worker_.render_frame(slot.scene->info, slot.state, s, plan.sample_index, outputs,
+                                 keep                     ? Readback::Everything
+                                 : plan.sample_index == 0 ? Readback::DisplayAndSteps
+                                                          : Readback::Display);
   } catch (const RenderWorkerFailure& e) {
     worker_failed(slot, e);
     return nullptr;
@@ -182,6 +213,35 @@ const FrameView* Explorer::render(int window_width_px, int window_height_px) {
   good_state_ = slot.state;
   failed_state_.reset();
   ++frames_rendered_;
+  if (plan.sample_index == 0 && last_.steps && last_.pixel_count() > 0) {
+    const size_t n = last_.pixel_count();
+    double total = 0;
+    for (size_t i = 0; i < n; ++i) total += last_.steps[i];
+    stats_.de_steps_per_pixel = total / static_cast<double>(n);
+    stats_.out_of_steps_fraction = double(count_rays(last_).out_of_steps) / static_cast<double>(n);
+    if (count_evaluations_) stats_.eval_counts = worker_.eval_counts();
+  }
+  if (plan.sample_index == 0 && !plan.done) {
+    stats_.temporal = plan.lattice;
+    stats_.stride_x = plan.lattice ? phase.stride_x : 1;
+    stats_.stride_y = plan.lattice ? phase.stride_y : 1;
+    stats_.reuse = ReuseCounts{};
+  }
+  if (keep && last_.depth && last_.rgba8) {
+    // The window's frame: this one's pixels where it traced them, earlier frames' elsewhere.
+    const uint8_t* shown = reuse_.compose(make_camera_rays(slot.state.camera, window_w, window_h),
+                                          phase, last_.rgba8, last_.depth);
+    stats_.reuse = reuse_.counts();
+    FrameView composed;
+    composed.width_px = window_w;
+    composed.height_px = window_h;
+    composed.lanes = last_.lanes;
+    composed.precision = last_.precision;
+    composed.rgba8 = shown;
+    last_ = composed;
+  } else if (plan.sample_index == 0) {
+    reuse_.reset();  // a scaled frame: nothing of it can be carried
+  }
   stats_.frame_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   if (quick) {
@@ -191,14 +251,6 @@ const FrameView* Explorer::render(int window_width_px, int window_height_px) {
     changed_ = true;
   } else {
     frames_.report(stats_.frame_ms);
-  }
-  if (plan.sample_index == 0 && last_.steps && last_.pixel_count() > 0) {
-    const size_t n = last_.pixel_count();
-    double total = 0;
-    for (size_t i = 0; i < n; ++i) total += last_.steps[i];
-    stats_.de_steps_per_pixel = total / static_cast<double>(n);
-    stats_.out_of_steps_fraction = double(count_rays(last_).out_of_steps) / static_cast<double>(n);
-    if (count_evaluations_) stats_.eval_counts = worker_.eval_counts();
   }
   stats_.precision = last_.precision;
   return &last_;
@@ -217,6 +269,7 @@ void Explorer::worker_failed(SceneSlot& slot, const RenderWorkerFailure& failure
   failed_scene_id_ = id;
   failed_state_ = slot.state;
   changed_ = true;
+  scene_changed_ = true;
   if (good_state_ && good_scene_id_ == id) {
     slot.state.params = good_state_->params;  // the parameter that took it down goes back
     slot.state.camera = good_state_->camera;  // and so does the view that did

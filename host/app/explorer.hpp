@@ -8,6 +8,7 @@
 #include "app/input.hpp"
 #include "app/path_recorder.hpp"
 #include "app/scene_library.hpp"
+#include "app/temporal_reuse.hpp"
 #include "render/renderer.hpp"
 #include "settings/settings.hpp"
 #include "worker/render_worker.hpp"
@@ -21,6 +22,12 @@ namespace fr {
 struct ExplorerStats {
   double frame_ms = 0;  // last render (update excluded)
   double resolution_scale = 1;
+  // How the last moving frame was made: temporal reuse (a lattice of 1 in stride_x * stride_y
+  // pixels traced, the rest carried from earlier frames, `reuse` says how many of each) or a
+  // scaled frame (more than the camera changed, or explorer.temporal is off).
+  bool temporal = false;
+  int stride_x = 1, stride_y = 1;
+  ReuseCounts reuse;
   int sample_index = 0;
   bool refined = false;  // full quality reached and shown
   double de_steps_per_pixel = 0;
@@ -65,8 +72,12 @@ class Explorer {
   // Per-stage DE counters (render/eval_counts.hpp): a counting kernel, a little slower.
   bool count_evaluations() const { return count_evaluations_; }
   void set_count_evaluations(bool on);
-  // Something outside update() (the overlay) changed the scene or settings: refine again.
-  void mark_changed() { changed_ = true; }
+  // Something outside update() (the overlay) changed the scene or settings: refine again (and
+  // reuse nothing of the frames before).
+  void mark_changed() {
+    changed_ = true;
+    scene_changed_ = true;
+  }
   // The current scene's code changed under it (edit mode swapped its DE): whatever took the
   // render worker down before is tried again, and the view refines again. `quick_first_frame`:
   // that frame is built without LLVM's optimizations (RenderSettings::quick_build), in the
@@ -76,6 +87,7 @@ class Explorer {
   void scene_code_changed(bool quick_first_frame = false) {
     failed_state_.reset();
     changed_ = true;
+    scene_changed_ = true;
     quick_frame_ = quick_first_frame;
   }
   // Frames rendered, and render-worker failures (a crash, a hang, a limit), since the start.
@@ -112,7 +124,11 @@ class Explorer {
   bool mouse_look_ = false;
   int current_ = 0;
   bool changed_ = true;
-  bool quick_frame_ = false;  // the next frame is a quick build (scene_code_changed)
+  // More than the camera changed since the last frame: earlier frames' pixels are not reused.
+  bool scene_changed_ = true;
+  TemporalReuse reuse_;
+  uint64_t lattice_frames_ = 0;  // the lattice phase's clock
+  bool quick_frame_ = false;     // the next frame is a quick build (scene_code_changed)
   bool count_evaluations_ = false;
   uint64_t frames_rendered_ = 0;
   int worker_failures_ = 0;

@@ -5,6 +5,12 @@
 // rendering: a smaller image, shown scaled up) and with a reduced step budget. Once nothing
 // changes, the scale goes to 1 and further frames accumulate jittered samples into the same image
 // until `full_quality_samples` is reached.
+//
+// With temporal reuse (app/temporal_reuse.hpp) a moving frame is traced at full resolution on a
+// lattice of the window's pixels instead, the rest carried from earlier frames: the controller
+// picks the lattice's strides (the share of pixels traced) towards the target frame time the same
+// way. The caller says for each frame which of the two it can use (reuse falls back to the scaled
+// frame when more than the camera changed).
 #pragma once
 
 namespace fr {
@@ -14,30 +20,38 @@ struct FrameControllerSettings {
   double min_scale = 0.25;          // of the window's width and height
   double moving_step_budget = 0.6;  // fraction of the march steps used while moving
   int full_quality_samples = 8;
+  int max_stride = 5;  // temporal reuse: at most every 5th column of every 5th row traced
 };
 
 struct FramePlan {
   double resolution_scale = 1;  // render at window size x this
   double step_budget = 1;       // fraction of the settings' max_steps to march
-  int sample_index = 0;         // 0 starts a new accumulation
-  bool done = false;            // full quality reached: nothing left to render
+  // Temporal reuse (resolution_scale 1): trace every stride_x-th column of every stride_y-th row.
+  bool lattice = false;
+  int stride_x = 1;
+  int stride_y = 1;
+  int sample_index = 0;  // 0 starts a new accumulation
+  bool done = false;     // full quality reached: nothing left to render
 };
 
 class FrameController {
  public:
   explicit FrameController(FrameControllerSettings settings = {}) : settings_(settings) {}
 
-  // What to render this frame; `changed` says whether the view or scene changed since the last.
-  FramePlan plan(bool changed);
+  // What to render this frame; `changed` says whether the view or scene changed since the last,
+  // `reuse` whether a moving frame may be a lattice (temporal reuse) rather than scaled.
+  FramePlan plan(bool changed, bool reuse = false);
   // How long the render of the last plan took.
   void report(double render_ms);
 
   double scale() const { return moving_scale_; }
+  double lattice_share() const { return moving_share_; }  // wanted share of pixels traced
   const FrameControllerSettings& settings() const { return settings_; }
 
  private:
   FrameControllerSettings settings_;
   double moving_scale_ = 0.5;
+  double moving_share_ = 0.25;
   bool moving_ = true;
   int next_sample_ = 0;
   FramePlan last_;

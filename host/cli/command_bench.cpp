@@ -60,6 +60,16 @@ int bench_explore(ParsedOptions options, std::ostream& out,
       r.mean_resolution_scale, r.seconds_to_full_resolution,
       setup.settings.explorer.full_quality_samples, r.seconds_to_full_quality, r.refine_frames);
   out << line;
+  if (r.temporal_frames > 0) {
+    const double px = double(render.width_px) * render.height_px;
+    std::snprintf(line, sizeof line,
+                  "temporal reuse in %d of %d moving frames; pixels per frame: %.0f traced "
+                  "(%.1f%%), %.0f reused (%.1f%%), %.0f filled (%.1f%%), %.0f rejected\n",
+                  r.temporal_frames, frames, r.mean_fresh_px, 100 * r.mean_fresh_px / px,
+                  r.mean_reused_px, 100 * r.mean_reused_px / px, r.mean_filled_px,
+                  100 * r.mean_filled_px / px, r.mean_rejected_px);
+    out << line;
+  }
   if (explorer.count_evaluations())
     out << "while moving, over all the moving frames' pixels:\n"
         << format_eval_counts(r.moving_counts);

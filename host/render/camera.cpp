@@ -30,13 +30,18 @@ CameraRays make_camera_rays(const fr_camera& c, int k, int m) {
   return r;
 }
 
-CameraRays window_rays(const CameraRays& full, int x0, int y0, int w, int h) {
+CameraRays window_rays(const CameraRays& full, int x0, int y0, int w, int h, int stride_x,
+                       int stride_y) {
   // The model counts pixels from the image's far corner (i = W - 1 - x): the window's first
-  // pixel direction is the full image's, stepped by the columns and rows beyond the window.
+  // pixel direction is the full image's at the window's last column and row (x0 + (w - 1) *
+  // stride_x, y0 + (h - 1) * stride_y), and its steps are the full image's times the strides.
   CameraRays r = full;
-  r.first_pixel_dir = full.first_pixel_dir +
-                      full.pixel_step_x * static_cast<double>(full.width_px - x0 - w) +
-                      full.pixel_step_y * static_cast<double>(full.height_px - y0 - h);
+  const double last_x = x0 + static_cast<double>(w - 1) * stride_x;
+  const double last_y = y0 + static_cast<double>(h - 1) * stride_y;
+  r.first_pixel_dir = full.first_pixel_dir + full.pixel_step_x * (full.width_px - 1 - last_x) +
+                      full.pixel_step_y * (full.height_px - 1 - last_y);
+  r.pixel_step_x = full.pixel_step_x * static_cast<double>(stride_x);
+  r.pixel_step_y = full.pixel_step_y * static_cast<double>(stride_y);
   r.width_px = w;
   r.height_px = h;
   return r;
@@ -45,21 +50,6 @@ CameraRays window_rays(const CameraRays& full, int x0, int y0, int w, int h) {
 glm::dvec3 camera_ray_dir(const CameraRays& r, double x, double y) {
   const double i = (r.width_px - 1) - x, j = (r.height_px - 1) - y;
   return glm::normalize(r.first_pixel_dir + r.pixel_step_x * i + r.pixel_step_y * j);
-}
-
-std::optional<glm::dvec2> camera_project(const CameraRays& r, const glm::dvec3& point) {
-  const glm::dvec3 d = point - r.eye;
-  const double forward = glm::dot(d, r.forward);
-  if (!(forward > 0)) return std::nullopt;
-  // Scaled to forward distance 1, the ray is first_pixel_dir + pixel_step_x i + pixel_step_y j:
-  // both steps are across the view (perpendicular to it and to each other), and the first
-  // pixel's direction is 1 along it, so i and j are the offset's components along the steps.
-  const glm::dvec3 offset = d / forward - r.first_pixel_dir;
-  const double step_x2 = glm::dot(r.pixel_step_x, r.pixel_step_x);
-  const double step_y2 = glm::dot(r.pixel_step_y, r.pixel_step_y);
-  const double i = step_x2 > 0 ? glm::dot(offset, r.pixel_step_x) / step_x2 : 0;
-  const double j = step_y2 > 0 ? glm::dot(offset, r.pixel_step_y) / step_y2 : 0;
-  return glm::dvec2((r.width_px - 1) - i, (r.height_px - 1) - j);
 }
 
 }  // namespace fr

@@ -14,7 +14,6 @@
 
 #include <fractalis/scene.h>
 
-#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include <optional>
@@ -41,16 +40,15 @@ CameraRays make_camera_rays(const fr_camera& camera, int width_px, int height_px
 
 // The rays of the w x h window at (x0, y0) (top-left, in pixels) of the image `full` describes,
 // as an image of its own: the same ray through every pixel, so windows rendered apart and put
-// together are the whole image (posters are rendered so, a band of rows at a time).
-CameraRays window_rays(const CameraRays& full, int x0, int y0, int w, int h);
+// together are the whole image (posters are rendered so, a band of rows at a time). With strides
+// above 1, the window's pixel (x, y) is the whole image's (x0 + x * stride_x, y0 + y * stride_y):
+// a lattice of its pixels (the explorer's temporal reuse). The pixel angle stays the whole
+// image's, so the lattice's rays march to the whole image's hit threshold.
+CameraRays window_rays(const CameraRays& full, int x0, int y0, int w, int h, int stride_x = 1,
+                       int stride_y = 1);
 
 // Unit direction of the ray through image pixel (x, y), row 0 at the top; the same arithmetic
 // as kernels/rays.cl, in double.
 glm::dvec3 camera_ray_dir(const CameraRays& rays, double x, double y);
-
-// Where `point` lies in the image: the (continuous) pixel coordinates whose ray passes through it
-// (camera_ray_dir's inverse), or nothing when it is not in front of the eye. Coordinates outside
-// [0, width - 1] x [0, height - 1] are outside the image.
-std::optional<glm::dvec2> camera_project(const CameraRays& rays, const glm::dvec3& point);
 
 }  // namespace fr

@@ -93,9 +93,12 @@ fr_frame_constants make_frame_constants(const CameraRays& rays, const SceneState
   put_hi_lo(fc.start_scale, fc.start_scale_lo, scale);
   fc.ao_reference_steps = static_cast<float>(s.ao_reference_steps);
   fc.refine_steps = s.refine_steps;
-  // Cone blocks on the whole image's grid (a window's offset into its first block is the phase).
-  fc.cone_phase_x = s.window.full_width_px > 0 ? s.window.x0_px % FR_CONE_BLOCK : 0;
-  fc.cone_phase_y = s.window.full_width_px > 0 ? s.window.y0_px % FR_CONE_BLOCK : 0;
+  // Cone blocks on the whole image's grid (a window's offset into its first block is the phase);
+  // a lattice's blocks are its own (its rays are not the whole image's neighbours).
+  const bool band =
+      s.window.full_width_px > 0 && s.window.stride_x_px <= 1 && s.window.stride_y_px <= 1;
+  fc.cone_phase_x = band ? s.window.x0_px % FR_CONE_BLOCK : 0;
+  fc.cone_phase_y = band ? s.window.y0_px % FR_CONE_BLOCK : 0;
   fc.cone_blocks_x = (s.width_px + fc.cone_phase_x + FR_CONE_BLOCK - 1) / FR_CONE_BLOCK;
   fc.cone_blocks_y = (s.height_px + fc.cone_phase_y + FR_CONE_BLOCK - 1) / FR_CONE_BLOCK;
   put(fc.camera_right, rays.right);

@@ -84,12 +84,16 @@ inline const char* precision_name(Precision p) {
 }
 
 // A window of a larger image: rendering it gives those pixels of the whole image exactly
-// (render/camera.hpp's window_rays). full_width_px 0: the image is the whole.
+// (render/camera.hpp's window_rays). full_width_px 0: the image is the whole. With a stride above
+// 1 the window is a lattice: its pixel (x, y) is the whole image's (x0 + x * stride_x,
+// y0 + y * stride_y) (the explorer's temporal reuse traces one such lattice a frame).
 struct ImageWindow {
   int full_width_px = 0;
   int full_height_px = 0;
   int x0_px = 0;
   int y0_px = 0;
+  int stride_x_px = 1;
+  int stride_y_px = 1;
 };
 
 struct RenderSettings {
@@ -181,6 +185,8 @@ void visit_render_fields(Settings& s, Visit&& visit) {
   visit("window.full_height_px", s.window.full_height_px);
   visit("window.x0_px", s.window.x0_px);
   visit("window.y0_px", s.window.y0_px);
+  visit("window.stride_x_px", s.window.stride_x_px);
+  visit("window.stride_y_px", s.window.stride_y_px);
   visit("lanes", s.lanes);
   visit("precision", s.precision);
   visit("samples", s.samples);

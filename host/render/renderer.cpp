@@ -32,7 +32,8 @@ CameraRays rays_for(const fr_camera& camera, const RenderSettings& s) {
   const ImageWindow& win = s.window;
   if (win.full_width_px <= 0) return make_camera_rays(camera, s.width_px, s.height_px);
   return window_rays(make_camera_rays(camera, win.full_width_px, win.full_height_px), win.x0_px,
-                     win.y0_px, s.width_px, s.height_px);
+                     win.y0_px, s.width_px, s.height_px, std::max(1, win.stride_x_px),
+                     std::max(1, win.stride_y_px));
 }
 
 size_t round_up_div(size_t n, size_t d) {
@@ -329,6 +330,7 @@ FrameView view_of(const FrameImage& image) {
   const size_t n = v.pixel_count();
   v.steps = image.steps.size() == n && n > 0 ? image.steps.data() : nullptr;
   v.ray_status = image.ray_status.size() == n && n > 0 ? image.ray_status.data() : nullptr;
+  v.depth = image.depth.size() == n && n > 0 ? image.depth.data() : nullptr;
   return v;
 }
 

@@ -84,6 +84,7 @@ struct FrameView {
   const uint8_t* rgba8 = nullptr;       // as FrameImage's, width x height
   const float* steps = nullptr;         // null when not read back
   const uint8_t* ray_status = nullptr;  // null when not read back
+  const float* depth = nullptr;         // null when not read back (Everything)
   size_t pixel_count() const { return static_cast<size_t>(width_px) * height_px; }
 };
 // A view of `image` (its steps and ray status when it has them).

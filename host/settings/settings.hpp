@@ -20,7 +20,10 @@ struct ExplorerSettings {
   int window_width_px = 1280;
   int window_height_px = 720;
   bool fullscreen = false;
-  double target_fps = 30;        // held while the camera moves
+  double target_fps = 30;  // held while the camera moves
+  // While moving, trace a lattice of the pixels and carry the rest from earlier frames
+  // (app/temporal_reuse.hpp) rather than render fewer pixels and stretch them.
+  bool temporal = false;
   int full_quality_samples = 8;  // accumulated once it stops ("quality" presets: 2, 8, 32)
   double mouse_sensitivity_deg_per_px = 0.15;
   bool invert_y = false;

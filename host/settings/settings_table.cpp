@@ -163,7 +163,8 @@ std::vector<SettingSpec> make_table() {
   t.push_back(number_setting<&S::plugins, &P::vet_render_timeout_s>(
       "plugins.vet_render_timeout_s", 0, 3600, true,
       "Seconds the 8x8 test render itself may take, its kernel build not counted "
-      "(plugins.build_timeout_s\nhas that): a DE that never returns is said this soon. 0: no limit of its own "
+      "(plugins.build_timeout_s\nhas that): a DE that never returns is said this soon. 0: no limit "
+      "of its own "
       "(plugins.vet_timeout_s\nstill ends the test)."));
   t.push_back(number_setting<&S::plugins, &P::build_timeout_s>(
       "plugins.build_timeout_s", 1, 3600, true,
@@ -329,12 +330,11 @@ std::vector<SettingSpec> make_table() {
       "render.shadow_max_steps", 1, 10000,
       "Sphere-tracing iterations per shadow ray (32: the sweep found 64 no more accurate, and "
       "slower)."));
-  t.push_back(in_overlay(
-      choice_setting<&S::render, &R::fog_method>(
-          "render.fog_method",
-          "Fog: \"exponential\" (1 - exp(-density t)) or \"power\" (fog_scale * "
-          "t^0.75)."),
-      "Fog curve"));
+  t.push_back(in_overlay(choice_setting<&S::render, &R::fog_method>(
+                             "render.fog_method",
+                             "Fog: \"exponential\" (1 - exp(-density t)) or \"power\" (fog_scale * "
+                             "t^0.75)."),
+                         "Fog curve"));
 
   t.push_back(in_overlay(effect_setting<FR_FEATURE_SHADOWS>("render.effects.shadows"), "Shadows"));
   t.push_back(in_overlay(effect_setting<FR_FEATURE_AO>("render.effects.ao"), "Ambient occlusion"));
@@ -354,7 +354,10 @@ std::vector<SettingSpec> make_table() {
 
   t.push_back(number_setting<&S::explorer, &E::target_fps>(
       "explorer.target_fps", 1, 240, false,
-      "Frame rate held while the camera moves, by lowering the resolution."));
+      "Frame rate held while the camera moves, by tracing fewer pixels."));
+  t.push_back(bool_setting<&S::explorer, &E::temporal>(
+      "explorer.temporal",
+      "While moving, trace a rotating share of the pixels, the rest reused from earlier frames."));
   SettingSpec quality =
       spec_of("explorer.quality", SettingKind::Choice,
               "Anti-aliasing once the camera stops: \"fast\" (2 samples), \"balanced\" "

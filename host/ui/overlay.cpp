@@ -136,9 +136,18 @@ bool section(const OverlayState& overlay, const char* name, ImGuiTreeNodeFlags f
 
 void draw_statistics(Explorer& explorer, const OverlayState& overlay) {
   const ExplorerStats& st = explorer.stats();
-  ImGui::Text("%.1f ms/frame (%.0f fps), scale %.2f, sample %d%s", st.frame_ms,
-              st.frame_ms > 0 ? 1000.0 / st.frame_ms : 0.0, st.resolution_scale, st.sample_index,
-              st.refined ? " (refined)" : "");
+  if (st.temporal) {
+    // Temporal reuse: what this frame traced, and what it carried from the frames before.
+    const double n = std::max<double>(
+        1, static_cast<double>(st.reuse.fresh + st.reuse.reused + st.reuse.filled));
+    ImGui::Text("%.1f ms/frame (%.0f fps), reuse: 1 in %d traced, %.0f%% reused, %.0f%% filled",
+                st.frame_ms, st.frame_ms > 0 ? 1000.0 / st.frame_ms : 0.0,
+                st.stride_x * st.stride_y, 100 * st.reuse.reused / n, 100 * st.reuse.filled / n);
+  } else {
+    ImGui::Text("%.1f ms/frame (%.0f fps), scale %.2f, sample %d%s", st.frame_ms,
+                st.frame_ms > 0 ? 1000.0 / st.frame_ms : 0.0, st.resolution_scale, st.sample_index,
+                st.refined ? " (refined)" : "");
+  }
   ImGui::Text("%.1f DE steps/pixel, surface %.4g away", st.de_steps_per_pixel, st.surface_distance);
   // Never silent: rays out of steps and the precision in use, in warning colour when it matters.
   const bool many = 100 * st.out_of_steps_fraction > kOutOfStepsWarnPercent;
@@ -328,8 +337,9 @@ void draw_overlay(Explorer& explorer, OverlayState& overlay) {
       "Fractalis (" + overlay.keys.label(Action::ToggleOverlay) + " hides)###main";
   ImGui::Begin(title.c_str(), nullptr, ImGuiWindowFlags_AlwaysAutoResize);
   if (!overlay.edit_status.empty())
-    ImGui::TextColored(overlay.edit_failed ? ImVec4(1, 0.45f, 0.35f, 1) : ImVec4(0.6f, 0.9f, 0.6f, 1),
-                       "%s", overlay.edit_status.c_str());
+    ImGui::TextColored(
+        overlay.edit_failed ? ImVec4(1, 0.45f, 0.35f, 1) : ImVec4(0.6f, 0.9f, 0.6f, 1), "%s",
+        overlay.edit_status.c_str());
   draw_statistics(explorer, overlay);
   std::vector<DrawnControl> param_controls;
   draw_scene(explorer, overlay, &param_controls);

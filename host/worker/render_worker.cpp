@@ -230,7 +230,7 @@ std::string RenderWorker::call(uint32_t kind, const std::string& request, const 
             true);
       std::string which;  // the setting behind the limit
       if (limit_s == limits_.frame.first_s)
-        which = limits_.frame_setting          ? " (" + std::string(limits_.frame_setting) + ")"
+        which = limits_.frame_setting    ? " (" + std::string(limits_.frame_setting) + ")"
                 : limits_.frame.adaptive ? " (plugins.frame_limit_s)"
                                          : " (render.watchdog_s)";
       else if (limit_s == kFirstLimitOfAnEditS && stage == std::string("probing the DE"))
@@ -392,9 +392,8 @@ FramePassPointers RenderWorker::finish_in_place(const RenderSettings& settings, 
   process_->frame.grow(bytes);
   request.u32(static_cast<uint32_t>(what));
   request.u64(bytes);
-  const std::string reply =
-      call(static_cast<uint32_t>(kind), request.bytes(), last_scene_id_, kFrameStage,
-           sample_limit_s());
+  const std::string reply = call(static_cast<uint32_t>(kind), request.bytes(), last_scene_id_,
+                                 kFrameStage, sample_limit_s());
   // The samples' mean time (kernel builds included: that only makes later limits longer).
   if (pending_samples_ > 0)
     frame_limit_.record(last_sample_scene_, last_sample_pixels_,
@@ -435,8 +434,8 @@ void RenderWorker::finish(const RenderSettings& settings, Readback what, FrameIm
 FrameView RenderWorker::render_frame(const SceneInfo& info, const SceneState& state,
                                      const RenderSettings& settings, int sample_index,
                                      Readback outputs, Readback read) {
-  if (static_cast<int>(read) > static_cast<int>(outputs) || read == Readback::Everything)
-    throw std::logic_error("RenderWorker::render_frame: reads the display passes the sample wrote");
+  if (static_cast<int>(read) > static_cast<int>(outputs))
+    throw std::logic_error("RenderWorker::render_frame: reads the passes the sample wrote");
   ensure_started();
   FrameView view;
   view.width_px = settings.width_px;
@@ -454,6 +453,7 @@ FrameView RenderWorker::render_frame(const SceneInfo& info, const SceneState& st
   view.rgba8 = at.rgba8;
   view.steps = at.steps;
   view.ray_status = at.ray_status;
+  view.depth = at.depth;
   return view;
 }
 
@@ -495,8 +495,8 @@ std::vector<float> RenderWorker::probe_de(const SceneInfo& info,
   double limit_s = frame_limit_.limit_s(key, static_cast<double>(points.size()));
   if (edited_keys_.count(key) && (limit_s <= 0 || limit_s > kFirstLimitOfAnEditS))
     limit_s = kFirstLimitOfAnEditS;
-  const std::string reply = call(static_cast<uint32_t>(RenderWireKind::Probe), w.bytes(),
-                                 info.id, "probing the DE", limit_s);
+  const std::string reply = call(static_cast<uint32_t>(RenderWireKind::Probe), w.bytes(), info.id,
+                                 "probing the DE", limit_s);
   WireReader r(reply);
   const uint32_t count = r.u32();
   std::vector<float> values(points.size());

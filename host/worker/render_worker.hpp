@@ -30,8 +30,8 @@
 #include <chrono>
 #include <filesystem>
 #include <map>
-#include <set>
 #include <memory>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -61,7 +61,7 @@ struct RenderWorkerLimits {
   // The setting behind frame.first_s, named when a sample outlasts it; nullptr: the command's
   // render.watchdog_s, or the explorer's plugins.frame_limit_s.
   const char* frame_setting = nullptr;
-  size_t printed_lines = 20;                     // lines of a scene's printf output shown
+  size_t printed_lines = 20;  // lines of a scene's printf output shown
 };
 
 // The limits of [plugins] for a command whose samples may take `frame_s` (render.watchdog_s), or
@@ -89,9 +89,9 @@ class RenderWorker {
                      int sample_index, Readback outputs = Readback::Everything);
   void finish(const RenderSettings& settings, Readback what, FrameImage& image);
   // A sample and its read-back in one round trip, with no copy: the explorer's frame. `read` is
-  // Display or DisplayAndSteps, within what the sample's `outputs` wrote. The view points into
-  // the shared frame (or this object, in process) and is valid until the next call on this
-  // RenderWorker.
+  // within what the sample's `outputs` wrote (the view shows the display passes and the depth). The
+  // view points into the shared frame (or this object, in process) and is valid until the next call
+  // on this RenderWorker.
   FrameView render_frame(const SceneInfo& info, const SceneState& state,
                          const RenderSettings& settings, int sample_index, Readback outputs,
                          Readback read);
@@ -146,7 +146,7 @@ class RenderWorker {
   // A changed DE's first frame and its probes get at most kFirstLimitOfAnEditS.
   double sample_limit_s() const;
   std::map<std::string, uint64_t> key_of_id_;  // the last scene key sent under each scene id
-  std::set<uint64_t> edited_keys_;  // keys sent under an id that had another key before
+  std::set<uint64_t> edited_keys_;             // keys sent under an id that had another key before
 };
 
 // The limit of a scene's first frame and of its probes, in seconds, when the scene's id was sent

@@ -1,0 +1,107 @@
+// temporal_reuse.hpp — full resolution while flying: what earlier frames traced, carried into the
+// new camera (issue 37).
+//
+// Each frame traces one lattice of the window's pixels (every stride_x-th column of every
+// stride_y-th row, from a phase that rotates so that every pixel is traced again within
+// stride_x * stride_y frames: render/camera.hpp's window_rays). Every other pixel is what the
+// frames before it traced there: each kept sample is the point its ray hit (the vector from the
+// eye to it) or, for the sky, its direction, carried to the pixel of the new image it projects to
+// (the nearest wins where several land on one). A carried sample is rejected where the fresh
+// lattice samples around it are all nearer than it by more than a tolerance (something came in
+// front of it), and when it is older than `max_age_frames`. What is left without a sample (a
+// disocclusion, the image's new edge, a gap where the surface came closer and spread out) takes
+// the nearest surface among its carried or fresh neighbours, else the fresh lattice's bilinear
+// value. The scene must not have changed (the caller resets the history when anything but the
+// camera did); colours are display values (rgba8), so exposure and tone mapping must be the same.
+#pragma once
+
+#include "render/camera.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace fr {
+
+// Which pixels of a width x height image a frame traces: (x0 + i * stride_x, y0 + j * stride_y).
+struct LatticePhase {
+  int stride_x = 1;
+  int stride_y = 1;
+  int x0 = 0;
+  int y0 = 0;
+  int width_px(int full_width_px) const;  // the lattice's columns in an image that wide
+  int height_px(int full_height_px) const;
+};
+
+// Phase `frame` of the strides' cycle: each of the stride_x * stride_y offsets once per cycle,
+// neighbours of the cycle apart in both directions.
+LatticePhase lattice_phase(int stride_x, int stride_y, uint64_t frame);
+
+// What one frame's pixels came from.
+struct ReuseCounts {
+  size_t fresh = 0;     // traced this frame (the lattice)
+  size_t reused = 0;    // carried from earlier frames
+  size_t rejected = 0;  // carried here but failed the occlusion test, or too old to carry
+  size_t too_old = 0;   // of those, too old
+  size_t filled = 0;    // nothing valid: from neighbours or the lattice (rejected ones included)
+};
+
+struct TemporalReuseSettings {
+  float occlusion_tolerance = 0.03f;  // relative depth margin of the occlusion test
+  // A carried sample older than this is not used (at least twice the lattice's cycle).
+  int max_age_frames = 24;
+};
+
+class TemporalReuse {
+ public:
+  explicit TemporalReuse(TemporalReuseSettings settings = {}) : settings_(settings) {}
+
+  // Forgets every kept sample: the next frame uses only what it traces.
+  void reset() { has_history_ = false; }
+  bool has_history() const { return has_history_; }
+
+  // The frame `rays` sees (the whole window's camera): the kept samples carried to it, and the
+  // lattice `phase` traced fresh (`lattice_rgba8` and `lattice_depth`, the distance along each
+  // ray from the eye, +inf for the sky, of phase.width_px x phase.height_px pixels). Returns the
+  // window-sized rgba8 image, valid until the next call; its samples are kept for the next frame.
+  // With strides 1 the lattice is the whole frame (a full trace: nothing is carried).
+  const uint8_t* compose(const CameraRays& rays, const LatticePhase& phase,
+                         const uint8_t* lattice_rgba8, const float* lattice_depth);
+
+  const ReuseCounts& counts() const { return counts_; }
+
+ private:
+  enum class Kind : uint8_t { None, Surface, Sky };
+  enum class Source : uint8_t { Hole, Carried, Fresh, Filled };
+  // One pixel's sample, together in memory (each pass reads and writes whole samples).
+  struct Sample {
+    float vec[3];  // eye to the hit point (Surface) or the unit direction (Sky)
+    float key;     // distance from the eye; the sky's is FLT_MAX (behind everything)
+    uint32_t rgba8;
+    Kind kind;
+    uint8_t age;  // frames since it was traced
+    Source source;
+    uint8_t unused;
+  };
+  // One compose call's inputs.
+  struct Frame {
+    const CameraRays& rays;
+    const LatticePhase& phase;
+    const uint8_t* rgba8;  // the lattice's
+    const float* depth;
+    int max_age;
+    bool carry;  // kept_ holds samples of old_rays
+    const CameraRays& old_rays;
+  };
+  void compose_rows(const Frame& frame, int row_begin, int row_end, ReuseCounts& counts);
+
+  TemporalReuseSettings settings_;
+  std::vector<Sample> kept_, next_;
+  std::vector<uint8_t> shown_;  // kept_'s colours, packed: the frame compose returns
+  bool has_history_ = false;
+  int width_px_ = 0, height_px_ = 0;
+  CameraRays old_rays_;  // the camera of kept_ (its vectors start at its eye)
+  ReuseCounts counts_;
+};
+
+}  // namespace fr
