@@ -1,9 +1,9 @@
 // The CLI's error paths: every wrong option or value gets one line naming it and exit code 2.
 #include "cli/cli.hpp"
 #include "cli_run.hpp"
+#include "in_tree_scenes.hpp"
 #include "plugin/scene_instance.hpp"
 #include "render/renderer.hpp"
-#include "in_tree_scenes.hpp"
 #include "test_support.hpp"
 
 #include <filesystem>
@@ -291,8 +291,8 @@ TEST(Cli, ExploreBenchJudgesTheShownFrames) {
   EXPECT_LE(worst_ssim, ssim);
   EXPECT_GE(worst_ssim, -1);
   // Every kept frame must fit: 1000 frames of 3840x2160 would be 31 GiB.
-  const CliRun huge = run({"bench", "--explore", "--error", "--size", "3840x2160", "--frames",
-                           "1000"});
+  const CliRun huge =
+      run({"bench", "--explore", "--error", "--size", "3840x2160", "--frames", "1000"});
   EXPECT_EQ(huge.code, 2);
   EXPECT_NE(huge.err.find("could take 30.9 GiB; at most 129 frames at this size"),
             std::string::npos)
@@ -301,6 +301,37 @@ TEST(Cli, ExploreBenchJudgesTheShownFrames) {
   const CliRun alone = run({"bench", "--error", "--size", "16x16"});
   EXPECT_EQ(alone.code, 2);
   EXPECT_NE(alone.err.find("--error: only with --explore"), std::string::npos) << alone.err;
+}
+
+// Temporal reuse in the report: with a fixed lattice of 1 in 3x2 pixels every moving frame traces
+// exactly that share (the warm-up frame before the flight is the scaled one a new scene gets);
+// --lattice is refused without reuse, out of its range, and without --explore.
+TEST(Cli, ExploreBenchReportsTemporalReuse) {
+  const CliRun r =
+      run({"bench", "--explore", "--size", "96x54", "--frames", "4", "--set",
+           "explorer.temporal=true", "--set", "explorer.quality=\"fast\"", "--lattice", "3x2"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto at = r.out.find("temporal reuse in");
+  ASSERT_NE(at, std::string::npos) << r.out;
+  int used = 0, of = 0;
+  double traced = 0;
+  ASSERT_EQ(std::sscanf(r.out.c_str() + at,
+                        "temporal reuse in %d of %d moving frames; pixels per frame: %lf traced",
+                        &used, &of, &traced),
+            3)
+      << r.out;
+  EXPECT_EQ(used, 4);
+  EXPECT_EQ(of, 4);
+  EXPECT_EQ(traced, 32 * 27) << "96/3 columns of 54/2 rows";
+  for (const auto& [args, says] : std::vector<std::pair<std::vector<std::string>, std::string>>{
+           {{"bench", "--explore", "--lattice", "3x3"}, "only with temporal reuse"},
+           {{"bench", "--explore", "--set", "explorer.temporal=true", "--lattice", "6x2"},
+            "--lattice width: 6 is outside [1, 5]"},
+           {{"bench", "--lattice", "2x2"}, "--lattice: only with --explore"}}) {
+    const CliRun bad = run(args);
+    EXPECT_EQ(bad.code, 2) << args.back();
+    EXPECT_NE(bad.err.find(says), std::string::npos) << bad.err;
+  }
 }
 
 // One channel: a warning reaches the error stream as "fractalis: warning: ...", -q hides it,

@@ -68,6 +68,8 @@ class Explorer {
   CameraMode camera_mode() const { return mode_; }
   void set_camera_mode(CameraMode m) { mode_ = m; }
   bool mouse_look() const { return mouse_look_; }
+  // Temporal reuse traces this lattice while moving, whatever the frame time (bench --lattice).
+  void fix_lattice(int stride_x, int stride_y) { frames_.fix_lattice(stride_x, stride_y); }
   void set_mouse_look(bool on) { mouse_look_ = on; }
   // Per-stage DE counters (render/eval_counts.hpp): a counting kernel, a little slower.
   bool count_evaluations() const { return count_evaluations_; }

@@ -38,6 +38,10 @@ FramePlan FrameController::plan(bool changed, bool reuse) {
       p.lattice = true;
       std::tie(p.stride_x, p.stride_y) =
           lattice_strides(moving_share_, std::max(1, settings_.max_stride));
+      if (settings_.fixed_stride_x > 0 && settings_.fixed_stride_y > 0) {
+        p.stride_x = settings_.fixed_stride_x;
+        p.stride_y = settings_.fixed_stride_y;
+      }
     }
   } else {
     // Still: full resolution, restarting the accumulation the first time.

@@ -21,6 +21,8 @@ struct FrameControllerSettings {
   double moving_step_budget = 0.6;  // fraction of the march steps used while moving
   int full_quality_samples = 8;
   int max_stride = 5;  // temporal reuse: at most every 5th column of every 5th row traced
+  // Temporal reuse with this lattice whatever the frame time (a measurement's); 0: chosen.
+  int fixed_stride_x = 0, fixed_stride_y = 0;
 };
 
 struct FramePlan {
@@ -47,6 +49,10 @@ class FrameController {
   double scale() const { return moving_scale_; }
   double lattice_share() const { return moving_share_; }  // wanted share of pixels traced
   const FrameControllerSettings& settings() const { return settings_; }
+  void fix_lattice(int stride_x, int stride_y) {
+    settings_.fixed_stride_x = stride_x;
+    settings_.fixed_stride_y = stride_y;
+  }
 
  private:
   FrameControllerSettings settings_;

@@ -121,25 +121,31 @@ void TemporalReuse::compose_rows(const Frame& f, int row_begin, int row_end,
   const auto project = [&](const glm::vec3& v, float& x, float& y) {
     const float along = glm::dot(v, cam.forward);
     if (!(along > 0)) return false;
-    x = cam.centre_x + glm::dot(v, rx) / along;
-    y = cam.centre_y - glm::dot(v, uy) / along;
+    const float inv = 1.0f / along;
+    x = cam.centre_x + glm::dot(v, rx) * inv;
+    y = cam.centre_y - glm::dot(v, uy) * inv;
     return true;
   };
   const auto lattice_at = [&](int i, int j) { return static_cast<size_t>(j) * lw + i; };
+  const float inv_stride_x = 1.0f / phase.stride_x, inv_stride_y = 1.0f / phase.stride_y;
   for (int y = row_begin; y < row_end; ++y) {
+    const glm::vec3 row_dir = cam.base + cam.dy * static_cast<float>(y);
     const bool lattice_row = y >= phase.y0 && (y - phase.y0) % phase.stride_y == 0;
     // The lattice rows at or above and below this one, and the weight of the lower.
-    const float v = std::clamp(static_cast<float>(y - phase.y0) / phase.stride_y, 0.0f,
+    const float v = std::clamp(static_cast<float>(y - phase.y0) * inv_stride_y, 0.0f,
                                static_cast<float>(lh - 1));
     const int j0 = static_cast<int>(v), j1 = std::min(j0 + 1, lh - 1);
     const float fv = v - j0;
     // Between two lattice rows (not beyond the first or last): the occlusion test applies.
     const bool bracketed_y = y >= phase.y0 && j1 > j0;
+    int next_lattice_x = lattice_row ? phase.x0 : w;  // the row's next fresh pixel
     for (int x = 0; x < w; ++x) {
       Sample& s = next_[static_cast<size_t>(y) * w + x];
       uint8_t* shown = &shown_[4 * (static_cast<size_t>(y) * w + x)];
-      const glm::vec3 d = cam.dir(x, y);
-      if (lattice_row && x >= phase.x0 && (x - phase.x0) % phase.stride_x == 0) {
+      const glm::vec3 ray = row_dir + cam.dx * static_cast<float>(x);
+      const glm::vec3 d = ray * (1.0f / std::sqrt(glm::dot(ray, ray)));
+      if (x == next_lattice_x) {
+        next_lattice_x += phase.stride_x;
         const size_t from =
             lattice_at((x - phase.x0) / phase.stride_x, (y - phase.y0) / phase.stride_y);
         const float t = f.depth[from];
@@ -157,7 +163,7 @@ void TemporalReuse::compose_rows(const Frame& f, int row_begin, int row_end,
         continue;
       }
       // The lattice around this pixel: its four samples, their nearest and farthest depths.
-      const float u = std::clamp(static_cast<float>(x - phase.x0) / phase.stride_x, 0.0f,
+      const float u = std::clamp(static_cast<float>(x - phase.x0) * inv_stride_x, 0.0f,
                                  static_cast<float>(lw - 1));
       const int i0 = static_cast<int>(u), i1 = std::min(i0 + 1, lw - 1);
       const float fu = u - i0;
@@ -184,15 +190,16 @@ void TemporalReuse::compose_rows(const Frame& f, int row_begin, int row_end,
         const glm::vec3 q = guess_weight > 0 ? p - shift : p;  // from the old eye
         const float along = glm::dot(q, old_cam.forward);
         if (along > 0) {
+          const float inv = 1.0f / along;
           const int ox =
-              static_cast<int>(std::floor(old_cam.centre_x + glm::dot(q, old_rx) / along + 0.5f));
+              static_cast<int>(std::floor(old_cam.centre_x + glm::dot(q, old_rx) * inv + 0.5f));
           const int oy =
-              static_cast<int>(std::floor(old_cam.centre_y - glm::dot(q, old_uy) / along + 0.5f));
+              static_cast<int>(std::floor(old_cam.centre_y - glm::dot(q, old_uy) * inv + 0.5f));
           float best_key = INFINITY, best_d2 = 0;
           const Sample* best = nullptr;
-          // The sample whose point lands within the pixel's own square: usually the one at the
-          // guessed position (then no search).
-          const auto consider = [&](int sx, int sy, float radius2) {
+          // The old sample at the guessed position when its point lands within 0.87 px of this
+          // pixel (most often: then no search); else the nearest of those around it that do.
+          const auto consider = [&](int sx, int sy) {
             const Sample& o = kept_[static_cast<size_t>(sy) * w + sx];
             if (o.kind == Kind::None || o.age >= f.max_age) return;
             glm::vec3 ov(o.vec[0], o.vec[1], o.vec[2]);
@@ -200,7 +207,7 @@ void TemporalReuse::compose_rows(const Frame& f, int row_begin, int row_end,
             float px, py;
             if (!project(ov, px, py)) return;
             const float d2 = (px - x) * (px - x) + (py - y) * (py - y);
-            if (d2 > radius2) return;
+            if (d2 > 0.75f) return;
             // Nearest first (its distance from the new eye); between samples of one surface,
             // the one nearest the pixel.
             const float key = o.kind == Kind::Surface ? glm::length(ov) : kSkyKey;
@@ -210,11 +217,11 @@ void TemporalReuse::compose_rows(const Frame& f, int row_begin, int row_end,
               best_d2 = d2;
             }
           };
-          if (ox >= 0 && oy >= 0 && ox < w && oy < h) consider(ox, oy, 0.25f);
-          if (!best)  // else any point within 0.87 px, from the old pixels around
+          if (ox >= 0 && oy >= 0 && ox < w && oy < h) consider(ox, oy);
+          if (!best)
             for (int sy = std::max(0, oy - 1); sy <= std::min(h - 1, oy + 1); ++sy)
               for (int sx = std::max(0, ox - 1); sx <= std::min(w - 1, ox + 1); ++sx)
-                consider(sx, sy, 0.75f);
+                consider(sx, sy);
           if (best) {
             if (best->age >= f.max_age) ++counts.too_old;
             // Every fresh sample around it is nearer: something now stands in front of it.

@@ -41,6 +41,13 @@ int bench_explore(ParsedOptions options, std::ostream& out,
     throw UsageError(what);
   }
   explorer.set_count_evaluations(options.has("counts"));
+  if (const auto lattice = options.get("lattice")) {
+    // A fixed lattice: what reuse shows at that share of fresh pixels, whatever the frame rate.
+    const auto strides = parse_size("--lattice", *lattice, 5);
+    if (!setup.settings.explorer.temporal)
+      throw UsageError("--lattice: only with temporal reuse (explorer.temporal = true)");
+    explorer.fix_lattice(strides[0], strides[1]);
+  }
   // Warm-up: build the kernels the flight uses (render and DE probe), untimed.
   explorer.render(render.width_px, render.height_px);
   ExploreBenchOptions bench;
@@ -108,6 +115,10 @@ std::vector<OptionSpec> bench_option_specs() {
       {"error", nullptr, false,
        "with --explore: also judge each moving frame as shown (stretched to the\n"
        "                                 window) against a fully traced frame of the same camera"});
+  specs.push_back({"lattice", "SXxSY", false,
+                   "with --explore and explorer.temporal: trace every SX-th column of every\n"
+                   "                                 SY-th row while moving (1 to 5), not what the "
+                   "frame rate asks"});
   specs.push_back({"help", nullptr, false, "show this help"});
   return specs;
 }
@@ -239,6 +250,8 @@ int command_bench(const std::vector<std::string>& args, std::ostream& out, std::
     throw UsageError("--counts: only with --explore (bench always reports the counts)");
   if (options.has("error") && !options.has("explore"))
     throw UsageError("--error: only with --explore");
+  if (options.has("lattice") && !options.has("explore"))
+    throw UsageError("--lattice: only with --explore");
   if (options.has("explore")) {
     // Its figures go to the terminal only; a --json that would silently not be written is refused.
     if (options.has("json")) throw UsageError("--json: not written by bench --explore");
