@@ -189,12 +189,15 @@ void TemporalReuse::compose_rows(const Frame& f, int row_begin, int row_end,
         const glm::vec3 p = guess_weight > 0 ? d * (guess / guess_weight) : d;
         const glm::vec3 q = guess_weight > 0 ? p - shift : p;  // from the old eye
         const float along = glm::dot(q, old_cam.forward);
-        if (along > 0) {
+        if (along > 1e-12f) {  // in front of the old eye, and 1 / along finite
           const float inv = 1.0f / along;
-          const int ox =
-              static_cast<int>(std::floor(old_cam.centre_x + glm::dot(q, old_rx) * inv + 0.5f));
-          const int oy =
-              static_cast<int>(std::floor(old_cam.centre_y - glm::dot(q, old_uy) * inv + 0.5f));
+          // Clamped before the conversion: a point just in front of the old eye lands anywhere
+          // (and a float beyond int's range would not convert).
+          const auto old_pixel = [](float at, int size) {
+            return static_cast<int>(std::floor(std::clamp(at + 0.5f, -2.0f, size + 2.0f)));
+          };
+          const int ox = old_pixel(old_cam.centre_x + glm::dot(q, old_rx) * inv, w);
+          const int oy = old_pixel(old_cam.centre_y - glm::dot(q, old_uy) * inv, h);
           float best_key = INFINITY, best_d2 = 0;
           const Sample* best = nullptr;
           // The old sample at the guessed position when its point lands within 0.87 px of this
@@ -207,7 +210,7 @@ void TemporalReuse::compose_rows(const Frame& f, int row_begin, int row_end,
             float px, py;
             if (!project(ov, px, py)) return;
             const float d2 = (px - x) * (px - x) + (py - y) * (py - y);
-            if (d2 > 0.75f) return;
+            if (!(d2 <= 0.75f)) return;  // (NaN too)
             // Nearest first (its distance from the new eye); between samples of one surface,
             // the one nearest the pixel.
             const float key = o.kind == Kind::Surface ? glm::length(ov) : kSkyKey;
