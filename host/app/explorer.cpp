@@ -213,6 +213,9 @@ const FrameView* Explorer::render(int window_width_px, int window_height_px) {
   good_state_ = slot.state;
   failed_state_.reset();
   ++frames_rendered_;
+  double frame_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  // (Statistics of the traced frame, before it becomes the shown one; not part of its time.)
   if (plan.sample_index == 0 && last_.steps && last_.pixel_count() > 0) {
     const size_t n = last_.pixel_count();
     double total = 0;
@@ -229,6 +232,7 @@ const FrameView* Explorer::render(int window_width_px, int window_height_px) {
   }
   if (keep && last_.depth && last_.rgba8) {
     // The window's frame: this one's pixels where it traced them, earlier frames' elsewhere.
+    const auto compose_start = std::chrono::steady_clock::now();
     const uint8_t* shown = reuse_.compose(make_camera_rays(slot.state.camera, window_w, window_h),
                                           phase, last_.rgba8, last_.depth);
     stats_.reuse = reuse_.counts();
@@ -239,11 +243,13 @@ const FrameView* Explorer::render(int window_width_px, int window_height_px) {
     composed.precision = last_.precision;
     composed.rgba8 = shown;
     last_ = composed;
+    frame_ms +=
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - compose_start)
+            .count();
   } else if (plan.sample_index == 0) {
     reuse_.reset();  // a scaled frame: nothing of it can be carried
   }
-  stats_.frame_ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  stats_.frame_ms = frame_ms;
   if (quick) {
     // Its time is a build's and an unoptimized kernel's: no measure of the frames to come, which
     // start again with the optimized build.

@@ -13,8 +13,8 @@ namespace {
 
 constexpr float kSkyKey = FLT_MAX;
 
-// The rays of a CameraRays in float, for per-pixel use: dir(x, y) = normalise(base + x * dx +
-// y * dy) with image columns and rows (camera_ray_dir's arithmetic, regrouped), and projection's
+// The rays of a CameraRays in float, for per-pixel use: the ray through column x and row y is
+// normalise(base + x * dx + y * dy) (camera_ray_dir's arithmetic, regrouped); and projection's
 // inverse pixel pitches.
 struct FloatCamera {
   glm::vec3 base, dx, dy, right, up, forward;
@@ -32,9 +32,6 @@ struct FloatCamera {
     const double sx = glm::length(r.pixel_step_x), sy = glm::length(r.pixel_step_y);
     px_per_unit_x = sx > 0 ? static_cast<float>(1 / sx) : 0.0f;
     px_per_unit_y = sy > 0 ? static_cast<float>(1 / sy) : 0.0f;
-  }
-  glm::vec3 dir(int x, int y) const {
-    return glm::normalize(base + dx * static_cast<float>(x) + dy * static_cast<float>(y));
   }
 };
 
@@ -94,7 +91,6 @@ const uint8_t* TemporalReuse::compose(const CameraRays& rays, const LatticePhase
     counts_.fresh += c.fresh;
     counts_.reused += c.reused;
     counts_.rejected += c.rejected;
-    counts_.too_old += c.too_old;
     counts_.filled += c.filled;
   }
   std::swap(kept_, next_);
@@ -151,18 +147,14 @@ void TemporalReuse::compose_rows(const Frame& f, int row_begin, int row_end,
         const float t = f.depth[from];
         const bool surface = std::isfinite(t);
         const glm::vec3 p = surface ? d * t : d;
-        s = Sample{{p.x, p.y, p.z},
-                   surface ? t : kSkyKey,
-                   load_rgba(f.rgba8 + 4 * from),
-                   surface ? Kind::Surface : Kind::Sky,
-                   0,
-                   Source::Fresh,
-                   0};
+        s = Sample{
+            {p.x, p.y, p.z}, load_rgba(f.rgba8 + 4 * from), surface ? Kind::Surface : Kind::Sky, 0};
         std::memcpy(shown, &s.rgba8, 4);
         ++counts.fresh;
         continue;
       }
-      // The lattice around this pixel: its four samples, their nearest and farthest depths.
+      // The lattice around this pixel: its four samples, their depths' bilinear guess and the
+      // farthest of them.
       const float u = std::clamp(static_cast<float>(x - phase.x0) * inv_stride_x, 0.0f,
                                  static_cast<float>(lw - 1));
       const int i0 = static_cast<int>(u), i1 = std::min(i0 + 1, lw - 1);
@@ -171,10 +163,9 @@ void TemporalReuse::compose_rows(const Frame& f, int row_begin, int row_end,
       const size_t corner[4] = {lattice_at(i0, j0), lattice_at(i1, j0), lattice_at(i0, j1),
                                 lattice_at(i1, j1)};
       const float weight[4] = {(1 - fu) * (1 - fv), fu * (1 - fv), (1 - fu) * fv, fu * fv};
-      float nearest = INFINITY, farthest = 0, guess = 0, guess_weight = 0;
+      float farthest = 0, guess = 0, guess_weight = 0;
       for (int k = 0; k < 4; ++k) {
         const float t = f.depth[corner[k]];
-        nearest = std::min(nearest, t);
         farthest = std::max(farthest, std::isfinite(t) ? t : kSkyKey);
         if (std::isfinite(t)) {
           guess += weight[k] * t;
@@ -226,7 +217,6 @@ void TemporalReuse::compose_rows(const Frame& f, int row_begin, int row_end,
               for (int sx = std::max(0, ox - 1); sx <= std::min(w - 1, ox + 1); ++sx)
                 consider(sx, sy);
           if (best) {
-            if (best->age >= f.max_age) ++counts.too_old;
             // Every fresh sample around it is nearer: something now stands in front of it.
             // (Not beyond the lattice's last row or column, where the samples are on one side
             // and a surface sloping away is deeper than all of them.)
@@ -235,13 +225,8 @@ void TemporalReuse::compose_rows(const Frame& f, int row_begin, int row_end,
             } else {
               glm::vec3 ov(best->vec[0], best->vec[1], best->vec[2]);
               if (best->kind == Kind::Surface) ov += shift;
-              s = Sample{{ov.x, ov.y, ov.z},
-                         best_key,
-                         best->rgba8,
-                         best->kind,
-                         static_cast<uint8_t>(best->age + 1),
-                         Source::Carried,
-                         0};
+              s = Sample{
+                  {ov.x, ov.y, ov.z}, best->rgba8, best->kind, static_cast<uint8_t>(best->age + 1)};
               found = true;
               ++counts.reused;
             }
@@ -259,16 +244,13 @@ void TemporalReuse::compose_rows(const Frame& f, int row_begin, int row_end,
         for (int k = 0; k < 4; ++k) sum += weight[k] * f.rgba8[4 * corner[k] + ch];
         c |= static_cast<uint32_t>(sum + 0.5f) << (8 * ch);
       }
-      const bool surface = std::isfinite(nearest) && guess_weight > 0;
+      const bool surface = guess_weight > 0;
       const float t = surface ? guess / guess_weight : kSkyKey;
       const glm::vec3 p = surface ? d * t : d;
       s = Sample{{p.x, p.y, p.z},
-                 t,
                  c,
                  surface ? Kind::Surface : Kind::Sky,
-                 static_cast<uint8_t>(std::max(0, f.max_age - 1)),
-                 Source::Filled,
-                 0};
+                 static_cast<uint8_t>(std::max(0, f.max_age - 1))};
       std::memcpy(shown, &s.rgba8, 4);
       ++counts.filled;
     }

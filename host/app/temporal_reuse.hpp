@@ -46,9 +46,8 @@ LatticePhase lattice_phase(int stride_x, int stride_y, uint64_t frame);
 struct ReuseCounts {
   size_t fresh = 0;     // traced this frame (the lattice)
   size_t reused = 0;    // carried from earlier frames
-  size_t rejected = 0;  // carried here but failed the occlusion test, or too old to carry
-  size_t too_old = 0;   // of those, too old
-  size_t filled = 0;    // nothing valid: from neighbours or the lattice (rejected ones included)
+  size_t rejected = 0;  // a carried sample here failed the occlusion test
+  size_t filled = 0;    // nothing carried: the fresh lattice's, bilinearly (rejected ones too)
 };
 
 struct TemporalReuseSettings {
@@ -77,16 +76,12 @@ class TemporalReuse {
 
  private:
   enum class Kind : uint8_t { None, Surface, Sky };
-  enum class Source : uint8_t { Hole, Carried, Fresh, Filled };
-  // One pixel's sample, together in memory (each pass reads and writes whole samples).
+  // One pixel's kept sample, together in memory.
   struct Sample {
     float vec[3];  // eye to the hit point (Surface) or the unit direction (Sky)
-    float key;     // distance from the eye; the sky's is FLT_MAX (behind everything)
     uint32_t rgba8;
     Kind kind;
     uint8_t age;  // frames since it was traced
-    Source source;
-    uint8_t unused;
   };
   // One compose call's inputs.
   struct Frame {
