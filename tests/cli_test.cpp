@@ -297,6 +297,10 @@ TEST(Cli, ExploreBenchJudgesTheShownFrames) {
   EXPECT_NE(huge.err.find("could take 30.9 GiB; at most 129 frames at this size"),
             std::string::npos)
       << huge.err;
+  // Too small for SSIM's window: refused before the flight, not after it.
+  const CliRun tiny = run({"bench", "--explore", "--error", "--size", "8x8"});
+  EXPECT_EQ(tiny.code, 2);
+  EXPECT_NE(tiny.err.find("11x11 window: --size 8x8 is smaller"), std::string::npos) << tiny.err;
   // Only with --explore.
   const CliRun alone = run({"bench", "--error", "--size", "16x16"});
   EXPECT_EQ(alone.code, 2);

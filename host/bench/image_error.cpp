@@ -9,7 +9,7 @@
 namespace fr {
 namespace {
 
-constexpr int kWindow = 11;
+constexpr int kWindow = kSsimWindowPx;
 constexpr double kSigma = 1.5;
 
 void require_same_size(const Rgba8Image& a, const Rgba8Image& b) {

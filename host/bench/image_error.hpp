@@ -31,5 +31,6 @@ double mean_absolute_error(const Rgba8Image& a, const Rgba8Image& b);
 // over every position where the window fits. 1 for identical images. Throws
 // std::invalid_argument when the sizes differ or an image is smaller than the window.
 double structural_similarity(const Rgba8Image& a, const Rgba8Image& b);
+constexpr int kSsimWindowPx = 11;  // the window's side
 
 }  // namespace fr

@@ -31,6 +31,12 @@ int bench_explore(ParsedOptions options, std::ostream& out,
   // --error keeps every moving frame (up to the window's size each) until the flight ends.
   const double frame_bytes = 4.0 * render.width_px * render.height_px;
   constexpr double kKeptBytes = 4.0 * (uint64_t{1} << 30);
+  // SSIM's window is 11x11 pixels (bench/image_error.hpp): said before the flight, not after.
+  if (options.has("error") && (render.width_px < kSsimWindowPx || render.height_px < kSsimWindowPx))
+    throw UsageError("--error judges frames with an " + std::to_string(kSsimWindowPx) + "x" +
+                     std::to_string(kSsimWindowPx) + " window: --size " +
+                     std::to_string(render.width_px) + "x" + std::to_string(render.height_px) +
+                     " is smaller");
   if (options.has("error") && frames * frame_bytes > kKeptBytes) {
     char what[256];
     std::snprintf(what, sizeof what,
