@@ -9,6 +9,9 @@
 
 #include <spdlog/spdlog.h>
 
+#include <glm/geometric.hpp>
+
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstring>
@@ -98,6 +101,7 @@ bool Explorer::update(const InputState& input, double dt_s, double now_s) {
     }
   }
   if (input.resized) changed_ = scene_changed_ = true;
+  if (input.clicked) pending_focus_ = input.clicked;
   for (const SceneEvent& e : library_.poll(now_s, settings_.render)) {
     if (e.kind == SceneEvent::Kind::Reloaded && e.scene_id == current().scene->info.id)
       changed_ = scene_changed_ = true;
@@ -143,6 +147,24 @@ bool Explorer::update(const InputState& input, double dt_s, double now_s) {
 }
 
 const FrameView* Explorer::render(int window_width_px, int window_height_px) {
+  if (pending_focus_) {
+    const auto [x, y] = *pending_focus_;
+    pending_focus_.reset();
+    try {
+      if (const auto d = focus_at(x, y, window_width_px, window_height_px))
+        spdlog::info(
+            "focus at {:.4g}, the surface under pixel ({}, {}){}", *d, x, y,
+            settings_.render.aperture_radius > 0 ? "" : " (no depth of field: aperture 0)");
+      else
+        spdlog::info("no surface under pixel ({}, {}): the focus stays at {:.4g}", x, y,
+                     settings_.render.focus_distance);
+    } catch (const RenderWorkerFailure& e) {
+      worker_failed(current(), e);
+      return nullptr;
+    } catch (const std::exception& e) {
+      spdlog::error("focusing at pixel ({}, {}): {}", x, y, e.what());
+    }
+  }
   // Temporal reuse (app/temporal_reuse.hpp) while only the camera moves; a frame after anything
   // else changed is scaled, as with reuse off, and keeps nothing of the frames before it.
   const bool temporal = settings_.explorer.temporal && !quick_frame_;
@@ -260,6 +282,34 @@ const FrameView* Explorer::render(int window_width_px, int window_height_px) {
   }
   stats_.precision = last_.precision;
   return &last_;
+}
+
+std::optional<double> Explorer::focus_at(int x, int y, int width_px, int height_px) {
+  if (width_px < 1 || height_px < 1 || x < 0 || y < 0 || x >= width_px || y >= height_px)
+    return std::nullopt;
+  SceneSlot& slot = current();
+  if (took_the_worker_down(slot)) return std::nullopt;
+  RenderSettings s = settings_.render;
+  s.window = ImageWindow{width_px, height_px, x, y, 1, 1};
+  s.width_px = s.height_px = 1;
+  s.samples = 1;
+  s.aperture_radius = 0;  // the pixel's own ray, not a lens sample's
+  // One ray can afford to come closer than a frame's rays do (a tenth of their hit threshold,
+  // then plain DE steps towards the surface).
+  s.hit_threshold_k *= 0.1f;
+  s.refine_steps = 8;
+  const FrameView pixel = worker_.render_frame(slot.scene->info, slot.state, s, 0,
+                                               Readback::Everything, Readback::Everything);
+  const float depth = pixel.depth ? pixel.depth[0] : INFINITY;
+  // The worker's accumulation now holds this pixel: the view renders again either way.
+  changed_ = true;
+  if (!std::isfinite(depth)) return std::nullopt;
+  // The lens focuses on a plane across the view (kernels/lens.cl): the distance along it.
+  const CameraRays rays = make_camera_rays(slot.state.camera, width_px, height_px);
+  const double along = depth * glm::dot(camera_ray_dir(rays, x, y), rays.forward);
+  settings_.render.focus_distance = static_cast<float>(std::clamp(along, 1e-6, 1000.0));
+  mark_changed();
+  return settings_.render.focus_distance;
 }
 
 bool Explorer::took_the_worker_down(const SceneSlot& slot) const {

@@ -53,6 +53,13 @@ class Explorer {
   // worker left it: valid until the next update() or render().
   const FrameView* render(int window_width_px, int window_height_px);
 
+  // Focuses the thin lens on the surface under image pixel (x, y) of a width x height window:
+  // render.focus_distance becomes that surface's distance along the view (the march finds it:
+  // the pinhole ray through the pixel's centre, traced alone with every step). Returns it, or
+  // nothing where the ray meets no surface (the focus stays). A click on the picture does this
+  // at the next render(). Throws what the render worker throws.
+  std::optional<double> focus_at(int x, int y, int width_px, int height_px);
+
   // Writes a PNG (or, for a file named *.exr, an OpenEXR file with its passes) of the current
   // view at the given size with full-quality samples, in bands (image/poster.hpp).
   bool screenshot(const std::filesystem::path& file, int width_px, int height_px,
@@ -129,8 +136,9 @@ class Explorer {
   // More than the camera changed since the last frame: earlier frames' pixels are not reused.
   bool scene_changed_ = true;
   TemporalReuse reuse_;
-  uint64_t lattice_frames_ = 0;  // the lattice phase's clock
-  bool quick_frame_ = false;     // the next frame is a quick build (scene_code_changed)
+  std::optional<std::pair<int, int>> pending_focus_;  // a click, focused at the next render
+  uint64_t lattice_frames_ = 0;                       // the lattice phase's clock
+  bool quick_frame_ = false;  // the next frame is a quick build (scene_code_changed)
   bool count_evaluations_ = false;
   uint64_t frames_rendered_ = 0;
   int worker_failures_ = 0;

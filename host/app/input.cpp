@@ -11,6 +11,7 @@ void InputState::end_frame() {
   triggered.clear();
   look_dx = look_dy = wheel = 0;
   resized.reset();
+  clicked.reset();
 }
 
 void apply_input_event(const KeyBindings& bindings, const InputEvent& e, InputState& s) {
@@ -24,6 +25,9 @@ void apply_input_event(const KeyBindings& bindings, const InputEvent& e, InputSt
       return;
     case InputEvent::Type::MouseWheel:
       s.wheel += e.dy;
+      return;
+    case InputEvent::Type::MouseClick:
+      s.clicked = std::make_pair(e.x, e.y);
       return;
     case InputEvent::Type::WindowResized:
       s.resized = std::make_pair(e.width, e.height);

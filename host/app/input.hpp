@@ -14,10 +14,11 @@
 namespace fr {
 
 struct InputEvent {
-  enum class Type { KeyDown, KeyUp, MouseMotion, MouseWheel, WindowResized, Quit };
+  enum class Type { KeyDown, KeyUp, MouseMotion, MouseWheel, MouseClick, WindowResized, Quit };
   Type type = Type::KeyDown;
   std::string key;            // SDL key name ("W", "Left Shift", "Escape") for key events
   double dx = 0, dy = 0;      // pixels (motion) or notches (wheel)
+  int x = 0, y = 0;           // MouseClick: the image pixel under the pointer (0, 0: top left)
   int width = 0, height = 0;  // for WindowResized
 };
 
@@ -29,6 +30,7 @@ struct InputState {
   double wheel = 0;                 // wheel notches since the last frame
   bool quit = false;
   std::optional<std::pair<int, int>> resized;
+  std::optional<std::pair<int, int>> clicked;  // the image pixel clicked since the last frame
 
   bool is_held(Action a) const { return held.count(a) != 0; }
   bool was_triggered(Action a) const;

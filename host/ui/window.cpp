@@ -126,6 +126,20 @@ void Window::poll(const KeyBindings& bindings, InputState& input, bool keys_to_o
         ev.type = InputEvent::Type::MouseWheel;
         ev.dy = e.wheel.y;
         break;
+      case SDL_MOUSEBUTTONDOWN: {
+        // A left click on the picture (not the overlay's, not while the mouse looks around):
+        // the pixel under it, in the image's pixels (the window's points may differ on a
+        // high-density display).
+        if (overlay_mouse || SDL_GetRelativeMouseMode() || e.button.button != SDL_BUTTON_LEFT)
+          continue;
+        int points_w = 0, points_h = 0;
+        SDL_GetWindowSize(window_, &points_w, &points_h);
+        if (points_w <= 0 || points_h <= 0) continue;
+        ev.type = InputEvent::Type::MouseClick;
+        ev.x = static_cast<int>(static_cast<long long>(e.button.x) * width_px() / points_w);
+        ev.y = static_cast<int>(static_cast<long long>(e.button.y) * height_px() / points_h);
+        break;
+      }
       default:
         continue;
     }
