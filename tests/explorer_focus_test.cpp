@@ -16,10 +16,7 @@ namespace fr {
 namespace {
 
 TEST(ExplorerFocus, AClickFocusesOnTheSurfaceUnderThePointer) {
-  const auto dir = test::fresh_dir("focus_plugins");
-  std::filesystem::copy_file(
-      std::filesystem::path(TEST_SCENE_DIR) / (std::string("unit_ball") + PLUGIN_SUFFIX),
-      dir / (std::string("unit_ball") + PLUGIN_SUFFIX));
+  const auto dir = test::folder_of_one_scene("focus_plugins", TEST_SCENE_DIR, "unit_ball");
   std::vector<SceneEvent> events;
   SceneLibrary library({dir}, PluginPolicy{}, RenderSettings{}, test::worker(), &events);
   ASSERT_EQ(library.slots().size(), 1u);

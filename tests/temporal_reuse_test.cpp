@@ -248,10 +248,7 @@ TEST(TemporalReuse, AHalfTurnCarriesNothing) {
 TEST(TemporalReuseInTheExplorer, AChangedParameterReusesNothing) {
   for (const bool temporal : {true, false}) {
     SCOPED_TRACE(temporal ? "temporal" : "scaled");
-    const auto dir = test::fresh_dir("temporal_plugins");
-    std::filesystem::copy_file(
-        std::filesystem::path(SCENE_PLUGIN_DIR) / (std::string("mandelbulb") + PLUGIN_SUFFIX),
-        dir / (std::string("mandelbulb") + PLUGIN_SUFFIX));
+    const auto dir = test::folder_of_one_scene("temporal_plugins", SCENE_PLUGIN_DIR, "mandelbulb");
     std::vector<SceneEvent> events;
     SceneLibrary library({dir}, PluginPolicy{}, RenderSettings{}, test::worker(), &events);
     ASSERT_EQ(library.slots().size(), 1u);
@@ -284,10 +281,7 @@ TEST(TemporalReuseInTheExplorer, AChangedParameterReusesNothing) {
 // A scene whose update callback moves a parameter every frame (the Julia set's c on its circle,
 // FR-2.4): no frame reuses anything, however the camera moves.
 TEST(TemporalReuseInTheExplorer, AnAnimatedParameterNeverReuses) {
-  const auto dir = test::fresh_dir("temporal_animated");
-  std::filesystem::copy_file(
-      std::filesystem::path(SCENE_PLUGIN_DIR) / (std::string("julia") + PLUGIN_SUFFIX),
-      dir / (std::string("julia") + PLUGIN_SUFFIX));
+  const auto dir = test::folder_of_one_scene("temporal_animated", SCENE_PLUGIN_DIR, "julia");
   std::vector<SceneEvent> events;
   SceneLibrary library({dir}, PluginPolicy{}, RenderSettings{}, test::worker(), &events);
   ASSERT_EQ(library.slots().size(), 1u);

@@ -6,8 +6,8 @@
 #include "plugin/plugin_loader.hpp"
 #include "render/cl_runtime.hpp"
 #include "render/device.hpp"
-#include "worker/render_worker.hpp"
 #include "test_paths.hpp"
+#include "worker/render_worker.hpp"
 
 #include <gtest/gtest.h>
 #include <stb_image.h>
@@ -75,6 +75,15 @@ inline std::filesystem::path fresh_dir(const std::string& name) {
   auto dir = std::filesystem::path(TEST_OUTPUT_DIR) / name;
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
+  return dir;
+}
+
+// A fresh folder `name` holding only the scene plugin `id` of `from` (a library of one scene).
+inline std::filesystem::path folder_of_one_scene(const std::string& name,
+                                                 const std::filesystem::path& from,
+                                                 const std::string& id) {
+  auto dir = fresh_dir(name);
+  std::filesystem::copy_file(from / (id + PLUGIN_SUFFIX), dir / (id + PLUGIN_SUFFIX));
   return dir;
 }
 
