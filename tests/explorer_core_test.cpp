@@ -241,6 +241,39 @@ TEST(FrameController, HoldsTheTargetThenRefines) {
   EXPECT_EQ(fc.plan(true).sample_index, 0) << "a change restarts";
 }
 
+// With temporal reuse the controller picks the lattice instead of the scale: the largest share
+// of traced pixels whose time (proportional to it here) meets the target.
+TEST(FrameController, PicksTheLatticeThatHoldsTheTarget) {
+  FrameControllerSettings s;
+  s.target_frame_ms = 40;
+  FrameController fc(s);
+  FramePlan p;
+  for (int i = 0; i < 40; ++i) {
+    p = fc.plan(true, /*reuse=*/true);
+    ASSERT_TRUE(p.lattice);
+    EXPECT_EQ(p.resolution_scale, 1) << "full resolution: a lattice of the window's pixels";
+    EXPECT_LE(std::abs(p.stride_x - p.stride_y), 1);
+    // 360 ms for every pixel: 1 in 9 meets 40 ms, 1 in 6 (60 ms) does not.
+    fc.report(360.0 / (p.stride_x * p.stride_y));
+  }
+  EXPECT_EQ(p.stride_x * p.stride_y, 9) << p.stride_x << "x" << p.stride_y;
+  for (int i = 0; i < 40; ++i) {
+    p = fc.plan(true, true);
+    fc.report(2.0);  // a cheap view: every pixel, every frame
+  }
+  EXPECT_EQ(p.stride_x * p.stride_y, 1);
+  for (int i = 0; i < 40; ++i) {
+    p = fc.plan(true, true);
+    fc.report(10000.0);  // never fast enough: the coarsest lattice, no coarser
+  }
+  EXPECT_EQ(p.stride_x, s.max_stride);
+  EXPECT_EQ(p.stride_y, s.max_stride);
+  // Reuse not possible this frame (more than the camera changed): scaled, as without it.
+  p = fc.plan(true, false);
+  EXPECT_FALSE(p.lattice);
+  EXPECT_LT(p.resolution_scale, 1);
+}
+
 TEST(GameLoop, PollUpdateRenderInOrderOnAFakeClock) {
   std::vector<std::string> order;
   double clock = 100;

@@ -10,13 +10,14 @@ namespace fr {
 namespace {
 
 // The lattice whose share of the pixels (1 / (stride_x * stride_y)) is the largest not above
-// `share`, strides at most one apart (so the lattice is about as fine across as down).
+// `share` (give or take 5%: the share approaches a value geometrically and never quite reaches
+// it), strides at most one apart (so the lattice is about as fine across as down).
 std::pair<int, int> lattice_strides(double share, int max_stride) {
   int best_x = max_stride, best_y = max_stride;
   for (int sy = 1; sy <= max_stride; ++sy)
     for (int sx = sy; sx <= std::min(sy + 1, max_stride); ++sx) {
       const double s = 1.0 / (sx * sy);
-      if (s <= share * 1.0001 && s > 1.0 / (best_x * best_y)) {
+      if (s <= share * 1.05 && s > 1.0 / (best_x * best_y)) {
         best_x = sx;
         best_y = sy;
       }
