@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -80,6 +81,13 @@ struct FileIdentity {
   int64_t ctime_ns = 0;
   bool operator==(const FileIdentity&) const = default;
 };
+
+// The identity of the file at `path` without opening it (symbolic links followed), for a watcher
+// that must not hold the file open: POSIX as above; Windows the size, the last write time and
+// (in ctime_ns) the creation time at the file system's 100 ns (std::filesystem's last_write_time
+// has whole seconds there: two builds of one size in one second looked the same). Nothing on
+// failure, with *error set.
+std::optional<FileIdentity> identity_of(const std::filesystem::path& path, std::string* error);
 
 // A file open for reading. Opening never blocks (a FIFO opens without waiting for a writer, and
 // kind() says what it is) and never makes a terminal this process's; the handle is not inherited

@@ -97,6 +97,17 @@ ReadableFile ReadableFile::open(const std::filesystem::path& path, std::string* 
   return adopt(fd, error);
 }
 
+std::optional<FileIdentity> identity_of(const std::filesystem::path& path, std::string* error) {
+  struct stat st {};
+  if (stat(path.c_str(), &st) != 0) {
+    *error = std::string("cannot examine ") + path.string() + ": " + std::strerror(errno);
+    return std::nullopt;
+  }
+  return FileIdentity{static_cast<uint64_t>(st.st_dev), static_cast<uint64_t>(st.st_ino),
+                      static_cast<uint64_t>(st.st_size), nanoseconds(st.st_mtim),
+                      nanoseconds(st.st_ctim)};
+}
+
 ReadableFile ReadableFile::adopt(intptr_t handle, std::string* error) {
   ReadableFile file;
   file.handle_ = handle;

@@ -152,6 +152,25 @@ int64_t file_time_ns(LARGE_INTEGER t) {
 
 }  // namespace
 
+std::optional<FileIdentity> identity_of(const std::filesystem::path& path, std::string* error) {
+  WIN32_FILE_ATTRIBUTE_DATA data{};
+  if (!GetFileAttributesExW(path.c_str(), GetFileExInfoStandard, &data)) {
+    *error = "cannot examine " + path.string() + ": " + last_error_text();
+    return std::nullopt;
+  }
+  const auto ns = [](FILETIME t) {
+    LARGE_INTEGER v;
+    v.LowPart = t.dwLowDateTime;
+    v.HighPart = static_cast<LONG>(t.dwHighDateTime);
+    return file_time_ns(v);
+  };
+  FileIdentity id;
+  id.size_bytes = (uint64_t{data.nFileSizeHigh} << 32) | data.nFileSizeLow;
+  id.mtime_ns = ns(data.ftLastWriteTime);
+  id.ctime_ns = ns(data.ftCreationTime);
+  return id;
+}
+
 std::string others_who_can_write(const std::filesystem::path& path, bool is_folder) {
   PSID owner = nullptr;
   PACL dacl = nullptr;

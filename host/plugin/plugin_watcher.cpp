@@ -20,10 +20,8 @@ std::map<std::filesystem::path, PluginWatcher::Stamp> PluginWatcher::scan() cons
   std::error_code ec;
   for (const auto& e : std::filesystem::directory_iterator(folder_, ec)) {
     if (!is_library_file_name(e.path()) || !e.is_regular_file(ec)) continue;
-    Stamp s;
-    s.size = e.file_size(ec);
-    s.mtime = e.last_write_time(ec);
-    if (!ec) out[e.path()] = s;
+    std::string error;  // (a file that went away between the listing and this: not there)
+    if (const auto id = identity_of(e.path(), &error)) out[e.path()] = *id;
   }
   return out;
 }

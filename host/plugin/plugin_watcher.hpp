@@ -6,6 +6,8 @@
 // plugin that is still being copied or linked is never loaded half-written.
 #pragma once
 
+#include "platform/files.hpp"
+
 #include "platform/folder_watch.hpp"
 
 #include <cstdint>
@@ -37,11 +39,8 @@ class PluginWatcher {
   const std::filesystem::path& folder() const { return folder_; }
 
  private:
-  struct Stamp {
-    std::uintmax_t size = 0;
-    std::filesystem::file_time_type mtime{};
-    bool operator==(const Stamp& o) const { return size == o.size && mtime == o.mtime; }
-  };
+  // What tells a rebuilt file from the one before (platform/files.hpp).
+  using Stamp = FileIdentity;
   struct Pending {
     Stamp stamp;
     double stable_since_s = 0;
