@@ -3,15 +3,14 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
-#include <cfloat>
+#include <array>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <thread>
 
 namespace fr {
 namespace {
-
-constexpr float kSkyKey = FLT_MAX;
 
 // The rays of a CameraRays in float, for per-pixel use: the ray through column x and row y is
 // normalise(base + x * dx + y * dy) (camera_ray_dir's arithmetic, regrouped); and projection's
@@ -34,6 +33,21 @@ struct FloatCamera {
     px_per_unit_y = sy > 0 ? static_cast<float>(1 / sy) : 0.0f;
   }
 };
+
+// Four floats at a time (GCC's and Clang's vector extensions: SSE on x86-64, NEON on ARM).
+using f4 = float __attribute__((vector_size(16)));
+using i4 = int32_t __attribute__((vector_size(16)));
+f4 load4(const float* p) {
+  f4 v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+void store4(float* p, f4 v) {
+  std::memcpy(p, &v, sizeof v);
+}
+f4 splat(float v) {
+  return f4{v, v, v, v};
+}
 
 uint32_t load_rgba(const uint8_t* p) {
   uint32_t v;
@@ -64,28 +78,111 @@ LatticePhase lattice_phase(int stride_x, int stride_y, uint64_t frame) {
   return p;
 }
 
+void TemporalReuse::Samples::resize(size_t n) {
+  // Padded by a vector, which the projection reads past the end.
+  x.resize(n + kLanes);
+  y.resize(n + kLanes);
+  z.resize(n + kLanes);
+  rgba8.resize(n);
+  kind.resize(n + kLanes);
+  age.resize(n + kLanes);
+}
+
+struct TemporalReuse::Frame {
+  const LatticePhase& phase;
+  const uint8_t* rgba8;  // the lattice's
+  const float* depth;
+  int max_age;
+  bool carry;  // kept_ holds samples of old_rays_
+  FloatCamera cam, old_cam;
+  glm::vec3 shift;  // the old eye seen from the new one
+  int width_px, height_px, lattice_w, lattice_h;
+  // Per image column (or row): the lattice columns (rows) on either side of it, `left` and
+  // `left + 1` (the first or last two beyond the lattice's ends; both 0 in a lattice one column
+  // wide); the weight of the right one (lower one) for interpolating, clamped to [0, 1], and for
+  // extrapolating positions beyond the lattice's ends, not clamped; and whether the pixel lies
+  // between the two.
+  struct Span {
+    int first = 0, second = 0;
+    float weight = 0, extrapolating_weight = 0;
+    bool bracketed = false;
+  };
+  std::vector<Span> columns, rows;
+  // The unit ray through pixel (x, y).
+  glm::vec3 ray(int x, int y) const {
+    const glm::vec3 r = cam.base + cam.dx * static_cast<float>(x) + cam.dy * static_cast<float>(y);
+    return r * (1.0f / std::sqrt(glm::dot(r, r)));
+  }
+  size_t lattice_at(int i, int j) const { return static_cast<size_t>(j) * lattice_w + i; }
+};
+
 const uint8_t* TemporalReuse::compose(const CameraRays& rays, const LatticePhase& phase,
                                       const uint8_t* lattice_rgba8, const float* lattice_depth) {
-  const size_t n = static_cast<size_t>(rays.width_px) * rays.height_px;
-  if (rays.width_px != width_px_ || rays.height_px != height_px_) {
+  const int w = rays.width_px, h = rays.height_px;
+  const size_t n = static_cast<size_t>(w) * h;
+  if (w != width_px_ || h != height_px_) {
     has_history_ = false;
-    width_px_ = rays.width_px;
-    height_px_ = rays.height_px;
+    width_px_ = w;
+    height_px_ = h;
   }
-  next_.resize(n);
   kept_.resize(n);
-  shown_.resize(n * 4);
+  next_.resize(n);
+  // Padded by a vector: the projection runs to a whole vector past the end, the 3x3 search reads
+  // a vector from its last column on.
+  landed_x_.resize(n + kLanes);
+  landed_y_.resize(n + kLanes);
+  landed_key2_.resize(n + kLanes);
   const bool whole = phase.stride_x == 1 && phase.stride_y == 1;
-  const int max_age =
-      std::min(254, std::max(settings_.max_age_frames, 2 * phase.stride_x * phase.stride_y));
-  const Frame frame{rays,     phase, lattice_rgba8, lattice_depth, max_age, has_history_ && !whole,
-                    old_rays_};
-  // Rows in two halves, one per thread: each pixel only reads the frames before and the lattice.
+  Frame f{phase,
+          lattice_rgba8,
+          lattice_depth,
+          std::min(254, std::max(settings_.max_age_frames, 2 * phase.stride_x * phase.stride_y)),
+          has_history_ && !whole,
+          FloatCamera(rays),
+          FloatCamera(has_history_ ? old_rays_ : rays),
+          glm::vec3(old_rays_.eye - rays.eye),  // in double: the scene may be far from the origin
+          w,
+          h,
+          phase.width_px(w),
+          phase.height_px(h),
+          {},
+          {}};
+  const size_t lattice_n = static_cast<size_t>(f.lattice_w) * f.lattice_h;
+  lattice_old_x_.resize(lattice_n);
+  lattice_old_y_.resize(lattice_n);
+  lattice_surface_.resize(lattice_n);
+  const auto spans = [](int size_px, int origin, int stride, int lattice_size) {
+    std::vector<Frame::Span> spans(static_cast<size_t>(size_px));
+    for (int x = 0; x < size_px; ++x) {
+      Frame::Span& s = spans[static_cast<size_t>(x)];
+      const float u = static_cast<float>(x - origin) / static_cast<float>(stride);
+      if (lattice_size < 2) continue;  // one column: the same sample on both sides
+      s.first = std::clamp(static_cast<int>(std::floor(u)), 0, lattice_size - 2);
+      s.second = s.first + 1;
+      s.extrapolating_weight = u - static_cast<float>(s.first);
+      s.weight = std::clamp(s.extrapolating_weight, 0.0f, 1.0f);
+      s.bracketed = u >= 0 && u <= static_cast<float>(lattice_size - 1);
+    }
+    return spans;
+  };
+  f.columns = spans(w, phase.x0, phase.stride_x, f.lattice_w);
+  f.rows = spans(h, phase.y0, phase.stride_y, f.lattice_h);
+  // Each pass in two halves, one per thread: the projection reads and writes only its own
+  // samples; the gather reads anything the projection wrote.
+  const auto on_two_threads = [](int size, const auto& pass) {
+    std::thread second([&] { pass(size / 2, size); });
+    pass(0, size / 2);
+    second.join();
+  };
+  if (f.carry)
+    on_two_threads(h, [&](int begin, int end) {
+      // The samples split at a whole vector (the arrays are padded past the end).
+      const size_t split = n / 2 / kLanes * kLanes;
+      project_samples(f, begin == 0 ? 0 : split, begin == 0 ? split : n);
+      project_lattice_rows(f, begin * f.lattice_h / h, end * f.lattice_h / h);
+    });
   ReuseCounts halves[2];
-  const int split = rays.height_px / 2;
-  std::thread second([&] { compose_rows(frame, split, rays.height_px, halves[1]); });
-  compose_rows(frame, 0, split, halves[0]);
-  second.join();
+  on_two_threads(h, [&](int begin, int end) { gather_rows(f, begin, end, halves[begin > 0]); });
   counts_ = ReuseCounts{};
   for (const ReuseCounts& c : halves) {
     counts_.fresh += c.fresh;
@@ -96,146 +193,192 @@ const uint8_t* TemporalReuse::compose(const CameraRays& rays, const LatticePhase
   std::swap(kept_, next_);
   has_history_ = true;
   old_rays_ = rays;
-  return shown_.data();
+  return reinterpret_cast<const uint8_t*>(kept_.rgba8.data());
 }
 
-void TemporalReuse::compose_rows(const Frame& f, int row_begin, int row_end,
-                                 ReuseCounts& counts_out) {
-  ReuseCounts counts;  // here, not in counts_out: the threads' counts share a cache line
-  const CameraRays& rays = f.rays;
-  const LatticePhase& phase = f.phase;
-  const FloatCamera cam(rays), old_cam(f.old_rays);
-  const int w = rays.width_px, h = rays.height_px;
-  const int lw = phase.width_px(w), lh = phase.height_px(h);
-  // The old eye seen from the new one, in double (the scene may be far from the origin).
-  const glm::vec3 shift(f.old_rays.eye - rays.eye);
+// Where every kept sample in [begin, end) lands in the new image, and its distance from the new
+// eye, squared (its vector is moved there when the gather copies it: not written back here,
+// which would cost as much memory traffic as the rest). A vector of samples at a time, up to a
+// whole vector past `end` (the arrays are padded).
+void TemporalReuse::project_samples(const Frame& f, size_t begin, size_t end) {
+  const FloatCamera& cam = f.cam;
   const glm::vec3 rx = cam.right * cam.px_per_unit_x, uy = cam.up * cam.px_per_unit_y;
-  const glm::vec3 old_rx = old_cam.right * old_cam.px_per_unit_x;
-  const glm::vec3 old_uy = old_cam.up * old_cam.px_per_unit_y;
-  const float margin = 1 + settings_.occlusion_tolerance;
-  // Where a vector from the new eye lands in the new image (false: behind the eye).
-  const auto project = [&](const glm::vec3& v, float& x, float& y) {
-    const float along = glm::dot(v, cam.forward);
-    if (!(along > 0)) return false;
-    const float inv = 1.0f / along;
-    x = cam.centre_x + glm::dot(v, rx) * inv;
-    y = cam.centre_y - glm::dot(v, uy) * inv;
-    return true;
+  const f4 nan = splat(std::numeric_limits<float>::quiet_NaN()), inf = splat(INFINITY);
+  for (size_t i = begin; i < end; i += kLanes) {
+    i4 surface, usable;
+    for (int lane = 0; lane < kLanes; ++lane) {
+      const uint8_t kind = kept_.kind[i + lane];
+      surface[lane] = kind == kSurface ? -1 : 0;
+      usable[lane] = kind != kNone && kept_.age[i + lane] < f.max_age ? -1 : 0;
+    }
+    // The sky's directions do not move with the eye.
+    const f4 move = surface ? splat(1.0f) : splat(0.0f);
+    const f4 x = load4(&kept_.x[i]) + move * f.shift.x;
+    const f4 y = load4(&kept_.y[i]) + move * f.shift.y;
+    const f4 z = load4(&kept_.z[i]) + move * f.shift.z;
+    const f4 along = x * cam.forward.x + y * cam.forward.y + z * cam.forward.z;
+    const f4 px = cam.centre_x + (x * rx.x + y * rx.y + z * rx.z) / along;
+    const f4 py = cam.centre_y - (x * uy.x + y * uy.y + z * uy.z) / along;
+    store4(&landed_x_[i], usable && along > 0 ? px : nan);
+    store4(&landed_y_[i], py);
+    store4(&landed_key2_[i], surface ? x * x + y * y + z * z : inf);
+  }
+}
+
+// Where each fresh lattice sample of these lattice rows was in the old image.
+void TemporalReuse::project_lattice_rows(const Frame& f, int row_begin, int row_end) {
+  const FloatCamera& old = f.old_cam;
+  const glm::vec3 old_rx = old.right * old.px_per_unit_x, old_uy = old.up * old.px_per_unit_y;
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  for (int j = row_begin; j < row_end; ++j)
+    for (int i = 0; i < f.lattice_w; ++i) {
+      const size_t k = f.lattice_at(i, j);
+      const glm::vec3 d =
+          f.ray(f.phase.x0 + i * f.phase.stride_x, f.phase.y0 + j * f.phase.stride_y);
+      const float t = f.depth[k];
+      const bool surface = std::isfinite(t);
+      const glm::vec3 q = surface ? d * t - f.shift : d;  // from the old eye
+      const float along = glm::dot(q, old.forward);
+      lattice_surface_[k] = surface;
+      if (along > 1e-12f) {  // in front of the old eye, and 1 / along finite
+        lattice_old_x_[k] = old.centre_x + glm::dot(q, old_rx) / along;
+        lattice_old_y_[k] = old.centre_y - glm::dot(q, old_uy) / along;
+      } else {
+        lattice_old_x_[k] = lattice_old_y_[k] = nan;
+      }
+    }
+}
+
+void TemporalReuse::gather_rows(const Frame& f, int row_begin, int row_end,
+                                ReuseCounts& counts_out) {
+  ReuseCounts counts;  // here, not in counts_out: the threads' counts share a cache line
+  const LatticePhase& phase = f.phase;
+  const int w = f.width_px, h = f.height_px;
+  const float margin = 1 + settings_.occlusion_tolerance, margin2 = margin * margin;
+  // A 3x3 search needs three columns and rows; a smaller image carries nothing.
+  const bool carry = f.carry && w >= 3 && h >= 3;
+  // Through local pointers: a byte store may alias anything, and would make the compiler reload
+  // every vector's address after it.
+  float* __restrict next_x = next_.x.data();
+  float* __restrict next_y = next_.y.data();
+  float* __restrict next_z = next_.z.data();
+  uint32_t* __restrict next_rgba8 = next_.rgba8.data();
+  uint8_t* __restrict next_kind = next_.kind.data();
+  uint8_t* __restrict next_age = next_.age.data();
+  const auto set = [&](size_t at, const glm::vec3& v, uint32_t rgba8, uint8_t kind, int age) {
+    next_x[at] = v.x;
+    next_y[at] = v.y;
+    next_z[at] = v.z;
+    next_rgba8[at] = rgba8;
+    next_kind[at] = kind;
+    next_age[at] = static_cast<uint8_t>(age);
   };
-  const auto lattice_at = [&](int i, int j) { return static_cast<size_t>(j) * lw + i; };
-  const float inv_stride_x = 1.0f / phase.stride_x, inv_stride_y = 1.0f / phase.stride_y;
   for (int y = row_begin; y < row_end; ++y) {
-    const glm::vec3 row_dir = cam.base + cam.dy * static_cast<float>(y);
+    const Frame::Span& row = f.rows[static_cast<size_t>(y)];
     const bool lattice_row = y >= phase.y0 && (y - phase.y0) % phase.stride_y == 0;
-    // The lattice rows at or above and below this one, and the weight of the lower.
-    const float v = std::clamp(static_cast<float>(y - phase.y0) * inv_stride_y, 0.0f,
-                               static_cast<float>(lh - 1));
-    const int j0 = static_cast<int>(v), j1 = std::min(j0 + 1, lh - 1);
-    const float fv = v - j0;
-    // Between two lattice rows (not beyond the first or last): the occlusion test applies.
-    const bool bracketed_y = y >= phase.y0 && j1 > j0;
     int next_lattice_x = lattice_row ? phase.x0 : w;  // the row's next fresh pixel
     for (int x = 0; x < w; ++x) {
-      Sample& s = next_[static_cast<size_t>(y) * w + x];
-      uint8_t* shown = &shown_[4 * (static_cast<size_t>(y) * w + x)];
-      const glm::vec3 ray = row_dir + cam.dx * static_cast<float>(x);
-      const glm::vec3 d = ray * (1.0f / std::sqrt(glm::dot(ray, ray)));
+      const size_t at = static_cast<size_t>(y) * w + x;
       if (x == next_lattice_x) {
         next_lattice_x += phase.stride_x;
         const size_t from =
-            lattice_at((x - phase.x0) / phase.stride_x, (y - phase.y0) / phase.stride_y);
+            f.lattice_at((x - phase.x0) / phase.stride_x, (y - phase.y0) / phase.stride_y);
         const float t = f.depth[from];
         const bool surface = std::isfinite(t);
-        const glm::vec3 p = surface ? d * t : d;
-        s = Sample{
-            {p.x, p.y, p.z}, load_rgba(f.rgba8 + 4 * from), surface ? Kind::Surface : Kind::Sky, 0};
-        std::memcpy(shown, &s.rgba8, 4);
+        const glm::vec3 d = f.ray(x, y);
+        set(at, surface ? d * t : d, load_rgba(f.rgba8 + 4 * from), surface ? kSurface : kSky, 0);
         ++counts.fresh;
         continue;
       }
-      // The lattice around this pixel: its four samples, their depths' bilinear guess and the
-      // farthest of them.
-      const float u = std::clamp(static_cast<float>(x - phase.x0) * inv_stride_x, 0.0f,
-                                 static_cast<float>(lw - 1));
-      const int i0 = static_cast<int>(u), i1 = std::min(i0 + 1, lw - 1);
-      const float fu = u - i0;
-      const bool bracketed = bracketed_y && x >= phase.x0 && i1 > i0;
-      const size_t corner[4] = {lattice_at(i0, j0), lattice_at(i1, j0), lattice_at(i0, j1),
-                                lattice_at(i1, j1)};
-      const float weight[4] = {(1 - fu) * (1 - fv), fu * (1 - fv), (1 - fu) * fv, fu * fv};
-      float farthest = 0, guess = 0, guess_weight = 0;
-      for (int k = 0; k < 4; ++k) {
-        const float t = f.depth[corner[k]];
-        farthest = std::max(farthest, std::isfinite(t) ? t : kSkyKey);
-        if (std::isfinite(t)) {
-          guess += weight[k] * t;
-          guess_weight += weight[k];
+      // The lattice around this pixel: its four samples.
+      const Frame::Span& col = f.columns[static_cast<size_t>(x)];
+      const size_t corner[4] = {
+          f.lattice_at(col.first, row.first), f.lattice_at(col.second, row.first),
+          f.lattice_at(col.first, row.second), f.lattice_at(col.second, row.second)};
+      const auto weights = [](float fu, float fv) {
+        return std::array<float, 4>{(1 - fu) * (1 - fv), fu * (1 - fv), (1 - fu) * fv, fu * fv};
+      };
+      const std::array<float, 4> weight = weights(col.weight, row.weight);
+      if (carry) {
+        // Where this pixel's ray met the scene in the old image, from where the lattice's points
+        // around it were: all four's, extrapolated beyond the lattice's ends, when they are all
+        // surfaces or all sky; the surfaces' alone, interpolated, otherwise.
+        int surfaces = 0;
+        for (size_t k : corner) surfaces += lattice_surface_[k];
+        float gx = 0, gy = 0, sum = 0;
+        const std::array<float, 4> guess_weight =
+            surfaces == 0 || surfaces == 4
+                ? weights(col.extrapolating_weight, row.extrapolating_weight)
+                : weight;
+        for (int k = 0; k < 4; ++k) {
+          const bool used = surfaces == 0 || lattice_surface_[corner[k]];
+          const float wk = used ? guess_weight[k] : 0.0f;
+          gx += wk * lattice_old_x_[corner[k]];
+          gy += wk * lattice_old_y_[corner[k]];
+          sum += wk;
         }
-      }
-      bool found = false;
-      if (f.carry) {
-        // Where this pixel's ray meets the scene, guessed from the lattice (the sky: its
-        // direction), seen from the old camera; the old samples around there whose own points
-        // land within a pixel of this one are candidates, the nearest of them wins.
-        const glm::vec3 p = guess_weight > 0 ? d * (guess / guess_weight) : d;
-        const glm::vec3 q = guess_weight > 0 ? p - shift : p;  // from the old eye
-        const float along = glm::dot(q, old_cam.forward);
-        if (along > 1e-12f) {  // in front of the old eye, and 1 / along finite
-          const float inv = 1.0f / along;
-          // Clamped before the conversion: a point just in front of the old eye lands anywhere
-          // (and a float beyond int's range would not convert).
-          const auto old_pixel = [](float at, int size) {
-            return static_cast<int>(std::floor(std::clamp(at + 0.5f, -2.0f, size + 2.0f)));
+        gx /= sum;
+        gy /= sum;
+        ptrdiff_t best = -1;
+        float best_key2 = INFINITY;
+        if (gx == gx && gy == gy) {  // not NaN: no lattice point behind the old eye
+          // The 3x3 old pixels around the guess (kept inside the image; clamped before the
+          // conversion, as a point just in front of the old eye lands anywhere): of the samples
+          // whose points land within 0.87 px of this pixel, the nearest surface, and of samples
+          // of that surface (within the margin), the one nearest the pixel. Without branches.
+          // (int)(v + 2) - 2 is floor(v) for v >= -2, without a call to floorf.
+          const int ox = std::clamp(
+              static_cast<int>(std::clamp(gx + 0.5f, -2.0f, w + 2.0f) + 2.0f) - 2, 1, w - 2);
+          const int oy = std::clamp(
+              static_cast<int>(std::clamp(gy + 0.5f, -2.0f, h + 2.0f) + 2.0f) - 2, 1, h - 2);
+          // Three rows of three candidates, a vector each (its fourth lane unused).
+          const i4 three_lanes = {-1, -1, -1, 0};
+          f4 d2[3], key2[3];
+          i4 lands[3];
+          f4 nearest = splat(INFINITY);
+          for (int r = 0; r < 3; ++r) {
+            const size_t k = static_cast<size_t>(oy - 1 + r) * w + static_cast<size_t>(ox - 1);
+            const f4 dx = load4(&landed_x_[k]) - static_cast<float>(x);
+            const f4 dy = load4(&landed_y_[k]) - static_cast<float>(y);
+            d2[r] = dx * dx + dy * dy;
+            lands[r] = (d2[r] <= 0.75f) & three_lanes;  // (NaN: not usable)
+            key2[r] = lands[r] ? load4(&landed_key2_[k]) : splat(INFINITY);
+            nearest = key2[r] < nearest ? key2[r] : nearest;
+          }
+          const auto min_of = [](f4 v) {
+            return std::min(std::min(v[0], v[1]), std::min(v[2], v[3]));
           };
-          const int ox = old_pixel(old_cam.centre_x + glm::dot(q, old_rx) * inv, w);
-          const int oy = old_pixel(old_cam.centre_y - glm::dot(q, old_uy) * inv, h);
-          float best_key = INFINITY, best_d2 = 0;
-          const Sample* best = nullptr;
-          // The old sample at the guessed position when its point lands within 0.87 px of this
-          // pixel (most often: then no search); else the nearest of those around it that do.
-          const auto consider = [&](int sx, int sy) {
-            const Sample& o = kept_[static_cast<size_t>(sy) * w + sx];
-            if (o.kind == Kind::None || o.age >= f.max_age) return;
-            glm::vec3 ov(o.vec[0], o.vec[1], o.vec[2]);
-            if (o.kind == Kind::Surface) ov += shift;
-            float px, py;
-            if (!project(ov, px, py)) return;
-            const float d2 = (px - x) * (px - x) + (py - y) * (py - y);
-            if (!(d2 <= 0.75f)) return;  // (NaN too)
-            // Nearest first (its distance from the new eye); between samples of one surface,
-            // the one nearest the pixel.
-            const float key = o.kind == Kind::Surface ? glm::length(ov) : kSkyKey;
-            if (!best || key < best_key / margin || (key <= best_key * margin && d2 < best_d2)) {
-              best = &o;
-              best_key = key;
-              best_d2 = d2;
-            }
-          };
-          if (ox >= 0 && oy >= 0 && ox < w && oy < h) consider(ox, oy);
-          if (!best)
-            for (int sy = std::max(0, oy - 1); sy <= std::min(h - 1, oy + 1); ++sy)
-              for (int sx = std::max(0, ox - 1); sx <= std::min(w - 1, ox + 1); ++sx)
-                consider(sx, sy);
-          if (best) {
-            // Every fresh sample around it is nearer: something now stands in front of it.
-            // (Not beyond the lattice's last row or column, where the samples are on one side
-            // and a surface sloping away is deeper than all of them.)
-            if (bracketed && best_key > farthest * margin) {
-              ++counts.rejected;
-            } else {
-              glm::vec3 ov(best->vec[0], best->vec[1], best->vec[2]);
-              if (best->kind == Kind::Surface) ov += shift;
-              s = Sample{
-                  {ov.x, ov.y, ov.z}, best->rgba8, best->kind, static_cast<uint8_t>(best->age + 1)};
-              found = true;
-              ++counts.reused;
-            }
+          const float within = min_of(nearest) * margin2;
+          f4 nearest_d2 = splat(INFINITY);
+          for (int r = 0; r < 3; ++r) {
+            d2[r] = lands[r] && key2[r] <= within ? d2[r] : splat(INFINITY);
+            nearest_d2 = d2[r] < nearest_d2 ? d2[r] : nearest_d2;
+          }
+          const float best_d2 = min_of(nearest_d2);
+          if (best_d2 <= 0.75f)
+            for (int i = 0; i < 9 && best < 0; ++i)
+              if (d2[i / 3][i % 3] == best_d2) {
+                best = static_cast<ptrdiff_t>(oy - 1 + i / 3) * w + (ox - 1 + i % 3);
+                best_key2 = key2[i / 3][i % 3];
+              }
+        }
+        if (best >= 0) {
+          // Every fresh sample around it is nearer: something now stands in front of it. (Not
+          // beyond the lattice's last row or column, where the samples are on one side and a
+          // surface sloping away is deeper than all of them.)
+          float farthest = 0;
+          for (size_t k : corner) farthest = std::max(farthest, f.depth[k]);  // +inf: the sky
+          if (col.bracketed && row.bracketed && best_key2 > farthest * farthest * margin2) {
+            ++counts.rejected;
+          } else {
+            const auto k = static_cast<size_t>(best);
+            const uint8_t kind = kept_.kind[k];
+            const glm::vec3 v(kept_.x[k], kept_.y[k], kept_.z[k]);
+            set(at, kind == kSurface ? v + f.shift : v, kept_.rgba8[k], kind, kept_.age[k] + 1);
+            ++counts.reused;
+            continue;
           }
         }
-      }
-      if (found) {
-        std::memcpy(shown, &s.rgba8, 4);
-        continue;
       }
       // Nothing carried: the fresh lattice, bilinearly, kept one more frame at most.
       uint32_t c = 0;
@@ -244,14 +387,18 @@ void TemporalReuse::compose_rows(const Frame& f, int row_begin, int row_end,
         for (int k = 0; k < 4; ++k) sum += weight[k] * f.rgba8[4 * corner[k] + ch];
         c |= static_cast<uint32_t>(sum + 0.5f) << (8 * ch);
       }
+      float guess = 0, guess_weight = 0;
+      for (int k = 0; k < 4; ++k) {
+        const float t = f.depth[corner[k]];
+        if (std::isfinite(t)) {
+          guess += weight[k] * t;
+          guess_weight += weight[k];
+        }
+      }
+      const glm::vec3 d = f.ray(x, y);
       const bool surface = guess_weight > 0;
-      const float t = surface ? guess / guess_weight : kSkyKey;
-      const glm::vec3 p = surface ? d * t : d;
-      s = Sample{{p.x, p.y, p.z},
-                 c,
-                 surface ? Kind::Surface : Kind::Sky,
-                 static_cast<uint8_t>(std::max(0, f.max_age - 1))};
-      std::memcpy(shown, &s.rgba8, 4);
+      set(at, surface ? d * (guess / guess_weight) : d, c, surface ? kSurface : kSky,
+          std::max(0, f.max_age - 1));
       ++counts.filled;
     }
   }

@@ -5,19 +5,21 @@
 // stride_y-th row, from a phase that rotates so that every pixel is traced again within
 // stride_x * stride_y frames: render/camera.hpp's window_rays). Every other pixel gathers what the
 // frames before traced: each kept sample is the point its ray hit (the vector from the eye to it)
-// or, for the sky, its direction. A pixel guesses where its ray meets the scene from the fresh
-// lattice's depths around it, looks at the old image there, and takes the kept sample whose own
-// point lands within 0.87 px of it (the old pixel at the guess if it does, else the nearest of
-// its neighbours that do), carrying that exact point on, so positions do not drift from frame to
-// frame. A carried sample is rejected where the fresh lattice samples around it are all nearer
-// than it by more than a tolerance (something came in front of it), and when it is older than
-// `max_age_frames`. A pixel left without one (a disocclusion, the image's new edge) takes the
-// fresh lattice's bilinear value. The scene must not have changed (the caller resets the history
-// when anything but the camera did); colours are display values (rgba8), so exposure and tone
-// mapping must be the same.
+// or, for the sky, its direction. A pixel guesses where in the old image its ray met the scene
+// from the fresh lattice's samples around it (where each of their points was seen in the old
+// camera, interpolated), and takes the kept sample whose own point lands within 0.87 px of it
+// (the old pixel at the guess if it does, else the nearest of its neighbours that do), carrying
+// that exact point on, so positions do not drift from frame to frame. A carried sample is rejected
+// where the fresh lattice samples around it are all nearer than it by more than a tolerance
+// (something came in front of it), and when it is older than `max_age_frames`. A pixel left without
+// one (a disocclusion, the image's new edge) takes the fresh lattice's bilinear value. The scene
+// must not have changed (the caller resets the history when anything but the camera did); colours
+// are display values (rgba8), so exposure and tone mapping must be the same.
 //
-// Cost: about 45 ms a 1280x720 frame on the 2-core CPU (two threads), which is why the explorer
-// does not use it by default (docs/performance.md, "Temporal reuse").
+// Two passes, each on two threads: every kept sample is projected into the new image (one
+// vectorised pass over the samples, by field), then every pixel looks at the old image where the
+// lattice's own old positions, interpolated, say its ray came from (tests/temporal_reuse_bench
+// times it; docs/performance.md, "Temporal reuse").
 #pragma once
 
 #include "render/camera.hpp"
@@ -75,29 +77,33 @@ class TemporalReuse {
   const ReuseCounts& counts() const { return counts_; }
 
  private:
-  enum class Kind : uint8_t { None, Surface, Sky };
-  // One pixel's kept sample, together in memory.
-  struct Sample {
-    float vec[3];  // eye to the hit point (Surface) or the unit direction (Sky)
-    uint32_t rgba8;
-    Kind kind;
-    uint8_t age;  // frames since it was traced
+  // Kind of a kept sample.
+  static constexpr uint8_t kNone = 0, kSurface = 1, kSky = 2;
+  // The kept samples of one frame, a pixel each, by field (so the projection pass runs on whole
+  // vectors of them): the vector from the eye to the hit point (a surface) or the unit direction
+  // (the sky); the display colour (rgba8: these are the shown image); kind; frames since traced.
+  struct Samples {
+    std::vector<float> x, y, z;
+    std::vector<uint32_t> rgba8;
+    std::vector<uint8_t> kind, age;
+    void resize(size_t n);
   };
-  // One compose call's inputs.
-  struct Frame {
-    const CameraRays& rays;
-    const LatticePhase& phase;
-    const uint8_t* rgba8;  // the lattice's
-    const float* depth;
-    int max_age;
-    bool carry;  // kept_ holds samples of old_rays
-    const CameraRays& old_rays;
-  };
-  void compose_rows(const Frame& frame, int row_begin, int row_end, ReuseCounts& counts);
+  // One compose call's inputs and the arrays its passes share.
+  struct Frame;
+  static constexpr int kLanes = 4;  // floats in one vector of the projection and the search
+  void project_samples(const Frame& frame, size_t begin, size_t end);
+  void project_lattice_rows(const Frame& frame, int row_begin, int row_end);
+  void gather_rows(const Frame& frame, int row_begin, int row_end, ReuseCounts& counts);
 
   TemporalReuseSettings settings_;
-  std::vector<Sample> kept_, next_;
-  std::vector<uint8_t> shown_;  // kept_'s colours, packed: the frame compose returns
+  Samples kept_, next_;
+  // Per kept sample, where it lands in the new image (NaN: nowhere usable), and its distance
+  // from the new eye, squared (+inf: the sky).
+  std::vector<float> landed_x_, landed_y_, landed_key2_;
+  // Per fresh lattice sample, where its point was in the old image (NaN: behind the old eye), and
+  // whether it is a surface.
+  std::vector<float> lattice_old_x_, lattice_old_y_;
+  std::vector<uint8_t> lattice_surface_;
   bool has_history_ = false;
   int width_px_ = 0, height_px_ = 0;
   CameraRays old_rays_;  // the camera of kept_ (its vectors start at its eye)
