@@ -27,7 +27,7 @@ inline void cone_spread(__constant const fr_frame_constants* fc, ray_t centre, r
     const real_t cx = bx + (real_t)((corner & 1) ? FR_CONE_BLOCK : -1);
     const real_t cy = by + (real_t)((corner & 2) ? FR_CONE_BLOCK : -1);
     real_t unused;
-    const ray_t r = camera_ray(fc, cx, cy, &unused);
+    const ray_t r = camera_ray(fc, cx, cy, (real_t)0, (real_t)0, &unused);
     so = fmax(so, v3_length(v3_sub(r.origin, centre.origin)));
     sd = fmax(sd, v3_length(v3_sub(r.dir, centre.dir)));
   }
@@ -51,7 +51,7 @@ __kernel void fr_cone(__constant const fr_frame_constants* fc,
   const real_t by = block_y * (real_t)FR_CONE_BLOCK - (real_t)fc->cone_phase_y;
   const real_t to_centre = (real_t)(0.5f * (FR_CONE_BLOCK - 1));
   real_t path_t;
-  const ray_t ray = camera_ray(fc, bx + to_centre, by + to_centre, &path_t);
+  const ray_t ray = camera_ray(fc, bx + to_centre, by + to_centre, (real_t)0, (real_t)0, &path_t);
   real_t spread_origin, spread_dir;
   cone_spread(fc, ray, bx, by, &spread_origin, &spread_dir);
 

@@ -30,9 +30,10 @@
 #define FR_COUNT_SLOTS 256
 
 typedef struct fr_frame_constants {
-  /* Camera, in the camera model's terms (host/render/camera.hpp): the ray through pixel column x,
-   * row y (row 0 at the top) has direction first_pixel_dir + pixel_step_x * (width - 1 - x)
-   * + pixel_step_y * (height - 1 - y), normalised. Each of these four vectors is the rounded
+  /* Camera, in the camera model's terms (host/render/camera.hpp), for the whole image (of
+   * full_width x full_height pixels, of which this one may be a window): the ray through its pixel
+   * column x, row y (row 0 at the top) has direction first_pixel_dir + pixel_step_x *
+   * (full_width - 1 - x) + pixel_step_y * (full_height - 1 - y), normalised. Each of these four vectors is the rounded
    * float of the double value; the *_lo fields further down hold what rounding lost, so the
    * double kernel rebuilds the double camera as hi + lo ("double end to end"). Rays start at
    * ray_start below, not at the eye. */
@@ -121,6 +122,16 @@ typedef struct fr_frame_constants {
    * their shadow rays at most this many (0: reflections show no shadows). */
   int bounce_max_steps;
   int bounce_shadow_max_steps;
+  /* The whole image's pixel of this image's pixel (x, y) is (pixel_origin_x + x * pixel_stride_x,
+   * ...): a window (a poster's band, a lattice) draws the whole image's random numbers. */
+  int pixel_origin_x;
+  int pixel_origin_y;
+  int pixel_stride_x;
+  int pixel_stride_y;
+  int full_width; /* the whole image's size: the camera vectors above are the whole image's */
+  int full_height;
+  int seed;             /* of the random numbers (path tracing, the lens) */
+  int path_max_bounces; /* path tracing: surface interactions after the first hit (path.cl) */
 } fr_frame_constants;
 
 #endif /* FR_FRAME_CONSTANTS_H */

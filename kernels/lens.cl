@@ -3,9 +3,9 @@
  * and the accumulation over samples blurs the rest. */
 
 ray_t thin_lens(ray_t ray, real_t px, real_t py, __constant const fr_frame_constants* fc) {
-  lane_uint_t ix = real_to_uint(px), iy = real_to_uint(py);
-  real_t u1 = random_unit(ix, iy, (uint)fc->sample_index, 1U);
-  real_t u2 = random_unit(ix, iy, (uint)fc->sample_index, 2U);
+  const lane_uint_t ix = image_pixel_x(fc, px), iy = image_pixel_y(fc, py);
+  real_t u1 = pixel_random(fc, ix, iy, 1U);
+  real_t u2 = pixel_random(fc, ix, iy, 2U);
   real_t radius = (real_t)fc->aperture_radius * sqrt(u1);
   real_t angle = (real_t)(2 * M_PI_F) * u2;
   vec3_t offset = v3_add(v3_scale(v3_from_float4(fc->camera_right), radius * cos(angle)),

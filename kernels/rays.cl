@@ -12,21 +12,26 @@ inline vec3_t v3_hi_lo(__constant const float* hi, __constant const float* lo) {
   return v3s(hi_lo(hi[0], lo[0]), hi_lo(hi[1], lo[1]), hi_lo(hi[2], lo[2]));
 }
 
-/* The ray through pixel (px, py), row 0 at the top; fractional coordinates sample inside a pixel.
+/* The ray through this image's pixel (px, py), row 0 at the top, moved by (jx, jy) whole-image
+ * pixels (a sample's jitter); fractional coordinates sample inside a pixel. This image may be a
+ * window of the whole (a poster's band, a lattice): its pixel is the whole image's
+ * (pixel_origin + p * pixel_stride), computed exactly, and the ray the whole image's, bit for bit.
  * The model indexes columns from the right and rows from the bottom (its first pixel p_1m is
  * bottom-right for a right-handed world), hence the flips. The ray starts on the start plane
  * (frame_constants.h), *path_start from the eye: its origin is the start point of the image's
  * centre plus a small offset, so a far camera loses no precision (eye + dir * 1e6 in float would
  * round to the nearest 0.06 units). */
-ray_t camera_ray(__constant const fr_frame_constants* fc, real_t px, real_t py,
-                 real_t* path_start) {
-  real_t i = (real_t)(fc->width - 1) - px;
-  real_t j = (real_t)(fc->height - 1) - py;
+ray_t camera_ray(__constant const fr_frame_constants* fc, real_t px, real_t py, real_t jx,
+                 real_t jy, real_t* path_start) {
+  const real_t x = (real_t)fc->pixel_origin_x + px * (real_t)fc->pixel_stride_x + jx;
+  const real_t y = (real_t)fc->pixel_origin_y + py * (real_t)fc->pixel_stride_y + jy;
+  real_t i = (real_t)(fc->full_width - 1) - x;
+  real_t j = (real_t)(fc->full_height - 1) - y;
   vec3_t d = v3_hi_lo(fc->first_pixel_dir, fc->first_pixel_dir_lo);
   d = v3_mad(d, v3_hi_lo(fc->pixel_step_x, fc->pixel_step_x_lo), i);
   d = v3_mad(d, v3_hi_lo(fc->pixel_step_y, fc->pixel_step_y_lo), j);
-  const real_t ic = i - (real_t)((scalar_t)(fc->width - 1) * (scalar_t)0.5);
-  const real_t jc = j - (real_t)((scalar_t)(fc->height - 1) * (scalar_t)0.5);
+  const real_t ic = i - (real_t)((scalar_t)(fc->full_width - 1) * (scalar_t)0.5);
+  const real_t jc = j - (real_t)((scalar_t)(fc->full_height - 1) * (scalar_t)0.5);
   ray_t ray;
   ray.origin = v3_hi_lo(fc->ray_start, fc->ray_start_lo);
   ray.origin = v3_mad(ray.origin, v3_hi_lo(fc->start_step_x, fc->start_step_x_lo), ic);
@@ -45,4 +50,20 @@ inline real_t hit_threshold(__constant const fr_frame_constants* fc, real_t t, v
   real_t ulp_floor =
       (real_t)(4 * FR_SCALAR_EPSILON) * fmax(v3_length(p), (real_t)fc->bounding_radius);
   return fmax(clarity, ulp_floor);
+}
+
+/* The whole image's pixel of this image's pixel (frame_constants.h): random numbers drawn for it
+ * do not depend on how the image was cut into windows (a poster's bands, MPI ranks). */
+inline lane_uint_t image_pixel_x(__constant const fr_frame_constants* fc, real_t px) {
+  return real_to_uint(px) * (uint)fc->pixel_stride_x + (uint)fc->pixel_origin_x;
+}
+inline lane_uint_t image_pixel_y(__constant const fr_frame_constants* fc, real_t py) {
+  return real_to_uint(py) * (uint)fc->pixel_stride_y + (uint)fc->pixel_origin_y;
+}
+
+/* Uniform in [0, 1): a function of the whole image's pixel, the sample's index, the stream (one
+ * per random decision) and the seed only. */
+inline real_t pixel_random(__constant const fr_frame_constants* fc, lane_uint_t ix, lane_uint_t iy,
+                           uint stream) {
+  return random_unit(ix, iy, (uint)fc->sample_index, stream + (uint)fc->seed * 0x9E3779B9U);
 }

@@ -33,18 +33,6 @@
 #define FR_BOUNCE(ray, p, n, h)
 #endif
 
-#if FR_HAS_SURFACE
-#define surface_at(p) scene_surface(p, params)
-#else
-inline surface_t default_surface(__constant const fr_frame_constants* fc) {
-  surface_t s;
-  s.albedo = v3_from_float4(fc->albedo);
-  s.reflectivity = (real_t)fc->reflectivity;
-  return s;
-}
-#define surface_at(p) default_surface(fc)
-#endif
-
 __kernel void fr_render(__constant const fr_frame_constants* fc,
                         __constant const scene_params_t* params, __global float* hdr_rgba,
                         __global float* depth, __global float* steps_out,
@@ -59,7 +47,7 @@ __kernel void fr_render(__constant const fr_frame_constants* fc,
   const real_t py = (real_t)tile_y + FR_LANE_Y;
 
   real_t path_t;
-  ray_t ray = camera_ray(fc, px + (real_t)fc->jitter_x, py + (real_t)fc->jitter_y, &path_t);
+  ray_t ray = camera_ray(fc, px, py, (real_t)fc->jitter_x, (real_t)fc->jitter_y, &path_t);
   FR_APPLY_LENS(ray, px, py);
 
   vec3_t color = v3s(0, 0, 0);
@@ -138,56 +126,15 @@ __kernel void fr_render(__constant const fr_frame_constants* fc,
 
   FR_COUNTS_END(counts_out);
 
-  /* Scatter the lanes to their pixels; tiles at the right and bottom edges are partial. */
-  float r[FR_LANES], g[FR_LANES], b[FR_LANES], d[FR_LANES], s[FR_LANES], o[FR_LANES],
-      sh[FR_LANES], st[FR_LANES], nx[FR_LANES], ny[FR_LANES], nz[FR_LANES], ar[FR_LANES],
-      ag[FR_LANES], ab[FR_LANES];
-  store_lanes(color.x, r);
-  store_lanes(color.y, g);
-  store_lanes(color.z, b);
-  store_lanes(first_depth, d);
-  store_lanes(first_steps, s);
-  store_lanes(first_ao, o);
-  store_lanes(first_shadow, sh);
-  store_lanes(first_status, st);
-  store_lanes(first_normal.x, nx);
-  store_lanes(first_normal.y, ny);
-  store_lanes(first_normal.z, nz);
-  store_lanes(first_albedo.x, ar);
-  store_lanes(first_albedo.y, ag);
-  store_lanes(first_albedo.z, ab);
-  const float w = fc->accumulate_weight;
-  for (int lane = 0; lane < FR_LANES; ++lane) {
-    int x = tile_x + lane % FR_TILE_W;
-    int y = tile_y + lane / FR_TILE_W;
-    if (x >= fc->width || y >= fc->height) continue;
-    int i = y * fc->width + x;
-    if (w < 1.0f) { /* running mean; the first sample overwrites whatever was there */
-      hdr_rgba[4 * i + 0] += (r[lane] - hdr_rgba[4 * i + 0]) * w;
-      hdr_rgba[4 * i + 1] += (g[lane] - hdr_rgba[4 * i + 1]) * w;
-      hdr_rgba[4 * i + 2] += (b[lane] - hdr_rgba[4 * i + 2]) * w;
-    } else {
-      hdr_rgba[4 * i + 0] = r[lane];
-      hdr_rgba[4 * i + 1] = g[lane];
-      hdr_rgba[4 * i + 2] = b[lane];
-    }
-    hdr_rgba[4 * i + 3] = 1.0f;
-    /* The passes the host will read (FR_OUTPUTS, renderer.hpp's Readback); the rest are not
-     * written at all. */
-#if FR_OUTPUTS >= 1
-    steps_out[i] = s[lane];
-    status_out[i] = (uchar)st[lane];
-#endif
-#if FR_OUTPUTS >= 2
-    depth[i] = d[lane];
-    factors_out[2 * i + 0] = o[lane];
-    factors_out[2 * i + 1] = sh[lane];
-    normal_out[3 * i + 0] = nx[lane];
-    normal_out[3 * i + 1] = ny[lane];
-    normal_out[3 * i + 2] = nz[lane];
-    albedo_out[3 * i + 0] = ar[lane];
-    albedo_out[3 * i + 1] = ag[lane];
-    albedo_out[3 * i + 2] = ab[lane];
-#endif
-  }
+  pixel_passes_t out;
+  out.color = color;
+  out.depth = first_depth;
+  out.steps = first_steps;
+  out.status = first_status;
+  out.ao = first_ao;
+  out.shadow = first_shadow;
+  out.normal = first_normal;
+  out.albedo = first_albedo;
+  film_write(tile_x, tile_y, out, fc, hdr_rgba, depth, steps_out, factors_out, status_out,
+             normal_out, albedo_out);
 }

@@ -12,6 +12,19 @@
 #define FR_APPLY_SHADOWS(shadow, p, n, h, lights, facing, count, max_steps)
 #endif
 
+/* The surface at p: the scene's surface source, or the default material (the settings'). */
+#if FR_HAS_SURFACE
+#define surface_at(p) scene_surface(p, params)
+#else
+inline surface_t default_surface(__constant const fr_frame_constants* fc) {
+  surface_t s;
+  s.albedo = v3_from_float4(fc->albedo);
+  s.reflectivity = (real_t)fc->reflectivity;
+  return s;
+}
+#define surface_at(p) default_surface(fc)
+#endif
+
 vec3_t sky_color(vec3_t dir, __constant const fr_frame_constants* fc) {
   real_t up = clamp(v3_dot(dir, v3_from_float4(fc->sky_up)), (real_t)0, (real_t)1);
   vec3_t horizon = v3_from_float4(fc->sky_horizon);

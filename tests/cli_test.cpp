@@ -61,6 +61,13 @@ TEST(Cli, UsageErrors) {
   expect_usage_error({"render", "--fov", "200"}, "outside (0, 180) degrees");
   expect_usage_error({"render", "--lanes", "3"}, "--lanes: expected 1, 4, 8 or 16");
   expect_usage_error({"render", "--precision", "half"}, "expected auto, float or double");
+  expect_usage_error({"render", "--integrator", "photon"},
+                     "--integrator: expected fast or path, got 'photon'");
+  expect_usage_error({"render", "--set", "render.integrator=\"paths\""}, "render.integrator");
+  expect_usage_error({"render", "--integrator", "path", "--samples", "0"},
+                     "--samples: 0 is outside");
+  expect_usage_error({"render", "--integrator", "path", "--samples", "1000000000000"},
+                     "--samples: 1000000000000 is outside");
   expect_usage_error({"render", "--device", "no-such-device"},
                      "--device no-such-device: matches no device");
   expect_usage_error({"render", "--plugins", "/no/such/folder"},

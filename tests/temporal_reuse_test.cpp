@@ -33,26 +33,6 @@ fr_camera camera_at(glm::dvec3 eye, glm::dvec3 target, double fov_deg) {
   return c;
 }
 
-TEST(LatticeRays, AreTheWholeImagesRaysAtThosePixelsExactly) {
-  const CameraRays full = make_camera_rays(camera_at({0.3, -0.2, 4}, {0.1, 0.2, -1}, 70), 101, 57);
-  for (const auto& [sx, sy, x0, y0] :
-       std::vector<std::array<int, 4>>{{2, 2, 1, 0}, {3, 2, 2, 1}, {5, 4, 4, 3}, {1, 1, 0, 0}}) {
-    LatticePhase phase{sx, sy, x0, y0};
-    const int w = phase.width_px(full.width_px), h = phase.height_px(full.height_px);
-    // Every lattice pixel inside the image, and one more column or row would not be.
-    EXPECT_LT(x0 + (w - 1) * sx, full.width_px);
-    EXPECT_GE(x0 + w * sx, full.width_px);
-    EXPECT_GE(y0 + h * sy, full.height_px);
-    const CameraRays lattice = window_rays(full, x0, y0, w, h, sx, sy);
-    for (int j = 0; j < h; ++j)
-      for (int i = 0; i < w; ++i) {
-        const glm::dvec3 a = camera_ray_dir(lattice, i, j);
-        const glm::dvec3 b = camera_ray_dir(full, x0 + i * sx, y0 + j * sy);
-        ASSERT_LT(glm::length(a - b), 1e-12) << sx << "x" << sy << " at " << i << "," << j;
-      }
-  }
-}
-
 TEST(LatticePhase, EveryPixelOncePerCycle) {
   for (const auto& [sx, sy] : std::vector<std::pair<int, int>>{{2, 2}, {3, 2}, {3, 3}, {5, 4}}) {
     std::vector<int> seen(static_cast<size_t>(sx * sy), 0);
@@ -66,8 +46,9 @@ TEST(LatticePhase, EveryPixelOncePerCycle) {
   }
 }
 
-// The renderer traces a lattice as the whole image's pixels: the same colour and depth (the unit
-// ball, exact geometry; float noise allowed).
+// The renderer traces a lattice as the whole image's pixels: the same colour and depth (the same
+// rays, but the lattice's cone pre-pass has blocks of its own, so a march may start elsewhere and
+// end a float rounding apart).
 TEST(LatticeRender, EqualsTheWholeRenderAtItsPixels) {
   Renderer renderer(test::runtime());
   const auto scene = test::unit_ball();

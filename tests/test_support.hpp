@@ -43,6 +43,9 @@ inline std::shared_ptr<const LoadedScene> mandelbulb() {
 inline std::shared_ptr<const LoadedScene> unit_ball() {
   return load_or_fail(std::filesystem::path(TEST_SCENE_DIR) / "unit_ball" PLUGIN_SUFFIX);
 }
+inline std::shared_ptr<const LoadedScene> plain_sponge() {
+  return load_or_fail(std::filesystem::path(TEST_SCENE_DIR) / "plain_sponge" PLUGIN_SUFFIX);
+}
 
 // The default device (PoCL's CPU device on the development machines), opened once.
 inline ClRuntime& runtime() {

@@ -3,7 +3,7 @@
 //
 // Each frame traces one lattice of the window's pixels (every stride_x-th column of every
 // stride_y-th row, from a phase that rotates so that every pixel is traced again within
-// stride_x * stride_y frames: render/camera.hpp's window_rays). Every other pixel gathers what the
+// stride_x * stride_y frames: RenderSettings::window). Every other pixel gathers what the
 // frames before traced: each kept sample is the point its ray hit (the vector from the eye to it)
 // or, for the sky, its direction. A pixel guesses where in the old image its ray met the scene
 // from the fresh lattice's samples around it (where each of their points was seen in the old

@@ -18,6 +18,13 @@ std::string fixed(double v, int digits = 2) {
 
 }  // namespace
 
+// Pixel samples a second at the median frame time: what an integrator delivers.
+double samples_per_second(const BenchReport& r) {
+  if (r.stats.p50_ms <= 0) return 0;
+  return static_cast<double>(r.width_px) * r.height_px * r.samples_per_frame /
+         (r.stats.p50_ms / 1000.0);
+}
+
 std::string format_bench_text(const BenchReport& r) {
   const FrameStats& s = r.stats;
   std::ostringstream out;
@@ -35,6 +42,10 @@ std::string format_bench_text(const BenchReport& r) {
       << fixed(s.p95_ms) << " ms\n"
       << "fps: average " << fixed(s.mean_fps) << ", min " << fixed(s.min_fps) << ", max "
       << fixed(s.max_fps) << "\n";
+  if (s.p50_ms > 0)
+    out << "integrator " << r.integrator << ", " << r.samples_per_frame
+        << " sample(s) a pixel a frame: " << fixed(samples_per_second(r) / 1e6, 3)
+        << " M samples per second (median frame)\n";
   if (r.run_mean_ms.size() > 1) {
     out << "average frame time per run:";
     for (double m : r.run_mean_ms) out << " " << fixed(m) << " ms";
@@ -67,6 +78,9 @@ std::string format_bench_json(const BenchReport& r) {
       {"precision", r.precision},
       {"lanes", r.lanes},
       {"effects", r.stages},
+      {"integrator", r.integrator},
+      {"samples_per_frame", r.samples_per_frame},
+      {"samples_per_second", samples_per_second(r)},
       {"runs", r.runs},
       {"frames_per_run", r.frames_per_run},
       {"path_duration_s", r.path_duration_s},

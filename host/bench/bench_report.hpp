@@ -15,7 +15,9 @@ struct BenchReport {
   int width_px = 0, height_px = 0;
   int lanes = 0;
   std::string precision;
-  std::string stages;  // effects compiled in
+  std::string stages;      // effects compiled in
+  std::string integrator;  // "fast" or "path" (render.integrator)
+  int samples_per_frame = 1;
   int runs = 0;
   int frames_per_run = 0;
   double path_duration_s = 0;  // scene time each run covers
@@ -30,6 +32,8 @@ struct BenchReport {
   SystemInfo system;
 };
 
+// Pixel samples a second at the median frame time: what an integrator delivers.
+double samples_per_second(const BenchReport& report);
 std::string format_bench_text(const BenchReport& report);
 std::string format_bench_json(const BenchReport& report);
 

@@ -214,6 +214,8 @@ void report_bench(const BenchJob& job, BenchReport& report, std::ostream& out, s
   report.height_px = p.render.height_px;
   report.precision = precision_name(p.render.precision);
   report.stages = stage_names(make_kernel_config(p.scene->info, p.render, report.lanes).stages);
+  report.integrator = enum_name(p.render.integrator);
+  report.samples_per_frame = std::max(1, p.render.samples);
   report.runs = job.runs;
   report.frames_per_run = job.frames;
   report.path_duration_s = job.duration_s;

@@ -49,6 +49,9 @@ std::vector<OptionSpec> scene_option_specs() {
        "arithmetic precision of the kernel (default auto: double where float cannot resolve the "
        "view)"},
       {"samples", "N", false, "jittered samples per pixel, accumulated (anti-aliasing; default 1)"},
+      {"integrator", "fast|path", false,
+       "how light is computed: fast (direct light; default) or path (path tracing, with "
+       "--samples)"},
       {"set", "KEY=VALUE", true,
        "any setting, as in config/default.toml (repeatable), e.g.\n"
        "                                 render.effects.fog=false"},
@@ -309,8 +312,8 @@ std::optional<Preset> preset_option(const ParsedOptions& options,
     if (!names.empty()) names += ", ";
     names += p.id;
   }
-  throw UsageError("--preset: no preset '" + echo(*id) + "' (there are: " +
-                   (names.empty() ? std::string("none") : names) + ")");
+  throw UsageError("--preset: no preset '" + echo(*id) +
+                   "' (there are: " + (names.empty() ? std::string("none") : names) + ")");
 }
 
 std::string scene_id_option(const ParsedOptions& options, const std::optional<Preset>& preset) {
@@ -328,8 +331,7 @@ void apply_scene_overrides(const SceneInfo& info, const ParsedOptions& options, 
     const std::vector<std::string> problems = apply_preset(*preset, info, state);
     if (!problems.empty()) {
       std::string message = "--preset " + preset->id + ": " + problems.front();
-      if (problems.size() > 1)
-        message += " (and " + std::to_string(problems.size() - 1) + " more)";
+      if (problems.size() > 1) message += " (and " + std::to_string(problems.size() - 1) + " more)";
       throw UsageError(message);
     }
   }
@@ -384,6 +386,13 @@ RenderSettings render_settings_from(const Settings& settings, const ParsedOption
   }
   if (auto samples = options.get("samples"))
     r.samples = static_cast<int>(parse_integer("--samples", *samples, 1, 4096));
+  if (auto integrator = options.get("integrator")) {
+    const auto i = enum_from_name<Integrator>(*integrator);
+    if (!i)
+      throw UsageError("--integrator: expected " + enum_name_list<Integrator>() + ", got '" +
+                       echo(*integrator) + "'");
+    r.integrator = *i;
+  }
   if (auto precision = options.get("precision")) {
     const auto p = enum_from_name<Precision>(*precision);
     if (!p)

@@ -2,8 +2,9 @@
 // streamed to a PNG (png_stream.hpp) or, for a file named *.exr, to an OpenEXR file with its
 // passes (exr_write.hpp), so memory stays that of one band however large the image.
 //
-// Each band is a window of the whole image (render/camera.hpp's window_rays): the same ray
-// through every pixel as a render of the whole, so bands join without seams. Every band gets all
+// Each band is a window of the whole image (RenderSettings::window): the kernel computes its rays
+// from the whole image's pixel grid, the same rays bit for bit, so bands join without seams and
+// the file is the same as a render of the whole. Every band gets all
 // of settings.samples. Auto precision is decided once for the whole view, so that no band
 // switches precision on its own.
 #pragma once

@@ -30,23 +30,6 @@ CameraRays make_camera_rays(const fr_camera& c, int k, int m) {
   return r;
 }
 
-CameraRays window_rays(const CameraRays& full, int x0, int y0, int w, int h, int stride_x,
-                       int stride_y) {
-  // The model counts pixels from the image's far corner (i = W - 1 - x): the window's first
-  // pixel direction is the full image's at the window's last column and row (x0 + (w - 1) *
-  // stride_x, y0 + (h - 1) * stride_y), and its steps are the full image's times the strides.
-  CameraRays r = full;
-  const double last_x = x0 + static_cast<double>(w - 1) * stride_x;
-  const double last_y = y0 + static_cast<double>(h - 1) * stride_y;
-  r.first_pixel_dir = full.first_pixel_dir + full.pixel_step_x * (full.width_px - 1 - last_x) +
-                      full.pixel_step_y * (full.height_px - 1 - last_y);
-  r.pixel_step_x = full.pixel_step_x * static_cast<double>(stride_x);
-  r.pixel_step_y = full.pixel_step_y * static_cast<double>(stride_y);
-  r.width_px = w;
-  r.height_px = h;
-  return r;
-}
-
 glm::dvec3 camera_ray_dir(const CameraRays& r, double x, double y) {
   const double i = (r.width_px - 1) - x, j = (r.height_px - 1) - y;
   return glm::normalize(r.first_pixel_dir + r.pixel_step_x * i + r.pixel_step_y * j);

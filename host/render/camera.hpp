@@ -38,15 +38,6 @@ struct CameraRays {
 // check_camera (scene/scene_data.hpp).
 CameraRays make_camera_rays(const fr_camera& camera, int width_px, int height_px);
 
-// The rays of the w x h window at (x0, y0) (top-left, in pixels) of the image `full` describes,
-// as an image of its own: the same ray through every pixel, so windows rendered apart and put
-// together are the whole image (posters are rendered so, a band of rows at a time). With strides
-// above 1, the window's pixel (x, y) is the whole image's (x0 + x * stride_x, y0 + y * stride_y):
-// a lattice of its pixels (the explorer's temporal reuse). The pixel angle stays the whole
-// image's, so the lattice's rays march to the whole image's hit threshold.
-CameraRays window_rays(const CameraRays& full, int x0, int y0, int w, int h, int stride_x = 1,
-                       int stride_y = 1);
-
 // Unit direction of the ray through image pixel (x, y), row 0 at the top; the same arithmetic
 // as kernels/rays.cl, in double.
 glm::dvec3 camera_ray_dir(const CameraRays& rays, double x, double y);

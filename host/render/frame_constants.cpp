@@ -17,7 +17,7 @@ static_assert(FR_KERNEL_LIGHT_DIRECTIONAL == FR_LIGHT_DIRECTIONAL &&
 
 // The kernels read this struct with OpenCL C's layout rules; with only 4-byte fields both sides
 // agree, and these checks keep it so.
-static_assert(sizeof(fr_frame_constants) == 864, "fr_frame_constants layout changed");
+static_assert(sizeof(fr_frame_constants) == 896, "fr_frame_constants layout changed");
 static_assert(offsetof(fr_frame_constants, first_pixel_dir) == 0);
 static_assert(offsetof(fr_frame_constants, light_vector) == 96);
 static_assert(offsetof(fr_frame_constants, light_kind) == 352);
@@ -31,6 +31,7 @@ static_assert(offsetof(fr_frame_constants, ray_start) == 728);
 static_assert(offsetof(fr_frame_constants, start_scale) == 824);
 static_assert(offsetof(fr_frame_constants, ao_reference_steps) == 832);
 static_assert(offsetof(fr_frame_constants, cone_blocks_y) == 852);
+static_assert(offsetof(fr_frame_constants, path_max_bounces) == 892);
 namespace {
 void put(float out[4], glm::dvec3 v) {
   out[0] = static_cast<float>(v.x);
@@ -101,6 +102,16 @@ fr_frame_constants make_frame_constants(const CameraRays& rays, const SceneState
   fc.cone_phase_y = band ? s.window.y0_px % FR_CONE_BLOCK : 0;
   fc.cone_blocks_x = (s.width_px + fc.cone_phase_x + FR_CONE_BLOCK - 1) / FR_CONE_BLOCK;
   fc.cone_blocks_y = (s.height_px + fc.cone_phase_y + FR_CONE_BLOCK - 1) / FR_CONE_BLOCK;
+  // The whole image's pixel grid (a window's origin and strides), for the random numbers.
+  const bool windowed = s.window.full_width_px > 0;
+  fc.pixel_origin_x = windowed ? s.window.x0_px : 0;
+  fc.pixel_origin_y = windowed ? s.window.y0_px : 0;
+  fc.pixel_stride_x = windowed ? std::max(1, s.window.stride_x_px) : 1;
+  fc.pixel_stride_y = windowed ? std::max(1, s.window.stride_y_px) : 1;
+  fc.full_width = rays.width_px;
+  fc.full_height = rays.height_px;
+  fc.seed = s.seed;
+  fc.path_max_bounces = s.path_max_bounces;
   put(fc.camera_right, rays.right);
   put(fc.camera_up, rays.up);
   put(fc.camera_forward, rays.forward);
@@ -140,8 +151,8 @@ fr_frame_constants make_frame_constants(const CameraRays& rays, const SceneState
   put(fc.fog_color, s.fog_color);
   fc.fog_scale = static_cast<float>(s.fog_scale / std::pow(radius, 0.75));
 
-  fc.width = rays.width_px;
-  fc.height = rays.height_px;
+  fc.width = s.width_px;  // this image's (a window's): the buffers' size
+  fc.height = s.height_px;
   fc.max_steps = s.max_steps;
   fc.shadow_max_steps = s.shadow_max_steps;
   fc.bounce_max_steps = std::min(s.bounce_max_steps, s.max_steps);

@@ -14,6 +14,9 @@ namespace fr {
 
 // The constants of sample `sample_index` (0, 1, ...) of a frame: sample 0 goes through pixel
 // centres, later ones through jittered sub-pixel positions, mixed in with weight 1/(index + 1).
+// `rays` is the whole image's camera (settings.window says which of its pixels this image has):
+// the kernel computes a window's rays from the whole image's pixel grid, so that they are the
+// whole image's bit for bit.
 fr_frame_constants make_frame_constants(const CameraRays& rays, const SceneState& state,
                                         const RenderSettings& settings, int sample_index);
 

@@ -24,10 +24,13 @@ const OptionalStage kOptionalStages[] = {
 };
 
 // The render kernel's files in the order they are pasted (each uses only what comes before it);
-// a file with a stage is left out when that stage is off. The one place this order is kept.
+// a file with a stage is left out when that stage is off, and a file of one integrator when the
+// other is chosen. The one place this order is kept.
+enum class For { Both, Fast, Path };
 struct PipelineFile {
   fr_features stage;  // 0: always
   const char* file;
+  For integrator = For::Both;
 };
 const PipelineFile kRenderPipeline[] = {
     {0, "eval_counts.cl"},
@@ -43,7 +46,9 @@ const PipelineFile kRenderPipeline[] = {
     {0, "shade.cl"},
     {FR_FEATURE_FOG, "fog.cl"},
     {FR_FEATURE_REFLECTIONS, "reflect.cl"},
-    {0, "render.cl"},
+    {0, "film.cl"},
+    {0, "render.cl", For::Fast},
+    {0, "path.cl", For::Path},
 };
 
 // What the host's kernel files define: the prelude and the DE library come before a scene's
@@ -249,7 +254,8 @@ AssembledKernel finish(std::ostringstream& out, const SceneInfo& info, const Ker
   k.build_options = "-cl-std=CL1.2 -cl-mad-enable -w";
   if (config.fast_math) k.build_options += " -cl-fast-relaxed-math";
   if (config.quick_build) k.build_options += " -cl-opt-disable";
-  k.description = "scene '" + info.id + "' " + kind + " kernel (lanes " +
+  k.description = "scene '" + info.id + "' " + kind + " kernel (" +
+                  (config.integrator == Integrator::Path ? "path tracing, " : "") + "lanes " +
                   std::to_string(config.lanes) + ", " +
                   (config.precision == Precision::Double ? "double" : "float") +
                   ", stages: " + stage_names(config.stages) +
@@ -288,10 +294,18 @@ KernelConfig make_kernel_config(const SceneInfo& info, const RenderSettings& s, 
   // The lens moves every ray's origin: the block's rays no longer share a cone.
   else if (s.cone_prepass)
     c.stages |= kStageCone;
+  c.integrator = s.integrator;
+  if (s.integrator == Integrator::Path) {
+    // The path tracer computes what occlusion, glow, fog and mirror bounces approximate, and
+    // needs every light's visibility, exactly: hard shadows, whatever the scene asks for.
+    c.stages = (c.stages & (kStageDepthOfField | kStageCone)) | FR_FEATURE_SHADOWS;
+    c.shadow_method = ShadowMethod::Hard;
+  } else {
+    c.shadow_method = s.shadow_method;
+  }
   c.shading = s.shading;
   c.normals = s.normals;
   c.ao_method = s.ao_method;
-  c.shadow_method = s.shadow_method;
   c.fog_method = s.fog_method;
   c.fast_math = s.fast_math;
   c.quick_build = s.quick_build;
@@ -318,8 +332,11 @@ AssembledKernel assemble_render_kernel(const SceneInfo& info, const std::vector<
                                        const KernelConfig& config) {
   std::ostringstream out;
   append_scene_prefix(out, info, values, config, "render", true);
+  const For integrator = config.integrator == Integrator::Path ? For::Path : For::Fast;
   for (const PipelineFile& f : kRenderPipeline)
-    if (f.stage == 0 || (config.stages & f.stage)) append_file(out, f.file, kernel_source(f.file));
+    if ((f.stage == 0 || (config.stages & f.stage)) &&
+        (f.integrator == For::Both || f.integrator == integrator))
+      append_file(out, f.file, kernel_source(f.file));
   return finish(out, info, config, "render");
 }
 

@@ -28,13 +28,14 @@ struct KernelConfig {
   int lanes = 16;
   Precision precision = Precision::Float;
   fr_features stages = 0;  // FR_FEATURE_*, kStageDepthOfField and kStageCone compiled in
+  Integrator integrator = RenderSettings{}.integrator;  // render.cl or path.cl
   // The modes, by default the settings' defaults (RenderSettings is their one home).
   ShadingModel shading = RenderSettings{}.shading;
   NormalMethod normals = RenderSettings{}.normals;
   AoMethod ao_method = RenderSettings{}.ao_method;
   ShadowMethod shadow_method = RenderSettings{}.shadow_method;
   FogMethod fog_method = RenderSettings{}.fog_method;
-  bool fast_math = RenderSettings{}.fast_math;  // -cl-fast-relaxed-math (kernel_assembly.cpp)
+  bool fast_math = RenderSettings{}.fast_math;      // -cl-fast-relaxed-math (kernel_assembly.cpp)
   bool quick_build = RenderSettings{}.quick_build;  // -cl-opt-disable (render_settings.hpp)
   // FR_COUNT_EVALS: per-stage DE counters (eval_counts.cl)
   bool count_evaluations = RenderSettings{}.count_evaluations;

@@ -70,6 +70,19 @@ constexpr std::span<const EnumName<FogMethod>> enum_names(FogMethod) {
   return kFogMethodNames;
 }
 
+// How a sample's light is computed. Fast: today's direct-light models (shade.cl: the lights with
+// DE soft shadows, ambient light scaled by occlusion, mirror bounces, fog, glow), the explorer's
+// while flying. Path: a path tracer (kernels/path.cl): diffuse and mirror bounces lit by the sky
+// and, by next-event estimation, the lights; unbiased, noisy, converging as samples accumulate.
+enum class Integrator { Fast, Path };
+inline constexpr EnumName<Integrator> kIntegratorNames[] = {
+    {Integrator::Fast, "fast", "fast", "FR_INTEGRATOR_FAST"},
+    {Integrator::Path, "path", "path tracing", "FR_INTEGRATOR_PATH"},
+};
+constexpr std::span<const EnumName<Integrator>> enum_names(Integrator) {
+  return kIntegratorNames;
+}
+
 // What `Renderer::finish` reads back from the device besides the display image, and so what the
 // render kernel writes (FR_OUTPUTS). Reading everything costs 33 MB of copies per 1280x720
 // frame, so the explorer asks only for steps.
@@ -83,8 +96,10 @@ inline const char* precision_name(Precision p) {
   return enum_name(p);
 }
 
-// A window of a larger image: rendering it gives those pixels of the whole image exactly
-// (render/camera.hpp's window_rays). full_width_px 0: the image is the whole. With a stride above
+// A window of a larger image: rendering it gives those pixels of the whole image exactly (the
+// kernel computes its rays from the whole image's pixel grid: kernels/rays.cl, camera_ray; the
+// pixel angle, and so the hit threshold, is the whole image's). full_width_px 0: the image is the
+// whole. With a stride above
 // 1 the window is a lattice: its pixel (x, y) is the whole image's (x0 + x * stride_x,
 // y0 + y * stride_y) (the explorer's temporal reuse traces one such lattice a frame).
 struct ImageWindow {
@@ -104,6 +119,9 @@ struct RenderSettings {
   Precision precision = Precision::Auto;
   int samples = 1;                  // jittered samples accumulated per image (anti-aliasing)
   fr_features disabled_stages = 0;  // effects the user switched off
+  Integrator integrator = Integrator::Fast;
+  int path_max_bounces = 6;  // path tracing: surface interactions after the first hit, at most
+  int seed = 0;              // path tracing and the lens: another seed, other (equally good) noise
 
   ShadingModel shading = ShadingModel::BlinnPhong;
   // Central differences: the sweep put them on the Pareto front for every scene (Menger: image
@@ -191,6 +209,9 @@ void visit_render_fields(Settings& s, Visit&& visit) {
   visit("precision", s.precision);
   visit("samples", s.samples);
   visit("disabled_stages", s.disabled_stages);
+  visit("integrator", s.integrator);
+  visit("path_max_bounces", s.path_max_bounces);
+  visit("seed", s.seed);
   visit("shading", s.shading);
   visit("normals", s.normals);
   visit("ao_method", s.ao_method);
@@ -253,7 +274,7 @@ constexpr size_t aggregate_member_count() {
 }  // namespace detail
 // RenderSettings' direct members (the window counts once): a new field changes the count. List
 // it in visit_render_fields, then update this number.
-static_assert(detail::aggregate_member_count<RenderSettings>() == 51,
+static_assert(detail::aggregate_member_count<RenderSettings>() == 54,
               "RenderSettings changed: list the new field in visit_render_fields");
 
 }  // namespace fr

@@ -28,12 +28,11 @@ void set_arg(cl_kernel k, cl_uint index, const T& value) {
   cl_check(clSetKernelArg(k, index, sizeof(T), &value), "clSetKernelArg");
 }
 
-CameraRays rays_for(const fr_camera& camera, const RenderSettings& s) {
+// The whole image's camera (a window's pixels are its pixels: frame_constants.h).
+CameraRays whole_image_rays(const fr_camera& camera, const RenderSettings& s) {
   const ImageWindow& win = s.window;
   if (win.full_width_px <= 0) return make_camera_rays(camera, s.width_px, s.height_px);
-  return window_rays(make_camera_rays(camera, win.full_width_px, win.full_height_px), win.x0_px,
-                     win.y0_px, s.width_px, s.height_px, std::max(1, win.stride_x_px),
-                     std::max(1, win.stride_y_px));
+  return make_camera_rays(camera, win.full_width_px, win.full_height_px);
 }
 
 size_t round_up_div(size_t n, size_t d) {
@@ -102,7 +101,7 @@ void Renderer::render_sample(const SceneInfo& info, const SceneState& state,
   cl_command_queue q = runtime_.queue();
 
   const fr_frame_constants fc =
-      make_frame_constants(rays_for(state.camera, settings), state, settings, sample_index);
+      make_frame_constants(whole_image_rays(state.camera, settings), state, settings, sample_index);
   cl_check(
       clEnqueueWriteBuffer(q, constants_.get(), CL_FALSE, 0, sizeof fc, &fc, 0, nullptr, nullptr),
       "clEnqueueWriteBuffer", "uploading frame constants");

@@ -212,6 +212,20 @@ std::vector<SettingSpec> make_table() {
           "footprint at\nthe surface comes near float's resolution), \"float\", or \"double\" (the "
           "accuracy reference)."),
       "Precision"));
+  t.push_back(choice_setting<&S::render, &R::integrator>(
+      "render.integrator",
+      "How light is computed: \"fast\" (direct light, soft shadows, occlusion; the explorer's "
+      "while flying) or\n\"path\" (path tracing: light from the sky and the lights bouncing "
+      "between surfaces; noisy,\nconverging as render.samples accumulate)."));
+  t.push_back(int_setting<&S::render, &R::path_max_bounces>(
+      "render.path_max_bounces", 1, 64,
+      "Path tracing: surface interactions a path may have after the first hit (Russian roulette "
+      "ends most\nsooner)."));
+  t.push_back(int_setting<&S::render, &R::seed>(
+      "render.seed", 0, 1 << 30,
+      "Path tracing and depth of field: the random numbers' seed. A pixel's samples depend only "
+      "on the pixel,\nthe sample's index and this seed, so an image rendered in bands or by "
+      "several ranks is\nthe same."));
   t.push_back(int_setting<&S::render, &R::samples>(
       "render.samples", 1, 4096,
       "Jittered samples accumulated per image: 1 is no anti-aliasing; depth of field needs "

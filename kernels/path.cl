@@ -1,0 +1,165 @@
+/* path.cl — the path integrator (render.integrator = "path"), pasted instead of render.cl: one
+ * sample of the light arriving through each pixel, by a random walk from surface to surface. The
+ * kernel has render.cl's name and arguments, so the host runs either the same way, and the
+ * samples accumulate in film.cl's running mean.
+ *
+ * At each hit: next-event estimation towards every light (a shadow ray, hard: shadow.cl built
+ * with FR_SHADOW_HARD), then the next direction: the mirror one with the surface's reflectivity as
+ * its probability, else a diffuse one, cosine-weighted, so that a Lambertian surface's throughput
+ * is its albedo. A path that leaves the bounds sees the sky (shade.cl's sky_color, radiance): the
+ * environment is found only by bounces, and the lights (points and directions, which no bounce
+ * can hit) only by the estimation, so no light is counted twice. From the third interaction on,
+ * Russian roulette: a path goes on with probability q = max(throughput) and its throughput is
+ * divided by q, which keeps the mean.
+ *
+ * Units: a light's colour is what a white Lambertian surface facing it reflects (as in shade.cl),
+ * so its irradiance is pi times that, and the diffuse BRDF albedo / pi turns it back into
+ * albedo * cos * colour.
+ *
+ * Not here (the fast integrator's approximations of what this computes): ambient light and
+ * occlusion, soft-shadow penumbrae, fog and glow. */
+
+#ifndef FR_APPLY_LENS
+#define FR_APPLY_LENS(ray, px, py)
+#endif
+#ifndef FR_CONE_START
+#define FR_CONE_START(t, ao_steps)
+#endif
+
+/* pixel_random's streams: the lens takes 1 and 2; interaction k takes these four. */
+#define FR_PATH_STREAM(k, i) (16U + 4U * (uint)(k) + (uint)(i))
+
+/* A unit vector around the unit n with density cos(theta) / pi, from two uniform numbers: a
+ * uniform point of the unit disc lifted onto the hemisphere (Malley's method), in the basis of
+ * Duff et al. 2017 ("Building an orthonormal basis, revisited"), which has no branch. */
+vec3_t cosine_direction(vec3_t n, real_t u1, real_t u2) {
+  const real_t sign = lane_select(n.z >= (real_t)0, 1, -1);
+  const real_t a = (real_t)-1 / (sign + n.z);
+  const real_t b = n.x * n.y * a;
+  const vec3_t t = v3((real_t)1 + sign * n.x * n.x * a, sign * b, -sign * n.x);
+  const vec3_t s = v3(b, sign + n.y * n.y * a, -n.y);
+  const real_t r = sqrt(u1), phi = (real_t)(2 * M_PI_F) * u2;
+  const real_t z = sqrt(fmax((real_t)1 - u1, (real_t)0));
+  return v3_add(v3_add(v3_scale(t, r * cos(phi)), v3_scale(s, r * sin(phi))), v3_scale(n, z));
+}
+
+__kernel void fr_render(__constant const fr_frame_constants* fc,
+                        __constant const scene_params_t* params, __global float* hdr_rgba,
+                        __global float* depth, __global float* steps_out,
+                        __global float* factors_out, __global uchar* status_out,
+                        __global float* normal_out, __global float* albedo_out,
+                        __global uint* counts_out, __global const float* cone_t,
+                        __global const float* cone_ao_steps) {
+  FR_COUNTS_BEGIN;
+  const int tile_x = get_global_id(0) * FR_TILE_W;
+  const int tile_y = get_global_id(1) * FR_TILE_H;
+  const real_t px = (real_t)tile_x + FR_LANE_X;
+  const real_t py = (real_t)tile_y + FR_LANE_Y;
+  const lane_uint_t ix = image_pixel_x(fc, px), iy = image_pixel_y(fc, py);
+
+  real_t path_t;
+  ray_t ray = camera_ray(fc, px, py, (real_t)fc->jitter_x, (real_t)fc->jitter_y, &path_t);
+  FR_APPLY_LENS(ray, px, py);
+
+  vec3_t radiance = v3s(0, 0, 0);
+  vec3_t throughput = v3s(1, 1, 1);
+  mask_t active = FR_MASK_TRUE;
+  pixel_passes_t out;
+  out.depth = (real_t)INFINITY;
+  out.steps = (real_t)0;
+  out.status = (real_t)0;
+  out.ao = (real_t)1;
+  out.shadow = (real_t)1;
+  out.normal = v3s(0, 0, 0);
+  out.albedo = v3s(0, 0, 0);
+  /* Where the cone pre-pass (cone.cl) lets the primary ray start. */
+  real_t cone_from = (real_t)0, cone_ao = (real_t)0;
+  FR_CONE_START(cone_from, cone_ao);
+  for (int k = 0; k <= fc->path_max_bounces; ++k) {
+    FR_COUNT_BOUNCE(k);
+    /* Rays after the first have the mirror bounces' budgets (frame_constants.h). */
+    const int max_steps = k == 0 ? fc->max_steps : fc->bounce_max_steps;
+    const int shadow_steps = k == 0 ? fc->shadow_max_steps : fc->bounce_shadow_max_steps;
+    march_result_t m = march(ray, path_t, k == 0 ? cone_from : (real_t)0, max_steps, fc,
+                             params FR_COUNTS_ARG);
+    const mask_t hit = active & m.hit;
+    const mask_t miss = active & !m.hit & !m.inside;
+    radiance = v3_add(radiance, v3_select(miss, v3_mul(throughput, sky_color(ray.dir, fc)),
+                                          v3s(0, 0, 0)));
+    if (k == 0) {
+      out.depth = lane_select(m.hit | m.inside, path_t + m.t, INFINITY);
+      out.steps = m.steps;
+      out.status = lane_select(m.inside, FR_RAY_INSIDE,
+                               lane_select(m.out_of_steps, FR_RAY_OUT_OF_STEPS,
+                                           lane_select(m.hit, FR_RAY_HIT, FR_RAY_MISS)));
+    }
+    /* A path that starts inside the solid sees no light (march.cl). */
+    active = hit;
+    if (!any_lane(active)) break;
+
+    const vec3_t p = v3_mad(ray.origin, ray.dir, m.t);
+    const real_t h = hit_threshold(fc, path_t + m.t, p);
+    /* Normals at the scale of the pixel's footprint, as render.cl takes them. */
+    const real_t normal_h = fmax(h, (real_t)(0.5f * fc->pixel_angle_rad) * (path_t + m.t));
+    const vec3_t gradient = calc_normal(p, normal_h, params);
+    FR_COUNT(FR_COUNT_NORMALS, hit, FR_NORMAL_EVALS);
+    vec3_t n = v3_select(v3_length2(gradient) > (real_t)0, v3_normalize(gradient),
+                         v3_neg(ray.dir));
+    /* A normal that faces away from the ray (estimated across a thin feature): the side the ray
+     * came from, so that bounces and lights stay on it. */
+    n = v3_select(v3_dot(n, ray.dir) > (real_t)0, v3_neg(n), n);
+    const surface_t surface = surface_at(p);
+    FR_COUNT(FR_COUNT_SURFACE, hit, FR_HAS_SURFACE);
+    /* Energy-conserving: an albedo above 1 would create light. */
+    const vec3_t albedo = v3_min(v3_max(surface.albedo, v3s(0, 0, 0)), v3s(1, 1, 1));
+    const real_t mirror_chance = clamp(surface.reflectivity, (real_t)0, (real_t)1);
+    if (k == 0) {
+      out.normal = v3_select(hit, n, out.normal);
+      out.albedo = v3_select(hit, albedo, out.albedo);
+    }
+
+    /* Next-event estimation through the diffuse part: each light, if nothing is in the way. */
+    light_sample_t lights[FR_MAX_LIGHTS];
+    mask_t facing[FR_MAX_LIGHTS];
+    real_t visible[FR_MAX_LIGHTS];
+    const int count = min(fc->light_count, FR_MAX_LIGHTS);
+    for (int i = 0; i < count; ++i) {
+      lights[i] = sample_light(i, p, fc);
+      facing[i] = hit & (v3_dot(n, lights[i].to_light) > (real_t)0);
+      visible[i] = (real_t)1;
+    }
+    FR_APPLY_SHADOWS(visible, p, n, h, lights, facing, count, shadow_steps);
+    vec3_t direct = v3s(0, 0, 0);
+    for (int i = 0; i < count; ++i) {
+      if (!any_lane(facing[i])) continue;
+      const real_t cos_l = v3_dot(n, lights[i].to_light);
+      direct = v3_add(direct,
+                      v3_scale(lights[i].radiance, lane_select(facing[i], visible[i] * cos_l, 0)));
+    }
+    const vec3_t diffuse_weight = v3_scale(v3_mul(throughput, albedo), (real_t)1 - mirror_chance);
+    radiance = v3_add(radiance, v3_select(hit, v3_mul(diffuse_weight, direct), v3s(0, 0, 0)));
+    if (k == fc->path_max_bounces) break;
+
+    /* The next interaction: mirror or diffuse, chosen with the surface's odds. */
+    const real_t u_lobe = pixel_random(fc, ix, iy, FR_PATH_STREAM(k, 0));
+    const real_t u1 = pixel_random(fc, ix, iy, FR_PATH_STREAM(k, 1));
+    const real_t u2 = pixel_random(fc, ix, iy, FR_PATH_STREAM(k, 2));
+    const mask_t mirror = u_lobe < mirror_chance;
+    const vec3_t mirrored = v3_mad(ray.dir, n, -2 * v3_dot(ray.dir, n));
+    ray.dir = v3_select(mirror, mirrored, cosine_direction(n, u1, u2));
+    ray.origin = v3_mad(p, n, 2 * h);
+    throughput = v3_select(mirror, throughput, v3_mul(throughput, albedo));
+    if (k >= 2) {
+      const real_t q = clamp(fmax(throughput.x, fmax(throughput.y, throughput.z)), (real_t)0.05,
+                             (real_t)1);
+      active &= pixel_random(fc, ix, iy, FR_PATH_STREAM(k, 3)) < q;
+      throughput = v3_scale(throughput, (real_t)1 / q);
+    }
+    path_t += m.t;
+  }
+
+  FR_COUNTS_END(counts_out);
+  out.color = radiance;
+  film_write(tile_x, tile_y, out, fc, hdr_rgba, depth, steps_out, factors_out, status_out,
+             normal_out, albedo_out);
+}

@@ -1,0 +1,249 @@
+// The path integrator (render.integrator = "path", kernels/path.cl) against answers known without
+// it: the white furnace (a diffuse surface under a uniform sky of radiance L shows albedo x L
+// where it sees only sky, and L everywhere, however concave, when its albedo is 1: no energy is
+// created or lost), Lambert's law for a directional light on the unit ball (the exact normal from
+// the pixel's ray, in double), and determinism (a pixel's samples depend only on the pixel, the
+// sample index and the seed, so an image rendered in bands is the whole image's, byte for byte),
+// and convergence (the error against a long render falls as 1 / sqrt(samples)).
+#include "plugin/scene_instance.hpp"
+#include "render/camera.hpp"
+#include "render/renderer.hpp"
+#include "test_support.hpp"
+
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace fr {
+namespace {
+
+// One directional light (travelling along `direction`) of colour `rgb`, replacing the scene's.
+fr_light directional(glm::dvec3 direction, glm::dvec3 rgb) {
+  fr_light l{};
+  l.struct_size = sizeof l;
+  l.kind = FR_LIGHT_DIRECTIONAL;
+  for (int k = 0; k < 3; ++k) {
+    l.vector[k] = direction[k];
+    l.color[k] = rgb[k];
+  }
+  l.intensity = 1;
+  return l;
+}
+
+// Path tracing under a uniform sky of radiance `sky`, with no light (one of intensity 0: without
+// any light the host adds one).
+RenderSettings furnace(float albedo, float sky, int width_px, int height_px) {
+  RenderSettings s;
+  s.integrator = Integrator::Path;
+  s.width_px = width_px;
+  s.height_px = height_px;
+  s.albedo = {albedo, albedo, albedo};
+  s.sky_zenith = s.sky_horizon = {sky, sky, sky};
+  return s;
+}
+
+SceneState dark_state(const SceneInfo& info) {
+  SceneState state = make_default_state(info);
+  state.lights = {directional({0, -1, 0}, {0, 0, 0})};
+  return state;
+}
+
+struct PixelStats {
+  int hits = 0;
+  double mean = 0;   // of the red channel over the hit pixels
+  double worst = 0;  // largest |value - expected| among them
+  int far_off = 0;   // pixels more than `tolerance` from the expected value
+};
+
+PixelStats hit_pixel_stats(const FrameImage& image, double expected, double tolerance) {
+  PixelStats st;
+  double sum = 0;
+  for (size_t i = 0; i < image.depth.size(); ++i) {
+    if (!std::isfinite(image.depth[i])) continue;
+    ++st.hits;
+    for (int c = 0; c < 3; ++c) {
+      const double v = image.linear_rgba[4 * i + c];
+      if (c == 0) sum += v;
+      st.worst = std::max(st.worst, std::abs(v - expected));
+      if (std::abs(v - expected) > tolerance) ++st.far_off;
+    }
+  }
+  st.mean = st.hits > 0 ? sum / st.hits : 0;
+  return st;
+}
+
+TEST(WhiteFurnace, AConvexDiffuseBallShowsAlbedoTimesTheSky) {
+  Renderer renderer(test::runtime());
+  const auto scene = test::unit_ball();
+  ASSERT_TRUE(scene);
+  const float sky = 0.6f;
+  for (float albedo : {1.0f, 0.5f}) {
+    SCOPED_TRACE("albedo " + std::to_string(albedo));
+    RenderSettings s = furnace(albedo, sky, 48, 32);
+    const FrameImage image =
+        render_all_samples(renderer, scene->info, dark_state(scene->info), s, true);
+    // Every bounce off a convex surface leaves it for the sky: albedo x L exactly, each sample.
+    const PixelStats st = hit_pixel_stats(image, albedo * sky, 0.01);
+    EXPECT_GT(st.hits, 200) << "the ball is in view";
+    EXPECT_NEAR(st.mean, albedo * sky, 0.002 * sky);
+    EXPECT_LE(st.far_off, st.hits / 100) << "worst " << st.worst;
+    // The sky itself, where the rays miss.
+    for (size_t i = 0; i < image.depth.size(); ++i) {
+      if (std::isfinite(image.depth[i])) continue;
+      ASSERT_NEAR(image.linear_rgba[4 * i], sky, 1e-6);
+    }
+  }
+}
+
+TEST(WhiteFurnace, AConcaveSurfaceOfAlbedoOneDisappears) {
+  // A Menger sponge of albedo 1 under a uniform sky: light bounces between its faces, none is
+  // absorbed, so every pixel shows the sky's radiance (paths longer than the bounce limit are
+  // cut: a small loss, which this many bounces keeps below the tolerance).
+  Renderer renderer(test::runtime());
+  const auto scene = test::plain_sponge();
+  ASSERT_TRUE(scene);
+  const float sky = 0.5f;
+  RenderSettings s = furnace(1.0f, sky, 40, 30);
+  s.path_max_bounces = 64;
+  s.samples = 16;
+  const FrameImage image =
+      render_all_samples(renderer, scene->info, dark_state(scene->info), s, true);
+  const PixelStats st = hit_pixel_stats(image, sky, 0.05 * sky);
+  EXPECT_GT(st.hits, 300) << "the sponge is in view";
+  EXPECT_NEAR(st.mean, sky, 0.01 * sky);
+  EXPECT_LE(st.far_off, st.hits / 50) << "worst " << st.worst;
+
+  // Albedo 0.5: darker than one bounce's 0.5 L nowhere, and darker than L everywhere; crevices,
+  // which see more of the sponge than of the sky, darker than faces in the open.
+  s.albedo = {0.5f, 0.5f, 0.5f};
+  const FrameImage half =
+      render_all_samples(renderer, scene->info, dark_state(scene->info), s, true);
+  const PixelStats h = hit_pixel_stats(half, 0.5 * sky, sky);
+  EXPECT_LT(h.mean, 0.5 * sky) << "some light is lost at every bounce, and a crevice sees less sky";
+  EXPECT_GT(h.mean, 0.25 * sky);
+}
+
+// Radiance from a directional light on a diffuse ball under a black sky: albedo x cos(theta) x
+// colour (shade.cl's convention: the colour is what a white surface facing the light reflects),
+// theta from the exact normal where the pixel's ray meets the unit sphere.
+TEST(DirectLight, FollowsLambertsLawOnTheBall) {
+  Renderer renderer(test::runtime());
+  const auto scene = test::unit_ball();
+  ASSERT_TRUE(scene);
+  RenderSettings s = furnace(0.8f, 0.0f, 64, 48);
+  // A fine hit threshold: this DE is half the distance, so a hit stops about 2 k t pixel-angle
+  // short of the sphere, where the radial normal is tilted from the exact one.
+  s.hit_threshold_k = 0.05f;
+  const glm::dvec3 travel = glm::normalize(glm::dvec3(-1.0, -0.3, 0.0));
+  const glm::dvec3 colour(0.9, 0.6, 0.3);
+  SceneState state = make_default_state(scene->info);
+  state.lights = {directional(travel, colour)};
+  const FrameImage image = render_all_samples(renderer, scene->info, state, s, true);
+  const CameraRays rays = make_camera_rays(state.camera, s.width_px, s.height_px);
+  int compared = 0, lit = 0;
+  for (int y = 0; y < s.height_px; ++y)
+    for (int x = 0; x < s.width_px; ++x) {
+      const glm::dvec3 d = camera_ray_dir(rays, x, y);
+      const double b = glm::dot(rays.eye, d), c = glm::dot(rays.eye, rays.eye) - 1;
+      if (b * b - c <= 0) continue;
+      const glm::dvec3 n = rays.eye + d * (-b - std::sqrt(b * b - c));
+      // Away from the silhouette, where a pixel's footprint straddles two answers, and from the
+      // terminator: a shadow ray that grazes the ball passes within the hard shadow's margin (a
+      // few hit thresholds, which this DE, half the distance, halves again) and counts as blocked.
+      const double cos_view = -glm::dot(n, d), cos_light = -glm::dot(n, travel);
+      if (cos_view < 0.3 || std::abs(cos_light) < 0.3) continue;
+      ++compared;
+      lit += cos_light > 0;
+      const size_t i = static_cast<size_t>(y) * s.width_px + x;
+      for (int k = 0; k < 3; ++k) {
+        const double expected = 0.8 * std::max(0.0, cos_light) * colour[k];
+        ASSERT_NEAR(image.linear_rgba[4 * i + k], expected, 0.02)
+            << x << "," << y << " channel " << k << " (cos " << cos_light << ")";
+      }
+    }
+  EXPECT_GT(compared, 200);
+  EXPECT_GT(lit, compared / 4);
+  EXPECT_LT(lit, compared * 3 / 4) << "both sides of the terminator";
+}
+
+// The Mandelbulb path-traced with a sun and a sky: an image in two bands (poster rendering) and
+// the whole image agree byte for byte; another seed gives other noise, the same seed the same.
+TEST(PathIntegrator, IsAFunctionOfPixelSampleAndSeed) {
+  Renderer renderer(test::runtime());
+  const auto scene = test::mandelbulb();
+  ASSERT_TRUE(scene);
+  const SceneState state = make_default_state(scene->info);
+  RenderSettings whole_settings;
+  whole_settings.integrator = Integrator::Path;
+  whole_settings.width_px = 40;
+  whole_settings.height_px = 24;
+  whole_settings.samples = 2;
+  const FrameImage whole = render_all_samples(renderer, scene->info, state, whole_settings, true);
+  const int split = 11;  // not a multiple of the tile height
+  for (const auto& [y0, rows] : {std::pair{0, split}, std::pair{split, 24 - split}}) {
+    RenderSettings band = whole_settings;
+    band.window = ImageWindow{40, 24, 0, y0};
+    band.height_px = rows;
+    const FrameImage part = render_all_samples(renderer, scene->info, state, band, true);
+    for (int y = 0; y < rows; ++y)
+      for (int x = 0; x < 40; ++x) {
+        const size_t a = static_cast<size_t>(y) * 40 + x, b = static_cast<size_t>(y0 + y) * 40 + x;
+        for (int c = 0; c < 4; ++c)
+          ASSERT_EQ(part.linear_rgba[4 * a + c], whole.linear_rgba[4 * b + c])
+              << "pixel " << x << "," << y0 + y;
+      }
+  }
+  RenderSettings reseeded = whole_settings;
+  reseeded.seed = 7;
+  const FrameImage other = render_all_samples(renderer, scene->info, state, reseeded, true);
+  const FrameImage again = render_all_samples(renderer, scene->info, state, reseeded, true);
+  EXPECT_EQ(other.linear_rgba, again.linear_rgba);
+  EXPECT_NE(other.linear_rgba, whole.linear_rgba);
+}
+
+// The error of a path-traced image falls as 1 / sqrt(samples): against a 2048-sample reference
+// of another seed (independent noise), the RMS error at 8, 32 and 128 samples lies on a line of
+// slope -1/2 in log-log, within 20% (the reference's own noise adds about 3% to the last error).
+TEST(PathIntegrator, ErrorFallsAsOneOverTheSquareRootOfSamples) {
+  Renderer renderer(test::runtime());
+  const auto scene = test::mandelbulb();
+  ASSERT_TRUE(scene);
+  const SceneState state = make_default_state(scene->info);
+  RenderSettings s;
+  s.integrator = Integrator::Path;
+  s.width_px = 24;
+  s.height_px = 16;
+  s.samples = 2048;
+  s.seed = 1;
+  const FrameImage reference = render_all_samples(renderer, scene->info, state, s, true);
+  s.seed = 0;
+  std::vector<double> log_n, log_error;
+  for (int n : {8, 32, 128}) {
+    s.samples = n;
+    const FrameImage image = render_all_samples(renderer, scene->info, state, s, true);
+    double sum = 0;
+    for (size_t i = 0; i < image.linear_rgba.size(); ++i)
+      if (i % 4 != 3) sum += std::pow(image.linear_rgba[i] - reference.linear_rgba[i], 2.0);
+    const double rms = std::sqrt(sum / (image.linear_rgba.size() * 3 / 4));
+    ASSERT_GT(rms, 0) << n << " samples: noise is expected";
+    log_n.push_back(std::log(n));
+    log_error.push_back(std::log(rms));
+  }
+  // Least-squares slope of log(error) against log(samples).
+  const double mx = (log_n[0] + log_n[1] + log_n[2]) / 3;
+  const double my = (log_error[0] + log_error[1] + log_error[2]) / 3;
+  double sxy = 0, sxx = 0;
+  for (int i = 0; i < 3; ++i) {
+    sxy += (log_n[i] - mx) * (log_error[i] - my);
+    sxx += (log_n[i] - mx) * (log_n[i] - mx);
+  }
+  EXPECT_NEAR(sxy / sxx, -0.5, 0.1) << "errors " << std::exp(log_error[0]) << ", "
+                                    << std::exp(log_error[1]) << ", " << std::exp(log_error[2]);
+}
+
+}  // namespace
+}  // namespace fr
