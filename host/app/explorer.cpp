@@ -1,4 +1,5 @@
 #include "app/explorer.hpp"
+#include "app/noise_estimate.hpp"
 
 #include "image/exr_write.hpp"
 #include "image/poster.hpp"
@@ -169,6 +170,10 @@ const FrameView* Explorer::render(int window_width_px, int window_height_px) {
   // else changed is scaled, as with reuse off, and keeps nothing of the frames before it.
   const bool temporal = settings_.explorer.temporal && !quick_frame_;
   if (scene_changed_) reuse_.reset();
+  // With the path integrator chosen, a parked view accumulates its samples; flying stays fast.
+  const bool path = settings_.render.integrator == Integrator::Path;
+  frames_.set_full_quality_samples(path ? settings_.explorer.path_samples
+                                        : settings_.explorer.full_quality_samples);
   const FramePlan plan = frames_.plan(changed_, temporal && !scene_changed_);
   changed_ = false;
   scene_changed_ = false;
@@ -177,6 +182,10 @@ const FrameView* Explorer::render(int window_width_px, int window_height_px) {
   stats_.refined = plan.done;
   if (plan.done) return nullptr;
   RenderSettings s = settings_.render;
+  // Moving frames, and the quick frame after an edit, on the fast integrator: a path-traced
+  // sample costs several of its frames, and one alone is mostly noise.
+  const bool path_sample = path && plan.still && !quick_frame_;
+  if (!path_sample) s.integrator = Integrator::Fast;
   const int window_w = std::max(1, window_width_px), window_h = std::max(1, window_height_px);
   LatticePhase phase;  // strides 1: the whole window (a full frame kept for reuse)
   if (plan.lattice) {
@@ -210,16 +219,18 @@ const FrameView* Explorer::render(int window_width_px, int window_height_px) {
   }
   // The frames whose pixels are kept for reuse: the lattices, and the first full-resolution
   // sample once parked (the next flight starts from it).
-  const bool keep =
-      temporal && !quick && plan.sample_index == 0 && (plan.lattice || plan.resolution_scale == 1);
+  const bool keep = temporal && !quick && !path_sample && plan.sample_index == 0 &&
+                    (plan.lattice || plan.resolution_scale == 1);
   const auto start = std::chrono::steady_clock::now();
   last_ = FrameView{};  // the last frame's memory may go with a failing worker
   try {
     // Steps and ray status (with reuse, every pass: the depth) on every sample, so that one
     // kernel serves the whole refinement.
-    const Readback outputs = temporal && !quick ? Readback::Everything : Readback::DisplayAndSteps;
+    // Path-traced samples: every pass, for the linear mean that the noise estimate reads.
+    const Readback outputs =
+        (temporal && !quick) || path_sample ? Readback::Everything : Readback::DisplayAndSteps;
     last_ = worker_.render_frame(slot.scene->info, slot.state, s, plan.sample_index, outputs,
-                                 keep                     ? Readback::Everything
+                                 keep || path_sample      ? Readback::Everything
                                  : plan.sample_index == 0 ? Readback::DisplayAndSteps
                                                           : Readback::Display);
   } catch (const RenderWorkerFailure& e) {
@@ -271,6 +282,20 @@ const FrameView* Explorer::render(int window_width_px, int window_height_px) {
   } else if (plan.sample_index == 0) {
     reuse_.reset();  // a scaled frame: nothing of it can be carried
   }
+  // How far the path-traced view has come, from how much its latest sample moved the mean.
+  stats_.path_samples = path_sample ? plan.sample_index + 1 : 0;
+  if (path_sample && last_.linear_rgba) {
+    const size_t values = 4 * last_.pixel_count();
+    if (plan.sample_index == 0) stats_.path_noise.reset();
+    if (previous_linear_.size() == values)
+      if (const auto e = estimate_noise(previous_linear_.data(), last_.linear_rgba,
+                                        last_.pixel_count(), stats_.path_samples))
+        stats_.path_noise = e->relative();
+    previous_linear_.assign(last_.linear_rgba, last_.linear_rgba + values);
+  } else {
+    previous_linear_.clear();
+    stats_.path_noise.reset();
+  }
   stats_.frame_ms = frame_ms;
   if (quick) {
     // Its time is a build's and an unoptimized kernel's: no measure of the frames to come, which
@@ -293,7 +318,8 @@ std::optional<double> Explorer::focus_at(int x, int y, int width_px, int height_
   s.window = ImageWindow{width_px, height_px, x, y, 1, 1};
   s.width_px = s.height_px = 1;
   s.samples = 1;
-  s.aperture_radius = 0;  // the pixel's own ray, not a lens sample's
+  s.integrator = Integrator::Fast;  // only the primary march matters
+  s.aperture_radius = 0;            // the pixel's own ray, not a lens sample's
   // One ray can afford to come closer than a frame's rays do (a tenth of their hit threshold,
   // then plain DE steps towards the surface).
   s.hit_threshold_k *= 0.1f;
@@ -348,7 +374,8 @@ bool Explorer::screenshot(const std::filesystem::path& file, int width_px, int h
   RenderSettings s = settings_.render;
   s.width_px = width_px;
   s.height_px = height_px;
-  s.samples = frames_.settings().full_quality_samples;
+  s.samples = s.integrator == Integrator::Path ? settings_.explorer.path_samples
+                                               : settings_.explorer.full_quality_samples;
   SceneSlot& slot = current();
   if (width_px < 1 || height_px < 1 || width_px > 65535 || height_px > 65535) {
     *error = "screenshot size " + std::to_string(width_px) + "x" + std::to_string(height_px) +

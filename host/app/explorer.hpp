@@ -16,6 +16,7 @@
 #include <deque>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace fr {
 
@@ -30,6 +31,11 @@ struct ExplorerStats {
   ReuseCounts reuse;
   int sample_index = 0;
   bool refined = false;  // full quality reached and shown
+  // A parked view being path-traced (render.integrator = "path"): its samples so far (0: not
+  // path-traced), and the noise left, as the mean's standard error relative to its brightness
+  // (app/noise_estimate.hpp; from the second sample on).
+  int path_samples = 0;
+  std::optional<double> path_noise;
   double de_steps_per_pixel = 0;
   double out_of_steps_fraction = 0;  // primary rays of the last full frame that ran out of steps
   Precision precision = Precision::Float;  // what the last frame ran in (auto resolved)
@@ -136,6 +142,7 @@ class Explorer {
   // More than the camera changed since the last frame: earlier frames' pixels are not reused.
   bool scene_changed_ = true;
   TemporalReuse reuse_;
+  std::vector<float> previous_linear_;  // the path-traced view's mean before its latest sample
   std::optional<std::pair<int, int>> pending_focus_;  // a click, focused at the next render
   uint64_t lattice_frames_ = 0;                       // the lattice phase's clock
   bool quick_frame_ = false;  // the next frame is a quick build (scene_code_changed)

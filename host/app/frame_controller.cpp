@@ -51,6 +51,7 @@ FramePlan FrameController::plan(bool changed, bool reuse) {
       next_sample_ = 0;
     }
     p.resolution_scale = 1;
+    p.still = true;
     p.sample_index = next_sample_;
     p.done = next_sample_ >= settings_.full_quality_samples;
     if (!p.done) ++next_sample_;

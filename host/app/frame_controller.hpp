@@ -34,6 +34,7 @@ struct FramePlan {
   int stride_y = 1;
   int sample_index = 0;  // 0 starts a new accumulation
   bool done = false;     // full quality reached: nothing left to render
+  bool still = false;    // nothing changed: a sample of the parked view's accumulation
 };
 
 class FrameController {
@@ -49,6 +50,9 @@ class FrameController {
   double scale() const { return moving_scale_; }
   double lattice_share() const { return moving_share_; }  // wanted share of pixels traced
   const FrameControllerSettings& settings() const { return settings_; }
+  // Samples a parked view accumulates (the explorer's, for the integrator in use); the refinement
+  // under way goes on to the new count.
+  void set_full_quality_samples(int samples) { settings_.full_quality_samples = samples; }
   void fix_lattice(int stride_x, int stride_y) {
     settings_.fixed_stride_x = stride_x;
     settings_.fixed_stride_y = stride_y;

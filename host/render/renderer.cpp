@@ -330,6 +330,7 @@ FrameView view_of(const FrameImage& image) {
   v.steps = image.steps.size() == n && n > 0 ? image.steps.data() : nullptr;
   v.ray_status = image.ray_status.size() == n && n > 0 ? image.ray_status.data() : nullptr;
   v.depth = image.depth.size() == n && n > 0 ? image.depth.data() : nullptr;
+  v.linear_rgba = image.linear_rgba.size() == 4 * n && n > 0 ? image.linear_rgba.data() : nullptr;
   return v;
 }
 

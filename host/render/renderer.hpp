@@ -85,6 +85,7 @@ struct FrameView {
   const float* steps = nullptr;         // null when not read back
   const uint8_t* ray_status = nullptr;  // null when not read back
   const float* depth = nullptr;         // null when not read back (Everything)
+  const float* linear_rgba = nullptr;  // the accumulated mean; null when not read back (Everything)
   size_t pixel_count() const { return static_cast<size_t>(width_px) * height_px; }
 };
 // A view of `image` (its steps and ray status when it has them).

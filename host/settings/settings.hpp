@@ -25,6 +25,8 @@ struct ExplorerSettings {
   // (app/temporal_reuse.hpp) rather than render fewer pixels and stretch them.
   bool temporal = false;
   int full_quality_samples = 8;  // accumulated once it stops ("quality" presets: 2, 8, 32)
+  // Accumulated once it stops when render.integrator is "path" (flying stays on "fast").
+  int path_samples = 256;
   double mouse_sensitivity_deg_per_px = 0.15;
   bool invert_y = false;
   double speed = 1.0;  // fly speed, in distances-to-the-surface per second

@@ -387,6 +387,10 @@ std::vector<SettingSpec> make_table() {
       if (std::get<std::string>(v) == q.name) s.explorer.full_quality_samples = q.samples;
   };
   t.push_back(quality);
+  t.push_back(int_setting<&S::explorer, &E::path_samples>(
+      "explorer.path_samples", 1, 1 << 20,
+      "With render.integrator = \"path\": path-traced samples a view accumulates once the "
+      "camera stops\n(flying stays on the fast integrator; any change starts again)."));
 
   t.push_back(number_setting<&S::explorer, &E::mouse_sensitivity_deg_per_px>(
       "controls.mouse_sensitivity", 0, 10, true,

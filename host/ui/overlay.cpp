@@ -148,6 +148,13 @@ void draw_statistics(Explorer& explorer, const OverlayState& overlay) {
                 st.frame_ms > 0 ? 1000.0 / st.frame_ms : 0.0, st.resolution_scale, st.sample_index,
                 st.refined ? " (refined)" : "");
   }
+  if (st.path_samples > 0) {
+    if (st.path_noise)
+      ImGui::Text("path tracing: %d samples per pixel, noise %.2f%% of the brightness",
+                  st.path_samples, 100 * *st.path_noise);
+    else
+      ImGui::Text("path tracing: %d sample per pixel", st.path_samples);
+  }
   ImGui::Text("%.1f DE steps/pixel, surface %.4g away", st.de_steps_per_pixel, st.surface_distance);
   // Never silent: rays out of steps and the precision in use, in warning colour when it matters.
   const bool many = 100 * st.out_of_steps_fraction > kOutOfStepsWarnPercent;

@@ -454,6 +454,7 @@ FrameView RenderWorker::render_frame(const SceneInfo& info, const SceneState& st
   view.steps = at.steps;
   view.ray_status = at.ray_status;
   view.depth = at.depth;
+  view.linear_rgba = at.linear_rgba;
   return view;
 }
 
