@@ -3,6 +3,20 @@
  * the host will read (FR_OUTPUTS, renderer.hpp's Readback). Both integrators (render.cl, path.cl)
  * end with it. */
 
+/* Both integrators' kernel, fr_render: the arguments the host sets (renderer.cpp), and the tile
+ * of pixels each work-item renders, one per lane: (px, py) in this image's pixel coordinates. */
+#define FR_RENDER_KERNEL_PARAMS                                                                  \
+  __constant const fr_frame_constants *fc, __constant const scene_params_t *params,             \
+      __global float *hdr_rgba, __global float *depth, __global float *steps_out,               \
+      __global float *factors_out, __global uchar *status_out, __global float *normal_out,      \
+      __global float *albedo_out, __global uint *counts_out, __global const float *cone_t,      \
+      __global const float *cone_ao_steps
+#define FR_RENDER_TILE                                   \
+  const int tile_x = get_global_id(0) * FR_TILE_W;       \
+  const int tile_y = get_global_id(1) * FR_TILE_H;       \
+  const real_t px = (real_t)tile_x + FR_LANE_X;          \
+  const real_t py = (real_t)tile_y + FR_LANE_Y
+
 typedef struct pixel_passes_t {
   vec3_t color;  /* this sample's linear radiance */
   real_t depth;  /* the primary ray's: distance to the hit from the eye, +inf for a miss */

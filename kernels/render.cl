@@ -33,18 +33,9 @@
 #define FR_BOUNCE(ray, p, n, h)
 #endif
 
-__kernel void fr_render(__constant const fr_frame_constants* fc,
-                        __constant const scene_params_t* params, __global float* hdr_rgba,
-                        __global float* depth, __global float* steps_out,
-                        __global float* factors_out, __global uchar* status_out,
-                        __global float* normal_out, __global float* albedo_out,
-                        __global uint* counts_out, __global const float* cone_t,
-                        __global const float* cone_ao_steps) {
+__kernel void fr_render(FR_RENDER_KERNEL_PARAMS) {
   FR_COUNTS_BEGIN;
-  const int tile_x = get_global_id(0) * FR_TILE_W;
-  const int tile_y = get_global_id(1) * FR_TILE_H;
-  const real_t px = (real_t)tile_x + FR_LANE_X;
-  const real_t py = (real_t)tile_y + FR_LANE_Y;
+  FR_RENDER_TILE;
 
   real_t path_t;
   ray_t ray = camera_ray(fc, px, py, (real_t)fc->jitter_x, (real_t)fc->jitter_y, &path_t);

@@ -34,13 +34,20 @@ fr_light directional(glm::dvec3 direction, glm::dvec3 rgb) {
   return l;
 }
 
-// Path tracing under a uniform sky of radiance `sky`, with no light (one of intensity 0: without
-// any light the host adds one).
-RenderSettings furnace(float albedo, float sky, int width_px, int height_px) {
+// Path tracing at w x h, `samples` samples a pixel, the rest as by default.
+RenderSettings path_traced(int width_px, int height_px, int samples) {
   RenderSettings s;
   s.integrator = Integrator::Path;
   s.width_px = width_px;
   s.height_px = height_px;
+  s.samples = samples;
+  return s;
+}
+
+// Path tracing under a uniform sky of radiance `sky`, with no light (one of intensity 0: without
+// any light the host adds one).
+RenderSettings furnace(float albedo, float sky, int width_px, int height_px) {
+  RenderSettings s = path_traced(width_px, height_px, 1);
   s.albedo = {albedo, albedo, albedo};
   s.sky_zenith = s.sky_horizon = {sky, sky, sky};
   return s;
@@ -177,11 +184,7 @@ TEST(PathIntegrator, IsAFunctionOfPixelSampleAndSeed) {
   const auto scene = test::mandelbulb();
   ASSERT_TRUE(scene);
   const SceneState state = make_default_state(scene->info);
-  RenderSettings whole_settings;
-  whole_settings.integrator = Integrator::Path;
-  whole_settings.width_px = 40;
-  whole_settings.height_px = 24;
-  whole_settings.samples = 2;
+  const RenderSettings whole_settings = path_traced(40, 24, 2);
   const FrameImage whole = render_all_samples(renderer, scene->info, state, whole_settings, true);
   const int split = 11;  // not a multiple of the tile height
   for (const auto& [y0, rows] : {std::pair{0, split}, std::pair{split, 24 - split}}) {
@@ -213,11 +216,7 @@ TEST(PathIntegrator, ErrorFallsAsOneOverTheSquareRootOfSamples) {
   const auto scene = test::mandelbulb();
   ASSERT_TRUE(scene);
   const SceneState state = make_default_state(scene->info);
-  RenderSettings s;
-  s.integrator = Integrator::Path;
-  s.width_px = 24;
-  s.height_px = 16;
-  s.samples = 2048;
+  RenderSettings s = path_traced(24, 16, 2048);
   s.seed = 1;
   const FrameImage reference = render_all_samples(renderer, scene->info, state, s, true);
   s.seed = 0;
