@@ -68,9 +68,11 @@ __kernel void fr_render(FR_RENDER_KERNEL_PARAMS) {
   FR_CONE_START(cone_from, cone_ao);
   for (int k = 0; k <= fc->path_max_bounces; ++k) {
     FR_COUNT_BOUNCE(k);
-    /* Rays after the first have the mirror bounces' budgets (frame_constants.h). */
+    /* Rays after the first march with the mirror bounces' budget (frame_constants.h); every
+     * shadow ray with the primary hits' (the bounces' may be 0, which in the fast integrator
+     * means reflections without shadows, and here would let light through walls). */
     const int max_steps = k == 0 ? fc->max_steps : fc->bounce_max_steps;
-    const int shadow_steps = k == 0 ? fc->shadow_max_steps : fc->bounce_shadow_max_steps;
+    const int shadow_steps = fc->shadow_max_steps;
     march_result_t m = march(ray, path_t, k == 0 ? cone_from : (real_t)0, max_steps, fc,
                              params FR_COUNTS_ARG);
     const mask_t hit = active & m.hit;
