@@ -64,7 +64,9 @@ inline mask_t intersect_bounds(ray_t ray, scalar_t radius, real_t* t_enter, real
  *    (a ray creeping past an edge) as a miss. Either way `out_of_steps` is set, and the host
  *    counts these rays and warns when there are many. */
 #define FR_CANDIDATE_MAX_ERROR 4
-march_result_t march(ray_t ray, real_t path_t, real_t t_min, int max_steps,
+/* de_sign: 1 marches the solid's outside; -1 (per lane) its inside, the DE negated, towards where
+ * a ray inside a transparent solid leaves it (path.cl's glass). */
+march_result_t march(ray_t ray, real_t path_t, real_t t_min, int max_steps, real_t de_sign,
                      __constant const fr_frame_constants* fc,
                      __constant const scene_params_t* params FR_COUNTS_PARAM) {
   real_t t, t_exit;
@@ -87,7 +89,7 @@ march_result_t march(ray_t ray, real_t path_t, real_t t_min, int max_steps,
   real_t best_t = t, best_error = (real_t)FR_SCALAR_MAX;
   for (int i = 0; i < max_steps && any_lane(active); ++i) {
     vec3_t p = v3_mad(ray.origin, ray.dir, t);
-    real_t dist = scene_de(p, params) * (real_t)fc->step_scale;
+    real_t dist = de_sign * scene_de(p, params) * (real_t)fc->step_scale;
     FR_COUNT(FR_COUNT_MARCH, active, 1);
     real_t eps = hit_threshold(fc, path_t + t, p);
     FR_MARCH_TRACK(min_dist, dist, active);
@@ -158,7 +160,8 @@ march_result_t march(ray_t ray, real_t path_t, real_t t_min, int max_steps,
    * ever passing through. */
   const mask_t converged = hit;
   for (int i = 0; i < fc->refine_steps && any_lane(converged); ++i) {
-    const real_t dist = scene_de(v3_mad(ray.origin, ray.dir, t), params) * (real_t)fc->step_scale;
+    const real_t dist =
+        de_sign * scene_de(v3_mad(ray.origin, ray.dir, t), params) * (real_t)fc->step_scale;
     FR_COUNT(FR_COUNT_MARCH, converged, 1);
     t = lane_select(converged, t + fmax(dist, (real_t)0), t);
   }

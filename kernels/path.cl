@@ -16,6 +16,13 @@
  * so its irradiance is pi times that, and the diffuse BRDF albedo / pi turns it back into
  * albedo * cos * colour.
  *
+ * Glass (render.transmission of the light not mirrored): at its surface the ray is reflected with
+ * the Fresnel reflectance or refracted by Snell's law (index render.ior); inside, it marches the
+ * negated DE to where the solid ends, and the glass absorbs exp(-sigma t) of it on the way
+ * (Beer-Lambert; sigma = render.absorption per bounding radius times 1 - the surface's colour, so
+ * light of that colour passes). No light is estimated through glass: a caustic comes only from
+ * the sky, by bounces.
+ *
  * Not here (the fast integrator's approximations of what this computes): ambient light and
  * occlusion, soft-shadow penumbrae, fog and glow. */
 
@@ -26,8 +33,8 @@
 #define FR_CONE_START(t, ao_steps)
 #endif
 
-/* pixel_random's streams: the lens takes 1 and 2; interaction k takes these four. */
-#define FR_PATH_STREAM(k, i) (16U + 4U * (uint)(k) + (uint)(i))
+/* pixel_random's streams: the lens takes 1 and 2; interaction k takes these eight. */
+#define FR_PATH_STREAM(k, i) (16U + 8U * (uint)(k) + (uint)(i))
 
 /* A unit vector around the unit n with density cos(theta) / pi, from two uniform numbers: a
  * uniform point of the unit disc lifted onto the hemisphere (Malley's method), in the basis of
@@ -55,6 +62,9 @@ __kernel void fr_render(FR_RENDER_KERNEL_PARAMS) {
   vec3_t radiance = v3s(0, 0, 0);
   vec3_t throughput = v3s(1, 1, 1);
   mask_t active = FR_MASK_TRUE;
+  /* Inside the glass (render.transmission), and its absorption there per unit length. */
+  mask_t in_glass = FR_MASK_FALSE;
+  vec3_t sigma = v3s(0, 0, 0);
   pixel_passes_t out;
   out.depth = (real_t)INFINITY;
   out.steps = (real_t)0;
@@ -73,8 +83,16 @@ __kernel void fr_render(FR_RENDER_KERNEL_PARAMS) {
      * means reflections without shadows, and here would let light through walls). */
     const int max_steps = k == 0 ? fc->max_steps : fc->bounce_max_steps;
     const int shadow_steps = fc->shadow_max_steps;
-    march_result_t m = march(ray, path_t, k == 0 ? cone_from : (real_t)0, max_steps, fc,
-                             params FR_COUNTS_ARG);
+    /* Inside the glass the march looks for where the solid ends: its DE negated. */
+    march_result_t m = march(ray, path_t, k == 0 ? cone_from : (real_t)0, max_steps,
+                             lane_select(in_glass, -1, 1), fc, params FR_COUNTS_ARG);
+    /* What the glass absorbed on the way (Beer-Lambert), of whatever the ray reaches. */
+    const mask_t absorbing = active & in_glass;
+    if (any_lane(absorbing))
+      throughput = v3_select(absorbing,
+                             v3_mul(throughput, v3(exp(-sigma.x * m.t), exp(-sigma.y * m.t),
+                                                   exp(-sigma.z * m.t))),
+                             throughput);
     const mask_t hit = active & m.hit;
     const mask_t miss = active & !m.hit & !m.inside;
     radiance = v3_add(radiance, v3_select(miss, v3_mul(throughput, sky_color(ray.dir, fc)),
@@ -86,9 +104,15 @@ __kernel void fr_render(FR_RENDER_KERNEL_PARAMS) {
                                lane_select(m.out_of_steps, FR_RAY_OUT_OF_STEPS,
                                            lane_select(m.hit, FR_RAY_HIT, FR_RAY_MISS)));
     }
-    /* A path that starts inside the solid sees no light (march.cl). */
-    active = hit;
+    /* A ray that starts on the wrong side of the surface for its march (a refraction's or a
+     * reflection's origin pushed through a thin wall, or off a normal estimated at the pixel's
+     * scale): with glass, it is on the other side of the glass's surface, and marches again from
+     * there in the other mode; without, it is inside an opaque solid, where no light reaches. */
+    const mask_t wrong_side = fc->transmission > 0.0f ? active & m.inside : FR_MASK_FALSE;
+    in_glass ^= wrong_side;
+    active = hit | wrong_side;
     if (!any_lane(active)) break;
+    if (!any_lane(hit)) continue;
 
     const vec3_t p = v3_mad(ray.origin, ray.dir, m.t);
     const real_t h = hit_threshold(fc, path_t + m.t, p);
@@ -105,7 +129,13 @@ __kernel void fr_render(FR_RENDER_KERNEL_PARAMS) {
     FR_COUNT(FR_COUNT_SURFACE, hit, FR_HAS_SURFACE);
     /* Energy-conserving: an albedo above 1 would create light. */
     const vec3_t albedo = v3_min(v3_max(surface.albedo, v3s(0, 0, 0)), v3s(1, 1, 1));
-    const real_t mirror_chance = clamp(surface.reflectivity, (real_t)0, (real_t)1);
+    /* The lobes' odds at a hit from outside: mirror (the reflectivity), glass (that much of the
+     * rest, render.transmission), diffuse (what is left). From inside the glass: its surface. */
+    const real_t mirror_chance =
+        lane_select(in_glass, 0, clamp(surface.reflectivity, (real_t)0, (real_t)1));
+    const real_t glass_chance =
+        lane_select(in_glass, 1, ((real_t)1 - mirror_chance) * (real_t)fc->transmission);
+    const real_t diffuse_share = (real_t)1 - mirror_chance - glass_chance;
     if (k == 0) {
       out.normal = v3_select(hit, n, out.normal);
       out.albedo = v3_select(hit, albedo, out.albedo);
@@ -118,7 +148,7 @@ __kernel void fr_render(FR_RENDER_KERNEL_PARAMS) {
     const int count = min(fc->light_count, FR_MAX_LIGHTS);
     for (int i = 0; i < count; ++i) {
       lights[i] = sample_light(i, p, fc);
-      facing[i] = hit & (v3_dot(n, lights[i].to_light) > (real_t)0);
+      facing[i] = hit & (diffuse_share > (real_t)0) & (v3_dot(n, lights[i].to_light) > (real_t)0);
       visible[i] = (real_t)1;
     }
     FR_APPLY_SHADOWS(visible, p, n, h, lights, facing, count, shadow_steps);
@@ -129,23 +159,48 @@ __kernel void fr_render(FR_RENDER_KERNEL_PARAMS) {
       direct = v3_add(direct,
                       v3_scale(lights[i].radiance, lane_select(facing[i], visible[i] * cos_l, 0)));
     }
-    const vec3_t diffuse_weight = v3_scale(v3_mul(throughput, albedo), (real_t)1 - mirror_chance);
+    const vec3_t diffuse_weight = v3_scale(v3_mul(throughput, albedo), diffuse_share);
     radiance = v3_add(radiance, v3_select(hit, v3_mul(diffuse_weight, direct), v3s(0, 0, 0)));
     if (k == fc->path_max_bounces) break;
 
-    /* The next interaction: mirror or diffuse, chosen with the surface's odds. */
+    /* The next interaction, chosen with the lobes' odds. */
     const real_t u_lobe = pixel_random(fc, ix, iy, FR_PATH_STREAM(k, 0));
     const real_t u1 = pixel_random(fc, ix, iy, FR_PATH_STREAM(k, 1));
     const real_t u2 = pixel_random(fc, ix, iy, FR_PATH_STREAM(k, 2));
+    const real_t u_fresnel = pixel_random(fc, ix, iy, FR_PATH_STREAM(k, 3));
     const mask_t mirror = u_lobe < mirror_chance;
+    const mask_t glass = !mirror & (u_lobe < mirror_chance + glass_chance);
+    /* The glass's surface (a dielectric): reflected with the Fresnel reflectance F (unpolarised,
+     * exact; 1 beyond the critical angle), else refracted by Snell's law. n faces the ray, so
+     * eta is the index the ray leaves over the one it enters. */
+    const real_t eta = lane_select(in_glass, (real_t)fc->ior, (real_t)1 / (real_t)fc->ior);
+    const real_t cos_i = fmin(-v3_dot(ray.dir, n), (real_t)1);
+    const real_t sin2_t = eta * eta * fmax((real_t)1 - cos_i * cos_i, (real_t)0);
+    const real_t cos_t = sqrt(fmax((real_t)1 - sin2_t, (real_t)0));
+    const real_t r_s = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
+    const real_t r_p = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
+    const real_t fresnel = lane_select(sin2_t >= (real_t)1, 1, (real_t)0.5 * (r_s * r_s + r_p * r_p));
+    const mask_t refract = hit & glass & (u_fresnel >= fresnel);
     const vec3_t mirrored = v3_mad(ray.dir, n, -2 * v3_dot(ray.dir, n));
-    ray.dir = v3_select(mirror, mirrored, cosine_direction(n, u1, u2));
-    ray.origin = v3_mad(p, n, 2 * h);
-    throughput = v3_select(mirror, throughput, v3_mul(throughput, albedo));
+    const vec3_t refracted = v3_normalize(v3_mad(v3_scale(ray.dir, eta), n, eta * cos_i - cos_t));
+    const vec3_t next_dir = v3_select(
+        refract, refracted, v3_select(mirror | glass, mirrored, cosine_direction(n, u1, u2)));
+    /* Off the surface on the side the ray goes: through it when refracted. (Only where the ray
+     * hit: one on the wrong side keeps its ray for the other march.) */
+    ray.origin = v3_select(hit, v3_mad(p, n, lane_select(refract, -2 * h, 2 * h)), ray.origin);
+    ray.dir = v3_select(hit, next_dir, ray.dir);
+    /* Entering: the glass absorbs the complement of the surface's colour. */
+    const mask_t entering = refract & !in_glass;
+    sigma = v3_select(entering, v3_scale(v3_sub(v3s(1, 1, 1), albedo), (real_t)fc->absorption),
+                      sigma);
+    in_glass ^= refract;
+    /* Diffuse: the albedo (cosine-weighted sampling); mirror and glass: the lobe's odds equal its
+     * weight, nothing changes. */
+    throughput = v3_select(mirror | glass | !hit, throughput, v3_mul(throughput, albedo));
     if (k >= 2) {
       const real_t q = clamp(fmax(throughput.x, fmax(throughput.y, throughput.z)), (real_t)0.05,
                              (real_t)1);
-      active &= pixel_random(fc, ix, iy, FR_PATH_STREAM(k, 3)) < q;
+      active &= pixel_random(fc, ix, iy, FR_PATH_STREAM(k, 4)) < q;
       throughput = v3_scale(throughput, (real_t)1 / q);
     }
     path_t += m.t;

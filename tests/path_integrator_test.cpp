@@ -4,7 +4,8 @@
 // created or lost), Lambert's law for a directional light on the unit ball (the exact normal from
 // the pixel's ray, in double), and determinism (a pixel's samples depend only on the pixel, the
 // sample index and the seed, so an image rendered in bands is the whole image's, byte for byte),
-// and convergence (the error against a long render falls as 1 / sqrt(samples)).
+// convergence (the error against a long render falls as 1 / sqrt(samples)), and glass (invisible
+// under a uniform sky when it absorbs nothing; Beer-Lambert along the exact chord when it does).
 #include "plugin/scene_instance.hpp"
 #include "render/camera.hpp"
 #include "render/renderer.hpp"
@@ -132,6 +133,72 @@ TEST(WhiteFurnace, AConcaveSurfaceOfAlbedoOneDisappears) {
   const PixelStats h = hit_pixel_stats(half, 0.5 * sky, sky);
   EXPECT_LT(h.mean, 0.5 * sky) << "some light is lost at every bounce, and a crevice sees less sky";
   EXPECT_GT(h.mean, 0.25 * sky);
+}
+
+// Glass of index 1.5 that absorbs nothing, under a uniform sky: every path refracts and reflects
+// until it leaves for the sky, so every pixel shows the sky's radiance (the Fresnel odds and
+// Snell's law keep energy: a reflectance that did not sum with the transmittance to 1, or a
+// refraction that lost paths inside, would show), on the ball and in the sponge's crevices.
+TEST(Glass, ThatAbsorbsNothingIsInvisibleUnderAUniformSky) {
+  Renderer renderer(test::runtime());
+  for (const auto& scene : {test::unit_ball(), test::plain_sponge()}) {
+    ASSERT_TRUE(scene);
+    SCOPED_TRACE(scene->info.id);
+    const float sky = 0.4f;
+    RenderSettings s = furnace(0.7f, sky, 40, 30);
+    s.transmission = 1;
+    s.ior = 1.5f;
+    // Light can be trapped long by total internal reflection in the sponge's glass: at 64
+    // interactions 7% of it was still inside (cut paths are the one loss the test allows).
+    s.path_max_bounces = 1000;
+    s.samples = 4;
+    // A fine hit threshold: a ray goes through the glass's surface from 2 thresholds off it, and
+    // at this image's coarse one that would be more than the sponge's thinnest walls.
+    s.hit_threshold_k = 0.05f;
+    const FrameImage image =
+        render_all_samples(renderer, scene->info, dark_state(scene->info), s, true);
+    const PixelStats st = hit_pixel_stats(image, sky, 0.05 * sky);
+    EXPECT_GT(st.hits, 200);
+    EXPECT_NEAR(st.mean, sky, 0.01 * sky);
+    EXPECT_LE(st.far_off, st.hits / 50) << "worst " << st.worst;
+  }
+}
+
+// Glass that does not bend light (index 1: no refraction, no reflection) but absorbs: each pixel
+// of the ball passes exp(-sigma x chord) of the uniform sky behind it (Beer-Lambert), the chord
+// the pixel's ray cuts through the unit sphere, in double; sigma = render.absorption per bounding
+// radius times 1 - the colour (0.5 grey: half of it).
+TEST(Glass, AbsorbsAsBeerLambertAlongTheChord) {
+  Renderer renderer(test::runtime());
+  const auto scene = test::unit_ball();
+  ASSERT_TRUE(scene);
+  const float sky = 0.8f;
+  RenderSettings s = furnace(0.5f, sky, 48, 36);
+  s.transmission = 1;
+  s.ior = 1;
+  s.absorption = 3;
+  s.hit_threshold_k = 0.05f;
+  const SceneState state = dark_state(scene->info);
+  const FrameImage image = render_all_samples(renderer, scene->info, state, s, true);
+  const double sigma = 3 / state.bounding_radius * (1 - 0.5);
+  const CameraRays rays = make_camera_rays(state.camera, s.width_px, s.height_px);
+  int compared = 0;
+  double darkest = 1;
+  for (int y = 0; y < s.height_px; ++y)
+    for (int x = 0; x < s.width_px; ++x) {
+      const glm::dvec3 d = camera_ray_dir(rays, x, y);
+      const double b = glm::dot(rays.eye, d), c = glm::dot(rays.eye, rays.eye) - 1;
+      const double disc = b * b - c;
+      if (disc < 0.2) continue;  // away from the silhouette, where a pixel straddles the edge
+      const double chord = 2 * std::sqrt(disc);
+      const double expected = sky * std::exp(-sigma * chord);
+      darkest = std::min(darkest, expected);
+      ++compared;
+      const size_t i = static_cast<size_t>(y) * s.width_px + x;
+      ASSERT_NEAR(image.linear_rgba[4 * i], expected, 0.01) << x << "," << y << " chord " << chord;
+    }
+  EXPECT_GT(compared, 200);
+  EXPECT_LT(darkest, 0.25 * sky) << "the test covers strong absorption";
 }
 
 // Radiance from a directional light on a diffuse ball under a black sky: albedo x cos(theta) x

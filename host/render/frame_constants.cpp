@@ -17,7 +17,7 @@ static_assert(FR_KERNEL_LIGHT_DIRECTIONAL == FR_LIGHT_DIRECTIONAL &&
 
 // The kernels read this struct with OpenCL C's layout rules; with only 4-byte fields both sides
 // agree, and these checks keep it so.
-static_assert(sizeof(fr_frame_constants) == 896, "fr_frame_constants layout changed");
+static_assert(sizeof(fr_frame_constants) == 912, "fr_frame_constants layout changed");
 static_assert(offsetof(fr_frame_constants, first_pixel_dir) == 0);
 static_assert(offsetof(fr_frame_constants, light_vector) == 96);
 static_assert(offsetof(fr_frame_constants, light_kind) == 352);
@@ -32,6 +32,7 @@ static_assert(offsetof(fr_frame_constants, start_scale) == 824);
 static_assert(offsetof(fr_frame_constants, ao_reference_steps) == 832);
 static_assert(offsetof(fr_frame_constants, cone_blocks_y) == 852);
 static_assert(offsetof(fr_frame_constants, path_max_bounces) == 892);
+static_assert(offsetof(fr_frame_constants, absorption) == 904);
 namespace {
 void put(float out[4], glm::dvec3 v) {
   out[0] = static_cast<float>(v.x);
@@ -112,6 +113,9 @@ fr_frame_constants make_frame_constants(const CameraRays& rays, const SceneState
   fc.full_height = rays.height_px;
   fc.seed = s.seed;
   fc.path_max_bounces = s.path_max_bounces;
+  fc.transmission = s.transmission;
+  fc.ior = s.ior;
+  fc.absorption = static_cast<float>(s.absorption / state.bounding_radius);
   put(fc.camera_right, rays.right);
   put(fc.camera_up, rays.up);
   put(fc.camera_forward, rays.forward);

@@ -178,6 +178,12 @@ struct RenderSettings {
   float fresnel_f0 = 0.04f;
   float exposure = 1.0f;
   float reflectivity = 0.0f;  // of the default material (scenes with a surface source set theirs)
+  // Path tracing: the share of the light not mirrored that enters the surface as into glass, the
+  // glass's index of refraction, and its absorption per bounding radius travelled (Beer-Lambert),
+  // in the surface's colour's complement (light of the surface's colour passes).
+  float transmission = 0.0f;
+  float ior = 1.5f;
+  float absorption = 0.0f;
   float fog_density = 0.08f;  // exponential fog, per bounding radius
   float fog_scale = 0.12f;    // power-law fog: amount = fog_scale * (t / bounding radius)^0.75
   float glow_strength = 0.6f;
@@ -244,6 +250,9 @@ void visit_render_fields(Settings& s, Visit&& visit) {
   visit("fresnel_f0", s.fresnel_f0);
   visit("exposure", s.exposure);
   visit("reflectivity", s.reflectivity);
+  visit("transmission", s.transmission);
+  visit("ior", s.ior);
+  visit("absorption", s.absorption);
   visit("fog_density", s.fog_density);
   visit("fog_scale", s.fog_scale);
   visit("glow_strength", s.glow_strength);
@@ -274,7 +283,7 @@ constexpr size_t aggregate_member_count() {
 }  // namespace detail
 // RenderSettings' direct members (the window counts once): a new field changes the count. List
 // it in visit_render_fields, then update this number.
-static_assert(detail::aggregate_member_count<RenderSettings>() == 54,
+static_assert(detail::aggregate_member_count<RenderSettings>() == 57,
               "RenderSettings changed: list the new field in visit_render_fields");
 
 }  // namespace fr

@@ -218,9 +218,9 @@ std::vector<SettingSpec> make_table() {
       "while flying) or\n\"path\" (path tracing: light from the sky and the lights bouncing "
       "between surfaces; noisy,\nconverging as render.samples accumulate)."));
   t.push_back(int_setting<&S::render, &R::path_max_bounces>(
-      "render.path_max_bounces", 1, 64,
+      "render.path_max_bounces", 1, 1024,
       "Path tracing: surface interactions a path may have after the first hit (Russian roulette "
-      "ends most\nsooner)."));
+      "ends most\nsooner; glass wants more: light bounces inside it)."));
   t.push_back(int_setting<&S::render, &R::seed>(
       "render.seed", 0, 1 << 30,
       "Path tracing and depth of field: the random numbers' seed. A pixel's samples depend only "
@@ -310,6 +310,18 @@ std::vector<SettingSpec> make_table() {
           "Reflectivity of the default material, for scenes without their own materials (0 to "
           "1)."),
       "Reflectivity", 0, 1));
+  t.push_back(number_setting<&S::render, &R::transmission>(
+      "render.transmission", 0, 1, false,
+      "Path tracing: the share of the light not mirrored that enters the surface as into glass "
+      "(0: opaque,\n1: clear glass; refracted, reflected and absorbed inside)."));
+  t.push_back(number_setting<&S::render, &R::ior>(
+      "render.ior", 1, 4, false,
+      "Path tracing: the glass's index of refraction (1: no bending; water 1.33, glass 1.5, "
+      "diamond 2.42)."));
+  t.push_back(number_setting<&S::render, &R::absorption>(
+      "render.absorption", 0, 1000, false,
+      "Path tracing: how much of the light the glass absorbs per bounding radius travelled "
+      "(Beer-Lambert),\nless of the surface's own colour: a tinted glass."));
   t.push_back(in_overlay(number_setting<&S::render, &R::aperture_radius>(
                              "render.aperture", 0, 10, false,
                              "Thin-lens aperture radius in world units; 0 is a pinhole (no depth "
