@@ -201,6 +201,81 @@ TEST(Glass, AbsorbsAsBeerLambertAlongTheChord) {
   EXPECT_LT(darkest, 0.25 * sky) << "the test covers strong absorption";
 }
 
+// The sky's radiance in direction d (shade.cl's gradient: horizon to zenith with the camera's up).
+double sky_radiance(const RenderSettings& s, const CameraRays& rays, const glm::dvec3& d) {
+  const double up = std::clamp(glm::dot(d, rays.up), 0.0, 1.0);
+  return s.sky_horizon[0] * (1 - up) + s.sky_zenith[0] * up;
+}
+
+// Unpolarised Fresnel reflectance for a ray leaving index n1 into n2 at cos(theta_i), and the
+// refracted direction (nothing beyond the critical angle). `n` faces the incoming ray.
+double fresnel(double eta, double cos_i, double* cos_t) {
+  const double sin2_t = eta * eta * (1 - cos_i * cos_i);
+  if (sin2_t >= 1) return 1;
+  *cos_t = std::sqrt(1 - sin2_t);
+  const double rs = (eta * cos_i - *cos_t) / (eta * cos_i + *cos_t);
+  const double rp = (cos_i - eta * *cos_t) / (cos_i + eta * *cos_t);
+  return 0.5 * (rs * rs + rp * rp);
+}
+
+// A glass ball (index 1.5, no absorption) in front of the sky's gradient, which it turns upside
+// down: each pixel's expected radiance from geometric optics in double — reflected at the entry
+// with Fresnel's odds, else refracted, then at each internal hit of the unit sphere refracted out
+// (towards the sky behind) or reflected in again, summed over 30 internal bounces — against the
+// integrator's mean of 256 samples.
+TEST(Glass, ABallRefractsTheSkyWhereGeometricOpticsSays) {
+  Renderer renderer(test::runtime());
+  const auto scene = test::unit_ball();
+  ASSERT_TRUE(scene);
+  RenderSettings s = path_traced(40, 30, 256);
+  s.sky_horizon = {0.9f, 0.9f, 0.9f};
+  s.sky_zenith = {0.1f, 0.1f, 0.1f};
+  s.transmission = 1;
+  s.ior = 1.5f;
+  s.path_max_bounces = 40;
+  s.hit_threshold_k = 0.05f;
+  const SceneState state = dark_state(scene->info);
+  const FrameImage image = render_all_samples(renderer, scene->info, state, s, true);
+  const CameraRays rays = make_camera_rays(state.camera, s.width_px, s.height_px);
+  int compared = 0;
+  double off_optics = 0, off_straight = 0;
+  for (int y = 0; y < s.height_px; ++y)
+    for (int x = 0; x < s.width_px; ++x) {
+      const glm::dvec3 d = camera_ray_dir(rays, x, y);
+      const double b = glm::dot(rays.eye, d), c = glm::dot(rays.eye, rays.eye) - 1;
+      if (b * b - c < 0.3) continue;  // away from the rim, where Fresnel's odds change fastest
+      glm::dvec3 p = rays.eye + d * (-b - std::sqrt(b * b - c));
+      glm::dvec3 n = p;  // unit: the outward normal, facing the incoming ray
+      double cos_i = -glm::dot(d, n), cos_t = 0;
+      const double f_in = fresnel(1 / 1.5, cos_i, &cos_t);
+      double expected = f_in * sky_radiance(s, rays, d + 2 * cos_i * n);
+      glm::dvec3 dir = glm::normalize(d / 1.5 + (cos_i / 1.5 - cos_t) * n);
+      double carried = 1 - f_in;
+      for (int k = 0; k < 30 && carried > 1e-6; ++k) {
+        p = p + dir * (-2 * glm::dot(p, dir));  // the chord to the sphere's far side
+        n = -p;                                 // inward: facing the ray inside
+        cos_i = -glm::dot(dir, n);
+        const double f_out = fresnel(1.5, cos_i, &cos_t);
+        if (f_out < 1)
+          expected += carried * (1 - f_out) *
+                      sky_radiance(s, rays, glm::normalize(dir * 1.5 + (1.5 * cos_i - cos_t) * n));
+        carried *= f_out;
+        dir = dir + 2 * cos_i * n;
+      }
+      const double straight = sky_radiance(s, rays, d);
+      ++compared;
+      const size_t i = static_cast<size_t>(y) * s.width_px + x;
+      off_optics += std::abs(image.linear_rgba[4 * i] - expected);
+      off_straight += std::abs(image.linear_rgba[4 * i] - straight);
+      ASSERT_NEAR(image.linear_rgba[4 * i], expected, 0.04)
+          << x << "," << y << " (the sky straight behind: " << straight << ")";
+    }
+  EXPECT_GT(compared, 150);
+  // And the test tells glass from no glass: the sky straight through is much further off.
+  EXPECT_GT(off_straight, 5 * off_optics)
+      << "mean error " << off_optics / compared << ", straight through " << off_straight / compared;
+}
+
 // Radiance from a directional light on a diffuse ball under a black sky: albedo x cos(theta) x
 // colour (shade.cl's convention: the colour is what a white surface facing the light reflects),
 // theta from the exact normal where the pixel's ray meets the unit sphere.
