@@ -133,11 +133,12 @@ typedef struct fr_frame_constants {
   int seed;             /* of the random numbers (path tracing, the lens) */
   int path_max_bounces; /* path tracing: surface interactions after the first hit (path.cl) */
   /* Path tracing's glass (path.cl): the share of the unmirrored light that enters, the index of
-   * refraction, and the absorption coefficient per world unit (times 1 - the surface colour). */
+   * refraction, and the absorption coefficient per world unit (times 1 - the surface colour);
+   * and the surface's emission. */
   float transmission;
   float ior;
   float absorption;
-  int padding_; /* (keeps the size a multiple of 16 bytes) */
+  float emission; /* path tracing: light a surface gives off, times its colour */
 } fr_frame_constants;
 
 #endif /* FR_FRAME_CONSTANTS_H */

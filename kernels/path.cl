@@ -23,6 +23,8 @@
  * light of that colour passes). No light is estimated through glass: a caustic comes only from
  * the sky, by bounces.
  *
+ * Emission (render.emission times the surface's colour) is found by the paths, as the sky is.
+ *
  * Not here (the fast integrator's approximations of what this computes): ambient light and
  * occlusion, soft-shadow penumbrae, fog and glow. */
 
@@ -136,6 +138,12 @@ __kernel void fr_render(FR_RENDER_KERNEL_PARAMS) {
     const real_t glass_chance =
         lane_select(in_glass, 1, ((real_t)1 - mirror_chance) * (real_t)fc->transmission);
     const real_t diffuse_share = (real_t)1 - mirror_chance - glass_chance;
+    /* Light the surface gives off (seen from outside), found by the path like the sky. */
+    if (fc->emission > 0.0f)
+      radiance = v3_add(radiance, v3_select(hit & !in_glass,
+                                            v3_scale(v3_mul(throughput, albedo),
+                                                     (real_t)fc->emission),
+                                            v3s(0, 0, 0)));
     if (k == 0) {
       out.normal = v3_select(hit, n, out.normal);
       out.albedo = v3_select(hit, albedo, out.albedo);

@@ -4,8 +4,9 @@
 // created or lost), Lambert's law for a directional light on the unit ball (the exact normal from
 // the pixel's ray, in double), and determinism (a pixel's samples depend only on the pixel, the
 // sample index and the seed, so an image rendered in bands is the whole image's, byte for byte),
-// convergence (the error against a long render falls as 1 / sqrt(samples)), and glass (invisible
-// under a uniform sky when it absorbs nothing; Beer-Lambert along the exact chord when it does).
+// convergence (the error against a long render falls as 1 / sqrt(samples)), glass (invisible
+// under a uniform sky when it absorbs nothing; Beer-Lambert along the exact chord when it does;
+// the sky refracted where geometric optics says), and emission.
 #include "plugin/scene_instance.hpp"
 #include "render/camera.hpp"
 #include "render/renderer.hpp"
@@ -274,6 +275,22 @@ TEST(Glass, ABallRefractsTheSkyWhereGeometricOpticsSays) {
   // And the test tells glass from no glass: the sky straight through is much further off.
   EXPECT_GT(off_straight, 5 * off_optics)
       << "mean error " << off_optics / compared << ", straight through " << off_straight / compared;
+}
+
+// An emissive ball under a black sky with no light: each pixel shows what the surface gives off,
+// emission x colour, exactly (its own light, bounced, leaves the convex ball for the black sky).
+TEST(Emission, AGlowingBallShowsItsOwnLight) {
+  Renderer renderer(test::runtime());
+  const auto scene = test::unit_ball();
+  ASSERT_TRUE(scene);
+  RenderSettings s = furnace(0.6f, 0.0f, 40, 30);
+  s.emission = 2;
+  const FrameImage image =
+      render_all_samples(renderer, scene->info, dark_state(scene->info), s, true);
+  const PixelStats st = hit_pixel_stats(image, 2 * 0.6, 0.01);
+  EXPECT_GT(st.hits, 200);
+  EXPECT_NEAR(st.mean, 1.2, 0.005);
+  EXPECT_LE(st.far_off, st.hits / 100) << "worst " << st.worst;
 }
 
 // Radiance from a directional light on a diffuse ball under a black sky: albedo x cos(theta) x

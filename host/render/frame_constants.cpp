@@ -116,6 +116,7 @@ fr_frame_constants make_frame_constants(const CameraRays& rays, const SceneState
   fc.transmission = s.transmission;
   fc.ior = s.ior;
   fc.absorption = static_cast<float>(s.absorption / state.bounding_radius);
+  fc.emission = s.emission;
   put(fc.camera_right, rays.right);
   put(fc.camera_up, rays.up);
   put(fc.camera_forward, rays.forward);

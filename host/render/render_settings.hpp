@@ -184,6 +184,8 @@ struct RenderSettings {
   float transmission = 0.0f;
   float ior = 1.5f;
   float absorption = 0.0f;
+  // Path tracing: radiance the surface gives off, times its colour (a glowing fractal).
+  float emission = 0.0f;
   float fog_density = 0.08f;  // exponential fog, per bounding radius
   float fog_scale = 0.12f;    // power-law fog: amount = fog_scale * (t / bounding radius)^0.75
   float glow_strength = 0.6f;
@@ -253,6 +255,7 @@ void visit_render_fields(Settings& s, Visit&& visit) {
   visit("transmission", s.transmission);
   visit("ior", s.ior);
   visit("absorption", s.absorption);
+  visit("emission", s.emission);
   visit("fog_density", s.fog_density);
   visit("fog_scale", s.fog_scale);
   visit("glow_strength", s.glow_strength);
@@ -283,7 +286,7 @@ constexpr size_t aggregate_member_count() {
 }  // namespace detail
 // RenderSettings' direct members (the window counts once): a new field changes the count. List
 // it in visit_render_fields, then update this number.
-static_assert(detail::aggregate_member_count<RenderSettings>() == 57,
+static_assert(detail::aggregate_member_count<RenderSettings>() == 58,
               "RenderSettings changed: list the new field in visit_render_fields");
 
 }  // namespace fr

@@ -322,6 +322,10 @@ std::vector<SettingSpec> make_table() {
       "render.absorption", 0, 1000, false,
       "Path tracing: how much of the light the glass absorbs per bounding radius travelled "
       "(Beer-Lambert),\nless of the surface's own colour: a tinted glass."));
+  t.push_back(number_setting<&S::render, &R::emission>(
+      "render.emission", 0, 1000, false,
+      "Path tracing: light the surface gives off, times its colour (0: none; 1: as bright as a "
+      "white surface\nunder a light of colour 1)."));
   t.push_back(in_overlay(number_setting<&S::render, &R::aperture_radius>(
                              "render.aperture", 0, 10, false,
                              "Thin-lens aperture radius in world units; 0 is a pinhole (no depth "
