@@ -139,6 +139,17 @@ typedef struct fr_frame_constants {
   float ior;
   float absorption;
   float emission; /* path tracing: light a surface gives off, times its colour */
+  /* Path tracing's lights have a size (fr_light.radius): a point light's sphere radius, a
+   * directional light's angular radius in radians; 0 is a point. */
+  float light_radius[FR_MAX_LIGHTS];
+  /* Path tracing's default material beyond the colour (path.cl, material_t): the metallic share,
+   * the gloss's roughness (GGX alpha = roughness^2), the share of the diffuse light that scatters
+   * under the surface and its mean free path there (world units). */
+  float metalness;
+  float specular_roughness;
+  float subsurface;
+  float mean_free_path;
+  int aperture_blades; /* the lens's aperture: a regular polygon of this many sides; < 3: round */
 } fr_frame_constants;
 
 #endif /* FR_FRAME_CONSTANTS_H */

@@ -65,12 +65,15 @@ inline mask_t intersect_bounds(ray_t ray, scalar_t radius, real_t* t_enter, real
  *    counts these rays and warns when there are many. */
 #define FR_CANDIDATE_MAX_ERROR 4
 /* de_sign: 1 marches the solid's outside; -1 (per lane) its inside, the DE negated, towards where
- * a ray inside a transparent solid leaves it (path.cl's glass). */
-march_result_t march(ray_t ray, real_t path_t, real_t t_min, int max_steps, real_t de_sign,
-                     __constant const fr_frame_constants* fc,
+ * a ray inside a transparent solid leaves it (path.cl's glass). t_max (per lane): a ray that
+ * gets this far without a hit ends there as a miss (path.cl's subsurface walk: the next
+ * scattering); FR_SCALAR_MAX for no limit but the bounds. */
+march_result_t march(ray_t ray, real_t path_t, real_t t_min, real_t t_max, int max_steps,
+                     real_t de_sign, __constant const fr_frame_constants* fc,
                      __constant const scene_params_t* params FR_COUNTS_PARAM) {
   real_t t, t_exit;
   mask_t active = intersect_bounds(ray, fc->bounding_radius, &t, &t_exit);
+  t_exit = fmin(t_exit, t_max);
   t = fmax(t, t_min);
   active &= t < t_exit;
   mask_t hit = FR_MASK_FALSE, inside = FR_MASK_FALSE, leaving = FR_MASK_FALSE;

@@ -3,27 +3,33 @@
  * kernel has render.cl's name and arguments, so the host runs either the same way, and the
  * samples accumulate in film.cl's running mean.
  *
- * At each hit: next-event estimation towards every light (a shadow ray, hard: shadow.cl built
- * with FR_SHADOW_HARD), then the next direction: the mirror one with the surface's reflectivity as
- * its probability, else a diffuse one, cosine-weighted, so that a Lambertian surface's throughput
- * is its albedo. A path that leaves the bounds sees the sky (shade.cl's sky_color, radiance): the
- * environment is found only by bounces, and the lights (points and directions, which no bounce
- * can hit) only by the estimation, so no light is counted twice. From the third interaction on,
- * Russian roulette: a path goes on with probability q = max(throughput) and its throughput is
- * divided by q, which keeps the mean.
+ * At each hit the material (material.cl) decides what the light does, by lobes taken with their
+ * odds, so that a lobe's throughput is its weight divided by its odds:
+ *   metal (metalness): a GGX-rough mirror (roughness; 0 is a mirror) that reflects in its colour,
+ *      with Schlick's Fresnel towards white at grazing angles;
+ *   coat (specular, of the rest): the same mirror, untinted (surface_t.reflectivity);
+ *   glass (transmission, of the rest): a rough dielectric: reflected with the exact unpolarised
+ *      Fresnel reflectance, else refracted by Snell's law (total internal reflection beyond the
+ *      critical angle) about a GGX microfacet normal; inside, the march follows the negated DE
+ *      to where the solid ends, and the glass absorbs exp(-sigma t) on the way (Beer-Lambert,
+ *      sigma = material absorption);
+ *   subsurface (subsurface, of the rest): the light enters (diffuse transmission) and walks
+ *      inside the DE volume: free flights of mean length mean_free_path (exponential), each
+ *      ending in isotropic scattering that keeps the single-scattering albedo (material.cl maps
+ *      subsurface_color to it), until the walk meets the surface and leaves it diffusely, or
+ *      FR_WALK_MAX_STEPS scatterings end it;
+ *   diffuse (the rest): Lambert, cosine-weighted, so its throughput is its albedo.
+ * Next-event estimation towards every light (a shadow ray, hard: shadow.cl built with
+ * FR_SHADOW_HARD) through the diffuse lobe and where a walk leaves the surface; a light with a
+ * size is also found by bounces, and the two estimates are weighted by multiple importance
+ * sampling (area_lights.cl). A path that leaves the bounds sees the sky (shade.cl's sky_color,
+ * radiance): the environment is found only by bounces. Emission (material emission) is found
+ * by the paths, as the sky is. From the third interaction on, Russian roulette: a path goes on
+ * with probability q = max(throughput) and its throughput is divided by q, which keeps the mean.
  *
  * Units: a light's colour is what a white Lambertian surface facing it reflects (as in shade.cl),
  * so its irradiance is pi times that, and the diffuse BRDF albedo / pi turns it back into
  * albedo * cos * colour.
- *
- * Glass (render.transmission of the light not mirrored): at its surface the ray is reflected with
- * the Fresnel reflectance or refracted by Snell's law (index render.ior); inside, it marches the
- * negated DE to where the solid ends, and the glass absorbs exp(-sigma t) of it on the way
- * (Beer-Lambert; sigma = render.absorption per bounding radius times 1 - the surface's colour, so
- * light of that colour passes). No light is estimated through glass: a caustic comes only from
- * the sky, by bounces.
- *
- * Emission (render.emission times the surface's colour) is found by the paths, as the sky is.
  *
  * Not here (the fast integrator's approximations of what this computes): ambient light and
  * occlusion, soft-shadow penumbrae, fog and glow. */
@@ -35,21 +41,71 @@
 #define FR_CONE_START(t, ao_steps)
 #endif
 
-/* pixel_random's streams: the lens takes 1 and 2; interaction k takes these eight. */
+/* pixel_random's streams: the lens takes 1 and 2; step k of the path takes these eight. */
 #define FR_PATH_STREAM(k, i) (16U + 8U * (uint)(k) + (uint)(i))
+/* The most scatterings in the subsurface walks of one path: a path that scatters more is ended
+ * (its light lost). */
+#define FR_WALK_MAX_STEPS 256
 
-/* A unit vector around the unit n with density cos(theta) / pi, from two uniform numbers: a
- * uniform point of the unit disc lifted onto the hemisphere (Malley's method), in the basis of
- * Duff et al. 2017 ("Building an orthonormal basis, revisited"), which has no branch. */
-vec3_t cosine_direction(vec3_t n, real_t u1, real_t u2) {
-  const real_t sign = lane_select(n.z >= (real_t)0, 1, -1);
-  const real_t a = (real_t)-1 / (sign + n.z);
-  const real_t b = n.x * n.y * a;
-  const vec3_t t = v3((real_t)1 + sign * n.x * n.x * a, sign * b, -sign * n.x);
-  const vec3_t s = v3(b, sign + n.y * n.y * a, -n.y);
-  const real_t r = sqrt(u1), phi = (real_t)(2 * M_PI_F) * u2;
-  const real_t z = sqrt(fmax((real_t)1 - u1, (real_t)0));
-  return v3_add(v3_add(v3_scale(t, r * cos(phi)), v3_scale(s, r * sin(phi))), v3_scale(n, z));
+/* What every light sends to p through the diffuse lobe of normal n, times `weight`, past
+ * whatever is in the way: next-event estimation, weighted against bounces that find the lights
+ * with a size (multiple importance sampling). `lanes`: where there is such a lobe. */
+vec3_t direct_light(vec3_t p, vec3_t n, real_t h, mask_t lanes, int shadow_steps,
+                    lane_uint_t ix, lane_uint_t iy, int k,
+                    __constant const fr_frame_constants* fc,
+                    __constant const scene_params_t* params FR_COUNTS_PARAM) {
+  light_sample_t lights[FR_MAX_LIGHTS];
+  mask_t facing[FR_MAX_LIGHTS];
+  real_t visible[FR_MAX_LIGHTS], mis[FR_MAX_LIGHTS];
+  const int count = min(fc->light_count, FR_MAX_LIGHTS);
+  for (int i = 0; i < count; ++i) {
+    lights[i] = sample_light(i, p, fc);
+    mis[i] = (real_t)1;
+    if (fc->light_radius[i] > 0.0f) {
+      /* Each light its own pair of numbers: streams 5..7 and then the high ones, past any step's. */
+      const light_cone_t c = light_cone(i, p, fc);
+      const uint stream = FR_PATH_STREAM(k, 5) + (uint)i * 0x10000U;
+      lights[i] = light_cone_sample(c, (scalar_t)fc->light_radius[i],
+                                    fc->light_kind[i] == FR_KERNEL_LIGHT_DIRECTIONAL,
+                                    pixel_random(fc, ix, iy, stream),
+                                    pixel_random(fc, ix, iy, stream + 0x8000U));
+      const real_t cos_l = fmax(v3_dot(n, lights[i].to_light), (real_t)0);
+      mis[i] = power_heuristic(light_cone_pdf(c), cos_l * (real_t)M_1_PI_F);
+    }
+    facing[i] = lanes & (v3_dot(n, lights[i].to_light) > (real_t)0);
+    visible[i] = (real_t)1;
+  }
+  FR_APPLY_SHADOWS(visible, p, n, h, lights, facing, count, shadow_steps);
+  vec3_t direct = v3s(0, 0, 0);
+  for (int i = 0; i < count; ++i) {
+    if (!any_lane(facing[i])) continue;
+    const real_t cos_l = v3_dot(n, lights[i].to_light);
+    direct = v3_add(direct, v3_scale(lights[i].radiance,
+                                     lane_select(facing[i], visible[i] * cos_l * mis[i], 0)));
+  }
+  return direct;
+}
+
+/* The lights with a size that the ray from o along d meets before t_end: their radiance, each
+ * weighted against next-event estimation where the ray left a diffuse lobe of density
+ * diffuse_pdf (0: it did not, and the estimation did not see this light). */
+vec3_t lights_met(vec3_t o, vec3_t d, real_t t_end, mask_t lanes, real_t diffuse_pdf,
+                  __constant const fr_frame_constants* fc) {
+  vec3_t sum = v3s(0, 0, 0);
+  const int count = min(fc->light_count, FR_MAX_LIGHTS);
+  for (int i = 0; i < count; ++i) {
+    if (!(fc->light_radius[i] > 0.0f)) continue;
+    const int directional = fc->light_kind[i] == FR_KERNEL_LIGHT_DIRECTIONAL;
+    const light_cone_t c = light_cone(i, o, fc);
+    real_t t_hit;
+    const mask_t met = lanes & light_hit(c, d, directional, (scalar_t)fc->light_radius[i], &t_hit) &
+                       (directional ? t_end >= (real_t)FR_SCALAR_MAX : t_hit < t_end);
+    if (!any_lane(met)) continue;
+    const real_t w = lane_select(diffuse_pdf > (real_t)0,
+                                 power_heuristic(diffuse_pdf, light_cone_pdf(c)), 1);
+    sum = v3_add(sum, v3_select(met, v3_scale(c.radiance, w), v3s(0, 0, 0)));
+  }
+  return sum;
 }
 
 __kernel void fr_render(FR_RENDER_KERNEL_PARAMS) {
@@ -64,9 +120,18 @@ __kernel void fr_render(FR_RENDER_KERNEL_PARAMS) {
   vec3_t radiance = v3s(0, 0, 0);
   vec3_t throughput = v3s(1, 1, 1);
   mask_t active = FR_MASK_TRUE;
-  /* Inside the glass (render.transmission), and its absorption there per unit length. */
-  mask_t in_glass = FR_MASK_FALSE;
-  vec3_t sigma = v3s(0, 0, 0);
+  /* Where the ray is: inside glass, with its absorption per unit length; inside a scattering
+   * medium, with its single-scattering albedo and mean free path. */
+  mask_t in_glass = FR_MASK_FALSE, in_medium = FR_MASK_FALSE;
+  vec3_t sigma = v3s(0, 0, 0), medium_albedo = v3s(0, 0, 0);
+  real_t mean_free_path = (real_t)1;
+  /* The last crossing of the surface: into or out of glass, or of a medium; none since the
+   * last reflection outside. */
+  mask_t crossed_glass = FR_MASK_FALSE, crossed_medium = FR_MASK_FALSE;
+  /* Surface interactions and scatterings so far, per lane. */
+  real_t bounces = (real_t)0, scatterings = (real_t)0;
+  /* The density of the diffuse lobe that chose this ray's direction (0: another lobe). */
+  real_t diffuse_pdf = (real_t)0;
   pixel_passes_t out;
   out.depth = (real_t)INFINITY;
   out.steps = (real_t)0;
@@ -78,16 +143,22 @@ __kernel void fr_render(FR_RENDER_KERNEL_PARAMS) {
   /* Where the cone pre-pass (cone.cl) lets the primary ray start. */
   real_t cone_from = (real_t)0, cone_ao = (real_t)0;
   FR_CONE_START(cone_from, cone_ao);
-  for (int k = 0; k <= fc->path_max_bounces; ++k) {
+  const int steps_most = fc->path_max_bounces + 1 + FR_WALK_MAX_STEPS;
+  for (int k = 0; k < steps_most; ++k) {
     FR_COUNT_BOUNCE(k);
     /* Rays after the first march with the mirror bounces' budget (frame_constants.h); every
      * shadow ray with the primary hits' (the bounces' may be 0, which in the fast integrator
      * means reflections without shadows, and here would let light through walls). */
     const int max_steps = k == 0 ? fc->max_steps : fc->bounce_max_steps;
     const int shadow_steps = fc->shadow_max_steps;
-    /* Inside the glass the march looks for where the solid ends: its DE negated. */
-    march_result_t m = march(ray, path_t, k == 0 ? cone_from : (real_t)0, max_steps,
-                             lane_select(in_glass, -1, 1), fc, params FR_COUNTS_ARG);
+    /* In a medium the ray flies an exponential distance before it scatters. */
+    const real_t u_flight = pixel_random(fc, ix, iy, FR_PATH_STREAM(k, 7));
+    const real_t flight = -log(fmax((real_t)1 - u_flight, (real_t)FR_SCALAR_MIN)) * mean_free_path;
+    /* Inside glass or a medium the march looks for where the solid ends: its DE negated. */
+    const mask_t inner = in_glass | in_medium;
+    march_result_t m = march(ray, path_t, k == 0 ? cone_from : (real_t)0,
+                             lane_select(in_medium, flight, FR_SCALAR_MAX), max_steps,
+                             lane_select(inner, -1, 1), fc, params FR_COUNTS_ARG);
     /* What the glass absorbed on the way (Beer-Lambert), of whatever the ray reaches. */
     const mask_t absorbing = active & in_glass;
     if (any_lane(absorbing))
@@ -96,9 +167,16 @@ __kernel void fr_render(FR_RENDER_KERNEL_PARAMS) {
                                                    exp(-sigma.z * m.t))),
                              throughput);
     const mask_t hit = active & m.hit;
-    const mask_t miss = active & !m.hit & !m.inside;
+    const mask_t miss = active & !m.hit & !m.inside & !in_medium;
     radiance = v3_add(radiance, v3_select(miss, v3_mul(throughput, sky_color(ray.dir, fc)),
                                           v3s(0, 0, 0)));
+    /* Lights with a size on the way (outside the solid only). */
+    const mask_t outside = active & !inner & !m.inside;
+    if (any_lane(outside))
+      radiance = v3_add(radiance,
+                        v3_mul(throughput, lights_met(ray.origin, ray.dir,
+                                                      lane_select(hit, m.t, FR_SCALAR_MAX),
+                                                      outside, diffuse_pdf, fc)));
     if (k == 0) {
       out.depth = lane_select(m.hit | m.inside, path_t + m.t, INFINITY);
       out.steps = m.steps;
@@ -106,112 +184,183 @@ __kernel void fr_render(FR_RENDER_KERNEL_PARAMS) {
                                lane_select(m.out_of_steps, FR_RAY_OUT_OF_STEPS,
                                            lane_select(m.hit, FR_RAY_HIT, FR_RAY_MISS)));
     }
-    /* A ray that starts on the wrong side of the surface for its march (a refraction's or a
-     * reflection's origin pushed through a thin wall, or off a normal estimated at the pixel's
-     * scale): with glass, it is on the other side of the glass's surface, and marches again from
-     * there in the other mode; without, it is inside an opaque solid, where no light reaches. */
-    const mask_t wrong_side = fc->transmission > 0.0f ? active & m.inside : FR_MASK_FALSE;
-    in_glass ^= wrong_side;
-    active = hit | wrong_side;
+    /* A ray that starts on the wrong side of the surface for its march (a crossing's origin
+     * pushed through a thin wall, or off a normal estimated at the pixel's scale) marches again
+     * in the other mode. Inside glass or a medium, it is outside; outside, it is inside what it
+     * last crossed, or else inside what the solid there is made of: glass where it transmits,
+     * a medium where it scatters under its surface; an opaque solid, where no light reaches. */
+    const mask_t leaving = active & m.inside & inner;
+    const mask_t stray = active & m.inside & !inner;
+    mask_t into_glass = stray & crossed_glass, into_medium = stray & crossed_medium;
+    const mask_t unknown = stray & !crossed_glass & !crossed_medium;
+    if (any_lane(unknown)) {
+      const material_t solid = material_at(ray.origin);
+      const mask_t glassy = unknown & (solid.transmission > (real_t)0) &
+                            (solid.metalness < (real_t)1) & (solid.specular < (real_t)1);
+      const mask_t milky = unknown & !glassy & (solid.subsurface > (real_t)0) &
+                           (solid.metalness < (real_t)1) & (solid.specular < (real_t)1);
+      sigma = v3_select(glassy, solid.absorption, sigma);
+      medium_albedo = v3_select(milky, single_scattering_albedos(solid.subsurface_color),
+                                medium_albedo);
+      mean_free_path = lane_select(milky, solid.mean_free_path, mean_free_path);
+      into_glass |= glassy;
+      into_medium |= milky;
+    }
+    in_glass = (in_glass & !leaving) | into_glass;
+    in_medium = (in_medium & !leaving) | into_medium;
+    const mask_t wrong_side = leaving | into_glass | into_medium;
+    /* A flight that ended inside the medium: it scatters there, in a uniform direction, keeping
+     * the single-scattering albedo. */
+    const mask_t scatter = active & in_medium & !m.hit & !m.inside;
+    if (any_lane(scatter)) {
+      const vec3_t q = v3_mad(ray.origin, ray.dir, flight);
+      const vec3_t d = sphere_direction(pixel_random(fc, ix, iy, FR_PATH_STREAM(k, 1)),
+                                        pixel_random(fc, ix, iy, FR_PATH_STREAM(k, 2)));
+      ray.origin = v3_select(scatter, q, ray.origin);
+      ray.dir = v3_select(scatter, d, ray.dir);
+      throughput = v3_select(scatter, v3_mul(throughput, medium_albedo), throughput);
+      scatterings += mask_to_real(scatter);
+      path_t += lane_select(scatter, flight, 0);
+    }
+    active = (hit | wrong_side | scatter) & (scatterings <= (real_t)FR_WALK_MAX_STEPS);
     if (!any_lane(active)) break;
-    if (!any_lane(hit)) continue;
 
-    const vec3_t p = v3_mad(ray.origin, ray.dir, m.t);
-    const real_t h = hit_threshold(fc, path_t + m.t, p);
-    /* Normals at the scale of the pixel's footprint, as render.cl takes them. */
-    const real_t normal_h = fmax(h, (real_t)(0.5f * fc->pixel_angle_rad) * (path_t + m.t));
-    const vec3_t gradient = calc_normal(p, normal_h, params);
-    FR_COUNT(FR_COUNT_NORMALS, hit, FR_NORMAL_EVALS);
-    vec3_t n = v3_select(v3_length2(gradient) > (real_t)0, v3_normalize(gradient),
-                         v3_neg(ray.dir));
-    /* A normal that faces away from the ray (estimated across a thin feature): the side the ray
-     * came from, so that bounces and lights stay on it. */
-    n = v3_select(v3_dot(n, ray.dir) > (real_t)0, v3_neg(n), n);
-    const surface_t surface = surface_at(p);
-    FR_COUNT(FR_COUNT_SURFACE, hit, FR_HAS_SURFACE);
-    /* Energy-conserving: an albedo above 1 would create light. */
-    const vec3_t albedo = v3_min(v3_max(surface.albedo, v3s(0, 0, 0)), v3s(1, 1, 1));
-    /* The lobes' odds at a hit from outside: mirror (the reflectivity), glass (that much of the
-     * rest, render.transmission), diffuse (what is left). From inside the glass: its surface. */
-    const real_t mirror_chance =
-        lane_select(in_glass, 0, clamp(surface.reflectivity, (real_t)0, (real_t)1));
-    const real_t glass_chance =
-        lane_select(in_glass, 1, ((real_t)1 - mirror_chance) * (real_t)fc->transmission);
-    const real_t diffuse_share = (real_t)1 - mirror_chance - glass_chance;
-    /* Light the surface gives off (seen from outside), found by the path like the sky. */
-    if (fc->emission > 0.0f)
-      radiance = v3_add(radiance, v3_select(hit & !in_glass,
-                                            v3_scale(v3_mul(throughput, albedo),
-                                                     (real_t)fc->emission),
-                                            v3s(0, 0, 0)));
-    if (k == 0) {
-      out.normal = v3_select(hit, n, out.normal);
-      out.albedo = v3_select(hit, albedo, out.albedo);
-    }
+    if (any_lane(hit)) {
+      const vec3_t p = v3_mad(ray.origin, ray.dir, m.t);
+      const real_t h = hit_threshold(fc, path_t + m.t, p);
+      /* Normals at the scale of the pixel's footprint, as render.cl takes them. */
+      const real_t normal_h = fmax(h, (real_t)(0.5f * fc->pixel_angle_rad) * (path_t + m.t));
+      const vec3_t gradient = calc_normal(p, normal_h, params);
+      FR_COUNT(FR_COUNT_NORMALS, hit, FR_NORMAL_EVALS);
+      vec3_t n = v3_select(v3_length2(gradient) > (real_t)0, v3_normalize(gradient),
+                           v3_neg(ray.dir));
+      /* A normal that faces away from the ray (estimated across a thin feature, or seen from
+       * inside): the side the ray came from, so that bounces and lights stay on it. */
+      n = v3_select(v3_dot(n, ray.dir) > (real_t)0, v3_neg(n), n);
+      const material_t mat = material_at(p);
+      FR_COUNT(FR_COUNT_SURFACE, hit, FR_HAS_SURFACE);
+      /* Where the ray meets the surface from outside, the material's lobes, with their odds. */
+      const mask_t from_outside = hit & !in_glass & !in_medium;
+      const real_t metal_odds = lane_select(from_outside, mat.metalness, 0);
+      const real_t rest = (real_t)1 - mat.metalness;
+      const real_t coat_odds = lane_select(from_outside, rest * mat.specular, 0);
+      const real_t glass_odds = lane_select(
+          in_glass, 1,
+          lane_select(from_outside, rest * ((real_t)1 - mat.specular) * mat.transmission, 0));
+      const real_t diffuse_rest =
+          rest * ((real_t)1 - mat.specular) * ((real_t)1 - mat.transmission);
+      const real_t subsurface_odds = lane_select(from_outside, diffuse_rest * mat.subsurface, 0);
+      const real_t diffuse_odds =
+          lane_select(from_outside, diffuse_rest * ((real_t)1 - mat.subsurface), 0);
+      /* A walk that reached the surface leaves it: a diffuse lobe on the outer side. */
+      const mask_t leaving_medium = hit & in_medium;
+      /* Light the surface gives off (seen from outside), found by the path like the sky. */
+      radiance = v3_add(radiance,
+                        v3_select(from_outside, v3_mul(throughput, mat.emission), v3s(0, 0, 0)));
+      if (k == 0) {
+        out.normal = v3_select(hit, n, out.normal);
+        out.albedo = v3_select(hit, mat.base_color, out.albedo);
+      }
+      bounces += mask_to_real(hit);
+      const mask_t last = hit & (bounces > (real_t)fc->path_max_bounces);
 
-    /* Next-event estimation through the diffuse part: each light, if nothing is in the way. */
-    light_sample_t lights[FR_MAX_LIGHTS];
-    mask_t facing[FR_MAX_LIGHTS];
-    real_t visible[FR_MAX_LIGHTS];
-    const int count = min(fc->light_count, FR_MAX_LIGHTS);
-    for (int i = 0; i < count; ++i) {
-      lights[i] = sample_light(i, p, fc);
-      facing[i] = hit & (diffuse_share > (real_t)0) & (v3_dot(n, lights[i].to_light) > (real_t)0);
-      visible[i] = (real_t)1;
-    }
-    FR_APPLY_SHADOWS(visible, p, n, h, lights, facing, count, shadow_steps);
-    vec3_t direct = v3s(0, 0, 0);
-    for (int i = 0; i < count; ++i) {
-      if (!any_lane(facing[i])) continue;
-      const real_t cos_l = v3_dot(n, lights[i].to_light);
-      direct = v3_add(direct,
-                      v3_scale(lights[i].radiance, lane_select(facing[i], visible[i] * cos_l, 0)));
-    }
-    const vec3_t diffuse_weight = v3_scale(v3_mul(throughput, albedo), diffuse_share);
-    radiance = v3_add(radiance, v3_select(hit, v3_mul(diffuse_weight, direct), v3s(0, 0, 0)));
-    if (k == fc->path_max_bounces) break;
+      /* Next-event estimation through the diffuse lobe (of the outer side where a walk leaves). */
+      const vec3_t lit_normal = v3_select(leaving_medium, v3_neg(n), n);
+      const vec3_t lit_weight =
+          v3_select(leaving_medium, throughput,
+                    v3_scale(v3_mul(throughput, mat.base_color), diffuse_odds));
+      const mask_t lit = (leaving_medium | (diffuse_odds > (real_t)0)) & hit;
+      if (any_lane(lit))
+        radiance = v3_add(radiance,
+                          v3_select(lit, v3_mul(lit_weight, direct_light(p, lit_normal, h, lit,
+                                                                         shadow_steps, ix, iy, k,
+                                                                         fc, params
+                                                                             FR_COUNTS_ARG)),
+                                    v3s(0, 0, 0)));
 
-    /* The next interaction, chosen with the lobes' odds. */
-    const real_t u_lobe = pixel_random(fc, ix, iy, FR_PATH_STREAM(k, 0));
-    const real_t u1 = pixel_random(fc, ix, iy, FR_PATH_STREAM(k, 1));
-    const real_t u2 = pixel_random(fc, ix, iy, FR_PATH_STREAM(k, 2));
-    const real_t u_fresnel = pixel_random(fc, ix, iy, FR_PATH_STREAM(k, 3));
-    const mask_t mirror = u_lobe < mirror_chance;
-    const mask_t glass = !mirror & (u_lobe < mirror_chance + glass_chance);
-    /* The glass's surface (a dielectric): reflected with the Fresnel reflectance F (unpolarised,
-     * exact; 1 beyond the critical angle), else refracted by Snell's law. n faces the ray, so
-     * eta is the index the ray leaves over the one it enters. */
-    const real_t eta = lane_select(in_glass, (real_t)fc->ior, (real_t)1 / (real_t)fc->ior);
-    const real_t cos_i = fmin(-v3_dot(ray.dir, n), (real_t)1);
-    const real_t sin2_t = eta * eta * fmax((real_t)1 - cos_i * cos_i, (real_t)0);
-    const real_t cos_t = sqrt(fmax((real_t)1 - sin2_t, (real_t)0));
-    const real_t r_s = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
-    const real_t r_p = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
-    const real_t fresnel = lane_select(sin2_t >= (real_t)1, 1, (real_t)0.5 * (r_s * r_s + r_p * r_p));
-    const mask_t refract = hit & glass & (u_fresnel >= fresnel);
-    const vec3_t mirrored = v3_mad(ray.dir, n, -2 * v3_dot(ray.dir, n));
-    const vec3_t refracted = v3_normalize(v3_mad(v3_scale(ray.dir, eta), n, eta * cos_i - cos_t));
-    const vec3_t next_dir = v3_select(
-        refract, refracted, v3_select(mirror | glass, mirrored, cosine_direction(n, u1, u2)));
-    /* Off the surface on the side the ray goes: through it when refracted. (Only where the ray
-     * hit: one on the wrong side keeps its ray for the other march.) */
-    ray.origin = v3_select(hit, v3_mad(p, n, lane_select(refract, -2 * h, 2 * h)), ray.origin);
-    ray.dir = v3_select(hit, next_dir, ray.dir);
-    /* Entering: the glass absorbs the complement of the surface's colour. */
-    const mask_t entering = refract & !in_glass;
-    sigma = v3_select(entering, v3_scale(v3_sub(v3s(1, 1, 1), albedo), (real_t)fc->absorption),
-                      sigma);
-    in_glass ^= refract;
-    /* Diffuse: the albedo (cosine-weighted sampling); mirror and glass: the lobe's odds equal its
-     * weight, nothing changes. */
-    throughput = v3_select(mirror | glass | !hit, throughput, v3_mul(throughput, albedo));
+      /* The next direction, with the lobes' odds. */
+      const real_t u_lobe = pixel_random(fc, ix, iy, FR_PATH_STREAM(k, 0));
+      const real_t u1 = pixel_random(fc, ix, iy, FR_PATH_STREAM(k, 1));
+      const real_t u2 = pixel_random(fc, ix, iy, FR_PATH_STREAM(k, 2));
+      const real_t u_fresnel = pixel_random(fc, ix, iy, FR_PATH_STREAM(k, 3));
+      const mask_t choosing = hit & !leaving_medium;
+      const mask_t metal = choosing & (u_lobe < metal_odds);
+      const mask_t coat = choosing & !metal & (u_lobe < metal_odds + coat_odds);
+      const mask_t glass =
+          choosing & !metal & !coat & (u_lobe < metal_odds + coat_odds + glass_odds);
+      const mask_t enter_medium = choosing & !metal & !coat & !glass &
+                                  (u_lobe < metal_odds + coat_odds + glass_odds + subsurface_odds);
+      const mask_t diffuse = hit & (leaving_medium | (!metal & !coat & !glass & !enter_medium));
+      const mask_t glossy = hit & (metal | coat | glass);
+      /* The glossy lobes' microfacet normal m (m = n for a polished surface). */
+      const real_t alpha = mat.roughness * mat.roughness;
+      const vec3_t micro = ggx_normal(n, alpha, u1, u2);
+      const vec3_t to_eye = v3_neg(ray.dir);
+      const real_t cos_i = v3_dot(to_eye, n);
+      const real_t cos_im = v3_dot(to_eye, micro);
+      /* Glass: reflected with the Fresnel reflectance F (unpolarised, exact; 1 beyond the
+       * critical angle), else refracted by Snell's law. n faces the ray, so eta is the index the
+       * ray leaves over the one it enters. */
+      const real_t eta = lane_select(in_glass, mat.ior, (real_t)1 / mat.ior);
+      const real_t c_i = fmin(fabs(cos_im), (real_t)1);
+      const real_t sin2_t = eta * eta * fmax((real_t)1 - c_i * c_i, (real_t)0);
+      const real_t cos_t = sqrt(fmax((real_t)1 - sin2_t, (real_t)0));
+      const real_t r_s = (eta * c_i - cos_t) / (eta * c_i + cos_t);
+      const real_t r_p = (c_i - eta * cos_t) / (c_i + eta * cos_t);
+      const real_t fresnel =
+          lane_select(sin2_t >= (real_t)1, 1, (real_t)0.5 * (r_s * r_s + r_p * r_p));
+      const mask_t refract = hit & glass & (u_fresnel >= fresnel);
+      const vec3_t mirrored = v3_mad(ray.dir, micro, -2 * v3_dot(ray.dir, micro));
+      const vec3_t refracted =
+          v3_normalize(v3_mad(v3_scale(ray.dir, eta), micro, eta * c_i - cos_t));
+      const vec3_t diffuse_dir = cosine_direction(lit_normal, u1, u2);
+      const vec3_t inward_dir = cosine_direction(v3_neg(n), u1, u2);
+      const vec3_t next_dir = v3_select(
+          refract, refracted,
+          v3_select(glossy, mirrored, v3_select(enter_medium, inward_dir, diffuse_dir)));
+      /* The glossy sample's weight (material.cl); lost where the microfacet faces away or the
+       * direction leaves on the wrong side of the surface. */
+      const real_t cos_o = v3_dot(next_dir, n);
+      const mask_t right_side =
+          (cos_im > (real_t)0) & ((refract & (cos_o < (real_t)0)) | (!refract & (cos_o > (real_t)0)));
+      const real_t glossy_weight =
+          lane_select(right_side, ggx_weight(cos_im, cos_i, cos_o, v3_dot(micro, n), alpha), 0);
+      /* A metal reflects its colour, whiter towards grazing angles (Schlick). */
+      const real_t grazing = pow_nonneg((real_t)1 - fmin(fmax(cos_im, (real_t)0), (real_t)1), 5);
+      const vec3_t metal_color =
+          v3_add(mat.base_color, v3_scale(v3_sub(v3s(1, 1, 1), mat.base_color), grazing));
+      const vec3_t weight = v3_select(
+          glossy, v3_scale(v3_select(metal, metal_color, v3s(1, 1, 1)), glossy_weight),
+          v3_select(diffuse & !leaving_medium, mat.base_color, v3s(1, 1, 1)));
+      throughput = v3_select(hit, v3_mul(throughput, weight), throughput);
+      /* Off the surface on the side the ray goes: through it where it crosses. */
+      const vec3_t side = v3_select(leaving_medium, v3_neg(n), n);
+      ray.origin = v3_select(
+          hit, v3_mad(p, side, lane_select(refract | enter_medium, -2 * h, 2 * h)), ray.origin);
+      ray.dir = v3_select(hit, next_dir, ray.dir);
+      diffuse_pdf = lane_select(hit, lane_select(diffuse, fmax(v3_dot(next_dir, lit_normal),
+                                                               (real_t)0) * (real_t)M_1_PI_F,
+                                                 0),
+                                diffuse_pdf);
+      /* Entering glass: its absorption; entering a medium: its albedo and mean free path. */
+      sigma = v3_select(refract & !in_glass, mat.absorption, sigma);
+      in_glass ^= refract;
+      medium_albedo =
+          v3_select(enter_medium, single_scattering_albedos(mat.subsurface_color), medium_albedo);
+      mean_free_path = lane_select(enter_medium, mat.mean_free_path, mean_free_path);
+      in_medium = (in_medium & !leaving_medium) | enter_medium;
+      crossed_glass = (hit & (refract | (crossed_glass & in_glass))) | (!hit & crossed_glass);
+      crossed_medium = (hit & (enter_medium | leaving_medium)) | (!hit & crossed_medium);
+      path_t += lane_select(hit, m.t, 0);
+      active &= !last;
+    }
     if (k >= 2) {
       const real_t q = clamp(fmax(throughput.x, fmax(throughput.y, throughput.z)), (real_t)0.05,
                              (real_t)1);
       active &= pixel_random(fc, ix, iy, FR_PATH_STREAM(k, 4)) < q;
       throughput = v3_scale(throughput, (real_t)1 / q);
     }
-    path_t += m.t;
+    if (!any_lane(active)) break;
   }
 
   FR_COUNTS_END(counts_out);

@@ -196,6 +196,25 @@ typedef struct surface_t {
   real_t reflectivity;
 } surface_t;
 
+/* What a scene's material function may return for a surface point (path tracing; path.cl and
+ * material.cl say what each field does). A scene's surface source may define
+ *   material_t scene_material(vec3_t p, material_t m, __constant const scene_params_t* params);
+ * which receives the default material at p (from its surface colour and the render settings)
+ * and returns it changed. Values outside the ranges below are clamped to them. */
+typedef struct material_t {
+  vec3_t base_color;       /* [0, 1]: the diffuse albedo, a metal's reflectance, glass's tint */
+  real_t specular;         /* [0, 1]: the share mirrored by a clear coat (surface_t.reflectivity) */
+  real_t roughness;        /* [0, 1]: of the coat, metal and glass; 0 polished (GGX alpha: its square) */
+  real_t metalness;        /* [0, 1]: the share that is metal */
+  real_t transmission;     /* [0, 1]: of the light neither mirrored nor metal, the share entering glass */
+  real_t ior;              /* [1, 4]: the glass's index of refraction */
+  vec3_t absorption;       /* >= 0: the glass's absorption per world unit, per channel */
+  real_t subsurface;       /* [0, 1]: of the diffuse light, the share that scatters under the surface */
+  vec3_t subsurface_color; /* [0, 1]: what the scattering medium reflects overall */
+  real_t mean_free_path;   /* > 0: world units between scatterings in it */
+  vec3_t emission;         /* >= 0: radiance the surface gives off */
+} material_t;
+
 /* A well-mixed 32-bit hash (Wellons' lowbias32). */
 inline lane_uint_t hash_uint(lane_uint_t h) {
   h ^= h >> 16;

@@ -56,8 +56,8 @@ __kernel void fr_render(FR_RENDER_KERNEL_PARAMS) {
     /* Mirror bounces have budgets of their own (frame_constants.h). */
     const int max_steps = bounce == 0 ? fc->max_steps : fc->bounce_max_steps;
     const int shadow_steps = bounce == 0 ? fc->shadow_max_steps : fc->bounce_shadow_max_steps;
-    march_result_t m = march(ray, path_t, bounce == 0 ? cone_from : (real_t)0, max_steps,
-                             (real_t)1, fc,
+    march_result_t m = march(ray, path_t, bounce == 0 ? cone_from : (real_t)0,
+                             (real_t)FR_SCALAR_MAX, max_steps, (real_t)1, fc,
                              params FR_COUNTS_ARG);
     if (bounce == 0) m.ao_steps += cone_ao;
     const mask_t hit = active & m.hit;

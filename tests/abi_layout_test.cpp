@@ -33,8 +33,9 @@ static_assert(offsetof(fr_param_desc, max_value) == 96);
 static_assert(sizeof(fr_camera) == 88);
 static_assert(offsetof(fr_camera, eye) == 8);
 static_assert(offsetof(fr_camera, fov_deg) == 80);
-static_assert(sizeof(fr_light) == 80);
+static_assert(sizeof(fr_light) == 88);
 static_assert(offsetof(fr_light, falloff) == 72);
+static_assert(offsetof(fr_light, radius) == 80);  // ABI 1.3
 
 static_assert(sizeof(fr_host) == 48);
 static_assert(offsetof(fr_host, host_name) == 24);
@@ -84,6 +85,6 @@ TEST(AbiLayout, CAndCppAgree) {
 
 TEST(AbiLayout, VersionMacros) {
   EXPECT_EQ(FR_ABI_VERSION_MAJOR, 1u);
-  EXPECT_EQ(FR_ABI_VERSION_MINOR, 2u);
+  EXPECT_EQ(FR_ABI_VERSION_MINOR, 3u);
   EXPECT_STREQ(FR_SCENE_ENTRY_SYMBOL, "fractalis_scene_entry");
 }

@@ -46,6 +46,9 @@ inline std::shared_ptr<const LoadedScene> unit_ball() {
 inline std::shared_ptr<const LoadedScene> plain_sponge() {
   return load_or_fail(std::filesystem::path(TEST_SCENE_DIR) / "plain_sponge" PLUGIN_SUFFIX);
 }
+inline std::shared_ptr<const LoadedScene> material_ball() {
+  return load_or_fail(std::filesystem::path(TEST_SCENE_DIR) / "material_ball" PLUGIN_SUFFIX);
+}
 
 // The default device (PoCL's CPU device on the development machines), opened once.
 inline ClRuntime& runtime() {

@@ -51,12 +51,12 @@ std::optional<std::string> check_tags(const std::string& tags) {
     for (char c : word)
       rest_ok = rest_ok && ((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-');
     if (!first_ok || !rest_ok)
-      return "tag '" + printable(word) + "' must match [a-z0-9][a-z0-9-]* (tags are separated by spaces)";
+      return "tag '" + printable(word) +
+             "' must match [a-z0-9][a-z0-9-]* (tags are separated by spaces)";
     for (const std::string& s : seen)
       if (s == word) return "tag '" + word + "' appears twice";
     seen.push_back(word);
-    if (seen.size() > kMaxSceneTags)
-      return "more than " + std::to_string(kMaxSceneTags) + " tags";
+    if (seen.size() > kMaxSceneTags) return "more than " + std::to_string(kMaxSceneTags) + " tags";
     i = end;
   }
   return std::nullopt;
@@ -79,6 +79,11 @@ std::optional<std::string> check_light(const fr_light& light) {
   if (!(light.attenuation >= 0) || !std::isfinite(light.attenuation) ||
       (light.attenuation > 0 && !(light.falloff > 0 && std::isfinite(light.falloff))))
     return "needs attenuation >= 0 and, when attenuation > 0, falloff > 0";
+  if (!(light.radius >= 0) || !std::isfinite(light.radius))
+    return "has radius " + std::to_string(light.radius) + " (needs a finite radius >= 0)";
+  if (light.kind == FR_LIGHT_DIRECTIONAL && !(light.radius < 0.5))
+    return "is directional with an angular radius of " + std::to_string(light.radius) +
+           " radians (needs below 0.5)";
   return std::nullopt;
 }
 

@@ -68,6 +68,7 @@ void write_light(WireWriter& w, const fr_light& l) {
   w.f64(l.intensity);
   w.f64(l.attenuation);
   w.f64(l.falloff);
+  w.f64(l.radius);
 }
 fr_light read_light(WireReader& r) {
   fr_light l{};
@@ -78,6 +79,7 @@ fr_light read_light(WireReader& r) {
   l.intensity = r.f64();
   l.attenuation = r.f64();
   l.falloff = r.f64();
+  l.radius = r.f64();
   return l;
 }
 
@@ -86,7 +88,8 @@ fr_light read_light(WireReader& r) {
 void write_scene_info(WireWriter& w, const SceneInfo& info) {
   for (const std::string* s :
        {&info.id, &info.name, &info.version, &info.author, &info.license, &info.description,
-        &info.tags, &info.credit, &info.de_source, &info.de_source_name, &info.surface_source, &info.surface_source_name})
+        &info.tags, &info.credit, &info.de_source, &info.de_source_name, &info.surface_source,
+        &info.surface_source_name})
     w.str(*s);
   w.u32(static_cast<uint32_t>(info.params.size()));
   for (const ParamInfo& p : info.params) {

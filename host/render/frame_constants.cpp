@@ -17,7 +17,7 @@ static_assert(FR_KERNEL_LIGHT_DIRECTIONAL == FR_LIGHT_DIRECTIONAL &&
 
 // The kernels read this struct with OpenCL C's layout rules; with only 4-byte fields both sides
 // agree, and these checks keep it so.
-static_assert(sizeof(fr_frame_constants) == 912, "fr_frame_constants layout changed");
+static_assert(sizeof(fr_frame_constants) == 964, "fr_frame_constants layout changed");
 static_assert(offsetof(fr_frame_constants, first_pixel_dir) == 0);
 static_assert(offsetof(fr_frame_constants, light_vector) == 96);
 static_assert(offsetof(fr_frame_constants, light_kind) == 352);
@@ -33,6 +33,8 @@ static_assert(offsetof(fr_frame_constants, ao_reference_steps) == 832);
 static_assert(offsetof(fr_frame_constants, cone_blocks_y) == 852);
 static_assert(offsetof(fr_frame_constants, path_max_bounces) == 892);
 static_assert(offsetof(fr_frame_constants, absorption) == 904);
+static_assert(offsetof(fr_frame_constants, light_radius) == 912);
+static_assert(offsetof(fr_frame_constants, aperture_blades) == 960);
 namespace {
 void put(float out[4], glm::dvec3 v) {
   out[0] = static_cast<float>(v.x);
@@ -117,6 +119,11 @@ fr_frame_constants make_frame_constants(const CameraRays& rays, const SceneState
   fc.ior = s.ior;
   fc.absorption = static_cast<float>(s.absorption / state.bounding_radius);
   fc.emission = s.emission;
+  fc.metalness = s.metalness;
+  fc.specular_roughness = s.specular_roughness;
+  fc.subsurface = s.subsurface;
+  fc.mean_free_path = static_cast<float>(s.mean_free_path * state.bounding_radius);
+  fc.aperture_blades = s.aperture_blades;
   put(fc.camera_right, rays.right);
   put(fc.camera_up, rays.up);
   put(fc.camera_forward, rays.forward);
@@ -133,6 +140,7 @@ fr_frame_constants make_frame_constants(const CameraRays& rays, const SceneState
     fc.light_kind[count] = point ? FR_KERNEL_LIGHT_POINT : FR_KERNEL_LIGHT_DIRECTIONAL;
     fc.light_attenuation[count] = static_cast<float>(point ? l.attenuation : 0);
     fc.light_falloff[count] = static_cast<float>(point ? l.falloff : 0);
+    fc.light_radius[count] = static_cast<float>(l.radius);
     ++count;
   }
   if (count == 0) {

@@ -48,6 +48,8 @@ const PipelineFile kRenderPipeline[] = {
     {FR_FEATURE_REFLECTIONS, "reflect.cl"},
     {0, "film.cl"},
     {0, "render.cl", For::Fast},
+    {0, "material.cl", For::Path},
+    {0, "area_lights.cl", For::Path},
     {0, "path.cl", For::Path},
 };
 
@@ -210,6 +212,10 @@ void append_scene_prefix(std::ostringstream& out, const SceneInfo& info,
   define_choice(out, "FR_SHADOW", config.shadow_method);
   define_choice(out, "FR_FOG", config.fog_method);
   out << "#define FR_HAS_SURFACE " << (has_surface ? 1 : 0) << "\n";
+  // The surface source's optional material function (path tracing; prelude.cl's material_t).
+  const bool has_material =
+      has_surface && source_defines_function(info.surface_source, "scene_material");
+  out << "#define FR_SCENE_MATERIAL " << (has_material ? 1 : 0) << "\n";
   out << "#define FR_COUNT_EVALS " << (config.count_evaluations ? 1 : 0) << "\n";
   out << "#define FR_RELAX_ADAPTIVE " << (config.adaptive_relaxation ? 1 : 0) << "\n";
   // 0: colour; 1: and steps and ray status; 2: every pass (render.cl).

@@ -186,12 +186,21 @@ struct RenderSettings {
   float absorption = 0.0f;
   // Path tracing: radiance the surface gives off, times its colour (a glowing fractal).
   float emission = 0.0f;
+  // Path tracing's default material beyond the colour (kernels/path.cl's material_t): the share
+  // that is metal (reflects in its colour), the roughness of every glossy lobe (0: mirror), the
+  // share of the diffuse light that scatters under the surface, and its mean free path there per
+  // bounding radius.
+  float metalness = 0.0f;
+  float specular_roughness = 0.0f;
+  float subsurface = 0.0f;
+  float mean_free_path = 0.05f;
   float fog_density = 0.08f;  // exponential fog, per bounding radius
   float fog_scale = 0.12f;    // power-law fog: amount = fog_scale * (t / bounding radius)^0.75
   float glow_strength = 0.6f;
   float glow_falloff = 0.02f;    // x bounding radius
   float aperture_radius = 0.0f;  // thin lens, world units; 0: no depth of field
   float focus_distance = 0.0f;   // world units; 0: the distance from eye to target
+  int aperture_blades = 0;       // the aperture's sides (bokeh shape); below 3: round
   std::array<float, 3> albedo{0.72f, 0.52f, 0.36f};
   std::array<float, 3> ambient{0.16f, 0.19f, 0.25f};
   std::array<float, 3> sky_zenith{0.22f, 0.36f, 0.62f};
@@ -256,12 +265,17 @@ void visit_render_fields(Settings& s, Visit&& visit) {
   visit("ior", s.ior);
   visit("absorption", s.absorption);
   visit("emission", s.emission);
+  visit("metalness", s.metalness);
+  visit("specular_roughness", s.specular_roughness);
+  visit("subsurface", s.subsurface);
+  visit("mean_free_path", s.mean_free_path);
   visit("fog_density", s.fog_density);
   visit("fog_scale", s.fog_scale);
   visit("glow_strength", s.glow_strength);
   visit("glow_falloff", s.glow_falloff);
   visit("aperture_radius", s.aperture_radius);
   visit("focus_distance", s.focus_distance);
+  visit("aperture_blades", s.aperture_blades);
   visit("albedo", s.albedo);
   visit("ambient", s.ambient);
   visit("sky_zenith", s.sky_zenith);
@@ -286,7 +300,7 @@ constexpr size_t aggregate_member_count() {
 }  // namespace detail
 // RenderSettings' direct members (the window counts once): a new field changes the count. List
 // it in visit_render_fields, then update this number.
-static_assert(detail::aggregate_member_count<RenderSettings>() == 58,
+static_assert(detail::aggregate_member_count<RenderSettings>() == 63,
               "RenderSettings changed: list the new field in visit_render_fields");
 
 }  // namespace fr

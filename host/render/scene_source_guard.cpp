@@ -230,6 +230,12 @@ HostKernelNames collect_host_names(const std::vector<std::string_view>& before,
   return host;
 }
 
+bool source_defines_function(std::string_view text, std::string_view name) {
+  for (const auto& named : scan_source(text).names)
+    if (named.word == "function" && named.name == name) return true;
+  return false;
+}
+
 std::vector<std::string> guard_scene_source(const std::string& scene_id, std::string_view file_name,
                                             std::string_view text, const HostKernelNames& host) {
   const SourceScan scan = scan_source(text);

@@ -36,4 +36,8 @@ HostKernelNames collect_host_names(const std::vector<std::string_view>& before,
 std::vector<std::string> guard_scene_source(const std::string& scene_id, std::string_view file_name,
                                             std::string_view text, const HostKernelNames& host);
 
+// Whether the source defines a function of this name at file scope (kernel_assembly.cpp: a
+// surface source's optional scene_material).
+bool source_defines_function(std::string_view text, std::string_view name);
+
 }  // namespace fr

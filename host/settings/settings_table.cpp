@@ -326,6 +326,26 @@ std::vector<SettingSpec> make_table() {
       "render.emission", 0, 1000, false,
       "Path tracing: light the surface gives off, times its colour (0: none; 1: as bright as a "
       "white surface\nunder a light of colour 1)."));
+  t.push_back(number_setting<&S::render, &R::metalness>(
+      "render.metalness", 0, 1, false,
+      "Path tracing: the share of the default material that is metal, reflecting in its own "
+      "colour (0 to 1)."));
+  t.push_back(number_setting<&S::render, &R::specular_roughness>(
+      "render.specular_roughness", 0, 1, false,
+      "Path tracing: roughness of the mirror, metal and glass (0: polished; 1: fully rough; GGX "
+      "alpha is its\nsquare)."));
+  t.push_back(number_setting<&S::render, &R::subsurface>(
+      "render.subsurface", 0, 1, false,
+      "Path tracing: the share of the diffuse light that enters the surface and scatters under "
+      "it (wax,\nmarble), in the surface's colour."));
+  t.push_back(number_setting<&S::render, &R::mean_free_path>(
+      "render.mean_free_path", 0, 100, true,
+      "Path tracing: subsurface light's mean distance between scatterings, per bounding radius "
+      "(small:\nnearly opaque; large: translucent)."));
+  t.push_back(int_setting<&S::render, &R::aperture_blades>(
+      "render.aperture_blades", 0, 32,
+      "Sides of the lens's aperture, the shape of out-of-focus highlights (bokeh): 0 (or 1, 2) "
+      "is round."));
   t.push_back(in_overlay(number_setting<&S::render, &R::aperture_radius>(
                              "render.aperture", 0, 10, false,
                              "Thin-lens aperture radius in world units; 0 is a pinhole (no depth "

@@ -109,7 +109,8 @@ std::string reference_key(const SceneInfo& info, const SceneState& state, const 
   for (int a = 0; a < 3; ++a) k << c.eye[a] << ',' << c.target[a] << ',' << c.up[a] << ';';
   k << c.fov_deg << '\n';
   for (const fr_light& l : state.lights) {
-    k << l.kind << ':' << l.intensity << ':' << l.attenuation << ':' << l.falloff;
+    k << l.kind << ':' << l.intensity << ':' << l.attenuation << ':' << l.falloff << ':'
+      << l.radius;
     for (int a = 0; a < 3; ++a) k << ',' << l.vector[a] << ',' << l.color[a];
     k << ';';
   }
@@ -132,8 +133,9 @@ std::string reference_key(const SceneInfo& info, const SceneState& state, const 
   return hex16(fnv1a(k.str()));
 }
 
-SweepReference make_reference(RenderWorker& renderer, const SceneInfo& info, const SceneState& state,
-                              const RenderSettings& settings, const std::string& device_name,
+SweepReference make_reference(RenderWorker& renderer, const SceneInfo& info,
+                              const SceneState& state, const RenderSettings& settings,
+                              const std::string& device_name,
                               const std::filesystem::path& cache_dir,
                               const std::function<bool(double, int)>& progress,
                               std::string* warning) {

@@ -39,6 +39,8 @@
  * FR_EXT_THREAD_LOG; fr_scene_entry.init, deinit and get_extension; fr_frame_state.light_stride.
  * ABI 1.2 added: fr_scene_desc.tags and credit; FR_PARAM_CHOICE with fr_param_desc.choices and
  * choice_count; FR_SCENE_ENTRY_V1_2.
+ * ABI 1.3 added: fr_light.radius (area lights). A plugin that sets it still loads on an older
+ * host, whose lights stay points.
  */
 #ifndef FRACTALIS_ABI_H
 #define FRACTALIS_ABI_H
@@ -51,7 +53,7 @@ extern "C" {
 #endif
 
 #define FR_ABI_VERSION_MAJOR 1u
-#define FR_ABI_VERSION_MINOR 2u
+#define FR_ABI_VERSION_MINOR 3u
 
 /* Whether a struct that starts with struct_size, as the other side built it, has `field`:
  * a 1.1 plugin on a 1.0 host must not read fields the host does not have, e.g.

@@ -71,4 +71,19 @@
     .falloff = (falloff_)                                                                  \
   }
 
+/* ABI 1.3 area lights (fr_light.radius): a glowing sphere of world-space radius `radius_`, and a
+ * sun whose disc has the angular radius `angle_rad`. On an older host both are points. */
+#define FR_SPHERE_LIGHT(px, py, pz, r, g, b, intensity_, attenuation_, falloff_, radius_)   \
+  {                                                                                        \
+    .struct_size = sizeof(fr_light), .kind = FR_LIGHT_POINT, .vector = {(px), (py), (pz)}, \
+    .color = {(r), (g), (b)}, .intensity = (intensity_), .attenuation = (attenuation_),    \
+    .falloff = (falloff_), .radius = (radius_)                                             \
+  }
+#define FR_SUN_LIGHT(dx, dy, dz, r, g, b, intensity_, angle_rad)                                 \
+  {                                                                                              \
+    .struct_size = sizeof(fr_light), .kind = FR_LIGHT_DIRECTIONAL, .vector = {(dx), (dy), (dz)}, \
+    .color = {(r), (g), (b)}, .intensity = (intensity_), .attenuation = 0, .falloff = 2,         \
+    .radius = (angle_rad)                                                                        \
+  }
+
 #endif /* FRACTALIS_HELPERS_H */

@@ -43,7 +43,7 @@ typedef uint32_t fr_light_kind;
 
 /* A light. A point light at distance d delivers color * intensity / (1 + attenuation * d^falloff)
  * (k / (1 + a d^e): k, a and e below); directional lights do not fall
- * off. */
+ * off. Either way, the light delivered is what a white surface facing the light reflects. */
 typedef struct fr_light {
   uint32_t struct_size; /* sizeof(fr_light) */
   fr_light_kind kind;
@@ -52,6 +52,12 @@ typedef struct fr_light {
   double intensity;   /* k: multiplies color */
   double attenuation; /* a >= 0; 0: no falloff */
   double falloff;     /* e > 0; 2 is physical */
+  /* ABI 1.3 (an older host reads a point; a plugin built before reads 0 here): the light's size,
+   * which the path integrator gives it (the fast one lights from its centre). A point light is a
+   * glowing sphere of this radius in world units around `vector`; a directional light a disc of
+   * this angular radius in radians (the sun: 0.0047), below 0.5. 0: a point, which casts hard
+   * shadows and which no ray can see. Soft shadows and highlights come from the size. */
+  double radius;
 } fr_light;
 
 /* What the update callback receives each frame. [host-owned]: the callback may change the
