@@ -45,7 +45,7 @@
 #define FR_PATH_STREAM(k, i) (16U + 8U * (uint)(k) + (uint)(i))
 /* The most scatterings in the subsurface walks of one path: a path that scatters more is ended
  * (its light lost). */
-#define FR_WALK_MAX_STEPS 256
+#define FR_WALK_MAX_STEPS 128
 
 /* What every light sends to p through the diffuse lobe of normal n, times `weight`, past
  * whatever is in the way: next-event estimation, weighted against bounces that find the lights

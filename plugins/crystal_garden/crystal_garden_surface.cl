@@ -1,4 +1,5 @@
-/* crystal_garden_surface.cl — orbit-trap colours on the crystals, sand below. */
+/* crystal_garden_surface.cl — orbit-trap colours on the crystals, sand below; path traced, the
+ * crystals are tinted glass. */
 #include "fr/palette.cl"
 
 surface_t scene_surface(vec3_t p, __constant const scene_params_t* params) {
@@ -17,4 +18,17 @@ surface_t scene_surface(vec3_t p, __constant const scene_params_t* params) {
     nearest = fmin(nearest, crystals);
   }
   return s;
+}
+
+/* Path tracing: glass crystals tinted by their colour (light of that colour passes), the sand as
+ * the surface colour says. */
+material_t scene_material(vec3_t p, material_t m, __constant const scene_params_t* params) {
+  real_t trap;
+  const mask_t crystal = garden_crystals(p, params, &trap) < garden_ground(p);
+  m.transmission = lane_select(crystal, PARAM(glass), m.transmission);
+  m.specular = lane_select(crystal, to_real(0), m.specular); /* the glass's Fresnel reflects */
+  m.ior = lane_select(crystal, PARAM(ior), m.ior);
+  m.absorption = v3_select(crystal, v3_scale(v3_sub(v3s(1, 1, 1), m.base_color), PARAM(tint)),
+                           m.absorption);
+  return m;
 }

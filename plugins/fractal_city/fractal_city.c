@@ -6,7 +6,15 @@
 extern const char fr_de_source[];
 extern const char fr_surface_source[];
 
-enum { P_LEVEL, P_COLOR_NEAR, P_COLOR_FAR, P_COLOR_CONTRAST, P_COUNT };
+enum {
+  P_LEVEL,
+  P_COLOR_NEAR,
+  P_COLOR_FAR,
+  P_COLOR_CONTRAST,
+  P_WINDOW_GLOW,
+  P_WINDOW_COLOR,
+  P_COUNT
+};
 
 static const fr_param_desc level =
     FR_INT_PARAM("level", "Sponge levels", "Fractal", "Each storey's sponge levels.", 3, 1, 5,
@@ -21,8 +29,17 @@ static const fr_param_desc color_contrast =
     FR_FLOAT_PARAM("color_contrast", "Colour contrast", "Colour",
                    "Exponent of the orbit-trap blend.", 1.0, 0.25, 8, 0);
 
-static const fr_param_desc* const params[P_COUNT] = {&level, &color_near, &color_far,
-                                                     &color_contrast};
+/* Path tracing (the material function in fractal_city_surface.cl): lit windows. */
+static const fr_param_desc window_glow =
+    FR_FLOAT_PARAM("window_glow", "Window glow", "Material",
+                   "Path tracing: radiance of the lit windows (the sponge's holes); 0: all dark.",
+                   1.5, 0, 50, FR_PARAM_ANIMATABLE);
+static const fr_param_desc window_color =
+    FR_COLOR_PARAM("window_color", "Window colour", "Material",
+                   "Path tracing: the colour of the windows' light.", 1.0, 0.62, 0.3);
+
+static const fr_param_desc* const params[P_COUNT] = {&level,          &color_near,  &color_far,
+                                                     &color_contrast, &window_glow, &window_color};
 
 /* Over the city from its edge. */
 static const fr_camera camera = FR_CAMERA(6.5, 3.2, 7.0, 0.0, -0.2, 0.0, 0.0, 1.0, 0.0, 50.0);
@@ -34,7 +51,7 @@ static const fr_scene_desc scene = {
     .struct_size = sizeof(fr_scene_desc),
     .id = "fractal_city",
     .name = "Fractal city",
-    .version = "1.0.0",
+    .version = "1.1.0",
     .author = "The Fractalis developers",
     .license = "MIT",
     .description =

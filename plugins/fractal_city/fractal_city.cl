@@ -11,22 +11,34 @@
 #define CITY_HALF 0.5 /* a tower's half-width: 0.3 of the cell left as street */
 #define CITY_RADIUS 6.0
 
-inline real_t city_towers(vec3_t p, __constant const scene_params_t* params, real_t* trap) {
+/* Where p is in its cell's tower: the point in the frame of the tower's sponge cube it is
+ * nearest (centred, CITY_HALF from each face), the tower's storeys (0: no tower) and the cell's
+ * hash. */
+inline vec3_t city_local(vec3_t p, real_t* storeys, lane_uint_t* hash, vec3_t* in_cell) {
   const real_t cx = rint(p.x / to_real(CITY_CELL)), cz = rint(p.z / to_real(CITY_CELL));
-  const vec3_t in_cell = v3(p.x - cx * to_real(CITY_CELL), p.y, p.z - cz * to_real(CITY_CELL));
+  *in_cell = v3(p.x - cx * to_real(CITY_CELL), p.y, p.z - cz * to_real(CITY_CELL));
   /* Storeys (1 to 4 sponge cubes) from the cell's hash, fewer towards the edge. */
   /* An integer hash of the cell, so that float and double kernels build the same city. */
-  const lane_uint_t hash = hash_uint(real_to_uint(cx + to_real(64)) * 73856093u ^
-                                     real_to_uint(cz + to_real(64)) * 19349663u);
+  *hash = hash_uint(real_to_uint(cx + to_real(64)) * 73856093u ^
+                    real_to_uint(cz + to_real(64)) * 19349663u);
   const real_t r = sqrt(cx * cx + cz * cz) * to_real(CITY_CELL);
-  real_t storeys = uint_to_real(hash & 3u) + 1;
-  storeys = fmax(to_real(1), storeys - floor(r / to_real(2.5)));
-  storeys = lane_select(r > to_real(CITY_RADIUS - 1), to_real(0), storeys);
-  /* Limited repetition of one sponge cube up the tower, then the tower's own bound. */
-  vec3_t q = p_translate(in_cell, v3s(0, -1 + CITY_HALF, 0));
-  q.y = q.y - to_real(2 * CITY_HALF) * clamp(rint(q.y / to_real(2 * CITY_HALF)), to_real(0), fmax(storeys - 1, to_real(0)));
+  real_t n = uint_to_real(*hash & 3u) + 1;
+  n = fmax(to_real(1), n - floor(r / to_real(2.5)));
+  *storeys = lane_select(r > to_real(CITY_RADIUS - 1), to_real(0), n);
+  /* Limited repetition of one sponge cube up the tower. */
+  vec3_t q = p_translate(*in_cell, v3s(0, -1 + CITY_HALF, 0));
+  q.y = q.y - to_real(2 * CITY_HALF) * clamp(rint(q.y / to_real(2 * CITY_HALF)), to_real(0), fmax(*storeys - 1, to_real(0)));
+  return q;
+}
+
+inline real_t city_towers(vec3_t p, __constant const scene_params_t* params, real_t* trap) {
+  real_t storeys;
+  lane_uint_t hash;
+  vec3_t in_cell;
+  const vec3_t q = city_local(p, &storeys, &hash, &in_cell);
   real_t tower = de_sponge_at(q, v3s(0, 0, 0), CITY_HALF, PARAM(level), trap);
   tower = lane_select(storeys > 0, tower, to_real(1e3));
+  /* Then the tower's own bound. */
   const real_t to_wall = to_real(CITY_CELL / 2) - fmax(fabs(in_cell.x), fabs(in_cell.z)) +
                          to_real(CITY_CELL / 2 - CITY_HALF);
   return fmin(tower, fmax(to_wall, to_real(0.02)));

@@ -6,7 +6,16 @@
 extern const char fr_de_source[];
 extern const char fr_surface_source[];
 
-enum { P_CHILD_SCALE, P_LEVELS, P_COLOR_NEAR, P_COLOR_FAR, P_COLOR_CONTRAST, P_COUNT };
+enum {
+  P_CHILD_SCALE,
+  P_LEVELS,
+  P_COLOR_NEAR,
+  P_COLOR_FAR,
+  P_COLOR_CONTRAST,
+  P_TRANSLUCENCY,
+  P_MEAN_FREE_PATH,
+  P_COUNT
+};
 
 static const fr_param_desc child_scale = FR_FLOAT_PARAM(
     "child_scale", "Child size", "Fractal", "Each child's radius relative to its parent.", 0.36,
@@ -23,12 +32,27 @@ static const fr_param_desc color_contrast =
     FR_FLOAT_PARAM("color_contrast", "Colour contrast", "Colour",
                    "Exponent of the orbit-trap blend.", 1.0, 0.25, 8, 0);
 
-static const fr_param_desc* const params[P_COUNT] = {&child_scale, &levels, &color_near, &color_far,
-                                                     &color_contrast};
+/* Path tracing (the material function in sphereflake_surface.cl): marble-like spheres that
+ * scatter light under a thin clear coat. */
+static const fr_param_desc translucency = FR_FLOAT_PARAM(
+    "translucency", "Translucency", "Material",
+    "Path tracing: the share of the spheres' diffuse light that scatters under the surface.", 1.0,
+    0, 1, FR_PARAM_ANIMATABLE);
+static const fr_param_desc mean_free_path = FR_FLOAT_PARAM(
+    "mean_free_path", "Mean free path", "Material",
+    "Path tracing: world units between scatterings under the surface; larger is more "
+    "translucent (and slower).",
+    0.05, 0.002, 1, FR_PARAM_ANIMATABLE | FR_PARAM_LOG_SCALE);
+
+static const fr_param_desc* const params[P_COUNT] = {&child_scale,   &levels,         &color_near,
+                                                     &color_far,     &color_contrast, &translucency,
+                                                     &mean_free_path};
 
 /* The whole flake from above a corner. */
 static const fr_camera camera = FR_CAMERA(3.6, 2.6, 4.4, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 45.0);
-static const fr_light light_0 = FR_DIRECTIONAL_LIGHT(-0.45, -0.85, -0.35, 1.0, 0.95, 0.88, 1.3);
+/* A sun of 2 degrees' radius (soft shadows when path traced; a direction to the fast integrator).
+ */
+static const fr_light light_0 = FR_SUN_LIGHT(-0.45, -0.85, -0.35, 1.0, 0.95, 0.88, 1.3, 0.035);
 static const fr_light light_1 = FR_DIRECTIONAL_LIGHT(0.6, -0.2, 0.5, 0.4, 0.5, 0.7, 0.3);
 static const fr_light* const lights[] = {&light_0, &light_1};
 
@@ -46,7 +70,7 @@ static const fr_scene_desc scene = {
     .struct_size = sizeof(fr_scene_desc),
     .id = "sphereflake",
     .name = "Sphereflake",
-    .version = "1.0.0",
+    .version = "1.1.0",
     .author = "The Fractalis developers",
     .license = "MIT",
     .description =
