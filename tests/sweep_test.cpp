@@ -11,11 +11,11 @@
 #include "test_support.hpp"
 
 #ifndef _WIN32  // the interrupted sweep, at the end: POSIX signals
-#include <algorithm>
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <algorithm>
 #endif
 
 #include <cmath>
@@ -104,10 +104,17 @@ TEST(SweepReference, KeyFollowsEveryFieldThatShapesTheReference) {
   const std::string key = reference_key(info, state, base, "device");
   EXPECT_EQ(reference_key(info, state, base, "device"), key);
   EXPECT_NE(reference_key(info, state, base, "another device"), key);
-  const std::set<std::string> set_by_the_reference = {
-      "samples",      "max_steps", "shadow_max_steps",  "refine_steps", "relaxation",
-      "cone_prepass", "fast_math", "count_evaluations", "watchdog_s",   "bounce_max_steps",
-      "bounce_shadow_max_steps"};
+  const std::set<std::string> set_by_the_reference = {"samples",
+                                                      "max_steps",
+                                                      "shadow_max_steps",
+                                                      "refine_steps",
+                                                      "relaxation",
+                                                      "cone_prepass",
+                                                      "fast_math",
+                                                      "count_evaluations",
+                                                      "watchdog_s",
+                                                      "bounce_max_steps",
+                                                      "bounce_shadow_max_steps"};
   size_t fields = 0;
   visit_render_fields(base, [&](const char* name, const auto& value) {
     using T = std::decay_t<decltype(value)>;
@@ -152,11 +159,29 @@ TEST(SweepMetrics, ParetoFront) {
 TEST(SweepPlan, OneKnobAtATimeAroundTheDefaults) {
   SceneInfo info;
   info.features = FR_FEATURE_AO;
-  EXPECT_EQ(knob_names(info),
+  const RenderSettings defaults;
+  EXPECT_EQ(knob_names(info, defaults),
             (std::vector<std::string>{"precision", "hit_threshold_k", "max_steps", "refine_steps",
                                       "relaxation", "adaptive_relaxation", "cone_prepass",
-                                      "normals", "samples", "lanes", "ao"}));
-  const RenderSettings defaults;
+                                      "normals", "samples", "lanes", "ao", "integrator"}));
+  // Path tracing: its bounce limit, and no ambient occlusion (not in its kernel); its samples
+  // reach further.
+  RenderSettings path = defaults;
+  path.integrator = Integrator::Path;
+  const auto path_knobs = knob_names(info, path);
+  EXPECT_EQ(std::find(path_knobs.begin(), path_knobs.end(), "ao"), path_knobs.end());
+  EXPECT_NE(std::find(path_knobs.begin(), path_knobs.end(), "path_max_bounces"), path_knobs.end());
+  int path_sample_rows = 0;
+  for (const auto& c : plan_sweep(info, path, {"samples", "integrator"})) {
+    if (c.knob == "samples") {
+      ++path_sample_rows;
+      EXPECT_EQ(c.settings.integrator, Integrator::Path);
+    }
+    if (c.knob == "integrator") {
+      EXPECT_EQ(c.settings.integrator, Integrator::Fast) << c.value;
+    }
+  }
+  EXPECT_EQ(path_sample_rows, 4) << "1, 4, 16, 64, 256 less the default's 1";
   const auto configs = plan_sweep(info, defaults, {"max_steps", "relaxation"});
   ASSERT_EQ(configs.size(), 1u + 4 + 3) << "the default's own values are the default row";
   EXPECT_EQ(configs[0].knob, "default");
@@ -172,11 +197,11 @@ TEST(SweepPlan, OneKnobAtATimeAroundTheDefaults) {
   EXPECT_THROW(plan_sweep(info, defaults, {"warp_drive"}), std::invalid_argument);
   // The mirror bounces' budgets, for a scene with mirrors (and their shadows, with shadows).
   info.features = FR_FEATURE_REFLECTIONS;
-  const auto mirrors = knob_names(info);
+  const auto mirrors = knob_names(info, defaults);
   EXPECT_NE(std::find(mirrors.begin(), mirrors.end(), "bounce_steps"), mirrors.end());
   EXPECT_EQ(std::find(mirrors.begin(), mirrors.end(), "bounce_shadow_steps"), mirrors.end());
   info.features = FR_FEATURE_REFLECTIONS | FR_FEATURE_SHADOWS;
-  const auto both = knob_names(info);
+  const auto both = knob_names(info, defaults);
   EXPECT_NE(std::find(both.begin(), both.end(), "bounce_shadow_steps"), both.end());
   for (const auto& c : plan_sweep(info, defaults, {"bounce_shadow_steps"}))
     if (c.knob == "bounce_shadow_steps") {

@@ -106,7 +106,7 @@ SweepJob plan_job(ParsedOptions& options) {
   job.out_dir = options.get("out").value_or("sweep-" + job.p.scene->info.id);
   if (job.out_dir.empty()) throw UsageError("--out: empty folder name");
   check_memory(job.p.render, job.p.device, true);
-  std::vector<std::string> knobs = knob_names(job.p.scene->info);
+  std::vector<std::string> knobs = knob_names(job.p.scene->info, job.p.render);
   if (auto list = options.get("knobs")) {
     knobs = split_list(*list);
     if (knobs.empty()) throw UsageError("--knobs: empty sweep (name at least one knob)");
@@ -192,7 +192,7 @@ void report_sweep(const SweepJob& job, const SweepResult& result, std::ostream& 
                 "its last refinement changed the picture by %.3f (8-bit MAE) and the surface by "
                 "%.3f footprints\n",
                 result.scene_id.c_str(), result.width_px, result.height_px,
-                job.p.device.name.c_str(), job.frames, kReferenceSamples,
+                job.p.device.name.c_str(), job.frames, result.reference.samples,
                 result.reference.hit_threshold_k, result.reference.refinements,
                 result.reference.from_cache ? " (cached)" : "", result.reference.convergence_mae,
                 result.reference.convergence_depth_px);

@@ -64,8 +64,22 @@ std::vector<KnobValue> knob_values(const std::string& knob, const RenderSettings
       v.push_back({enum_name(m), [m](RenderSettings& s) { s.normals = m; }});
   } else if (knob == "samples") {
     *default_value = number(d.samples);
+    // Path tracing converges by samples alone: a longer range, for error against time.
+    const std::vector<int> counts = d.integrator == Integrator::Path
+                                        ? std::vector<int>{1, 4, 16, 64, 256}
+                                        : std::vector<int>{1, 2, 4, 8, 16};
+    for (int n : counts) v.push_back({number(n), [n](RenderSettings& s) { s.samples = n; }});
+  } else if (knob == "integrator") {
+    // Against the base integrator's reference: with --integrator path, the fast integrator's
+    // row is how far its light model is from the path-traced one, which the samples rows reach
+    // at some cost (where path tracing starts to pay).
+    *default_value = enum_name(d.integrator);
+    for (Integrator i : {Integrator::Fast, Integrator::Path})
+      v.push_back({enum_name(i), [i](RenderSettings& s) { s.integrator = i; }});
+  } else if (knob == "path_max_bounces") {
+    *default_value = number(d.path_max_bounces);
     for (int n : {1, 2, 4, 8, 16})
-      v.push_back({number(n), [n](RenderSettings& s) { s.samples = n; }});
+      v.push_back({number(n), [n](RenderSettings& s) { s.path_max_bounces = n; }});
   } else if (knob == "lanes") {
     *default_value = number(d.lanes);
     for (int n : {1, 16}) v.push_back({number(n), [n](RenderSettings& s) { s.lanes = n; }});
@@ -109,13 +123,17 @@ const std::vector<std::string>& all_knob_names() {
                                                  "cone_prepass", "normals",
                                                  "samples",      "lanes",
                                                  "ao",           "shadow_steps",
-                                                 "bounce_steps", "bounce_shadow_steps"};
+                                                 "bounce_steps", "bounce_shadow_steps",
+                                                 "integrator",   "path_max_bounces"};
   return names;
 }
 
-std::vector<std::string> knob_names(const SceneInfo& info) {
+std::vector<std::string> knob_names(const SceneInfo& info, const RenderSettings& base) {
+  const bool path = base.integrator == Integrator::Path;
   std::vector<std::string> names;
   for (const auto& k : all_knob_names()) {
+    if (k == "path_max_bounces" && !path) continue;
+    if (path && (k == "ao" || k == "bounce_shadow_steps")) continue;
     if (k == "ao" && !(info.features & FR_FEATURE_AO)) continue;
     if (k == "shadow_steps" && !(info.features & FR_FEATURE_SHADOWS)) continue;
     if (k == "bounce_steps" && !(info.features & FR_FEATURE_REFLECTIONS)) continue;

@@ -19,9 +19,10 @@ struct SweepConfig {
 // Every knob's name, in the order a sweep takes them.
 const std::vector<std::string>& all_knob_names();
 
-// The knobs that apply to this scene: effect knobs (ao, shadow_steps) only when the scene
-// uses that effect.
-std::vector<std::string> knob_names(const SceneInfo& info);
+// The knobs that apply to this scene at these base settings: effect knobs (ao, shadow_steps) only
+// when the scene uses that effect, the path tracer's (path_max_bounces) only when the base
+// integrator is path, and not what its kernel leaves out (ao, the mirrors' shadow budget).
+std::vector<std::string> knob_names(const SceneInfo& info, const RenderSettings& base);
 
 // The configurations for `knobs` (each must be one of all_knob_names(); an unknown one throws
 // std::invalid_argument naming it and the known ones). A value equal to the default is the

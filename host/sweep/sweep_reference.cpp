@@ -91,7 +91,8 @@ RenderSettings reference_settings(const RenderSettings& base) {
   ref.refine_steps = 0;
   ref.fast_math = false;
   ref.step_scale = std::min(ref.step_scale, 1.0f);  // a scale above 1 over-steps: never truth
-  ref.samples = kReferenceSamples;  // (the refinements render 1, for geometry, and these)
+  // (the refinements render 1, for geometry, and these)
+  ref.samples = ref.integrator == Integrator::Path ? kPathReferenceSamples : kReferenceSamples;
   // What only says how the frame is read or watched, not what it shows.
   ref.outputs = Readback::Everything;
   ref.count_evaluations = false;
@@ -141,9 +142,12 @@ SweepReference make_reference(RenderWorker& renderer, const SceneInfo& info,
                               std::string* warning) {
   const auto file = cache_dir / (reference_key(info, state, settings, device_name) + ".ref");
   SweepReference r;
+  RenderSettings ref = reference_settings(settings);
+  const int picture_samples = ref.samples;
+  r.samples = picture_samples;
   if (read_cache(file, settings, &r)) return r;
 
-  RenderSettings ref = reference_settings(settings);
+  const bool path = ref.integrator == Integrator::Path;
   const double pixel_angle =
       make_camera_rays(state.camera, settings.width_px, settings.height_px).pixel_angle_rad;
   ReferenceImage previous;
@@ -153,7 +157,7 @@ SweepReference make_reference(RenderWorker& renderer, const SceneInfo& info,
     ref.hit_threshold_k = static_cast<float>(k);
     ref.samples = 1;  // centred rays: the geometry
     const FrameImage geometry = renderer.render(info, state, ref, true);
-    ref.samples = kReferenceSamples;  // the picture
+    ref.samples = picture_samples;  // the picture
     const FrameImage picture = renderer.render(info, state, ref);
     ReferenceImage current;
     current.width_px = settings.width_px;
@@ -169,8 +173,9 @@ SweepReference make_reference(RenderWorker& renderer, const SceneInfo& info,
       r.convergence_mae = change.mean_abs_error;
       r.convergence_depth_px = change.depth_median_px;
       // Converged: the picture moved by less than a quarter of an 8-bit level on average, and
-      // the surface by less than 2% of a footprint.
-      if (change.mean_abs_error < 0.25 && change.depth_median_px < 0.02) {
+      // the surface by less than 2% of a footprint. (A path-traced picture's noise moves it
+      // more than that at any threshold: there the surface alone decides.)
+      if ((path || change.mean_abs_error < 0.25) && change.depth_median_px < 0.02) {
         r.image = std::move(current);
         break;
       }

@@ -1,14 +1,16 @@
 // sweep_reference.hpp — the converged picture a sweep measures against, computed by the
 // renderer itself at settings no configuration uses: double precision end to end, plain sphere
-// tracing (no over-relaxation), a budget of 5000 steps, 16 samples per pixel, and a hit
-// threshold divided by 4 until the picture stops changing (or 4 refinements). How much the last
+// tracing (no over-relaxation), a budget of 5000 steps, 16 samples per pixel (1024 when the
+// base integrator is path), and a hit threshold divided by 4 until the picture stops changing
+// (path-traced: until the surface stops moving; its picture's noise keeps changing) or 4
+// refinements. How much the last
 // refinement still changed is reported: no configuration can be measured as better than that.
 #pragma once
 
 #include "render/renderer.hpp"
-#include "worker/render_worker.hpp"
 #include "scene/scene_data.hpp"
 #include "sweep/sweep_metrics.hpp"
+#include "worker/render_worker.hpp"
 
 #include <filesystem>
 #include <functional>
@@ -23,10 +25,13 @@ struct SweepReference {
   double convergence_mae = 0;       // mean |difference| of the last two refinements, 8-bit units
   double convergence_depth_px = 0;  // median depth difference of the last two, in footprints
   bool from_cache = false;
+  int samples = 0;  // per pixel of its picture
 };
 
-// Samples per pixel of the reference picture.
+// Samples per pixel of the reference picture; path-traced, many more (its noise is what the
+// path tracer's error converges to: at 1024 samples a 32nd of one sample's).
 constexpr int kReferenceSamples = 16;
+constexpr int kPathReferenceSamples = 1024;
 
 // The settings a reference is rendered with, from the sweep's base settings: double precision,
 // plain sphere tracing from every ray's own origin, generous step budgets, central differences,
@@ -45,8 +50,9 @@ std::string reference_key(const SceneInfo& info, const SceneState& state,
 // (progress(k, refinement) is called before each render; returning false abandons the
 // reference: nothing is cached and the result is empty) and stored there atomically. A cache
 // file that cannot be read is recomputed; one that cannot be written is reported on *warning.
-SweepReference make_reference(RenderWorker& renderer, const SceneInfo& info, const SceneState& state,
-                              const RenderSettings& settings, const std::string& device_name,
+SweepReference make_reference(RenderWorker& renderer, const SceneInfo& info,
+                              const SceneState& state, const RenderSettings& settings,
+                              const std::string& device_name,
                               const std::filesystem::path& cache_dir,
                               const std::function<bool(double, int)>& progress,
                               std::string* warning);

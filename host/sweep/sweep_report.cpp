@@ -136,7 +136,7 @@ std::string format_sweep_json(const SweepResult& s) {
       {"reference",
        {{"hit_threshold_k", s.reference.hit_threshold_k},
         {"refinements", s.reference.refinements},
-        {"samples", kReferenceSamples},
+        {"samples", s.reference.samples},
         {"convergence_mean_abs_error", s.reference.convergence_mae},
         {"convergence_depth_px", s.reference.convergence_depth_px}}},
       {"notes", s.notes},
