@@ -4,7 +4,7 @@
 # The host uses it, and so does the Windows build's part that is ported so far.
 set(fractalis_kernel_files frame_constants.h prelude.cl eval_counts.cl rays.cl march.cl cone.cl
     normals.cl shadow.cl ao.cl glow.cl fog.cl lens.cl reflect.cl lights.cl shade.cl film.cl render.cl
-    material.cl area_lights.cl path.cl post.cl probe.cl
+    material.cl area_lights.cl path.cl post.cl denoise.cl probe.cl
     de/primitives.cl de/operators.cl de/folds.cl de/mandelbulb.cl de/menger.cl de/sierpinski.cl
     de/julia.cl de/palette.cl de/mandelbox.cl de/kifs.cl de/jerusalem.cl de/kleinian.cl
     de/hypercomplex.cl de/cantor.cl de/kali.cl de/recursive.cl

@@ -58,6 +58,8 @@ TEST(ExplorerPath, FliesFastThenPathTracesTheParkedView) {
   Settings settings;
   settings.render.integrator = Integrator::Path;
   settings.explorer.path_samples = 16;
+  // The noise figure is the unfiltered mean's (with the filter on, none is shown: below).
+  settings.explorer.denoise = false;
   Explorer explorer(settings, test::worker(), library, "unit_ball");
   const int w = 48, h = 32;
   // The first frame follows a change (the scene was just opened): the fast integrator.
@@ -106,6 +108,27 @@ TEST(ExplorerPath, FliesFastThenPathTracesTheParkedView) {
   explorer.update(input, 0.05, 1.0);
   ASSERT_NE(explorer.render(w, h), nullptr);
   EXPECT_EQ(explorer.stats().path_samples, 0);
+}
+
+// With explorer.denoise (on by default) the parked path-traced view is filtered: the overlay
+// says so and shows no noise figure (the estimate reads the plain running mean's steps).
+TEST(ExplorerPath, TheDenoisedPreviewSaysSo) {
+  const auto dir = test::folder_of_one_scene("path_denoise_plugins", TEST_SCENE_DIR, "unit_ball");
+  std::vector<SceneEvent> events;
+  SceneLibrary library({dir}, PluginPolicy{}, RenderSettings{}, test::worker(), &events);
+  Settings settings;
+  settings.render.integrator = Integrator::Path;
+  settings.explorer.path_samples = 3;
+  ASSERT_TRUE(settings.explorer.denoise) << "on by default";
+  Explorer explorer(settings, test::worker(), library, "unit_ball");
+  ASSERT_NE(explorer.render(48, 32), nullptr);  // after the change: fast
+  EXPECT_FALSE(explorer.stats().path_denoised);
+  for (int n = 1; n <= 3; ++n) {
+    ASSERT_NE(explorer.render(48, 32), nullptr) << n;
+    EXPECT_EQ(explorer.stats().path_samples, n);
+    EXPECT_TRUE(explorer.stats().path_denoised);
+    EXPECT_FALSE(explorer.stats().path_noise.has_value());
+  }
 }
 
 }  // namespace

@@ -186,6 +186,9 @@ const FrameView* Explorer::render(int window_width_px, int window_height_px) {
   // sample costs several of its frames, and one alone is mostly noise.
   const bool path_sample = path && plan.still && !quick_frame_;
   if (!path_sample) s.integrator = Integrator::Fast;
+  // The path-traced preview filtered (explorer.denoise); the fast frames, lattices among them
+  // (windows, which the filter cannot take), never.
+  s.denoise = path_sample && settings_.explorer.denoise;
   const int window_w = std::max(1, window_width_px), window_h = std::max(1, window_height_px);
   LatticePhase phase;  // strides 1: the whole window (a full frame kept for reuse)
   if (plan.lattice) {
@@ -284,7 +287,8 @@ const FrameView* Explorer::render(int window_width_px, int window_height_px) {
   }
   // How far the path-traced view has come, from how much its latest sample moved the mean.
   stats_.path_samples = path_sample ? plan.sample_index + 1 : 0;
-  if (path_sample && last_.linear_rgba) {
+  stats_.path_denoised = path_sample && s.denoise;
+  if (path_sample && !s.denoise && last_.linear_rgba) {
     const size_t values = 4 * last_.pixel_count();
     if (plan.sample_index == 0) stats_.path_noise.reset();
     if (previous_linear_.size() == values)
@@ -320,6 +324,7 @@ std::optional<double> Explorer::focus_at(int x, int y, int width_px, int height_
   s.samples = 1;
   s.integrator = Integrator::Fast;  // only the primary march matters
   s.aperture_radius = 0;            // the pixel's own ray, not a lens sample's
+  s.denoise = false;                // one pixel (a window)
   // One ray can afford to come closer than a frame's rays do (a tenth of their hit threshold,
   // then plain DE steps towards the surface).
   s.hit_threshold_k *= 0.1f;
@@ -376,6 +381,7 @@ bool Explorer::screenshot(const std::filesystem::path& file, int width_px, int h
   s.height_px = height_px;
   s.samples = s.integrator == Integrator::Path ? settings_.explorer.path_samples
                                                : settings_.explorer.full_quality_samples;
+  s.denoise = false;  // rendered in bands, below, which the filter cannot take
   SceneSlot& slot = current();
   if (width_px < 1 || height_px < 1 || width_px > 65535 || height_px > 65535) {
     *error = "screenshot size " + std::to_string(width_px) + "x" + std::to_string(height_px) +

@@ -33,9 +33,11 @@ struct ExplorerStats {
   bool refined = false;  // full quality reached and shown
   // A parked view being path-traced (render.integrator = "path"): its samples so far (0: not
   // path-traced), and the noise left, as the mean's standard error relative to its brightness
-  // (app/noise_estimate.hpp; from the second sample on).
+  // (app/noise_estimate.hpp; from the second sample on, and only unfiltered: the estimate reads
+  // the steps of the plain running mean, which the denoiser's output does not take).
   int path_samples = 0;
   std::optional<double> path_noise;
+  bool path_denoised = false;  // the shown picture is filtered (explorer.denoise)
   double de_steps_per_pixel = 0;
   double out_of_steps_fraction = 0;  // primary rays of the last full frame that ran out of steps
   Precision precision = Precision::Float;  // what the last frame ran in (auto resolved)

@@ -255,6 +255,11 @@ RenderJob plan_render(const ParsedOptions& options, const std::string& out_file)
     if (p.render.count_evaluations)
       throw UsageError("--counts: not for images rendered in bands (--band-rows, or over " +
                        std::to_string(poster_band_pixels(out_file)) + " pixels)");
+    // The filter reads across any band's edge.
+    if (p.render.denoise)
+      throw UsageError("render.denoise: not for images rendered in bands (--band-rows, or over " +
+                       std::to_string(poster_band_pixels(out_file)) +
+                       " pixels); it filters the whole picture at once");
     RenderSettings band = p.render;
     band.height_px = std::min(job.band_rows, p.render.height_px);
     check_memory(band, p.device, is_exr_file_name(out_file));

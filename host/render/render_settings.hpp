@@ -201,6 +201,9 @@ struct RenderSettings {
   float aperture_radius = 0.0f;  // thin lens, world units; 0: no depth of field
   float focus_distance = 0.0f;   // world units; 0: the distance from eye to target
   int aperture_blades = 0;       // the aperture's sides (bokeh shape); below 3: round
+  // An edge-avoiding filter over the accumulated picture, guided by the first hits' normals,
+  // depths and albedos (kernels/denoise.cl): for path tracing at few samples.
+  bool denoise = false;
   std::array<float, 3> albedo{0.72f, 0.52f, 0.36f};
   std::array<float, 3> ambient{0.16f, 0.19f, 0.25f};
   std::array<float, 3> sky_zenith{0.22f, 0.36f, 0.62f};
@@ -276,6 +279,7 @@ void visit_render_fields(Settings& s, Visit&& visit) {
   visit("aperture_radius", s.aperture_radius);
   visit("focus_distance", s.focus_distance);
   visit("aperture_blades", s.aperture_blades);
+  visit("denoise", s.denoise);
   visit("albedo", s.albedo);
   visit("ambient", s.ambient);
   visit("sky_zenith", s.sky_zenith);
@@ -300,7 +304,7 @@ constexpr size_t aggregate_member_count() {
 }  // namespace detail
 // RenderSettings' direct members (the window counts once): a new field changes the count. List
 // it in visit_render_fields, then update this number.
-static_assert(detail::aggregate_member_count<RenderSettings>() == 63,
+static_assert(detail::aggregate_member_count<RenderSettings>() == 64,
               "RenderSettings changed: list the new field in visit_render_fields");
 
 }  // namespace fr

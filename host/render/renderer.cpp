@@ -68,6 +68,7 @@ void Renderer::ensure_buffers(size_t n) {
   status_ = make_buffer(ctx, CL_MEM_WRITE_ONLY, n, "the ray status buffer");
   normal_ = make_buffer(ctx, CL_MEM_WRITE_ONLY, n * 3 * sizeof(float), "the normal buffer");
   albedo_ = make_buffer(ctx, CL_MEM_WRITE_ONLY, n * 3 * sizeof(float), "the albedo buffer");
+  for (auto& b : denoised_) b.reset();  // made when first needed
   buffer_pixels_ = n;
 }
 
@@ -88,6 +89,8 @@ void Renderer::render_sample(const SceneInfo& info, const SceneState& state,
   last_precision_ = settings.precision;
   const int lanes = lanes_for(settings);
   std::string description;
+  // The denoiser is guided by the passes.
+  if (settings.denoise) outputs = Readback::Everything;
   settings.outputs = outputs;
   last_outputs_ = outputs;
   const cl_program program = render_program(info, state, settings, lanes, &description);
@@ -102,6 +105,7 @@ void Renderer::render_sample(const SceneInfo& info, const SceneState& state,
 
   const fr_frame_constants fc =
       make_frame_constants(whole_image_rays(state.camera, settings), state, settings, sample_index);
+  last_pixel_angle_rad_ = fc.pixel_angle_rad;
   cl_check(
       clEnqueueWriteBuffer(q, constants_.get(), CL_FALSE, 0, sizeof fc, &fc, 0, nullptr, nullptr),
       "clEnqueueWriteBuffer", "uploading frame constants");
@@ -256,7 +260,7 @@ Renderer::FinishedFrame Renderer::finish_into(const RenderSettings& settings, Re
     rgba8_memory_ = in_place ? display_memory_ : nullptr;
     rgba8_bytes_ = in_place ? display_bytes_ : std::max(display_bytes, buffer_pixels_ * 4 + 16);
   }
-  const cl_mem hdr = hdr_.get(), out8 = rgba8_.get();
+  const cl_mem hdr = settings.denoise ? denoise(settings) : hdr_.get(), out8 = rgba8_.get();
   const cl_float exposure = settings.exposure;
   const cl_int quad_count = static_cast<cl_int>(round_up_div(n, 4));
   set_arg(post, 0, hdr);
@@ -308,6 +312,53 @@ Renderer::FinishedFrame Renderer::finish_into(const RenderSettings& settings, Re
     }
   }
   return {last_lanes_, last_precision_};
+}
+
+cl_mem Renderer::denoise(const RenderSettings& settings) {
+  if (settings.window.full_width_px > 0)
+    throw std::invalid_argument(
+        "render.denoise filters the whole picture, and this is a window of it (a poster's band "
+        "or an MPI rank's share): render it whole, or without render.denoise");
+  if (last_outputs_ != Readback::Everything)
+    throw std::logic_error("Renderer::denoise: the samples did not write the guiding passes");
+  static const std::string source = std::string(kernel_source("denoise.cl"));
+  cl_kernel k =
+      runtime_.kernel(runtime_.program(source, "-cl-std=CL1.2", "the denoiser"), "fr_denoise");
+  for (auto& b : denoised_)
+    if (!b)
+      b = make_buffer(runtime_.context(), CL_MEM_READ_WRITE,
+                      round_up_div(buffer_pixels_, 4) * 4 * 4 * sizeof(float), "the denoiser");
+  const cl_int width = settings.width_px, height = settings.height_px;
+  const cl_float angle = last_pixel_angle_rad_;
+  const size_t local[2] = {8, 8};
+  const size_t global[2] = {round_up_div(static_cast<size_t>(width), 8) * 8,
+                            round_up_div(static_cast<size_t>(height), 8) * 8};
+  // Five passes, taps 1 to 16 pixels apart; the colour's tolerance halves each pass (Dammertz
+  // et al.), so the wide passes keep what the narrow ones left as an edge.
+  cl_mem from = hdr_.get();
+  constexpr int kPasses = 5;
+  for (int pass = 0; pass < kPasses; ++pass) {
+    const cl_mem to = denoised_[pass % 2].get();
+    const cl_int step = 1 << pass, first = pass == 0, last = pass == kPasses - 1;
+    const cl_float color_sigma = 0.5f / static_cast<float>(1 << pass);
+    set_arg(k, 0, from);
+    set_arg(k, 1, to);
+    set_arg(k, 2, normal_.get());
+    set_arg(k, 3, albedo_.get());
+    set_arg(k, 4, depth_.get());
+    set_arg(k, 5, width);
+    set_arg(k, 6, height);
+    set_arg(k, 7, step);
+    set_arg(k, 8, angle);
+    set_arg(k, 9, color_sigma);
+    set_arg(k, 10, first);
+    set_arg(k, 11, last);
+    cl_check(
+        clEnqueueNDRangeKernel(runtime_.queue(), k, 2, nullptr, global, local, 0, nullptr, nullptr),
+        "clEnqueueNDRangeKernel", "the denoiser");
+    from = to;
+  }
+  return from;
 }
 
 EvalCounts Renderer::eval_counts() {

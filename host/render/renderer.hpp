@@ -152,6 +152,8 @@ class Renderer {
   cl_program render_program(const SceneInfo& info, const SceneState& state,
                             const RenderSettings& settings, int lanes, std::string* description);
   cl_kernel post_kernel();
+  // Filters the accumulated picture (render.denoise) and returns the buffer holding the result.
+  cl_mem denoise(const RenderSettings& settings);
 
   ClRuntime& runtime_;
   size_t buffer_pixels_ = 0;  // capacity of the buffers
@@ -168,6 +170,8 @@ class Renderer {
   uint8_t* rgba8_memory_ = nullptr;  // the host memory rgba8_ lies in, when it does
   size_t rgba8_bytes_ = 0;           // rgba8_'s size
   ClBufferHandle cone_t_, cone_ao_;  // per cone block (kernels/cone.cl)
+  ClBufferHandle denoised_[2];       // the denoiser's passes (kernels/denoise.cl), like hdr_
+  float last_pixel_angle_rad_ = 0;   // of the last sample's camera, for the denoiser
   size_t cone_blocks_ = 0;           // capacity of the cone buffers
   int counted_samples_ = 0;          // samples counted into counts_ since it was last cleared
 };

@@ -342,6 +342,11 @@ std::vector<SettingSpec> make_table() {
       "render.mean_free_path", 0, 100, true,
       "Path tracing: subsurface light's mean distance between scatterings, per bounding radius "
       "(small:\nnearly opaque; large: translucent)."));
+  t.push_back(bool_setting<&S::render, &R::denoise>(
+      "render.denoise",
+      "Filter the picture's noise, guided by the first hits' normals, depths and albedos (an "
+      "edge-avoiding\nà-trous filter): for path tracing at few samples. Not with bands (posters, "
+      "MPI ranks)."));
   t.push_back(int_setting<&S::render, &R::aperture_blades>(
       "render.aperture_blades", 0, 32,
       "Sides of the lens's aperture, the shape of out-of-focus highlights (bokeh): 0 (or 1, 2) "
@@ -427,6 +432,11 @@ std::vector<SettingSpec> make_table() {
       "explorer.path_samples", 1, 1 << 20,
       "With render.integrator = \"path\": path-traced samples a view accumulates once the "
       "camera stops\n(flying stays on the fast integrator; any change starts again)."));
+
+  t.push_back(bool_setting<&S::explorer, &E::denoise>(
+      "explorer.denoise",
+      "With render.integrator = \"path\": filter the accumulating picture's noise while it "
+      "refines (as\nrender.denoise does), so that a few samples already show the picture."));
 
   t.push_back(number_setting<&S::explorer, &E::mouse_sensitivity_deg_per_px>(
       "controls.mouse_sensitivity", 0, 10, true,

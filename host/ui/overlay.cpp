@@ -153,7 +153,8 @@ void draw_statistics(Explorer& explorer, const OverlayState& overlay) {
       ImGui::Text("path tracing: %d samples per pixel, noise %.2f%% of the brightness",
                   st.path_samples, 100 * *st.path_noise);
     else
-      ImGui::Text("path tracing: %d sample per pixel", st.path_samples);
+      ImGui::Text("path tracing: %d sample%s per pixel%s", st.path_samples,
+                  st.path_samples == 1 ? "" : "s", st.path_denoised ? ", denoised" : "");
   }
   ImGui::Text("%.1f DE steps/pixel, surface %.4g away", st.de_steps_per_pixel, st.surface_distance);
   // Never silent: rays out of steps and the precision in use, in warning colour when it matters.
