@@ -67,21 +67,27 @@ double thin_lens_coverage(const CameraRays& rays, double x, double y, double rad
   return static_cast<double>(hits) / total;
 }
 
-TEST(DepthOfField, ABlurredSilhouetteIsTheThinLensDisc) {
-  const auto scene = test::unit_ball();
-  ASSERT_TRUE(scene);
-  SceneState state = make_default_state(scene->info);
+// The unit ball seen from (0, 0, eye_z) along -z, with one light of no intensity (without any,
+// the renderer adds its own).
+SceneState ball_view(const SceneInfo& info, double eye_z, double fov_deg) {
+  SceneState state = make_default_state(info);
   state.camera = fr_camera{};
   state.camera.struct_size = sizeof(fr_camera);
-  state.camera.eye[2] = 4;
+  state.camera.eye[2] = eye_z;
   state.camera.up[1] = 1;
-  state.camera.fov_deg = 50;
-  // One light of no intensity (without any, the renderer adds its own).
+  state.camera.fov_deg = fov_deg;
   fr_light dark{};
   dark.struct_size = sizeof dark;
   dark.kind = FR_LIGHT_DIRECTIONAL;
   dark.vector[1] = 1;
   state.lights = {dark};
+  return state;
+}
+
+TEST(DepthOfField, ABlurredSilhouetteIsTheThinLensDisc) {
+  const auto scene = test::unit_ball();
+  ASSERT_TRUE(scene);
+  const SceneState state = ball_view(scene->info, 4, 50);
   RenderSettings s;
   s.width_px = s.height_px = 48;
   s.samples = 256;
@@ -123,12 +129,6 @@ TEST(DepthOfField, ABlurredSilhouetteIsTheThinLensDisc) {
   EXPECT_GT(error_large / n, 2 * error);
 }
 
-}  // namespace
-}  // namespace fr
-
-namespace fr {
-namespace {
-
 // Issue 36's lens test under the path integrator, with a three-bladed aperture: the ball glows
 // (emission x colour 0.5) under a black sky with no light, so a pixel shows 0.5 x the share of
 // its samples that hit it. Far behind the focus, with a wide aperture, the ball's image is
@@ -137,17 +137,7 @@ namespace {
 TEST(DepthOfField, APathTracedBladedApertureBlursIntoItsPolygon) {
   const auto scene = test::unit_ball();
   ASSERT_TRUE(scene);
-  SceneState state = make_default_state(scene->info);
-  state.camera = fr_camera{};
-  state.camera.struct_size = sizeof(fr_camera);
-  state.camera.eye[2] = 8;
-  state.camera.up[1] = 1;
-  state.camera.fov_deg = 30;
-  fr_light dark{};
-  dark.struct_size = sizeof dark;
-  dark.kind = FR_LIGHT_DIRECTIONAL;
-  dark.vector[1] = 1;
-  state.lights = {dark};
+  const SceneState state = ball_view(scene->info, 8, 30);
   RenderSettings s;
   s.integrator = Integrator::Path;
   s.width_px = s.height_px = 48;
