@@ -39,45 +39,45 @@ double surface_error(const FrameImage& image, const FrameImage& reference) {
   return n > 0 ? sum / (3.0 * n) : 0;
 }
 
-// Mean errors against 1024 samples of the scene's default view at 128x96, path-traced, of
-// pictures of `samples` samples, unfiltered and filtered.
+// Mean errors against 1024 samples of the scene's default view at 128x96, path-traced: of 4
+// samples unfiltered and filtered, and of `more` samples unfiltered.
 struct Errors {
-  double raw, filtered;
+  double raw4, filtered4, raw_more;
 };
-Errors errors_against_many_samples(const LoadedScene& scene, int samples) {
+Errors errors_against_many_samples(const LoadedScene& scene, int more) {
   Renderer renderer(test::runtime());
   const SceneState state = make_default_state(scene.info);
   const int w = 128, h = 96;
   const auto render = [&](int n, bool denoise) {
     return render_all_samples(renderer, scene.info, state, path_traced(w, h, n, denoise), true);
   };
-  const FrameImage reference = render(1024, false), raw = render(samples, false),
-                   filtered = render(samples, true);
+  const FrameImage reference = render(1024, false), raw4 = render(4, false),
+                   filtered4 = render(4, true), raw_more = render(more, false);
   // The guides are the samples' own: the filter changed the colour, not the geometry.
-  for (size_t i = 0; i < raw.depth.size(); ++i)
-    EXPECT_EQ(std::isfinite(raw.depth[i]), std::isfinite(filtered.depth[i]));
-  return {surface_error(raw, reference), surface_error(filtered, reference)};
+  for (size_t i = 0; i < raw4.depth.size(); ++i)
+    EXPECT_EQ(std::isfinite(raw4.depth[i]), std::isfinite(filtered4.depth[i]));
+  return {surface_error(raw4, reference), surface_error(filtered4, reference),
+          surface_error(raw_more, reference)};
 }
 
 TEST(Denoise, OnTheMandelbulbFourFilteredSamplesBeatFour) {
   const auto scene = test::mandelbulb();
   ASSERT_TRUE(scene);
-  const Errors four = errors_against_many_samples(*scene, 4);
+  const Errors e = errors_against_many_samples(*scene, 5);
   // Measured here: raw 4 0.037, filtered 4 0.031 (at 192x144: raw 4 0.042, filtered 4 0.034,
   // raw 5 0.035, raw 16 0.020). The bulb's lighting has detail at the pixel's scale between
   // surfaces the guides call one (the filter's bias, at 1024 samples, 0.015 there): the filter
   // gains about one sample's worth, less than on flat faces.
-  EXPECT_LT(four.filtered, 0.9 * four.raw);
+  EXPECT_LT(e.filtered4, 0.9 * e.raw4) << "raw 5: " << e.raw_more;
 }
 
 TEST(Denoise, OnFlatFacesFourFilteredSamplesBeatEight) {
   const auto scene = test::plain_sponge();
   ASSERT_TRUE(scene);
-  const Errors four = errors_against_many_samples(*scene, 4);
-  const Errors eight = errors_against_many_samples(*scene, 8);
+  const Errors e = errors_against_many_samples(*scene, 8);
   // Measured: raw 4 0.035, raw 8 0.025, filtered 4 0.021 (as 11 unfiltered samples would be, by
   // 1/sqrt(N)).
-  EXPECT_LT(four.filtered, eight.raw) << "raw 4: " << four.raw;
+  EXPECT_LT(e.filtered4, e.raw_more) << "raw 4: " << e.raw4;
 }
 
 TEST(Denoise, KeepsTheSilhouette) {
