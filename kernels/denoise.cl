@@ -49,19 +49,27 @@ __kernel void fr_denoise(__global const float4* in, __global float4* out,
       const int sky_j = !isfinite(z_j);
       if (sky_i != sky_j) continue;
       float3 c_j = in[j].xyz;
+      /* The edge-stopping terms add up in one exponent (one exp a tap: the filter's cost). */
       float w = kernel_weights[abs(dx)] * kernel_weights[abs(dy)];
+      float exponent = 0.0f;
       if (!sky_i) {
         if (first) c_j = demodulate(c_j, load3(albedo, j));
-        const float3 n_j = load3(normal, j);
-        w *= pown(fmax(dot(n_i, n_j), 0.0f), 32);
-        w *= exp(-fabs(z_i - z_j) / (8.0f * footprint));
+        float facing = fmax(dot(n_i, load3(normal, j)), 0.0f); /* ^32 by five squarings */
+        facing *= facing;
+        facing *= facing;
+        facing *= facing;
+        facing *= facing;
+        facing *= facing;
+        w *= facing;
+        exponent += fabs(z_i - z_j) / (8.0f * footprint);
         const float3 da = a_i - load3(albedo, j);
-        w *= exp(-dot(da, da) / 0.01f);
+        exponent += dot(da, da) / 0.01f;
       }
       /* Relative colour difference, per channel's worst. */
       const float3 dc = fabs(c_i - c_j) / (fabs(c_i) + fabs(c_j) + (float3)(1e-3f));
       const float d = fmax(dc.x, fmax(dc.y, dc.z));
-      w *= exp(-d * d / (color_sigma * color_sigma));
+      exponent += d * d / (color_sigma * color_sigma);
+      w *= native_exp(-exponent);
       sum += w * c_j;
       weight_sum += w;
     }

@@ -1,10 +1,10 @@
 // The denoiser (render.denoise, kernels/denoise.cl) judged against many samples, not by eye: the
 // filtered picture of 4 samples against a 1024-sample one. On a Menger sponge's flat faces it
-// must be nearer than the unfiltered picture of 8 samples (twice the render time; the filter
-// costs a small part of one sample); on the Mandelbulb, whose lighting has detail at the pixel's
-// scale, nearer than the unfiltered 4 by a tenth at least. And it must not carry light across
-// edges: a grey ball under a bright uniform sky keeps the ball's value up to its silhouette and
-// the sky's exactly.
+// must be nearer than the unfiltered picture of 8 samples (more than the filter's cost, which is
+// about two samples'); on the Mandelbulb, whose lighting has detail at the pixel's scale, only
+// nearer than the unfiltered 4 by a tenth at least (which does not pay for the filter). And it must
+// not carry light across edges: a grey ball under a bright uniform sky keeps the ball's value up to
+// its silhouette and the sky's exactly.
 #include "plugin/scene_instance.hpp"
 #include "render/renderer.hpp"
 #include "test_support.hpp"

@@ -186,9 +186,13 @@ const FrameView* Explorer::render(int window_width_px, int window_height_px) {
   // sample costs several of its frames, and one alone is mostly noise.
   const bool path_sample = path && plan.still && !quick_frame_;
   if (!path_sample) s.integrator = Integrator::Fast;
-  // The path-traced preview filtered (explorer.denoise); the fast frames, lattices among them
-  // (windows, which the filter cannot take), never.
-  s.denoise = path_sample && settings_.explorer.denoise;
+  // The path-traced preview filtered (explorer.denoise) for its first samples, where the filter
+  // helps most: it costs about two Mandelbulb samples at 1280x720 (docs/rendering.md), so the
+  // rest accumulate unfiltered, and the overlay shows their noise. The fast frames, lattices
+  // among them (windows, which the filter cannot take), never.
+  constexpr int kDenoisedPreviewSamples = 16;
+  s.denoise =
+      path_sample && settings_.explorer.denoise && plan.sample_index < kDenoisedPreviewSamples;
   const int window_w = std::max(1, window_width_px), window_h = std::max(1, window_height_px);
   LatticePhase phase;  // strides 1: the whole window (a full frame kept for reuse)
   if (plan.lattice) {

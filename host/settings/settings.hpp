@@ -27,7 +27,7 @@ struct ExplorerSettings {
   int full_quality_samples = 8;  // accumulated once it stops ("quality" presets: 2, 8, 32)
   // Accumulated once it stops when render.integrator is "path" (flying stays on "fast").
   int path_samples = 256;
-  bool denoise = true;  // the path-traced preview filtered (render.denoise), whatever render says
+  bool denoise = true;  // the path-traced preview's first samples filtered (render.denoise)
   double mouse_sensitivity_deg_per_px = 0.15;
   bool invert_y = false;
   double speed = 1.0;  // fly speed, in distances-to-the-surface per second

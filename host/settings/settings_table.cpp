@@ -435,8 +435,8 @@ std::vector<SettingSpec> make_table() {
 
   t.push_back(bool_setting<&S::explorer, &E::denoise>(
       "explorer.denoise",
-      "With render.integrator = \"path\": filter the accumulating picture's noise while it "
-      "refines (as\nrender.denoise does), so that a few samples already show the picture."));
+      "With render.integrator = \"path\": filter the picture's noise over its first 16 "
+      "samples (as\nrender.denoise does), so that a few samples already show the picture."));
 
   t.push_back(number_setting<&S::explorer, &E::mouse_sensitivity_deg_per_px>(
       "controls.mouse_sensitivity", 0, 10, true,

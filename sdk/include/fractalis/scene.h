@@ -132,7 +132,11 @@ typedef struct fr_scene_desc {
   /* Optional OpenCL C, compiled after de_source (so it may call what that defines), defining
    *   surface_t scene_surface(vec3_t p, __constant const scene_params_t* params);
    * the albedo and reflectivity at a surface point — for example colouring by orbit trap. Null:
-   * the host's material settings apply. `surface_source_name` as for de_source_name. */
+   * the host's material settings apply. It may also define
+   *   material_t scene_material(vec3_t p, material_t m, __constant const scene_params_t* params);
+   * the path tracer's full material at p (glass, metal, subsurface, emission; material_t in
+   * kernels/prelude.cl), given the default one; the host calls it when the function exists.
+   * `surface_source_name` as for de_source_name. */
   const char* surface_source;
   const char* surface_source_name;
 
