@@ -249,9 +249,21 @@ __kernel void fr_render(FR_RENDER_KERNEL_PARAMS) {
           lane_select(from_outside, rest * ((real_t)1 - mat.specular) * mat.transmission, 0));
       const real_t diffuse_rest =
           rest * ((real_t)1 - mat.specular) * ((real_t)1 - mat.transmission);
-      const real_t subsurface_odds = lane_select(from_outside, diffuse_rest * mat.subsurface, 0);
-      const real_t diffuse_odds =
-          lane_select(from_outside, diffuse_rest * ((real_t)1 - mat.subsurface), 0);
+      /* A medium whose mean free path is below the surface's scale here (the hit threshold,
+       * which the walk's entry and exit are resolved to) scatters within the pixel's footprint:
+       * there it is the diffuse reflection of its overall colour, which is what subsurface_color
+       * is (a walk would start 2 thresholds deep, many free paths, and seldom come back). */
+      const mask_t resolved = mat.mean_free_path > 4 * h;
+      const real_t subsurface_share = diffuse_rest * mat.subsurface;
+      const real_t subsurface_odds = lane_select(from_outside & resolved, subsurface_share, 0);
+      const real_t diffuse_odds = lane_select(
+          from_outside, diffuse_rest - lane_select(resolved, subsurface_share, 0), 0);
+      /* The diffuse lobe's colour: the base colour's, mixed with the unresolved medium's. */
+      const vec3_t diffuse_color = v3_select(
+          resolved, mat.base_color,
+          v3_scale(v3_add(v3_scale(mat.base_color, diffuse_rest - subsurface_share),
+                          v3_scale(mat.subsurface_color, subsurface_share)),
+                   (real_t)1 / fmax(diffuse_rest, (real_t)FR_SCALAR_MIN)));
       /* A walk that reached the surface leaves it: a diffuse lobe on the outer side. */
       const mask_t leaving_medium = hit & in_medium;
       /* Light the surface gives off (seen from outside), found by the path like the sky. */
@@ -268,7 +280,7 @@ __kernel void fr_render(FR_RENDER_KERNEL_PARAMS) {
       const vec3_t lit_normal = v3_select(leaving_medium, v3_neg(n), n);
       const vec3_t lit_weight =
           v3_select(leaving_medium, throughput,
-                    v3_scale(v3_mul(throughput, mat.base_color), diffuse_odds));
+                    v3_scale(v3_mul(throughput, diffuse_color), diffuse_odds));
       const mask_t lit = (leaving_medium | (diffuse_odds > (real_t)0)) & hit;
       if (any_lane(lit))
         radiance = v3_add(radiance,
@@ -331,7 +343,7 @@ __kernel void fr_render(FR_RENDER_KERNEL_PARAMS) {
           v3_add(mat.base_color, v3_scale(v3_sub(v3s(1, 1, 1), mat.base_color), grazing));
       const vec3_t weight = v3_select(
           glossy, v3_scale(v3_select(metal, metal_color, v3s(1, 1, 1)), glossy_weight),
-          v3_select(diffuse & !leaving_medium, mat.base_color, v3s(1, 1, 1)));
+          v3_select(diffuse & !leaving_medium, diffuse_color, v3s(1, 1, 1)));
       throughput = v3_select(hit, v3_mul(throughput, weight), throughput);
       /* Off the surface on the side the ray goes: through it where it crosses. */
       const vec3_t side = v3_select(leaving_medium, v3_neg(n), n);

@@ -217,6 +217,30 @@ TEST(Metal, ARoughWhiteMetalReflectsTheMicrofacetModelsAlbedo) {
   EXPECT_LT(expected_sum / compared, 0.95 * sky) << "the test sees the shadowing";
 }
 
+TEST(Subsurface, BelowThePixelsScaleItIsTheDiffuseColour) {
+  // A mean free path far below the hit threshold (the scale the walk's entry and exit are
+  // resolved to) scatters within the pixel: the convex ball under a uniform sky shows its colour
+  // times the sky exactly, as a diffuse ball of that colour does (before the fix, walks that
+  // started many free paths deep ran out of scatterings: a black, speckled ball).
+  Renderer renderer(test::runtime());
+  const auto scene = test::unit_ball();
+  ASSERT_TRUE(scene);
+  const float sky = 0.5f;
+  RenderSettings s = uniform_sky(path_traced(40, 30, 1), sky);
+  s.subsurface = 1;
+  s.mean_free_path = 1e-5f;
+  s.albedo = {0.6f, 0.6f, 0.6f};
+  const FrameImage image =
+      render_all_samples(renderer, scene->info, dark_state(scene->info), s, true);
+  int hits = 0;
+  for (size_t i = 0; i < image.depth.size(); ++i) {
+    if (!std::isfinite(image.depth[i])) continue;
+    ++hits;
+    ASSERT_NEAR(image.linear_rgba[4 * i], 0.6 * sky, 1e-4) << i;
+  }
+  EXPECT_GT(hits, 200);
+}
+
 TEST(Subsurface, AMediumOfAlbedoOneLosesNoLight) {
   // The ball all subsurface (render.subsurface = 1) under a uniform sky: light enters, scatters
   // inside, leaves; with a colour of 1 nothing is absorbed, so it shows the sky. A colour of 0.5
