@@ -253,7 +253,7 @@ __kernel void fr_render(FR_RENDER_KERNEL_PARAMS) {
        * which the walk's entry and exit are resolved to) scatters within the pixel's footprint:
        * there it is the diffuse reflection of its overall colour, which is what subsurface_color
        * is (a walk would start 2 thresholds deep, many free paths, and seldom come back). */
-      const mask_t resolved = mat.mean_free_path > 4 * h;
+      const mask_t resolved = mat.mean_free_path > h;
       const real_t subsurface_share = diffuse_rest * mat.subsurface;
       const real_t subsurface_odds = lane_select(from_outside & resolved, subsurface_share, 0);
       const real_t diffuse_odds = lane_select(
