@@ -114,7 +114,8 @@ TEST(SweepReference, KeyFollowsEveryFieldThatShapesTheReference) {
                                                       "count_evaluations",
                                                       "watchdog_s",
                                                       "bounce_max_steps",
-                                                      "bounce_shadow_max_steps"};
+                                                      "bounce_shadow_max_steps",
+                                                      "denoise"};
   size_t fields = 0;
   visit_render_fields(base, [&](const char* name, const auto& value) {
     using T = std::decay_t<decltype(value)>;
@@ -154,6 +155,17 @@ TEST(SweepMetrics, ParetoFront) {
   // time, error: a (1, 9), b (2, 5), c (3, 6) dominated by b, d (4, 1), e (2, 7) dominated by b.
   const std::vector<double> time = {1, 2, 3, 4, 2}, error = {9, 5, 6, 1, 7};
   EXPECT_EQ(pareto_front(time, error), (std::vector<size_t>{0, 1, 3}));
+}
+
+// The truth a sweep measures against is never filtered, and a path-traced one has many samples.
+TEST(SweepReference, IsUnfilteredAndPathTracedWithManySamples) {
+  RenderSettings base;
+  base.denoise = true;
+  EXPECT_FALSE(reference_settings(base).denoise);
+  EXPECT_EQ(reference_settings(base).samples, kReferenceSamples);
+  base.integrator = Integrator::Path;
+  EXPECT_EQ(reference_settings(base).integrator, Integrator::Path);
+  EXPECT_EQ(reference_settings(base).samples, kPathReferenceSamples);
 }
 
 TEST(SweepPlan, OneKnobAtATimeAroundTheDefaults) {

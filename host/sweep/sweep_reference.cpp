@@ -91,6 +91,7 @@ RenderSettings reference_settings(const RenderSettings& base) {
   ref.refine_steps = 0;
   ref.fast_math = false;
   ref.step_scale = std::min(ref.step_scale, 1.0f);  // a scale above 1 over-steps: never truth
+  ref.denoise = false;  // the filter's bias is an error the truth must not have
   // (the refinements render 1, for geometry, and these)
   ref.samples = ref.integrator == Integrator::Path ? kPathReferenceSamples : kReferenceSamples;
   // What only says how the frame is read or watched, not what it shows.

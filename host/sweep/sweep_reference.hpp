@@ -35,8 +35,8 @@ constexpr int kPathReferenceSamples = 1024;
 
 // The settings a reference is rendered with, from the sweep's base settings: double precision,
 // plain sphere tracing from every ray's own origin, generous step budgets, central differences,
-// no refinement steps or fast math, never a step scale above 1 (the hit threshold then shrinks
-// from the base's, refinement by refinement).
+// no refinement steps, fast math or denoising, never a step scale above 1 (the hit threshold then
+// shrinks from the base's, refinement by refinement).
 RenderSettings reference_settings(const RenderSettings& base);
 
 // A key for the cache: the scene (id, version), its parameter values, camera, lights, time,
