@@ -3,8 +3,9 @@
 # build folder, and sets VAR to that source's path (render/kernel_sources.cpp reads its table).
 # The host uses it, and so does the Windows build's part that is ported so far.
 set(fractalis_kernel_files frame_constants.h prelude.cl eval_counts.cl rays.cl march.cl cone.cl
-    normals.cl shadow.cl ao.cl glow.cl fog.cl lens.cl reflect.cl lights.cl shade.cl film.cl render.cl
-    material.cl area_lights.cl path.cl post.cl denoise.cl probe.cl
+    normals.cl shadow.cl ao.cl glow.cl fog.cl lens.cl reflect.cl lights.cl environment.cl shade.cl
+    film.cl render.cl
+    material.cl area_lights.cl path.cl post.cl denoise.cl probe.cl material_probe.cl
     de/primitives.cl de/operators.cl de/folds.cl de/mandelbulb.cl de/menger.cl de/sierpinski.cl
     de/julia.cl de/palette.cl de/mandelbox.cl de/kifs.cl de/jerusalem.cl de/kleinian.cl
     de/hypercomplex.cl de/cantor.cl de/kali.cl de/recursive.cl

@@ -10,7 +10,7 @@
       __global float *hdr_rgba, __global float *depth, __global float *steps_out,               \
       __global float *factors_out, __global uchar *status_out, __global float *normal_out,      \
       __global float *albedo_out, __global uint *counts_out, __global const float *cone_t,      \
-      __global const float *cone_ao_steps
+      __global const float *cone_ao_steps, __global const float *environment
 #define FR_RENDER_TILE                                   \
   const int tile_x = get_global_id(0) * FR_TILE_W;       \
   const int tile_y = get_global_id(1) * FR_TILE_H;       \

@@ -150,6 +150,12 @@ typedef struct fr_frame_constants {
   float subsurface;
   float mean_free_path;
   int aperture_blades; /* the lens's aperture: a regular polygon of this many sides; < 3: round */
+  /* The sky's panorama (environment.cl), when there is one: its frame (x, y = its zenith, z;
+   * unit, world space), its size in pixels and the factor its radiance is scaled by. */
+  float env_axes[3][4];
+  int env_width;
+  int env_height;
+  float env_intensity;
 } fr_frame_constants;
 
 #endif /* FR_FRAME_CONSTANTS_H */

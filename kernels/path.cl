@@ -22,8 +22,9 @@
  * Next-event estimation towards every light (a shadow ray, hard: shadow.cl built with
  * FR_SHADOW_HARD) through the diffuse lobe and where a walk leaves the surface; a light with a
  * size is also found by bounces, and the two estimates are weighted by multiple importance
- * sampling (area_lights.cl). A path that leaves the bounds sees the sky (shade.cl's sky_color,
- * radiance): the environment is found only by bounces. Emission (material emission) is found
+ * sampling (area_lights.cl). A path that leaves the bounds sees the sky (FR_SKY, radiance): the
+ * gradient is found only by bounces; a panorama (environment.cl) is also sampled by next-event
+ * estimation in proportion to its light, weighted against the bounces the same way. Emission (material emission) is found
  * by the paths, as the sky is. From the third interaction on, Russian roulette: a path goes on
  * with probability q = max(throughput) and its throughput is divided by q, which keeps the mean.
  *
@@ -53,7 +54,8 @@
 vec3_t direct_light(vec3_t p, vec3_t n, real_t h, mask_t lanes, int shadow_steps,
                     lane_uint_t ix, lane_uint_t iy, int k,
                     __constant const fr_frame_constants* fc,
-                    __constant const scene_params_t* params FR_COUNTS_PARAM) {
+                    __constant const scene_params_t* params,
+                    __global const float* environment FR_COUNTS_PARAM) {
   light_sample_t lights[FR_MAX_LIGHTS];
   mask_t facing[FR_MAX_LIGHTS];
   real_t visible[FR_MAX_LIGHTS], mis[FR_MAX_LIGHTS];
@@ -83,6 +85,28 @@ vec3_t direct_light(vec3_t p, vec3_t n, real_t h, mask_t lanes, int shadow_steps
     direct = v3_add(direct, v3_scale(lights[i].radiance,
                                      lane_select(facing[i], visible[i] * cos_l * mis[i], 0)));
   }
+#ifdef FR_SKY_SAMPLED
+  /* The panorama: one direction drawn in proportion to its light, its own shadow ray (counted
+   * with the first light's), weighted against the diffuse bounce that might find it too. */
+  {
+    real_t pdf;
+    light_sample_t sky[1];
+    sky[0] = environment_sample(pixel_random(fc, ix, iy, FR_PATH_STREAM(k, 6)),
+                                pixel_random(fc, ix, iy, FR_PATH_STREAM(k, 6) + 0x8000U), fc,
+                                environment, &pdf);
+    const real_t cos_l = v3_dot(n, sky[0].to_light);
+    mask_t sky_facing[1];
+    sky_facing[0] = lanes & (cos_l > (real_t)0) & (pdf > (real_t)0);
+    real_t sky_visible[1];
+    sky_visible[0] = (real_t)1;
+    if (any_lane(sky_facing[0])) {
+      FR_APPLY_SHADOWS(sky_visible, p, n, h, sky, sky_facing, 1, shadow_steps);
+      const real_t w = power_heuristic(pdf, cos_l * (real_t)M_1_PI_F);
+      direct = v3_add(direct, v3_scale(sky[0].radiance,
+                                       lane_select(sky_facing[0], sky_visible[0] * cos_l * w, 0)));
+    }
+  }
+#endif
   return direct;
 }
 
@@ -168,8 +192,17 @@ __kernel void fr_render(FR_RENDER_KERNEL_PARAMS) {
                              throughput);
     const mask_t hit = active & m.hit;
     const mask_t miss = active & !m.hit & !m.inside & !in_medium;
-    radiance = v3_add(radiance, v3_select(miss, v3_mul(throughput, sky_color(ray.dir, fc)),
-                                          v3s(0, 0, 0)));
+    if (any_lane(miss)) {
+      vec3_t sky = FR_SKY(ray.dir);
+#ifdef FR_SKY_SAMPLED
+      /* Found by a diffuse bounce: weighted against next-event estimation's draw. */
+      sky = v3_scale(sky, lane_select(diffuse_pdf > (real_t)0,
+                                      power_heuristic(diffuse_pdf,
+                                                      environment_pdf(ray.dir, fc, environment)),
+                                      1));
+#endif
+      radiance = v3_add(radiance, v3_select(miss, v3_mul(throughput, sky), v3s(0, 0, 0)));
+    }
     /* Lights with a size on the way (outside the solid only). */
     const mask_t outside = active & !inner & !m.inside;
     if (any_lane(outside))
@@ -286,7 +319,7 @@ __kernel void fr_render(FR_RENDER_KERNEL_PARAMS) {
         radiance = v3_add(radiance,
                           v3_select(lit, v3_mul(lit_weight, direct_light(p, lit_normal, h, lit,
                                                                          shadow_steps, ix, iy, k,
-                                                                         fc, params
+                                                                         fc, params, environment
                                                                              FR_COUNTS_ARG)),
                                     v3s(0, 0, 0)));
 

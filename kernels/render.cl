@@ -62,7 +62,7 @@ __kernel void fr_render(FR_RENDER_KERNEL_PARAMS) {
     if (bounce == 0) m.ao_steps += cone_ao;
     const mask_t hit = active & m.hit;
     const mask_t miss = active & !m.hit & !m.inside;
-    vec3_t segment = sky_color(ray.dir, fc);
+    vec3_t segment = FR_SKY(ray.dir);
     FR_APPLY_GLOW(segment, m, miss);
     real_t reflectivity = (real_t)0;
     vec3_t p = v3_mad(ray.origin, ray.dir, m.t);

@@ -31,6 +31,10 @@ vec3_t sky_color(vec3_t dir, __constant const fr_frame_constants* fc) {
   vec3_t zenith = v3_from_float4(fc->sky_zenith);
   return v3_mad(v3_scale(horizon, (real_t)1 - up), zenith, up);
 }
+/* The sky a ray sees when it leaves the scene: the gradient, or the panorama (environment.cl). */
+#ifndef FR_SKY
+#define FR_SKY(dir) sky_color(dir, fc)
+#endif
 
 /* Reflected radiance per unit incoming radiance, times cos(theta_i), for one light. */
 vec3_t brdf_cos(vec3_t n, vec3_t to_light, vec3_t to_eye, vec3_t albedo, real_t n_dot_l,

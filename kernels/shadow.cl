@@ -30,6 +30,8 @@ void shadow_factors(vec3_t p, vec3_t n, real_t h, const light_sample_t* lights,
   if (max_steps <= 0) return;
   /* Per lane: the light of the ray it marches (or last marched; -1 before the first). */
   real_t light = (real_t)-1, t = (real_t)0, lit = (real_t)1, steps = (real_t)0, exit = (real_t)0;
+  /* Hard shadows: the DE at the ray's first point (its clearance where it leaves the surface). */
+  real_t first = (real_t)0;
   mask_t active = FR_MASK_FALSE, more = FR_MASK_TRUE;
   const int most = light_count * (max_steps + 1);
   for (int i = 0; i < most; ++i) {
@@ -61,7 +63,15 @@ void shadow_factors(vec3_t p, vec3_t n, real_t h, const light_sample_t* lights,
 #if FR_SHADOW == FR_SHADOW_SOFT
     lit = lane_select(active, fmin(lit, (real_t)fc->shadow_softness * dist / t), lit);
 #else
-    lit = lane_select(active & (dist < t_start * (real_t)0.5), 0, lit);
+    /* Blocked where the DE falls below half the start's offset, or below half what it was at the
+     * ray's first point when that is less (the clearance it left the surface with): a DE that under-estimates (half the distance, say)
+     * starts a ray that grazes a convex surface below any fixed threshold, and such rays, lit
+     * for the bounces that escape along them, came out dark for next-event estimation (a white
+     * ball under a uniform panorama lost 1.7% of its light, tests/environment_test.cpp). A ray
+     * that starts inside (a DE of 0 or less) is blocked. */
+    first = lane_select(active & (steps == (real_t)0), dist, first);
+    const real_t blocked_below = fmin(t_start * (real_t)0.5, (real_t)0.5 * first);
+    lit = lane_select(active & ((dist < blocked_below) | (first <= (real_t)0)), 0, lit);
 #endif
     steps += mask_to_real(active);
     mask_t going = active & (lit > (real_t)0.001) & (dist > (real_t)0);

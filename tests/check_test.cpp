@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <fstream>
 #include <map>
 #include <sstream>
 #include <vector>
@@ -63,10 +64,9 @@ TEST_P(EveryInTreeScene, PassesEveryCheck) {
   const std::string scene = GetParam();
   const CheckRun r = run_check(std::filesystem::path(SCENE_PLUGIN_DIR) / (scene + PLUGIN_SUFFIX));
   EXPECT_EQ(r.exit_code, 0) << r.out;
-  for (const char* check : {"descriptor", "de-compiles", "de-returns", "de-finite",
-                            "de-lipschitz", "de-overestimate", "de-near-surface", "de-bounded",
-                            "lanes-agree", "update", "create-destroy", "render", "render-careful",
-                            "unload"})
+  for (const char* check : {"descriptor", "de-compiles", "de-returns", "de-finite", "de-lipschitz",
+                            "de-overestimate", "de-near-surface", "de-bounded", "lanes-agree",
+                            "update", "create-destroy", "render", "render-careful", "unload"})
     EXPECT_EQ(status_of(r.out, check), "PASS") << check << "\n" << r.out;
   const auto json = nlohmann::json::parse(r.json);
   EXPECT_EQ(json["result"], "pass") << r.json;
@@ -122,12 +122,12 @@ TEST(Check, OverEstimatingDeFails) {
 // surface but at a fraction of a percent of the points. The unscaled scenes pass
 // (EveryInTreeScenePasses).
 TEST(Check, DeThatOverestimatesNearTheSurfaceFails) {
-  for (const auto& [scene, tag] : std::vector<std::pair<std::string, std::string>>{
-           {"cantor_dust", "1_5"},
-           {"cantor_dust", "3"},
-           {"kifs_icosahedron", "1_5"},
-           {"kifs_icosahedron", "3"},
-           {"mandelbox", "3"}}) {
+  for (const auto& [scene, tag] :
+       std::vector<std::pair<std::string, std::string>>{{"cantor_dust", "1_5"},
+                                                        {"cantor_dust", "3"},
+                                                        {"kifs_icosahedron", "1_5"},
+                                                        {"kifs_icosahedron", "3"},
+                                                        {"mandelbox", "3"}}) {
     SCOPED_TRACE(scene + " x" + tag);
     const CheckRun r = run_check(std::filesystem::path(OVERESTIMATE_PLUGIN_DIR) /
                                  ("overestimate_" + scene + "_x" + tag + PLUGIN_SUFFIX));
@@ -138,6 +138,26 @@ TEST(Check, DeThatOverestimatesNearTheSurfaceFails) {
   const CheckRun box = run_check(std::filesystem::path(OVERESTIMATE_PLUGIN_DIR) /
                                  ("overestimate_mandelbox_x1_5" PLUGIN_SUFFIX));
   EXPECT_EQ(status_of(box.out, "de-near-surface"), "PASS") << box.out;
+}
+
+// A material function is checked where the render saw surface: the material ball's defaults lie
+// in the material's ranges; at a preset whose metalness is 1.5 (its parameter allows up to 2),
+// the check fails naming the field, the value and a point on the ball.
+TEST(Check, AMaterialOutsideItsRangesFails) {
+  const auto dir = test::folder_of_one_scene("check_material", TEST_SCENE_DIR, "material_ball");
+  std::filesystem::create_directories(dir / "presets");
+  std::ofstream(dir / "presets" / "too_metal.toml")
+      << "scene = \"material_ball\"\nname = \"Too metal\"\n[params]\nmetalness = 1.5\n";
+  const auto plugin = dir / ("material_ball" PLUGIN_SUFFIX);
+  const CheckRun fine = run_check(plugin);
+  EXPECT_EQ(fine.exit_code, 0) << fine.out;
+  EXPECT_EQ(status_of(fine.out, "material"), "PASS") << fine.out;
+  const CheckRun bad = run_check(plugin, {"--preset", "too_metal"});
+  EXPECT_EQ(bad.exit_code, 1) << bad.out;
+  EXPECT_EQ(status_of(bad.out, "material"), "FAIL") << bad.out;
+  EXPECT_NE(bad.out.find("scene_material returns metalness = 1.5 at ("), std::string::npos)
+      << bad.out;
+  EXPECT_EQ(status_of(bad.out, "render"), "PASS") << "only the material is wrong\n" << bad.out;
 }
 
 // The compatibility scene, built against the frozen ABI 1.0 headers, passes on this 1.1 host.

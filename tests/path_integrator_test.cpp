@@ -7,6 +7,7 @@
 // convergence (the error against a long render falls as 1 / sqrt(samples)), glass (invisible
 // under a uniform sky when it absorbs nothing; Beer-Lambert along the exact chord when it does;
 // the sky refracted where geometric optics says), and emission.
+#include "path_test_support.hpp"
 #include "plugin/scene_instance.hpp"
 #include "render/camera.hpp"
 #include "render/renderer.hpp"
@@ -25,40 +26,18 @@ namespace {
 
 // One directional light (travelling along `direction`) of colour `rgb`, replacing the scene's.
 fr_light directional(glm::dvec3 direction, glm::dvec3 rgb) {
-  fr_light l{};
-  l.struct_size = sizeof l;
-  l.kind = FR_LIGHT_DIRECTIONAL;
-  for (int k = 0; k < 3; ++k) {
-    l.vector[k] = direction[k];
-    l.color[k] = rgb[k];
-  }
-  l.intensity = 1;
-  return l;
+  return test::light(FR_LIGHT_DIRECTIONAL, direction, rgb);
 }
 
-// Path tracing at w x h, `samples` samples a pixel, the rest as by default.
-RenderSettings path_traced(int width_px, int height_px, int samples) {
-  RenderSettings s;
-  s.integrator = Integrator::Path;
-  s.width_px = width_px;
-  s.height_px = height_px;
-  s.samples = samples;
-  return s;
-}
+using test::dark_state;
+using test::path_traced;
 
 // Path tracing under a uniform sky of radiance `sky`, with no light (one of intensity 0: without
 // any light the host adds one).
 RenderSettings furnace(float albedo, float sky, int width_px, int height_px) {
-  RenderSettings s = path_traced(width_px, height_px, 1);
+  RenderSettings s = test::uniform_sky(path_traced(width_px, height_px, 1), sky);
   s.albedo = {albedo, albedo, albedo};
-  s.sky_zenith = s.sky_horizon = {sky, sky, sky};
   return s;
-}
-
-SceneState dark_state(const SceneInfo& info) {
-  SceneState state = make_default_state(info);
-  state.lights = {directional({0, -1, 0}, {0, 0, 0})};
-  return state;
 }
 
 struct PixelStats {

@@ -9,6 +9,7 @@
 //    the whole light is above the horizon (the irradiance of a uniform sphere or disc): next-event
 //    estimation and bounces that hit the light, weighted by MIS, must add up to that, not to
 //    twice it or to one of them.
+#include "path_test_support.hpp"
 #include "plugin/scene_instance.hpp"
 #include "render/camera.hpp"
 #include "render/renderer.hpp"
@@ -25,65 +26,19 @@
 namespace fr {
 namespace {
 
+// A fine hit threshold: the ball's DE is half the distance, so a hit stops about 2 k t
+// pixel-angle short of the sphere, where the radial normal is tilted from the exact one.
 RenderSettings path_traced(int width_px, int height_px, int samples) {
-  RenderSettings s;
-  s.integrator = Integrator::Path;
-  s.width_px = width_px;
-  s.height_px = height_px;
-  s.samples = samples;
-  // A fine hit threshold: the ball's DE is half the distance, so a hit stops about 2 k t
-  // pixel-angle short of the sphere, where the radial normal is tilted from the exact one.
+  RenderSettings s = test::path_traced(width_px, height_px, samples);
   s.hit_threshold_k = 0.05f;
   return s;
 }
 
-RenderSettings uniform_sky(RenderSettings s, float sky) {
-  s.sky_zenith = s.sky_horizon = {sky, sky, sky};
-  return s;
-}
-
-fr_light light(fr_light_kind kind, glm::dvec3 vector, glm::dvec3 rgb, double radius) {
-  fr_light l{};
-  l.struct_size = sizeof l;
-  l.kind = kind;
-  for (int k = 0; k < 3; ++k) {
-    l.vector[k] = vector[k];
-    l.color[k] = rgb[k];
-  }
-  l.intensity = 1;
-  l.radius = radius;
-  return l;
-}
-
-// No light: one of colour 0 (without any, the renderer adds its own).
-SceneState dark_state(const SceneInfo& info) {
-  SceneState state = make_default_state(info);
-  state.lights = {light(FR_LIGHT_DIRECTIONAL, {0, -1, 0}, {0, 0, 0}, 0)};
-  return state;
-}
-
-void set_param(const SceneInfo& info, SceneState& state, const std::string& key, double x,
-               double y = 0, double z = 0) {
-  for (size_t i = 0; i < info.params.size(); ++i)
-    if (info.params[i].key == key) {
-      state.params[i].v[0] = x;
-      state.params[i].v[1] = y;
-      state.params[i].v[2] = z;
-      return;
-    }
-  FAIL() << "no parameter " << key;
-}
-
-// Where pixel (x, y)'s central ray meets the unit sphere: the point (= its outward normal) and the
-// cosine between the normal and the way back to the eye; false where it misses.
-bool ball_point(const CameraRays& rays, int x, int y, glm::dvec3* p, double* cos_view) {
-  const glm::dvec3 d = camera_ray_dir(rays, x, y);
-  const double b = glm::dot(rays.eye, d), c = glm::dot(rays.eye, rays.eye) - 1;
-  if (b * b - c <= 0) return false;
-  *p = rays.eye + d * (-b - std::sqrt(b * b - c));
-  *cos_view = -glm::dot(*p, d);
-  return true;
-}
+using test::ball_point;
+using test::dark_state;
+using test::light;
+using test::set_param;
+using test::uniform_sky;
 
 TEST(MaterialFunction, IsWhatTheIntegratorUsesWithinTheMaterialsRanges) {
   Renderer renderer(test::runtime());

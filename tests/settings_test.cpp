@@ -127,6 +127,19 @@ TEST(Settings, DefaultFileIsTheTablesOutput) {
 }
 
 // A value other than the default for every key, from the key's own range or choices.
+// A Radiance panorama (16 x 8 pixels of 1.0, flat RGBE) under a name with a quote and a
+// backslash (on Linux; Windows allows neither in a name), for a setting that must name a
+// readable file (render.environment).
+std::string panorama_file() {
+  const bool windows = std::filesystem::path::preferred_separator == '\\';
+  const auto file = std::filesystem::path(TEST_OUTPUT_DIR) /
+                    (windows ? "sky 'quoted' back.hdr" : "sky \"quoted\" \\ back.hdr");
+  std::string bytes = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 8 +X 16\n";
+  for (int i = 0; i < 16 * 8; ++i) bytes += "\x80\x80\x80\x81";
+  std::ofstream(file, std::ios::binary) << bytes;
+  return file.string();
+}
+
 SettingValue other_value(const SettingSpec& spec, const SettingValue& now) {
   switch (spec.kind) {
     case SettingKind::Bool:
@@ -148,6 +161,7 @@ SettingValue other_value(const SettingSpec& spec, const SettingValue& now) {
         if (c.name != std::get<std::string>(now)) return std::string(c.name);
       return now;
     case SettingKind::Text:
+      if (spec.check) return panorama_file();
       return std::string("gpu \"quoted\" \\ back");
     case SettingKind::TextList:
       return std::vector<std::string>{"/opt/scenes", "/tmp/with \"quote\""};

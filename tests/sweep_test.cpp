@@ -132,6 +132,8 @@ TEST(SweepReference, KeyFollowsEveryFieldThatShapesTheReference) {
             v = !v;
           else if constexpr (std::is_same_v<U, std::array<float, 3>>)
             v[1] += 0.125f;
+          else if constexpr (std::is_same_v<U, PathText>)
+            v.assign("/a/panorama.hdr");
           else if constexpr (std::is_floating_point_v<U>)
             v = v * 0.5f + 0.125f;  // down: a step scale above 1 is clamped to 1
           else

@@ -6,6 +6,9 @@
 #include "plugin/plugin_loader.hpp"
 #include "plugin/scene_code.hpp"
 #include "plugin/scene_instance.hpp"
+#include "render/camera.hpp"
+#include "render/de_probe.hpp"
+#include "render/frame_constants.hpp"
 #include "render/kernel_assembly.hpp"
 #include "render/renderer.hpp"
 #include "render/scene_vetting.hpp"
@@ -13,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <random>
 #include <sstream>
 
@@ -138,9 +142,9 @@ class Checker {
     std::vector<float> values;
     values.reserve(at.size());
     for (size_t start = 0; start < at.size(); start += kChunk) {
-      const std::vector<DePoint> part(at.begin() + static_cast<std::ptrdiff_t>(start),
-                                      at.begin() + static_cast<std::ptrdiff_t>(
-                                                       std::min(at.size(), start + kChunk)));
+      const std::vector<DePoint> part(
+          at.begin() + static_cast<std::ptrdiff_t>(start),
+          at.begin() + static_cast<std::ptrdiff_t>(std::min(at.size(), start + kChunk)));
       const std::vector<float> got = worker_.probe_de(info, defaults_.params, part, 16, precision);
       values.insert(values.end(), got.begin(), got.end());
     }
@@ -199,8 +203,7 @@ class Checker {
   // A DE that never returns would hang this process in the checks below; a test render in a
   // child process with a time limit finds it first.
   bool check_returns() {
-    const VetResult vet =
-        vet_scene(file_, options_.render, worker_.device().name, options_.policy);
+    const VetResult vet = vet_scene(file_, options_.render, worker_.device().name, options_.policy);
     if (vet.ok) {
       add("de-returns", CheckStatus::Pass, "a test render at 8x8 finished in a child process");
       return true;
@@ -329,14 +332,13 @@ class Checker {
       const double percent = found.percent_over();
       std::string detail = fmt(percent) + "% of " + std::to_string(found.points_tested) +
                            " points 0.001 R to 0.016 R off " +
-                           std::to_string(found.surface_points) +
-                           " surface points have DE > " + fmt(1 + o.tolerance) +
-                           " x their distance";
+                           std::to_string(found.surface_points) + " surface points have DE > " +
+                           fmt(1 + o.tolerance) + " x their distance";
       if (found.worst_ratio > 0)
         detail += "; worst: DE " + fmt(found.worst_de) + " at " + fmt(found.worst_at) + ", " +
                   fmt(found.worst_t) + " from surface (" + fmt(found.worst_ratio) + "x)";
-      if (found.surface_points == 0) detail = "no surface met by " + std::to_string(o.rays) +
-                                              " rays across the bounding sphere";
+      if (found.surface_points == 0)
+        detail = "no surface met by " + std::to_string(o.rays) + " rays across the bounding sphere";
       // Escape-time DEs (the Mandelbulb's) run long at about 1% of these points, near thin
       // features, without a visible error; a DE that steps past the surface everywhere does so
       // at tens of percent (a KIFS or the Cantor dust times 1.5), and the Mandelbox's DE, which
@@ -536,6 +538,80 @@ class Checker {
     else
       add("render", CheckStatus::Pass, "96x54, no NaN; " + counts);
     if (nan == 0 && rays.hit > 0) check_render_careful(state, s);
+    if (nan == 0 && rays.hit > 0 && has_material_function(scene_->info))
+      check_material(state, s, image);
+  }
+
+  // A material function's values at the surface points the render saw, before the renderer
+  // clamps them: a value outside its range renders as something the function did not say.
+  void check_material(const SceneState& state, const RenderSettings& s, const FrameImage& image) {
+    struct Field {
+      const char* name;
+      double lo, hi;  // hi: infinity for none; mean_free_path's lo is open
+    };
+    constexpr double kNone = std::numeric_limits<double>::infinity();
+    static const Field kFields[kMaterialFloats] = {
+        {"base_color.r", 0, 1},       {"base_color.g", 0, 1},
+        {"base_color.b", 0, 1},       {"specular", 0, 1},
+        {"roughness", 0, 1},          {"metalness", 0, 1},
+        {"transmission", 0, 1},       {"ior", 1, 4},
+        {"absorption.r", 0, kNone},   {"absorption.g", 0, kNone},
+        {"absorption.b", 0, kNone},   {"subsurface", 0, 1},
+        {"subsurface_color.r", 0, 1}, {"subsurface_color.g", 0, 1},
+        {"subsurface_color.b", 0, 1}, {"mean_free_path", 0, kNone},
+        {"emission.r", 0, kNone},     {"emission.g", 0, kNone},
+        {"emission.b", 0, kNone}};
+    const CameraRays rays = make_camera_rays(state.camera, s.width_px, s.height_px);
+    std::vector<Point> points;
+    for (int y = 0; y < s.height_px; ++y)
+      for (int x = 0; x < s.width_px; ++x) {
+        const float t = image.depth[static_cast<size_t>(y) * s.width_px + x];
+        if (!std::isfinite(t)) continue;
+        const glm::dvec3 p = rays.eye + camera_ray_dir(rays, x, y) * static_cast<double>(t);
+        points.push_back({float(p.x), float(p.y), float(p.z)});
+      }
+    std::vector<float> values;
+    try {
+      values = worker_.probe_material(scene_->info, state.params,
+                                      make_frame_constants(rays, state, s, 0), points);
+    } catch (const std::exception& e) {
+      add("material", CheckStatus::Fail,
+          std::string("evaluating the material function failed: ") + e.what());
+      return;
+    }
+    // Float arithmetic in the function (a mix of in-range values) may land a rounding outside.
+    const double slack = 1e-5;
+    size_t bad_points = 0;
+    std::string first;
+    for (size_t i = 0; i < points.size(); ++i) {
+      bool bad = false;
+      for (size_t f = 0; f < kMaterialFloats; ++f) {
+        const double v = values[i * kMaterialFloats + f];
+        const Field& field = kFields[f];
+        const bool open_low = f == 15;  // mean_free_path > 0
+        const bool ok =
+            std::isfinite(v) && (open_low ? v > 0 : v >= field.lo - slack) && v <= field.hi + slack;
+        if (ok) continue;
+        if (!bad && first.empty())
+          first = std::string(field.name) + " = " + fmt(v) + " at " + fmt(points[i]) +
+                  ", outside " + (open_low ? "(" : "[") + fmt(field.lo) + ", " +
+                  (field.hi == kNone ? "inf)" : fmt(field.hi) + "]");
+        bad = true;
+      }
+      bad_points += bad;
+    }
+    if (bad_points == 0)
+      add("material", CheckStatus::Pass,
+          "scene_material's values lie in their ranges at the " + std::to_string(points.size()) +
+              " surface points the render saw");
+    else
+      add("material", CheckStatus::Fail,
+          "scene_material returns " + first +
+              " (the renderer clamps it, so the picture is not "
+              "what the function says); " +
+              std::to_string(bad_points) + " of " + std::to_string(points.size()) +
+              " surface points the render saw have a value "
+              "outside its range");
   }
 
   // The same view by plain sphere tracing (no relaxation, no cone: a step never exceeds the DE),

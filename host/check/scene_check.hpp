@@ -22,6 +22,8 @@
 //   render-careful    the same view by plain sphere tracing at full and at quarter steps: the
 //                     share of the quarter steps' hits that the full steps go through (coarse:
 //                     grazing rays count too; warn above 10%, fail above 25%)
+//   material          a material function's values (scene_material, before the renderer clamps
+//                     them) lie in their ranges at the surface points the render saw
 //   unload            destroying every instance and closing the library leaves no thread and
 //                     no mapping behind
 #pragma once

@@ -6,6 +6,8 @@
 #include "render/render_settings.hpp"
 #include "scene/scene_data.hpp"
 
+#include "frame_constants.h"
+
 #include <array>
 #include <vector>
 
@@ -17,5 +19,13 @@ std::vector<float> probe_de(ClRuntime& runtime, const SceneInfo& info,
                             const std::vector<fr_value>& params,
                             const std::vector<std::array<float, 3>>& points, int lanes = 0,
                             Precision precision = Precision::Float);
+
+// What a material function (scene_material) returns at `points`, before the renderer clamps it:
+// kMaterialFloats floats a point, in material_t's order (kernels/prelude.cl, material_probe.cl),
+// its input the default material that the frame constants `fc` give (render settings' values).
+constexpr size_t kMaterialFloats = 19;
+std::vector<float> probe_material(ClRuntime& runtime, const SceneInfo& info,
+                                  const std::vector<fr_value>& params, const fr_frame_constants& fc,
+                                  const std::vector<std::array<float, 3>>& points);
 
 }  // namespace fr

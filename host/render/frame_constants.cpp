@@ -1,4 +1,5 @@
 #include "render/frame_constants.hpp"
+#include "scene/camera_up.hpp"
 #include "scene/vec3.hpp"
 
 #include <glm/geometric.hpp>
@@ -6,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <numbers>
 
 namespace fr {
 
@@ -17,7 +19,7 @@ static_assert(FR_KERNEL_LIGHT_DIRECTIONAL == FR_LIGHT_DIRECTIONAL &&
 
 // The kernels read this struct with OpenCL C's layout rules; with only 4-byte fields both sides
 // agree, and these checks keep it so.
-static_assert(sizeof(fr_frame_constants) == 964, "fr_frame_constants layout changed");
+static_assert(sizeof(fr_frame_constants) == 1024, "fr_frame_constants layout changed");
 static_assert(offsetof(fr_frame_constants, first_pixel_dir) == 0);
 static_assert(offsetof(fr_frame_constants, light_vector) == 96);
 static_assert(offsetof(fr_frame_constants, light_kind) == 352);
@@ -35,6 +37,8 @@ static_assert(offsetof(fr_frame_constants, path_max_bounces) == 892);
 static_assert(offsetof(fr_frame_constants, absorption) == 904);
 static_assert(offsetof(fr_frame_constants, light_radius) == 912);
 static_assert(offsetof(fr_frame_constants, aperture_blades) == 960);
+static_assert(offsetof(fr_frame_constants, env_axes) == 964);
+static_assert(offsetof(fr_frame_constants, env_intensity) == 1020);
 namespace {
 void put(float out[4], glm::dvec3 v) {
   out[0] = static_cast<float>(v.x);
@@ -158,6 +162,20 @@ fr_frame_constants make_frame_constants(const CameraRays& rays, const SceneState
   put(fc.sky_zenith, s.sky_zenith);
   put(fc.sky_horizon, s.sky_horizon);
   put(fc.sky_up, rays.up);
+  // The panorama's frame: its zenith the camera's (world) up vector, not the view's, so that the
+  // sky stays put as the camera turns; its azimuth 0 towards world z (or x, if up is along z),
+  // turned about the zenith by the rotation. Its size is the renderer's to fill in.
+  {
+    const glm::dvec3 up = glm::normalize(effective_up(state.camera));
+    const glm::dvec3 ref = std::abs(up.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
+    const glm::dvec3 z0 = glm::normalize(ref - up * glm::dot(ref, up));
+    const glm::dvec3 x0 = glm::cross(up, z0);
+    const double turn = s.environment_rotation_deg * std::numbers::pi / 180.0;
+    put(fc.env_axes[0], std::cos(turn) * x0 + std::sin(turn) * z0);
+    put(fc.env_axes[1], up);
+    put(fc.env_axes[2], std::cos(turn) * z0 - std::sin(turn) * x0);
+    fc.env_intensity = s.environment_intensity;
+  }
   put(fc.glow_color, s.glow_color);
   fc.glow_strength = s.glow_strength;
   // The power-law fog is fog_scale * (t / R)^0.75 = (fog_scale / R^0.75) * t^0.75.

@@ -43,6 +43,7 @@ const PipelineFile kRenderPipeline[] = {
     {FR_FEATURE_AO, "ao.cl"},
     {0, "lights.cl"},
     {FR_FEATURE_SHADOWS, "shadow.cl"},
+    {kStageEnvironment, "environment.cl"},
     {0, "shade.cl"},
     {FR_FEATURE_FOG, "fog.cl"},
     {FR_FEATURE_REFLECTIONS, "reflect.cl"},
@@ -61,7 +62,8 @@ const HostKernelNames& host_kernel_names() {
                                             kernel_source("prelude.cl")};
     for (const auto& library : kernel_library_files())
       before.push_back(kernel_source("de/" + library.substr(3)));
-    std::vector<std::string_view> after = {kernel_source("probe.cl")};
+    std::vector<std::string_view> after = {kernel_source("probe.cl"),
+                                           kernel_source("material_probe.cl")};
     for (const PipelineFile& f : kRenderPipeline) after.push_back(kernel_source(f.file));
     return collect_host_names(before, after);
   }();
@@ -213,8 +215,7 @@ void append_scene_prefix(std::ostringstream& out, const SceneInfo& info,
   define_choice(out, "FR_FOG", config.fog_method);
   out << "#define FR_HAS_SURFACE " << (has_surface ? 1 : 0) << "\n";
   // The surface source's optional material function (path tracing; prelude.cl's material_t).
-  const bool has_material =
-      has_surface && source_defines_function(info.surface_source, "scene_material");
+  const bool has_material = has_surface && has_material_function(info);
   out << "#define FR_SCENE_MATERIAL " << (has_material ? 1 : 0) << "\n";
   out << "#define FR_COUNT_EVALS " << (config.count_evaluations ? 1 : 0) << "\n";
   out << "#define FR_RELAX_ADAPTIVE " << (config.adaptive_relaxation ? 1 : 0) << "\n";
@@ -266,6 +267,7 @@ AssembledKernel finish(std::ostringstream& out, const SceneInfo& info, const Ker
                   (config.precision == Precision::Double ? "double" : "float") +
                   ", stages: " + stage_names(config.stages) +
                   ((config.stages & kStageCone) ? ", cone pre-pass" : "") +
+                  ((config.stages & kStageEnvironment) ? ", environment image" : "") +
                   (config.count_evaluations ? ", counting DE evaluations" : "") +
                   (config.quick_build ? ", quick build" : "") + ")";
   return k;
@@ -300,11 +302,13 @@ KernelConfig make_kernel_config(const SceneInfo& info, const RenderSettings& s, 
   // The lens moves every ray's origin: the block's rays no longer share a cone.
   else if (s.cone_prepass)
     c.stages |= kStageCone;
+  if (!s.environment.empty()) c.stages |= kStageEnvironment;
   c.integrator = s.integrator;
   if (s.integrator == Integrator::Path) {
     // The path tracer computes what occlusion, glow, fog and mirror bounces approximate, and
     // needs every light's visibility, exactly: hard shadows, whatever the scene asks for.
-    c.stages = (c.stages & (kStageDepthOfField | kStageCone)) | FR_FEATURE_SHADOWS;
+    c.stages =
+        (c.stages & (kStageDepthOfField | kStageCone | kStageEnvironment)) | FR_FEATURE_SHADOWS;
     c.shadow_method = ShadowMethod::Hard;
   } else {
     c.shadow_method = s.shadow_method;
@@ -355,6 +359,24 @@ AssembledKernel assemble_probe_kernel(const SceneInfo& info, const std::vector<f
   append_scene_prefix(out, info, values, bare, "DE probe", false);
   append_file(out, "probe.cl", kernel_source("probe.cl"));
   return finish(out, info, bare, "DE probe");
+}
+
+bool has_material_function(const SceneInfo& info) {
+  return !info.surface_source.empty() &&
+         source_defines_function(info.surface_source, "scene_material");
+}
+
+AssembledKernel assemble_material_probe_kernel(const SceneInfo& info,
+                                               const std::vector<fr_value>& values,
+                                               const KernelConfig& config) {
+  std::ostringstream out;
+  KernelConfig bare;
+  bare.lanes = config.lanes;
+  bare.precision = config.precision;
+  append_scene_prefix(out, info, values, bare, "material probe", true);
+  append_file(out, "material.cl", kernel_source("material.cl"));
+  append_file(out, "material_probe.cl", kernel_source("material_probe.cl"));
+  return finish(out, info, bare, "material probe");
 }
 
 std::vector<uint8_t> pack_scene_params(const SceneInfo& info, const std::vector<fr_value>& values) {

@@ -23,11 +23,15 @@ constexpr fr_features kStageDepthOfField = 1ull << 32;
 // Host-only and not an effect: the cone pre-pass (kernels/cone.cl), a faster way to the same
 // primary hits. On unless the user switched it off (render.cone_prepass) or the lens is on.
 constexpr fr_features kStageCone = 1ull << 33;
+// Host-only: the sky is an HDR panorama (render.environment; kernels/environment.cl), not the
+// gradient.
+constexpr fr_features kStageEnvironment = 1ull << 34;
 
 struct KernelConfig {
   int lanes = 16;
   Precision precision = Precision::Float;
-  fr_features stages = 0;  // FR_FEATURE_*, kStageDepthOfField and kStageCone compiled in
+  // FR_FEATURE_*, kStageDepthOfField, kStageCone and kStageEnvironment compiled in
+  fr_features stages = 0;
   Integrator integrator = RenderSettings{}.integrator;  // render.cl or path.cl
   // The modes, by default the settings' defaults (RenderSettings is their one home).
   ShadingModel shading = RenderSettings{}.shading;
@@ -76,6 +80,14 @@ AssembledKernel assemble_render_kernel(const SceneInfo& info, const std::vector<
 // The scene's DE alone, as kernel fr_probe_de (kernels/probe.cl); stages and modes are ignored.
 AssembledKernel assemble_probe_kernel(const SceneInfo& info, const std::vector<fr_value>& values,
                                       const KernelConfig& config);
+
+// The scene's material function (scene_material) with its surface source, as kernel
+// fr_probe_material (kernels/material_probe.cl); only for a scene whose surface source defines it.
+AssembledKernel assemble_material_probe_kernel(const SceneInfo& info,
+                                               const std::vector<fr_value>& values,
+                                               const KernelConfig& config);
+// Whether the scene's surface source defines a material function (path tracing's materials).
+bool has_material_function(const SceneInfo& info);
 
 // The kernel-side parameter block: runtime (non-specialised) parameters in table order, each
 // float/int/bool as 4 bytes and each vec3/color as float[3]; at least 4 bytes.

@@ -9,6 +9,8 @@
 
 #include <array>
 #include <span>
+#include <string>
+#include <string_view>
 
 namespace fr {
 
@@ -111,6 +113,25 @@ struct ImageWindow {
   int stride_y_px = 1;
 };
 
+// A file path as plain data: RenderSettings travels to the render worker as its bytes. Empty
+// (the first character NUL) means none.
+struct PathText {
+  static constexpr size_t kCapacity = 1024;  // bytes, the terminating NUL included
+  std::array<char, kCapacity> text{};
+  bool empty() const { return text[0] == '\0'; }
+  std::string_view view() const {
+    return {text.data(), std::char_traits<char>::length(text.data())};
+  }
+  // False (and unchanged) when `path` does not fit or holds a NUL.
+  bool assign(std::string_view path) {
+    if (path.size() >= kCapacity || path.find('\0') != std::string_view::npos) return false;
+    text.fill('\0');
+    path.copy(text.data(), path.size());
+    return true;
+  }
+  friend bool operator==(const PathText& a, const PathText& b) { return a.view() == b.view(); }
+};
+
 struct RenderSettings {
   int width_px = 1280;  // of the image rendered (the window's size when `window` is set)
   int height_px = 720;
@@ -206,6 +227,12 @@ struct RenderSettings {
   bool denoise = false;
   std::array<float, 3> albedo{0.72f, 0.52f, 0.36f};
   std::array<float, 3> ambient{0.16f, 0.19f, 0.25f};
+  // The sky as an equirectangular HDR panorama (io/environment_image.hpp; kernels/
+  // environment.cl), an absolute path; empty: the gradient below. Its radiance is scaled by the
+  // intensity, and it is turned about the camera's up vector by the rotation.
+  PathText environment;
+  float environment_intensity = 1.0f;
+  float environment_rotation_deg = 0.0f;
   std::array<float, 3> sky_zenith{0.22f, 0.36f, 0.62f};
   std::array<float, 3> sky_horizon{0.72f, 0.78f, 0.86f};
   std::array<float, 3> glow_color{0.55f, 0.75f, 1.0f};
@@ -282,6 +309,9 @@ void visit_render_fields(Settings& s, Visit&& visit) {
   visit("denoise", s.denoise);
   visit("albedo", s.albedo);
   visit("ambient", s.ambient);
+  visit("environment", s.environment);
+  visit("environment_intensity", s.environment_intensity);
+  visit("environment_rotation_deg", s.environment_rotation_deg);
   visit("sky_zenith", s.sky_zenith);
   visit("sky_horizon", s.sky_horizon);
   visit("glow_color", s.glow_color);
@@ -304,7 +334,7 @@ constexpr size_t aggregate_member_count() {
 }  // namespace detail
 // RenderSettings' direct members (the window counts once): a new field changes the count. List
 // it in visit_render_fields, then update this number.
-static_assert(detail::aggregate_member_count<RenderSettings>() == 64,
+static_assert(detail::aggregate_member_count<RenderSettings>() == 67,
               "RenderSettings changed: list the new field in visit_render_fields");
 
 }  // namespace fr

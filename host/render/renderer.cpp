@@ -1,5 +1,7 @@
 #include "render/renderer.hpp"
 
+#include "render/environment_map.hpp"
+
 #include "render/camera.hpp"
 #include "render/frame_constants.hpp"
 #include "render/kernel_assembly.hpp"
@@ -103,8 +105,11 @@ void Renderer::render_sample(const SceneInfo& info, const SceneState& state,
   last_lanes_ = lanes;
   cl_command_queue q = runtime_.queue();
 
-  const fr_frame_constants fc =
+  fr_frame_constants fc =
       make_frame_constants(whole_image_rays(state.camera, settings), state, settings, sample_index);
+  const cl_mem environment = environment_memory(settings);
+  fc.env_width = environment_width_px_;
+  fc.env_height = environment_height_px_;
   last_pixel_angle_rad_ = fc.pixel_angle_rad;
   cl_check(
       clEnqueueWriteBuffer(q, constants_.get(), CL_FALSE, 0, sizeof fc, &fc, 0, nullptr, nullptr),
@@ -156,11 +161,44 @@ void Renderer::render_sample(const SceneInfo& info, const SceneState& state,
   }
   const cl_mem args[] = {constants_.get(), params_.get(),  hdr_.get(),    depth_.get(),
                          steps_.get(),     factors_.get(), status_.get(), normal_.get(),
-                         albedo_.get(),    counts_.get(),  cone_t_.get(), cone_ao_.get()};
+                         albedo_.get(),    counts_.get(),  cone_t_.get(), cone_ao_.get(),
+                         environment};
   for (cl_uint i = 0; i < std::size(args); ++i) set_arg(kernel, i, args[i]);
   const size_t global[2] = {round_up_div(w, tile.width_px), round_up_div(h, tile.height_px)};
   cl_check(clEnqueueNDRangeKernel(q, kernel, 2, nullptr, global, local, 0, nullptr, nullptr),
            "clEnqueueNDRangeKernel", "rendering " + description);
+}
+
+cl_mem Renderer::environment_memory(const RenderSettings& settings) {
+  const std::string path(settings.environment.view());
+  if (path.empty()) {
+    // The kernel takes the argument either way; without a panorama it reads nothing.
+    if (!no_environment_)
+      no_environment_ = make_buffer(runtime_.context(), CL_MEM_READ_ONLY, sizeof(float),
+                                    "the absent environment image");
+    environment_width_px_ = environment_height_px_ = 0;
+    return no_environment_.get();
+  }
+  if (path != environment_path_) {
+    environment_.reset();
+    environment_path_.clear();
+    EnvironmentImage image;
+    std::string error;
+    // The settings checked the file when they were read; it may have changed since.
+    if (!read_environment_image(path, &image, &error))
+      throw std::runtime_error("render.environment: " + error);
+    const std::vector<float> buffer = environment_buffer(image);
+    const size_t bytes = buffer.size() * sizeof(float);
+    environment_ =
+        make_buffer(runtime_.context(), CL_MEM_READ_ONLY, bytes, "the environment image");
+    cl_check(clEnqueueWriteBuffer(runtime_.queue(), environment_.get(), CL_TRUE, 0, bytes,
+                                  buffer.data(), 0, nullptr, nullptr),
+             "clEnqueueWriteBuffer", "uploading the environment image");
+    environment_path_ = path;
+    environment_width_px_ = image.width_px;
+    environment_height_px_ = image.height_px;
+  }
+  return environment_.get();
 }
 
 cl_program Renderer::render_program(const SceneInfo& info, const SceneState& state,

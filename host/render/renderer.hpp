@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace fr {
@@ -152,6 +153,10 @@ class Renderer {
   cl_program render_program(const SceneInfo& info, const SceneState& state,
                             const RenderSettings& settings, int lanes, std::string* description);
   cl_kernel post_kernel();
+  // The panorama of render.environment on the device (read and uploaded when the path changes;
+  // std::runtime_error naming the file when it cannot be read), or a placeholder without one;
+  // sets environment_width_px_ and environment_height_px_.
+  cl_mem environment_memory(const RenderSettings& settings);
   // Filters the accumulated picture (render.denoise) and returns the buffer holding the result.
   cl_mem denoise(const RenderSettings& settings);
 
@@ -171,9 +176,12 @@ class Renderer {
   size_t rgba8_bytes_ = 0;           // rgba8_'s size
   ClBufferHandle cone_t_, cone_ao_;  // per cone block (kernels/cone.cl)
   ClBufferHandle denoised_[2];       // the denoiser's passes (kernels/denoise.cl), like hdr_
-  float last_pixel_angle_rad_ = 0;   // of the last sample's camera, for the denoiser
-  size_t cone_blocks_ = 0;           // capacity of the cone buffers
-  int counted_samples_ = 0;          // samples counted into counts_ since it was last cleared
+  ClBufferHandle environment_, no_environment_;  // environment_memory
+  std::string environment_path_;                 // of the panorama in environment_
+  int environment_width_px_ = 0, environment_height_px_ = 0;
+  float last_pixel_angle_rad_ = 0;  // of the last sample's camera, for the denoiser
+  size_t cone_blocks_ = 0;          // capacity of the cone buffers
+  int counted_samples_ = 0;         // samples counted into counts_ since it was last cleared
 };
 
 }  // namespace fr

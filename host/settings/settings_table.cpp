@@ -1,5 +1,6 @@
 #include "settings/settings_table.hpp"
 
+#include "io/environment_image.hpp"
 #include "render/kernel_assembly.hpp"
 
 #include <algorithm>
@@ -347,6 +348,37 @@ std::vector<SettingSpec> make_table() {
       "Filter the picture's noise, guided by the first hits' normals, depths and albedos (an "
       "edge-avoiding\nà-trous filter): for path tracing at few samples. Not with bands (posters, "
       "MPI ranks)."));
+  SettingSpec environment = spec_of(
+      "render.environment", SettingKind::Text,
+      "The sky as an equirectangular HDR panorama: a Radiance .hdr or an OpenEXR .exr file "
+      "(twice as wide as\nhigh, the zenith at the top), seen by both integrators where rays "
+      "leave the scene and, in path\ntracing, lighting it. A relative path is from the current "
+      "folder. \"\": the gradient of sky_zenith\nand sky_horizon.");
+  environment.check = [](const SettingValue& v) -> std::string {
+    const std::string& text = std::get<std::string>(v);
+    if (text.empty()) return "";
+    const std::filesystem::path path = std::filesystem::absolute(text).lexically_normal();
+    if (path.string().size() >= PathText::kCapacity)
+      return "the path is longer than " + std::to_string(PathText::kCapacity - 1) + " bytes";
+    EnvironmentImage image;
+    std::string error;
+    return read_environment_image(path, &image, &error) ? "" : error;
+  };
+  environment.get = [](const Settings& s) -> SettingValue {
+    return std::string(s.render.environment.view());
+  };
+  environment.set = [](Settings& s, const SettingValue& v) {
+    const std::string& text = std::get<std::string>(v);
+    s.render.environment.assign(
+        text.empty() ? "" : std::filesystem::absolute(text).lexically_normal().string());
+  };
+  t.push_back(environment);
+  t.push_back(number_setting<&S::render, &R::environment_intensity>(
+      "render.environment_intensity", 0, 1e6, false,
+      "Multiplies the panorama's radiance (render.environment)."));
+  t.push_back(number_setting<&S::render, &R::environment_rotation_deg>(
+      "render.environment_rotation_deg", -360, 360, false,
+      "Turns the panorama about the camera's up vector, degrees (where its sun stands)."));
   t.push_back(int_setting<&S::render, &R::aperture_blades>(
       "render.aperture_blades", 0, 32,
       "Sides of the lens's aperture, the shape of out-of-focus highlights (bokeh): 0 (or 1, 2) "
@@ -545,7 +577,8 @@ std::string check_setting(const SettingSpec& spec, const SettingValue& value) {
       return "expected one of " + names;
     }
     case SettingKind::Text:
-      return std::holds_alternative<std::string>(value) ? "" : "expected a string";
+      if (!std::holds_alternative<std::string>(value)) return "expected a string";
+      return spec.check ? spec.check(value) : "";
     case SettingKind::TextList:
       return std::holds_alternative<std::vector<std::string>>(value)
                  ? ""

@@ -43,6 +43,10 @@ struct SettingSpec {
   const char* only_ints_text = "";     // Int: how a message describes only_ints
   std::vector<SettingChoice> choices;  // Choice
 
+  // A check beyond the kind's (a file that must be readable): what is wrong with a value of the
+  // right kind, or "". Null: none.
+  std::string (*check)(const SettingValue&) = nullptr;
+
   SettingValue (*get)(const Settings&) = nullptr;
   void (*set)(Settings&, const SettingValue&) = nullptr;  // with a value check_setting accepted
 

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <iomanip>
 #include <sstream>
 #include <type_traits>
 
@@ -126,6 +127,8 @@ std::string reference_key(const SceneInfo& info, const SceneState& state, const 
       k << static_cast<long long>(value);
     else if constexpr (std::is_same_v<T, std::array<float, 3>>)
       k << value[0] << ',' << value[1] << ',' << value[2];
+    else if constexpr (std::is_same_v<T, PathText>)
+      k << std::quoted(std::string(value.view()));  // the file's name, not its content
     else
       k << value;
     k << ' ';

@@ -20,27 +20,29 @@ namespace fr {
 
 // Bumped whenever a message's layout changes; fractalis passes it to the worker, which refuses to
 // talk to another version.
-constexpr uint32_t kRenderWireVersion = 2;
+constexpr uint32_t kRenderWireVersion = 3;
 
 // Kinds share the frame header with the scene host's (scene_wire.hpp), numbered apart from them.
 enum class RenderWireKind : uint32_t {
-  Ready = 101,         // worker -> fractalis, first: Reply's head (the device opened, or why not)
-  SetScene = 102,      // u64 key, u64 key to forget (0: none), SceneInfo: the scene later
-                       // messages name by key
-  Prepare = 103,       // u64 key, SceneState, RenderSettings; reply: u32 Precision
-  RenderSample = 104,  // u64 key, SceneState, RenderSettings, i32 sample, u32 Readback
-  Finish = 105,        // RenderSettings, u32 Readback, u64 bytes of the shared frame
-                       // reply: i32 lanes, u32 Precision (the pixels are in the shared frame)
-  EvalCounts = 106,    // reply: EvalCounts
-  Probe = 107,         // u64 key, u32 count, count fr_value, u32 count, count x 3 floats,
-                       // i32 lanes, u32 Precision; reply: u32 count, count floats
-  Build = 108,         // str source, str options, str description
-  Quit = 109,          // exit now
-  Reply = 110,         // worker -> fractalis: u32 ReplyStatus, str error, then the call's result
-  Building = 111,      // worker -> fractalis, during a call: u32 1 and str description when a
-                       // kernel build starts, u32 0 when it has ended
-  RenderFrame = 112,   // RenderSample's payload, then u32 Readback, u64 bytes of the shared
-                       // frame: a sample and Finish in one round trip; reply: Finish's
+  Ready = 101,          // worker -> fractalis, first: Reply's head (the device opened, or why not)
+  SetScene = 102,       // u64 key, u64 key to forget (0: none), SceneInfo: the scene later
+                        // messages name by key
+  Prepare = 103,        // u64 key, SceneState, RenderSettings; reply: u32 Precision
+  RenderSample = 104,   // u64 key, SceneState, RenderSettings, i32 sample, u32 Readback
+  Finish = 105,         // RenderSettings, u32 Readback, u64 bytes of the shared frame
+                        // reply: i32 lanes, u32 Precision (the pixels are in the shared frame)
+  EvalCounts = 106,     // reply: EvalCounts
+  Probe = 107,          // u64 key, u32 count, count fr_value, u32 count, count x 3 floats,
+                        // i32 lanes, u32 Precision; reply: u32 count, count floats
+  Build = 108,          // str source, str options, str description
+  Quit = 109,           // exit now
+  Reply = 110,          // worker -> fractalis: u32 ReplyStatus, str error, then the call's result
+  Building = 111,       // worker -> fractalis, during a call: u32 1 and str description when a
+                        // kernel build starts, u32 0 when it has ended
+  RenderFrame = 112,    // RenderSample's payload, then u32 Readback, u64 bytes of the shared
+                        // frame: a sample and Finish in one round trip; reply: Finish's
+  ProbeMaterial = 113,  // u64 key, u32 count, count fr_value, u32 count, count x 3 floats,
+                        // fr_frame_constants; reply: u32 count, count floats
 };
 
 enum class ReplyStatus : uint32_t {

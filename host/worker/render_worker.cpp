@@ -506,6 +506,31 @@ std::vector<float> RenderWorker::probe_de(const SceneInfo& info,
   return values;
 }
 
+std::vector<float> RenderWorker::probe_material(const SceneInfo& info,
+                                                const std::vector<fr_value>& params,
+                                                const fr_frame_constants& fc,
+                                                const std::vector<std::array<float, 3>>& points) {
+  ensure_started();
+  if (local_) return fr::probe_material(local_->runtime, info, params, fc, points);
+  const uint64_t key = send_scene(info);
+  WireWriter w;
+  w.u64(key);
+  w.u32(static_cast<uint32_t>(params.size()));
+  w.raw(params.data(), params.size() * sizeof(fr_value));
+  w.u32(static_cast<uint32_t>(points.size()));
+  w.raw(points.data(), points.size() * sizeof(points[0]));
+  w.raw(&fc, sizeof fc);
+  const double limit_s = frame_limit_.limit_s(key, static_cast<double>(points.size()));
+  const std::string reply = call(static_cast<uint32_t>(RenderWireKind::ProbeMaterial), w.bytes(),
+                                 info.id, "probing the material function", limit_s);
+  WireReader r(reply);
+  const uint32_t count = r.u32();
+  std::vector<float> values(points.size() * kMaterialFloats);
+  if (count != values.size() || !r.raw(values.data(), values.size() * sizeof(float)))
+    fail(info.id, "probing the material function", "sent a malformed reply", false);
+  return values;
+}
+
 void RenderWorker::build(const SceneInfo& info, const std::string& source,
                          const std::string& options, const std::string& description) {
   ensure_started();

@@ -18,6 +18,7 @@
 // there: it is killed when that thread ends).
 #pragma once
 
+#include "frame_constants.h"
 #include "platform/channel.hpp"
 #include "plugin/plugin_policy.hpp"
 #include "render/cl_runtime.hpp"
@@ -102,6 +103,10 @@ class RenderWorker {
   std::vector<float> probe_de(const SceneInfo& info, const std::vector<fr_value>& params,
                               const std::vector<std::array<float, 3>>& points, int lanes = 0,
                               Precision precision = Precision::Float);
+  // As render/de_probe.hpp's probe_material.
+  std::vector<float> probe_material(const SceneInfo& info, const std::vector<fr_value>& params,
+                                    const fr_frame_constants& fc,
+                                    const std::vector<std::array<float, 3>>& points);
   // Builds a program of the scene `info` (a check's or a warm-up's), to be found in the cache.
   void build(const SceneInfo& info, const std::string& source, const std::string& options,
              const std::string& description);

@@ -5,6 +5,7 @@
 #include "platform/shared_memory.hpp"
 #include "plugin/wire_io.hpp"
 #include "render/de_probe.hpp"
+#include "render/kernel_assembly.hpp"
 #include "worker/render_wire.hpp"
 #include "worker/render_worker.hpp"
 
@@ -111,6 +112,26 @@ class Worker {
         if (precision > static_cast<uint32_t>(Precision::Auto)) throw BadRequest("bad precision");
         const std::vector<float> values =
             probe_de(runtime_, info, params, points, lanes, static_cast<Precision>(precision));
+        result.u32(static_cast<uint32_t>(values.size()));
+        result.raw(values.data(), values.size() * sizeof(float));
+        return;
+      }
+      case RenderWireKind::ProbeMaterial: {
+        const SceneInfo& info = scene(r.u64());
+        const uint32_t param_count = r.u32();
+        if (param_count != info.params.size()) throw BadRequest("wrong parameter count");
+        std::vector<fr_value> params(param_count);
+        r.raw(params.data(), params.size() * sizeof(fr_value));
+        const uint32_t point_count = r.u32();
+        if (point_count > r.rest().size() / sizeof(std::array<float, 3>))
+          throw BadRequest("too many points");
+        std::vector<std::array<float, 3>> points(point_count);
+        r.raw(points.data(), points.size() * sizeof(points[0]));
+        fr_frame_constants fc;
+        r.raw(&fc, sizeof fc);
+        check(r);
+        if (!has_material_function(info)) throw BadRequest("the scene has no material function");
+        const std::vector<float> values = probe_material(runtime_, info, params, fc, points);
         result.u32(static_cast<uint32_t>(values.size()));
         result.raw(values.data(), values.size() * sizeof(float));
         return;

@@ -1,0 +1,38 @@
+/* material_probe.cl — a scene's material function (scene_material, prelude.cl) at given points,
+ * as it returns them, before material.cl clamps them: `fractalis check` reports values outside
+ * material_t's ranges, which the renderer would otherwise change silently. Pasted after
+ * material.cl into a kernel with the scene's surface source; only for scenes that define the
+ * function. Writes FR_MATERIAL_FLOATS floats a point, in material_t's order. */
+
+#define FR_MATERIAL_FLOATS 19
+
+inline void probe_store(real_t v, int field, int first, int count, __global float* out) {
+  float lanes[FR_LANES];
+  store_lanes(v, lanes);
+  for (int lane = 0; lane < FR_LANES && first + lane < count; ++lane)
+    out[(first + lane) * FR_MATERIAL_FLOATS + field] = lanes[lane];
+}
+
+#if FR_SCENE_MATERIAL
+__kernel void fr_probe_material(__constant const fr_frame_constants* fc,
+                                __constant const scene_params_t* params,
+                                __global const float* xyz, __global float* out, int count) {
+  const int first = get_global_id(0) * FR_LANES;
+  float x[FR_LANES], y[FR_LANES], z[FR_LANES];
+  for (int lane = 0; lane < FR_LANES; ++lane) {
+    const int i = min(first + lane, count - 1); /* a partial last packet repeats the last point */
+    x[lane] = xyz[3 * i + 0];
+    y[lane] = xyz[3 * i + 1];
+    z[lane] = xyz[3 * i + 2];
+  }
+  const vec3_t p = v3(load_lanes(x), load_lanes(y), load_lanes(z));
+  const material_t m = scene_material(p, default_material(scene_surface(p, params), fc), params);
+  const real_t fields[FR_MATERIAL_FLOATS] = {
+      m.base_color.x,       m.base_color.y,       m.base_color.z, m.specular,
+      m.roughness,          m.metalness,          m.transmission, m.ior,
+      m.absorption.x,       m.absorption.y,       m.absorption.z, m.subsurface,
+      m.subsurface_color.x, m.subsurface_color.y, m.subsurface_color.z,
+      m.mean_free_path,     m.emission.x,         m.emission.y,   m.emission.z};
+  for (int f = 0; f < FR_MATERIAL_FLOATS; ++f) probe_store(fields[f], f, first, count, out);
+}
+#endif
