@@ -102,6 +102,19 @@ inline vec3_t ggx_normal(vec3_t n, real_t alpha, real_t u1, real_t u2) {
   return around(n, cos_m, sin_m, (real_t)(2 * M_PI_F) * u2);
 }
 
+/* GGX's distribution of microfacet normals D(m), at a normal whose cosine with n is cos_m. */
+inline real_t ggx_d(real_t cos_m, real_t alpha) {
+  const real_t a2 = alpha * alpha;
+  const real_t k = cos_m * cos_m * (a2 - (real_t)1) + (real_t)1;
+  return lane_select(cos_m > (real_t)0, a2 / fmax((real_t)M_PI_F * k * k, (real_t)FR_SCALAR_MIN), 0);
+}
+
+/* The density per solid angle of a direction reflected about a microfacet normal m drawn by
+ * ggx_normal: D(m) (m.n) / (4 |i.m|) (the reflection's Jacobian, Walter et al.'s eq. 14). */
+inline real_t ggx_reflection_pdf(real_t m_dot_n, real_t i_dot_m, real_t alpha) {
+  return ggx_d(m_dot_n, alpha) * m_dot_n / fmax(4 * fabs(i_dot_m), (real_t)FR_SCALAR_MIN);
+}
+
 /* Smith's G1 for GGX at a direction whose cosine with the normal is cos_v. */
 inline real_t ggx_g1(real_t cos_v, real_t alpha) {
   const real_t cos2 = fmax(cos_v * cos_v, (real_t)FR_SCALAR_MIN);

@@ -20,9 +20,10 @@
  *      FR_WALK_MAX_STEPS scatterings end it;
  *   diffuse (the rest): Lambert, cosine-weighted, so its throughput is its albedo.
  * Next-event estimation towards every light (a shadow ray, hard: shadow.cl built with
- * FR_SHADOW_HARD) through the diffuse lobe and where a walk leaves the surface; a light with a
- * size is also found by bounces, and the two estimates are weighted by multiple importance
- * sampling (area_lights.cl). A path that leaves the bounds sees the sky (FR_SKY, radiance): the
+ * FR_SHADOW_HARD) through the diffuse lobe, where a walk leaves the surface, and through the
+ * rough metal and coat (their GGX BRDF, so a point light has a highlight); a light with a size is
+ * also found by bounces, and the two estimates are weighted by multiple importance sampling
+ * (area_lights.cl). A path that leaves the bounds sees the sky (FR_SKY, radiance): the
  * gradient is found only by bounces; a panorama (environment.cl) is also sampled by next-event
  * estimation in proportion to its light, weighted against the bounces the same way. Emission (material emission) is found
  * by the paths, as the sky is. From the third interaction on, Russian roulette: a path goes on
@@ -48,21 +49,64 @@
  * (its light lost). */
 #define FR_WALK_MAX_STEPS 128
 
-/* What every light sends to p through the diffuse lobe of normal n, times `weight`, past
- * whatever is in the way: next-event estimation, weighted against bounces that find the lights
- * with a size (multiple importance sampling). `lanes`: where there is such a lobe. */
-vec3_t direct_light(vec3_t p, vec3_t n, real_t h, mask_t lanes, int shadow_steps,
-                    lane_uint_t ix, lane_uint_t iy, int k,
+/* Roughness (GGX alpha) below which a glossy lobe is a mirror for next-event estimation: its
+ * highlight of a light is then found by bounces alone. */
+#define FR_GLOSSY_NEE_MIN_ALPHA 1e-3f
+
+/* The glossy lobes at a hit, for next-event estimation: the metal's and the coat's weights
+ * (throughput times their odds), the metal's colour, the roughness, the way back to the eye, and
+ * the lanes where there is such a lobe rough enough to be estimated. */
+typedef struct glossy_lobes_t {
+  vec3_t metal_weight;
+  vec3_t coat_weight;
+  vec3_t base_color;
+  real_t alpha;
+  vec3_t to_eye;
+  mask_t lanes;
+} glossy_lobes_t;
+
+/* What light sample s (lights.cl's unit: radiance per unit cos that a white Lambertian facing it
+ * reflects) sends to the eye through the glossy lobes of normal n: pi f cos (f the GGX BRDF,
+ * D G F / (4 cos_i cos_o); F Schlick's in the metal's colour, 1 for the coat), times `weight`;
+ * *pdf: the lobes' density of drawing its direction (for multiple importance sampling). */
+inline vec3_t glossy_light(light_sample_t s, vec3_t n, glossy_lobes_t g, real_t weight,
+                           real_t* pdf) {
+  const vec3_t half_vec = v3_normalize(v3_add(g.to_eye, s.to_light));
+  const real_t cos_h = v3_dot(n, half_vec), v_h = fmax(v3_dot(g.to_eye, half_vec), (real_t)0);
+  const real_t cos_i = v3_dot(n, g.to_eye), cos_o = v3_dot(n, s.to_light);
+  const real_t d = ggx_d(cos_h, g.alpha);
+  *pdf = ggx_reflection_pdf(cos_h, v_h, g.alpha);
+  const real_t common = lane_select(
+      (cos_i > (real_t)0) & (cos_o > (real_t)0),
+      (real_t)M_PI_F * d * ggx_g1(cos_i, g.alpha) * ggx_g1(cos_o, g.alpha) /
+          fmax(4 * cos_i, (real_t)FR_SCALAR_MIN) * weight,
+      0);
+  const real_t grazing = pow_nonneg((real_t)1 - fmin(v_h, (real_t)1), 5);
+  const vec3_t metal_color =
+      v3_add(g.base_color, v3_scale(v3_sub(v3s(1, 1, 1), g.base_color), grazing));
+  const vec3_t reflect =
+      v3_add(v3_mul(g.metal_weight, metal_color), g.coat_weight);
+  return v3_mul(v3_scale(reflect, common), s.radiance);
+}
+
+/* What every light (and a panorama sky) sends to the eye from p past whatever is in the way, by
+ * next-event estimation: through the diffuse lobe of normal n where `diffuse` is set, times
+ * diffuse_weight (the throughput times the lobe's colour and odds), and through the glossy lobes
+ * `g`. Lights with a size and the panorama are also found by bounces: each estimate is weighted
+ * against the lobe's bounce by multiple importance sampling (area_lights.cl). */
+vec3_t direct_light(vec3_t p, vec3_t n, real_t h, mask_t diffuse, vec3_t diffuse_weight,
+                    glossy_lobes_t g, int shadow_steps, lane_uint_t ix, lane_uint_t iy, int k,
                     __constant const fr_frame_constants* fc,
                     __constant const scene_params_t* params,
                     __global const float* environment FR_COUNTS_PARAM) {
   light_sample_t lights[FR_MAX_LIGHTS];
   mask_t facing[FR_MAX_LIGHTS];
-  real_t visible[FR_MAX_LIGHTS], mis[FR_MAX_LIGHTS];
+  real_t visible[FR_MAX_LIGHTS], light_pdf[FR_MAX_LIGHTS];
+  const mask_t lanes = diffuse | g.lanes;
   const int count = min(fc->light_count, FR_MAX_LIGHTS);
   for (int i = 0; i < count; ++i) {
     lights[i] = sample_light(i, p, fc);
-    mis[i] = (real_t)1;
+    light_pdf[i] = (real_t)0; /* a point or a direction: found by the estimation alone */
     if (fc->light_radius[i] > 0.0f) {
       /* Each light its own pair of numbers: streams 5..7 and then the high ones, past any step's. */
       const light_cone_t c = light_cone(i, p, fc);
@@ -71,8 +115,7 @@ vec3_t direct_light(vec3_t p, vec3_t n, real_t h, mask_t lanes, int shadow_steps
                                     fc->light_kind[i] == FR_KERNEL_LIGHT_DIRECTIONAL,
                                     pixel_random(fc, ix, iy, stream),
                                     pixel_random(fc, ix, iy, stream + 0x8000U));
-      const real_t cos_l = fmax(v3_dot(n, lights[i].to_light), (real_t)0);
-      mis[i] = power_heuristic(light_cone_pdf(c), cos_l * (real_t)M_1_PI_F);
+      light_pdf[i] = light_cone_pdf(c);
     }
     facing[i] = lanes & (v3_dot(n, lights[i].to_light) > (real_t)0);
     visible[i] = (real_t)1;
@@ -82,12 +125,25 @@ vec3_t direct_light(vec3_t p, vec3_t n, real_t h, mask_t lanes, int shadow_steps
   for (int i = 0; i < count; ++i) {
     if (!any_lane(facing[i])) continue;
     const real_t cos_l = v3_dot(n, lights[i].to_light);
-    direct = v3_add(direct, v3_scale(lights[i].radiance,
-                                     lane_select(facing[i], visible[i] * cos_l * mis[i], 0)));
+    const real_t sized = light_pdf[i];
+    const real_t w_diffuse = lane_select(sized > (real_t)0,
+                                         power_heuristic(sized, cos_l * (real_t)M_1_PI_F), 1);
+    direct = v3_add(direct, v3_mul(diffuse_weight,
+                                   v3_scale(lights[i].radiance,
+                                            lane_select(facing[i] & diffuse,
+                                                        visible[i] * cos_l * w_diffuse, 0))));
+    if (any_lane(facing[i] & g.lanes)) {
+      real_t glossy_pdf;
+      const vec3_t glossy = glossy_light(lights[i], n, g, visible[i], &glossy_pdf);
+      const real_t w_glossy =
+          lane_select(sized > (real_t)0, power_heuristic(sized, glossy_pdf), 1);
+      direct = v3_add(direct, v3_select(facing[i] & g.lanes, v3_scale(glossy, w_glossy),
+                                        v3s(0, 0, 0)));
+    }
   }
 #ifdef FR_SKY_SAMPLED
   /* The panorama: one direction drawn in proportion to its light, its own shadow ray (counted
-   * with the first light's), weighted against the diffuse bounce that might find it too. */
+   * with the first light's), weighted against the bounces that might find it too. */
   {
     real_t pdf;
     light_sample_t sky[1];
@@ -102,8 +158,18 @@ vec3_t direct_light(vec3_t p, vec3_t n, real_t h, mask_t lanes, int shadow_steps
     if (any_lane(sky_facing[0])) {
       FR_APPLY_SHADOWS(sky_visible, p, n, h, sky, sky_facing, 1, shadow_steps);
       const real_t w = power_heuristic(pdf, cos_l * (real_t)M_1_PI_F);
-      direct = v3_add(direct, v3_scale(sky[0].radiance,
-                                       lane_select(sky_facing[0], sky_visible[0] * cos_l * w, 0)));
+      direct = v3_add(direct,
+                      v3_mul(diffuse_weight,
+                             v3_scale(sky[0].radiance,
+                                      lane_select(sky_facing[0] & diffuse,
+                                                  sky_visible[0] * cos_l * w, 0))));
+      if (any_lane(sky_facing[0] & g.lanes)) {
+        real_t glossy_pdf;
+        const vec3_t glossy = glossy_light(sky[0], n, g, sky_visible[0], &glossy_pdf);
+        direct = v3_add(direct, v3_select(sky_facing[0] & g.lanes,
+                                          v3_scale(glossy, power_heuristic(pdf, glossy_pdf)),
+                                          v3s(0, 0, 0)));
+      }
     }
   }
 #endif
@@ -111,9 +177,9 @@ vec3_t direct_light(vec3_t p, vec3_t n, real_t h, mask_t lanes, int shadow_steps
 }
 
 /* The lights with a size that the ray from o along d meets before t_end: their radiance, each
- * weighted against next-event estimation where the ray left a diffuse lobe of density
- * diffuse_pdf (0: it did not, and the estimation did not see this light). */
-vec3_t lights_met(vec3_t o, vec3_t d, real_t t_end, mask_t lanes, real_t diffuse_pdf,
+ * weighted against next-event estimation where the ray left a lobe that the estimation covers,
+ * drawn with density lobe_pdf (0: another lobe, which the estimation did not see). */
+vec3_t lights_met(vec3_t o, vec3_t d, real_t t_end, mask_t lanes, real_t lobe_pdf,
                   __constant const fr_frame_constants* fc) {
   vec3_t sum = v3s(0, 0, 0);
   const int count = min(fc->light_count, FR_MAX_LIGHTS);
@@ -125,8 +191,8 @@ vec3_t lights_met(vec3_t o, vec3_t d, real_t t_end, mask_t lanes, real_t diffuse
     const mask_t met = lanes & light_hit(c, d, directional, (scalar_t)fc->light_radius[i], &t_hit) &
                        (directional ? t_end >= (real_t)FR_SCALAR_MAX : t_hit < t_end);
     if (!any_lane(met)) continue;
-    const real_t w = lane_select(diffuse_pdf > (real_t)0,
-                                 power_heuristic(diffuse_pdf, light_cone_pdf(c)), 1);
+    const real_t w = lane_select(lobe_pdf > (real_t)0,
+                                 power_heuristic(lobe_pdf, light_cone_pdf(c)), 1);
     sum = v3_add(sum, v3_select(met, v3_scale(c.radiance, w), v3s(0, 0, 0)));
   }
   return sum;
@@ -154,8 +220,9 @@ __kernel void fr_render(FR_RENDER_KERNEL_PARAMS) {
   mask_t crossed_glass = FR_MASK_FALSE, crossed_medium = FR_MASK_FALSE;
   /* Surface interactions and scatterings so far, per lane. */
   real_t bounces = (real_t)0, scatterings = (real_t)0;
-  /* The density of the diffuse lobe that chose this ray's direction (0: another lobe). */
-  real_t diffuse_pdf = (real_t)0;
+  /* The density with which the lobe that chose this ray's direction drew it, where next-event
+   * estimation covers that lobe too (diffuse, rough metal and coat); 0 otherwise. */
+  real_t lobe_pdf = (real_t)0;
   pixel_passes_t out;
   out.depth = (real_t)INFINITY;
   out.steps = (real_t)0;
@@ -195,9 +262,9 @@ __kernel void fr_render(FR_RENDER_KERNEL_PARAMS) {
     if (any_lane(miss)) {
       vec3_t sky = FR_SKY(ray.dir);
 #ifdef FR_SKY_SAMPLED
-      /* Found by a diffuse bounce: weighted against next-event estimation's draw. */
-      sky = v3_scale(sky, lane_select(diffuse_pdf > (real_t)0,
-                                      power_heuristic(diffuse_pdf,
+      /* Found by a bounce that next-event estimation covers: weighted against its draw. */
+      sky = v3_scale(sky, lane_select(lobe_pdf > (real_t)0,
+                                      power_heuristic(lobe_pdf,
                                                       environment_pdf(ray.dir, fc, environment)),
                                       1));
 #endif
@@ -209,7 +276,7 @@ __kernel void fr_render(FR_RENDER_KERNEL_PARAMS) {
       radiance = v3_add(radiance,
                         v3_mul(throughput, lights_met(ray.origin, ray.dir,
                                                       lane_select(hit, m.t, FR_SCALAR_MAX),
-                                                      outside, diffuse_pdf, fc)));
+                                                      outside, lobe_pdf, fc)));
     if (k == 0) {
       out.depth = lane_select(m.hit | m.inside, path_t + m.t, INFINITY);
       out.steps = m.steps;
@@ -309,19 +376,26 @@ __kernel void fr_render(FR_RENDER_KERNEL_PARAMS) {
       bounces += mask_to_real(hit);
       const mask_t last = hit & (bounces > (real_t)fc->path_max_bounces);
 
-      /* Next-event estimation through the diffuse lobe (of the outer side where a walk leaves). */
+      /* Next-event estimation through the diffuse lobe (of the outer side where a walk leaves)
+       * and the rough metal and coat. */
+      const real_t alpha = mat.roughness * mat.roughness;
       const vec3_t lit_normal = v3_select(leaving_medium, v3_neg(n), n);
       const vec3_t lit_weight =
           v3_select(leaving_medium, throughput,
                     v3_scale(v3_mul(throughput, diffuse_color), diffuse_odds));
       const mask_t lit = (leaving_medium | (diffuse_odds > (real_t)0)) & hit;
-      if (any_lane(lit))
-        radiance = v3_add(radiance,
-                          v3_select(lit, v3_mul(lit_weight, direct_light(p, lit_normal, h, lit,
-                                                                         shadow_steps, ix, iy, k,
-                                                                         fc, params, environment
-                                                                             FR_COUNTS_ARG)),
-                                    v3s(0, 0, 0)));
+      glossy_lobes_t lobes;
+      lobes.metal_weight = v3_scale(throughput, metal_odds);
+      lobes.coat_weight = v3_scale(throughput, coat_odds);
+      lobes.base_color = mat.base_color;
+      lobes.alpha = alpha;
+      lobes.to_eye = v3_neg(ray.dir);
+      lobes.lanes = hit & (metal_odds + coat_odds > (real_t)0) &
+                    (alpha >= (real_t)FR_GLOSSY_NEE_MIN_ALPHA);
+      if (any_lane(lit | lobes.lanes))
+        radiance = v3_add(radiance, direct_light(p, lit_normal, h, lit, lit_weight, lobes,
+                                                 shadow_steps, ix, iy, k, fc, params,
+                                                 environment FR_COUNTS_ARG));
 
       /* The next direction, with the lobes' odds. */
       const real_t u_lobe = pixel_random(fc, ix, iy, FR_PATH_STREAM(k, 0));
@@ -338,7 +412,6 @@ __kernel void fr_render(FR_RENDER_KERNEL_PARAMS) {
       const mask_t diffuse = hit & (leaving_medium | (!metal & !coat & !glass & !enter_medium));
       const mask_t glossy = hit & (metal | coat | glass);
       /* The glossy lobes' microfacet normal m (m = n for a polished surface). */
-      const real_t alpha = mat.roughness * mat.roughness;
       const vec3_t micro = ggx_normal(n, alpha, u1, u2);
       const vec3_t to_eye = v3_neg(ray.dir);
       const real_t cos_i = v3_dot(to_eye, n);
@@ -383,10 +456,15 @@ __kernel void fr_render(FR_RENDER_KERNEL_PARAMS) {
       ray.origin = v3_select(
           hit, v3_mad(p, side, lane_select(refract | enter_medium, -2 * h, 2 * h)), ray.origin);
       ray.dir = v3_select(hit, next_dir, ray.dir);
-      diffuse_pdf = lane_select(hit, lane_select(diffuse, fmax(v3_dot(next_dir, lit_normal),
-                                                               (real_t)0) * (real_t)M_1_PI_F,
-                                                 0),
-                                diffuse_pdf);
+      /* What next-event estimation weighs the light this ray finds against (direct_light). */
+      const real_t diffuse_pdf = fmax(v3_dot(next_dir, lit_normal), (real_t)0) * (real_t)M_1_PI_F;
+      const real_t glossy_pdf = ggx_reflection_pdf(v3_dot(micro, n), cos_im, alpha);
+      lobe_pdf = lane_select(
+          hit,
+          lane_select(diffuse, diffuse_pdf,
+                      lane_select((metal | coat) & (alpha >= (real_t)FR_GLOSSY_NEE_MIN_ALPHA),
+                                  glossy_pdf, 0)),
+          lobe_pdf);
       /* Entering glass: its absorption; entering a medium: its albedo and mean free path. */
       sigma = v3_select(refract & !in_glass, mat.absorption, sigma);
       in_glass ^= refract;
