@@ -168,6 +168,12 @@ TEST(SweepReference, IsUnfilteredAndPathTracedWithManySamples) {
   base.integrator = Integrator::Path;
   EXPECT_EQ(reference_settings(base).integrator, Integrator::Path);
   EXPECT_EQ(reference_settings(base).samples, kPathReferenceSamples);
+  EXPECT_EQ(reference_settings(base, 256).samples, 256);
+  const SceneInfo info;
+  const SceneState state;
+  EXPECT_NE(reference_key(info, state, base, "device", 256),
+            reference_key(info, state, base, "device"))
+      << "another reference";
 }
 
 TEST(SweepPlan, OneKnobAtATimeAroundTheDefaults) {

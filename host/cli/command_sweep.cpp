@@ -80,6 +80,8 @@ std::vector<OptionSpec> sweep_option_specs() {
   specs.push_back({"knobs", "LIST", false, knobs_help().c_str()});
   specs.push_back({"frames", "N", false,
                    "timing rounds: frames timed per configuration, interleaved (default 9)"});
+  specs.push_back({"reference-samples", "N", false,
+                   "samples of a path-traced reference (default 1024; with --integrator path)"});
   specs.push_back({"cache", "DIR", false,
                    "reference cache (default: sweep/ in fractalis's cache folder,\n"
                    "                                 see `fractalis cache`)"});
@@ -92,6 +94,7 @@ struct SweepJob {
   PreparedScene p;
   std::vector<SweepConfig> configs;
   int frames = 9;
+  int path_reference_samples = kPathReferenceSamples;
   std::filesystem::path out_dir;
   std::filesystem::path cache_dir;
 };
@@ -101,6 +104,9 @@ SweepJob plan_job(ParsedOptions& options) {
   SweepJob job;
   job.frames =
       static_cast<int>(parse_integer("--frames", options.get("frames").value_or("9"), 1, 1000));
+  job.path_reference_samples = static_cast<int>(parse_integer(
+      "--reference-samples",
+      options.get("reference-samples").value_or(std::to_string(kPathReferenceSamples)), 1, 65536));
   job.cache_dir = options.get("cache").value_or(default_cache_dir().string());
   job.p = prepare_scene(options);
   job.out_dir = options.get("out").value_or("sweep-" + job.p.scene->info.id);
@@ -249,7 +255,7 @@ int command_sweep(const std::vector<std::string>& args, std::ostream& out, std::
             0, "reference: refinement " + std::to_string(level + 1) + ", k = " + std::to_string(k));
         return !InterruptCatcher::interrupted();
       },
-      &warning);
+      &warning, job.path_reference_samples);
   if (!warning.empty()) {
     progress.finish();  // off the progress bar's line
     spdlog::warn("{}", warning);

@@ -13,6 +13,7 @@ extern "C" {
 }
 
 #include <algorithm>
+#include <filesystem>
 #include <stdexcept>
 
 namespace fr {
@@ -179,7 +180,14 @@ cl_mem Renderer::environment_memory(const RenderSettings& settings) {
     environment_width_px_ = environment_height_px_ = 0;
     return no_environment_.get();
   }
-  if (path != environment_path_) {
+  // The file's identity: its path, size and time of change (an edited panorama is read again).
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(path, ec);
+  const auto changed = std::filesystem::last_write_time(path, ec);
+  const std::string identity =
+      path + '\n' + std::to_string(ec ? 0 : size) + '\n' +
+      std::to_string(ec ? 0 : static_cast<long long>(changed.time_since_epoch().count()));
+  if (identity != environment_path_) {
     environment_.reset();
     environment_path_.clear();
     EnvironmentImage image;
@@ -194,7 +202,7 @@ cl_mem Renderer::environment_memory(const RenderSettings& settings) {
     cl_check(clEnqueueWriteBuffer(runtime_.queue(), environment_.get(), CL_TRUE, 0, bytes,
                                   buffer.data(), 0, nullptr, nullptr),
              "clEnqueueWriteBuffer", "uploading the environment image");
-    environment_path_ = path;
+    environment_path_ = identity;
     environment_width_px_ = image.width_px;
     environment_height_px_ = image.height_px;
   }

@@ -177,7 +177,7 @@ class Renderer {
   ClBufferHandle cone_t_, cone_ao_;  // per cone block (kernels/cone.cl)
   ClBufferHandle denoised_[2];       // the denoiser's passes (kernels/denoise.cl), like hdr_
   ClBufferHandle environment_, no_environment_;  // environment_memory
-  std::string environment_path_;                 // of the panorama in environment_
+  std::string environment_path_;  // the panorama in environment_: path, size, time of change
   int environment_width_px_ = 0, environment_height_px_ = 0;
   float last_pixel_angle_rad_ = 0;  // of the last sample's camera, for the denoiser
   size_t cone_blocks_ = 0;          // capacity of the cone buffers

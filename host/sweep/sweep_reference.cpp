@@ -79,7 +79,7 @@ std::string cache_bytes(const SweepReference& r) {
 
 }  // namespace
 
-RenderSettings reference_settings(const RenderSettings& base) {
+RenderSettings reference_settings(const RenderSettings& base, int path_samples) {
   RenderSettings ref = base;
   ref.precision = Precision::Double;
   ref.relaxation = 1;
@@ -94,7 +94,7 @@ RenderSettings reference_settings(const RenderSettings& base) {
   ref.step_scale = std::min(ref.step_scale, 1.0f);  // a scale above 1 over-steps: never truth
   ref.denoise = false;  // the filter's bias is an error the truth must not have
   // (the refinements render 1, for geometry, and these)
-  ref.samples = ref.integrator == Integrator::Path ? kPathReferenceSamples : kReferenceSamples;
+  ref.samples = ref.integrator == Integrator::Path ? path_samples : kReferenceSamples;
   // What only says how the frame is read or watched, not what it shows.
   ref.outputs = Readback::Everything;
   ref.count_evaluations = false;
@@ -103,7 +103,7 @@ RenderSettings reference_settings(const RenderSettings& base) {
 }
 
 std::string reference_key(const SceneInfo& info, const SceneState& state, const RenderSettings& s,
-                          const std::string& device_name) {
+                          const std::string& device_name, int path_samples) {
   std::ostringstream k;
   k.precision(17);
   k << info.id << '\n' << info.version << '\n' << device_name << '\n';
@@ -119,7 +119,7 @@ std::string reference_key(const SceneInfo& info, const SceneState& state, const 
   }
   k << state.time_s << ',' << state.bounding_radius << '\n';
   // Every field of the settings the reference is rendered with.
-  const RenderSettings ref = reference_settings(s);
+  const RenderSettings ref = reference_settings(s, path_samples);
   visit_render_fields(ref, [&](const char* name, const auto& value) {
     k << name << '=';
     using T = std::decay_t<decltype(value)>;
@@ -143,10 +143,11 @@ SweepReference make_reference(RenderWorker& renderer, const SceneInfo& info,
                               const std::string& device_name,
                               const std::filesystem::path& cache_dir,
                               const std::function<bool(double, int)>& progress,
-                              std::string* warning) {
-  const auto file = cache_dir / (reference_key(info, state, settings, device_name) + ".ref");
+                              std::string* warning, int path_samples) {
+  const auto file =
+      cache_dir / (reference_key(info, state, settings, device_name, path_samples) + ".ref");
   SweepReference r;
-  RenderSettings ref = reference_settings(settings);
+  RenderSettings ref = reference_settings(settings, path_samples);
   const int picture_samples = ref.samples;
   r.samples = picture_samples;
   if (read_cache(file, settings, &r)) return r;
@@ -161,31 +162,41 @@ SweepReference make_reference(RenderWorker& renderer, const SceneInfo& info,
     ref.hit_threshold_k = static_cast<float>(k);
     ref.samples = 1;  // centred rays: the geometry
     const FrameImage geometry = renderer.render(info, state, ref, true);
-    ref.samples = picture_samples;  // the picture
-    const FrameImage picture = renderer.render(info, state, ref);
     ReferenceImage current;
     current.width_px = settings.width_px;
     current.height_px = settings.height_px;
-    current.rgba8 = picture.rgba8;
     current.depth = geometry.depth;
     current.normal = geometry.normal;
+    // The picture. A path-traced picture's noise moves it more than the threshold does at any
+    // level, so there the surface alone decides, and the long picture is rendered once, at the
+    // level that ends (it was rendered at every level: five times the time at most).
+    const auto picture = [&] {
+      ref.samples = picture_samples;
+      current.rgba8 = renderer.render(info, state, ref).rgba8;
+    };
+    if (path)  // (black until then: the comparison below reads only the surface for it)
+      current.rgba8.assign(geometry.rgba8.size(), 0);
+    else
+      picture();
     r.refinements = level + 1;
     r.hit_threshold_k = k;
+    bool converged = false;
     if (level > 0) {
       const ErrorMetrics change =
           compare_to_reference(reference_as_frame(current), previous, pixel_angle);
-      r.convergence_mae = change.mean_abs_error;
+      r.convergence_mae = path ? 0 : change.mean_abs_error;
       r.convergence_depth_px = change.depth_median_px;
       // Converged: the picture moved by less than a quarter of an 8-bit level on average, and
-      // the surface by less than 2% of a footprint. (A path-traced picture's noise moves it
-      // more than that at any threshold: there the surface alone decides.)
-      if ((path || change.mean_abs_error < 0.25) && change.depth_median_px < 0.02) {
-        r.image = std::move(current);
-        break;
-      }
+      // the surface by less than 2% of a footprint.
+      converged = (path || change.mean_abs_error < 0.25) && change.depth_median_px < 0.02;
+    }
+    if (path && (converged || level == 4)) {
+      if (progress && !progress(k, level)) return {};  // (the long render's own report)
+      picture();
     }
     previous = current;
     r.image = std::move(current);
+    if (converged) break;
   }
   std::error_code ec;
   std::filesystem::create_directories(cache_dir, ec);

@@ -37,17 +37,20 @@ constexpr int kPathReferenceSamples = 1024;
 // plain sphere tracing from every ray's own origin, generous step budgets, central differences,
 // no refinement steps, fast math or denoising, never a step scale above 1 (the hit threshold then
 // shrinks from the base's, refinement by refinement).
-RenderSettings reference_settings(const RenderSettings& base);
+// path_samples: a path-traced reference's samples (sweep --reference-samples).
+RenderSettings reference_settings(const RenderSettings& base,
+                                  int path_samples = kPathReferenceSamples);
 
 // A key for the cache: the scene (id, version), its parameter values, camera, lights, time,
 // every field of reference_settings(settings) (render_settings.hpp's visit_render_fields, so a
 // new field cannot stay out), the device, and the assembled kernel source (so a changed
 // renderer or DE never reuses an old reference).
 std::string reference_key(const SceneInfo& info, const SceneState& state,
-                          const RenderSettings& settings, const std::string& device_name);
+                          const RenderSettings& settings, const std::string& device_name,
+                          int path_samples = kPathReferenceSamples);
 
 // The reference for this view, from `cache_dir` (file <key>.ref) when there, else computed
-// (progress(k, refinement) is called before each render; returning false abandons the
+// (progress(k, refinement) is called before each refinement; returning false abandons the
 // reference: nothing is cached and the result is empty) and stored there atomically. A cache
 // file that cannot be read is recomputed; one that cannot be written is reported on *warning.
 SweepReference make_reference(RenderWorker& renderer, const SceneInfo& info,
@@ -55,6 +58,6 @@ SweepReference make_reference(RenderWorker& renderer, const SceneInfo& info,
                               const std::string& device_name,
                               const std::filesystem::path& cache_dir,
                               const std::function<bool(double, int)>& progress,
-                              std::string* warning);
+                              std::string* warning, int path_samples = kPathReferenceSamples);
 
 }  // namespace fr
