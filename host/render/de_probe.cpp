@@ -6,6 +6,53 @@ static_assert(sizeof(std::array<float, 3>) == 3 * sizeof(float),
               "points are uploaded as packed xyz");
 
 namespace fr {
+namespace {
+
+struct ProbeInput {
+  const void* data;
+  size_t bytes;
+  const char* what;
+};
+
+// Runs probe kernel `name` of `k` over `count` points, FR_LANES a work-item: its arguments are
+// `inputs` (copied to read-only buffers), then the output (`floats_per_point` a point), then the
+// count.
+std::vector<float> run_probe(ClRuntime& runtime, const AssembledKernel& k, const char* name,
+                             const std::vector<ProbeInput>& inputs, size_t count, int lanes,
+                             size_t floats_per_point) {
+  cl_kernel kernel =
+      runtime.kernel(runtime.program(k.source, k.build_options, k.description), name);
+  std::vector<ClBufferHandle> buffers;
+  cl_uint arg = 0;
+  for (const ProbeInput& in : inputs) {
+    cl_int err = CL_SUCCESS;
+    buffers.emplace_back(clCreateBuffer(runtime.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
+                                        in.bytes, const_cast<void*>(in.data), &err));
+    cl_check(err, "clCreateBuffer", in.what);
+    const cl_mem b = buffers.back().get();
+    cl_check(clSetKernelArg(kernel, arg++, sizeof b, &b), "clSetKernelArg");
+  }
+  const size_t out_bytes = count * floats_per_point * sizeof(float);
+  cl_int err = CL_SUCCESS;
+  ClBufferHandle out_buf(
+      clCreateBuffer(runtime.context(), CL_MEM_WRITE_ONLY, out_bytes, nullptr, &err));
+  cl_check(err, "clCreateBuffer", "probe results");
+  const cl_mem ob = out_buf.get();
+  const cl_int n = static_cast<cl_int>(count);
+  cl_check(clSetKernelArg(kernel, arg++, sizeof ob, &ob), "clSetKernelArg");
+  cl_check(clSetKernelArg(kernel, arg++, sizeof n, &n), "clSetKernelArg");
+  const size_t global = (count + lanes - 1) / lanes;
+  cl_check(clEnqueueNDRangeKernel(runtime.queue(), kernel, 1, nullptr, &global, nullptr, 0, nullptr,
+                                  nullptr),
+           "clEnqueueNDRangeKernel", "probing " + k.description);
+  std::vector<float> out(count * floats_per_point);
+  cl_check(clEnqueueReadBuffer(runtime.queue(), ob, CL_TRUE, 0, out_bytes, out.data(), 0, nullptr,
+                               nullptr),
+           "clEnqueueReadBuffer", "reading probe results");
+  return out;
+}
+
+}  // namespace
 
 std::vector<float> probe_de(ClRuntime& runtime, const SceneInfo& info,
                             const std::vector<fr_value>& params,
@@ -14,39 +61,11 @@ std::vector<float> probe_de(ClRuntime& runtime, const SceneInfo& info,
   if (points.empty()) return {};
   lanes = resolve_lanes(lanes, &runtime.device());
   const AssembledKernel k = assemble_probe_kernel(info, params, KernelConfig{lanes, precision});
-  cl_kernel kernel =
-      runtime.kernel(runtime.program(k.source, k.build_options, k.description), "fr_probe_de");
-
   const std::vector<uint8_t> packed = pack_scene_params(info, params);
-  cl_int err = CL_SUCCESS;
-  const size_t n = points.size();
-  ClBufferHandle param_buf(clCreateBuffer(runtime.context(),
-                                          CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, packed.size(),
-                                          const_cast<uint8_t*>(packed.data()), &err));
-  cl_check(err, "clCreateBuffer", "probe parameters");
-  ClBufferHandle point_buf(clCreateBuffer(
-      runtime.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, n * 3 * sizeof(float),
-      const_cast<std::array<float, 3>*>(points.data()), &err));
-  cl_check(err, "clCreateBuffer", "probe points");
-  ClBufferHandle out_buf(
-      clCreateBuffer(runtime.context(), CL_MEM_WRITE_ONLY, n * sizeof(float), nullptr, &err));
-  cl_check(err, "clCreateBuffer", "probe results");
-
-  cl_mem pb = param_buf.get(), xb = point_buf.get(), ob = out_buf.get();
-  const cl_int count = static_cast<cl_int>(n);
-  cl_check(clSetKernelArg(kernel, 0, sizeof pb, &pb), "clSetKernelArg");
-  cl_check(clSetKernelArg(kernel, 1, sizeof xb, &xb), "clSetKernelArg");
-  cl_check(clSetKernelArg(kernel, 2, sizeof ob, &ob), "clSetKernelArg");
-  cl_check(clSetKernelArg(kernel, 3, sizeof count, &count), "clSetKernelArg");
-  const size_t global = (n + lanes - 1) / lanes;
-  cl_check(clEnqueueNDRangeKernel(runtime.queue(), kernel, 1, nullptr, &global, nullptr, 0, nullptr,
-                                  nullptr),
-           "clEnqueueNDRangeKernel", "probing " + k.description);
-  std::vector<float> out(n);
-  cl_check(clEnqueueReadBuffer(runtime.queue(), ob, CL_TRUE, 0, n * sizeof(float), out.data(), 0,
-                               nullptr, nullptr),
-           "clEnqueueReadBuffer", "reading probe results");
-  return out;
+  return run_probe(runtime, k, "fr_probe_de",
+                   {{packed.data(), packed.size(), "probe parameters"},
+                    {points.data(), points.size() * sizeof(points[0]), "probe points"}},
+                   points.size(), lanes, 1);
 }
 
 std::vector<float> probe_material(ClRuntime& runtime, const SceneInfo& info,
@@ -56,42 +75,12 @@ std::vector<float> probe_material(ClRuntime& runtime, const SceneInfo& info,
   const int lanes = resolve_lanes(0, &runtime.device());
   const AssembledKernel k =
       assemble_material_probe_kernel(info, params, KernelConfig{lanes, Precision::Float});
-  cl_kernel kernel = runtime.kernel(runtime.program(k.source, k.build_options, k.description),
-                                    "fr_probe_material");
   const std::vector<uint8_t> packed = pack_scene_params(info, params);
-  const size_t n = points.size();
-  cl_context ctx = runtime.context();
-  cl_int err = CL_SUCCESS;
-  ClBufferHandle fc_buf(clCreateBuffer(ctx, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof fc,
-                                       const_cast<fr_frame_constants*>(&fc), &err));
-  cl_check(err, "clCreateBuffer", "material probe constants");
-  ClBufferHandle param_buf(clCreateBuffer(ctx, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
-                                          packed.size(), const_cast<uint8_t*>(packed.data()),
-                                          &err));
-  cl_check(err, "clCreateBuffer", "material probe parameters");
-  ClBufferHandle point_buf(clCreateBuffer(ctx, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
-                                          n * 3 * sizeof(float),
-                                          const_cast<std::array<float, 3>*>(points.data()), &err));
-  cl_check(err, "clCreateBuffer", "material probe points");
-  ClBufferHandle out_buf(
-      clCreateBuffer(ctx, CL_MEM_WRITE_ONLY, n * kMaterialFloats * sizeof(float), nullptr, &err));
-  cl_check(err, "clCreateBuffer", "material probe results");
-  cl_mem fb = fc_buf.get(), pb = param_buf.get(), xb = point_buf.get(), ob = out_buf.get();
-  const cl_int count = static_cast<cl_int>(n);
-  cl_check(clSetKernelArg(kernel, 0, sizeof fb, &fb), "clSetKernelArg");
-  cl_check(clSetKernelArg(kernel, 1, sizeof pb, &pb), "clSetKernelArg");
-  cl_check(clSetKernelArg(kernel, 2, sizeof xb, &xb), "clSetKernelArg");
-  cl_check(clSetKernelArg(kernel, 3, sizeof ob, &ob), "clSetKernelArg");
-  cl_check(clSetKernelArg(kernel, 4, sizeof count, &count), "clSetKernelArg");
-  const size_t global = (n + lanes - 1) / lanes;
-  cl_check(clEnqueueNDRangeKernel(runtime.queue(), kernel, 1, nullptr, &global, nullptr, 0, nullptr,
-                                  nullptr),
-           "clEnqueueNDRangeKernel", "probing " + k.description);
-  std::vector<float> out(n * kMaterialFloats);
-  cl_check(clEnqueueReadBuffer(runtime.queue(), ob, CL_TRUE, 0, out.size() * sizeof(float),
-                               out.data(), 0, nullptr, nullptr),
-           "clEnqueueReadBuffer", "reading material probe results");
-  return out;
+  return run_probe(runtime, k, "fr_probe_material",
+                   {{&fc, sizeof fc, "material probe constants"},
+                    {packed.data(), packed.size(), "material probe parameters"},
+                    {points.data(), points.size() * sizeof(points[0]), "material probe points"}},
+                   points.size(), lanes, kMaterialFloats);
 }
 
 }  // namespace fr

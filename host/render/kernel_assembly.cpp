@@ -5,6 +5,7 @@
 #include "render/scene_source_guard.hpp"
 
 #include <algorithm>
+#include <initializer_list>
 #include <set>
 #include <sstream>
 
@@ -350,15 +351,25 @@ AssembledKernel assemble_render_kernel(const SceneInfo& info, const std::vector<
   return finish(out, info, config, "render");
 }
 
-AssembledKernel assemble_probe_kernel(const SceneInfo& info, const std::vector<fr_value>& values,
-                                      const KernelConfig& config) {
+namespace {
+// A probe kernel: the scene's code (with its surface source or not) and `files` after it, built
+// for the config's lanes and precision alone.
+AssembledKernel assemble_probe(const SceneInfo& info, const std::vector<fr_value>& values,
+                               const KernelConfig& config, const char* kind, bool with_surface,
+                               std::initializer_list<const char*> files) {
   std::ostringstream out;
   KernelConfig bare;
   bare.lanes = config.lanes;
   bare.precision = config.precision;
-  append_scene_prefix(out, info, values, bare, "DE probe", false);
-  append_file(out, "probe.cl", kernel_source("probe.cl"));
-  return finish(out, info, bare, "DE probe");
+  append_scene_prefix(out, info, values, bare, kind, with_surface);
+  for (const char* f : files) append_file(out, f, kernel_source(f));
+  return finish(out, info, bare, kind);
+}
+}  // namespace
+
+AssembledKernel assemble_probe_kernel(const SceneInfo& info, const std::vector<fr_value>& values,
+                                      const KernelConfig& config) {
+  return assemble_probe(info, values, config, "DE probe", false, {"probe.cl"});
 }
 
 bool has_material_function(const SceneInfo& info) {
@@ -369,14 +380,8 @@ bool has_material_function(const SceneInfo& info) {
 AssembledKernel assemble_material_probe_kernel(const SceneInfo& info,
                                                const std::vector<fr_value>& values,
                                                const KernelConfig& config) {
-  std::ostringstream out;
-  KernelConfig bare;
-  bare.lanes = config.lanes;
-  bare.precision = config.precision;
-  append_scene_prefix(out, info, values, bare, "material probe", true);
-  append_file(out, "material.cl", kernel_source("material.cl"));
-  append_file(out, "material_probe.cl", kernel_source("material_probe.cl"));
-  return finish(out, info, bare, "material probe");
+  return assemble_probe(info, values, config, "material probe", true,
+                        {"material.cl", "material_probe.cl"});
 }
 
 std::vector<uint8_t> pack_scene_params(const SceneInfo& info, const std::vector<fr_value>& values) {

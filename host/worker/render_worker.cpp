@@ -25,6 +25,18 @@
 namespace fr {
 namespace {
 
+// What both probes start with (render_worker_serve.cpp's read_probe_request).
+WireWriter probe_request(uint64_t key, const std::vector<fr_value>& params,
+                         const std::vector<std::array<float, 3>>& points) {
+  WireWriter w;
+  w.u64(key);
+  w.u32(static_cast<uint32_t>(params.size()));
+  w.raw(params.data(), params.size() * sizeof(fr_value));
+  w.u32(static_cast<uint32_t>(points.size()));
+  w.raw(points.data(), points.size() * sizeof(points[0]));
+  return w;
+}
+
 using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point t) {
@@ -483,12 +495,7 @@ std::vector<float> RenderWorker::probe_de(const SceneInfo& info,
   ensure_started();
   if (local_) return fr::probe_de(local_->runtime, info, params, points, lanes, precision);
   const uint64_t key = send_scene(info);
-  WireWriter w;
-  w.u64(key);
-  w.u32(static_cast<uint32_t>(params.size()));
-  w.raw(params.data(), params.size() * sizeof(fr_value));
-  w.u32(static_cast<uint32_t>(points.size()));
-  w.raw(points.data(), points.size() * sizeof(points[0]));
+  WireWriter w = probe_request(key, params, points);
   w.i32(lanes);
   w.u32(static_cast<uint32_t>(precision));
   // A changed DE's probe gets 10 s, not a new scene's first-sample limit: a probe is a few
@@ -513,12 +520,7 @@ std::vector<float> RenderWorker::probe_material(const SceneInfo& info,
   ensure_started();
   if (local_) return fr::probe_material(local_->runtime, info, params, fc, points);
   const uint64_t key = send_scene(info);
-  WireWriter w;
-  w.u64(key);
-  w.u32(static_cast<uint32_t>(params.size()));
-  w.raw(params.data(), params.size() * sizeof(fr_value));
-  w.u32(static_cast<uint32_t>(points.size()));
-  w.raw(points.data(), points.size() * sizeof(points[0]));
+  WireWriter w = probe_request(key, params, points);
   w.raw(&fc, sizeof fc);
   const double limit_s = frame_limit_.limit_s(key, static_cast<double>(points.size()));
   const std::string reply = call(static_cast<uint32_t>(RenderWireKind::ProbeMaterial), w.bytes(),

@@ -43,6 +43,28 @@ class Worker {
     };
   }
 
+  // What both probes start with (render_worker.cpp's write_probe_request): the scene, its
+  // parameter values and the points.
+  struct ProbeRequest {
+    const SceneInfo* info = nullptr;
+    std::vector<fr_value> params;
+    std::vector<std::array<float, 3>> points;
+  };
+  ProbeRequest read_probe_request(WireReader& r) {
+    ProbeRequest q;
+    q.info = &scene(r.u64());
+    const uint32_t param_count = r.u32();
+    if (param_count != q.info->params.size()) throw BadRequest("wrong parameter count");
+    q.params.resize(param_count);
+    r.raw(q.params.data(), q.params.size() * sizeof(fr_value));
+    const uint32_t point_count = r.u32();
+    if (point_count > r.rest().size() / sizeof(std::array<float, 3>))
+      throw BadRequest("too many points");
+    q.points.resize(point_count);
+    r.raw(q.points.data(), q.points.size() * sizeof(q.points[0]));
+    return q;
+  }
+
   // Answers one request into *result; throws for an error to send back.
   void answer(RenderWireKind kind, WireReader& r, WireWriter& result) {
     switch (kind) {
@@ -96,16 +118,10 @@ class Worker {
         return;
       }
       case RenderWireKind::Probe: {
-        const SceneInfo& info = scene(r.u64());
-        const uint32_t param_count = r.u32();
-        if (param_count != info.params.size()) throw BadRequest("wrong parameter count");
-        std::vector<fr_value> params(param_count);
-        r.raw(params.data(), params.size() * sizeof(fr_value));
-        const uint32_t point_count = r.u32();
-        if (point_count > r.rest().size() / sizeof(std::array<float, 3>))
-          throw BadRequest("too many points");
-        std::vector<std::array<float, 3>> points(point_count);
-        r.raw(points.data(), points.size() * sizeof(points[0]));
+        const ProbeRequest q = read_probe_request(r);
+        const SceneInfo& info = *q.info;
+        const auto& params = q.params;
+        const auto& points = q.points;
         const int lanes = r.i32();
         const uint32_t precision = r.u32();
         check(r);
@@ -117,16 +133,10 @@ class Worker {
         return;
       }
       case RenderWireKind::ProbeMaterial: {
-        const SceneInfo& info = scene(r.u64());
-        const uint32_t param_count = r.u32();
-        if (param_count != info.params.size()) throw BadRequest("wrong parameter count");
-        std::vector<fr_value> params(param_count);
-        r.raw(params.data(), params.size() * sizeof(fr_value));
-        const uint32_t point_count = r.u32();
-        if (point_count > r.rest().size() / sizeof(std::array<float, 3>))
-          throw BadRequest("too many points");
-        std::vector<std::array<float, 3>> points(point_count);
-        r.raw(points.data(), points.size() * sizeof(points[0]));
+        const ProbeRequest q = read_probe_request(r);
+        const SceneInfo& info = *q.info;
+        const auto& params = q.params;
+        const auto& points = q.points;
         fr_frame_constants fc;
         r.raw(&fc, sizeof fc);
         check(r);
