@@ -24,7 +24,8 @@ int main(int argc, char** argv) {
 }
 
 #if defined(__SANITIZE_ADDRESS__)
-// Sanitizer builds only. With FFmpeg's and OpenEXR's libraries linked in, a process that loads
+// Sanitizer builds only (the tests set the same: tests/sanitizer_options.cpp). With FFmpeg's,
+// OpenEXR's and stb_image's libraries linked in, a process that loads
 // PoCL has more dynamic-TLS modules than GCC 12's LeakSanitizer tracks correctly: at exit it
 // scans a stale dynamic-TLS range and its tracer crashes ("Tracer caught signal 11 ... does not
 // work under ptrace"), failing every run. Not intercepting __tls_get_addr avoids that range;
