@@ -4,6 +4,7 @@
 // seed. The noise estimate (app/noise_estimate.hpp) alone, on synthetic samples of known spread.
 #include "app/explorer.hpp"
 #include "app/noise_estimate.hpp"
+#include "app/sample_bands.hpp"
 #include "render/renderer.hpp"
 #include "test_paths.hpp"
 #include "test_support.hpp"
@@ -48,6 +49,17 @@ TEST(NoiseEstimate, RecoversTheStandardErrorOfKnownSamples) {
     EXPECT_NEAR(e->standard_error, truth, 0.03 * truth) << n << " samples";
   }
   EXPECT_FALSE(estimate_noise(before.data(), after.data(), 0, 5).has_value());
+}
+
+// Renders until the explorer shows something new (a path-traced sample renders in bands and,
+// filtered, its filter's passes too: calls that show nothing); counts those calls in *between.
+const FrameView* render_until_shown(Explorer& explorer, int w, int h, int* between = nullptr) {
+  for (int call = 0; call < 200; ++call) {
+    if (const FrameView* frame = explorer.render(w, h)) return frame;
+    if (between) ++*between;
+    if (explorer.stats().refined) return nullptr;
+  }
+  return nullptr;
 }
 
 TEST(ExplorerPath, FliesFastThenPathTracesTheParkedView) {
@@ -110,6 +122,55 @@ TEST(ExplorerPath, FliesFastThenPathTracesTheParkedView) {
   EXPECT_EQ(explorer.stats().path_samples, 0);
 }
 
+// A view too tall for one band (app/sample_bands.hpp): the explorer answers between bands, showing
+// nothing new until a sample is whole, and what it then shows is the whole image's samples, byte
+// for byte (a render of as many samples, the independent answer).
+TEST(ExplorerPath, ATallViewRefinesInBandsAsWholeSamplesWould) {
+  const auto dir = test::folder_of_one_scene("path_band_plugins", TEST_SCENE_DIR, "unit_ball");
+  std::vector<SceneEvent> events;
+  SceneLibrary library({dir}, PluginPolicy{}, RenderSettings{}, test::worker(), &events);
+  Settings settings;
+  settings.render.integrator = Integrator::Path;
+  settings.explorer.path_samples = 3;
+  settings.explorer.denoise = false;
+  Explorer explorer(settings, test::worker(), library, "unit_ball");
+  const int w = 24, h = 4 * SampleBands::kInitialRows + 8;
+  ASSERT_NE(explorer.render(w, h), nullptr);  // after the change: fast
+  std::vector<float> shown;
+  int between = 0;  // calls that rendered a band and showed nothing new
+  for (int n = 1; n <= 3; ++n) {
+    const FrameView* frame = nullptr;
+    for (int call = 0; call < 100 && !frame; ++call) {
+      frame = explorer.render(w, h);
+      if (frame) break;
+      ++between;
+      EXPECT_EQ(explorer.stats().path_samples, n - 1) << "a sample in bands counts when whole";
+      EXPECT_FALSE(explorer.stats().refined);
+    }
+    ASSERT_NE(frame, nullptr) << n;
+    EXPECT_EQ(explorer.stats().path_samples, n);
+    ASSERT_NE(frame->linear_rgba, nullptr);
+    if (n == 3) shown.assign(frame->linear_rgba, frame->linear_rgba + 4 * frame->pixel_count());
+  }
+  // The first sample: 64 rows, 64 more (the first timed band lets the next grow), at most 128,
+  // then the rest.
+  EXPECT_GE(between, 3);
+  EXPECT_EQ(explorer.render(w, h), nullptr);
+  EXPECT_TRUE(explorer.stats().refined);
+
+  RenderSettings s = explorer.render_settings();
+  s.width_px = w;
+  s.height_px = h;
+  s.samples = 3;
+  Renderer renderer(test::runtime());
+  const FrameImage whole = render_all_samples(renderer, explorer.current().scene->info,
+                                              explorer.current().state, s, true);
+  ASSERT_EQ(whole.linear_rgba.size(), shown.size());
+  size_t differing = 0;
+  for (size_t i = 0; i < shown.size(); ++i) differing += shown[i] != whole.linear_rgba[i];
+  EXPECT_EQ(differing, 0u);
+}
+
 // With explorer.denoise (on by default) the parked path-traced view is filtered: the overlay
 // says so and shows no noise figure (the estimate reads the plain running mean's steps).
 TEST(ExplorerPath, TheDenoisedPreviewSaysSo) {
@@ -123,12 +184,32 @@ TEST(ExplorerPath, TheDenoisedPreviewSaysSo) {
   Explorer explorer(settings, test::worker(), library, "unit_ball");
   ASSERT_NE(explorer.render(48, 32), nullptr);  // after the change: fast
   EXPECT_FALSE(explorer.stats().path_denoised);
+  std::vector<float> shown;
   for (int n = 1; n <= 3; ++n) {
-    ASSERT_NE(explorer.render(48, 32), nullptr) << n;
+    int between = 0;
+    const FrameView* frame = render_until_shown(explorer, 48, 32, &between);
+    ASSERT_NE(frame, nullptr) << n;
+    // The sample, then the filter's five passes, each queued by a call of its own.
+    EXPECT_EQ(between, 1 + Renderer::kDenoisePasses) << n;
     EXPECT_EQ(explorer.stats().path_samples, n);
     EXPECT_TRUE(explorer.stats().path_denoised);
     EXPECT_FALSE(explorer.stats().path_noise.has_value());
+    ASSERT_NE(frame->linear_rgba, nullptr);
+    if (n == 3) shown.assign(frame->linear_rgba, frame->linear_rgba + 4 * frame->pixel_count());
   }
+  // What it shows is the filter's picture of three samples, as `render` filters it at the end.
+  RenderSettings s = explorer.render_settings();
+  s.width_px = 48;
+  s.height_px = 32;
+  s.samples = 3;
+  s.denoise = true;
+  Renderer renderer(test::runtime());
+  const FrameImage whole = render_all_samples(renderer, explorer.current().scene->info,
+                                              explorer.current().state, s, true);
+  ASSERT_EQ(whole.linear_rgba.size(), shown.size());
+  size_t differing = 0;
+  for (size_t i = 0; i < shown.size(); ++i) differing += shown[i] != whole.linear_rgba[i];
+  EXPECT_EQ(differing, 0u);
 }
 
 }  // namespace

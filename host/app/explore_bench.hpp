@@ -28,6 +28,9 @@ struct ExploreBenchResult {
   double seconds_to_full_resolution = 0;  // after the camera stops: first full-size sample shown
   double seconds_to_full_quality = 0;     // ... and all anti-aliasing samples
   int refine_frames = 0;
+  // The longest frame (update and render) while refining: how long input may wait then (a
+  // path-traced sample renders in bands of about a frame's time: app/sample_bands.hpp).
+  double refine_frame_max_ms = 0;
   // With the explorer counting (Explorer::set_count_evaluations): the moving frames' DE
   // evaluations, per pixel over all their pixels.
   EvalCounts moving_counts;

@@ -48,6 +48,8 @@ Explorer::Explorer(const Settings& settings, RenderWorker& worker, SceneLibrary&
   frame.target_frame_ms = 1000.0 / settings.explorer.target_fps;
   frame.full_quality_samples = settings.explorer.full_quality_samples;
   frames_ = FrameController(frame);
+  bands_ = SampleBands(frame.target_frame_ms);
+  filter_bands_ = SampleBands(frame.target_frame_ms);
   if (library_.slots().empty()) throw std::runtime_error("no scene could be loaded");
   const int index = library_.find(scene_id);
   current_ = index >= 0 ? index : 0;
@@ -228,6 +230,52 @@ const FrameView* Explorer::render(int window_width_px, int window_height_px) {
   // sample once parked (the next flight starts from it).
   const bool keep = temporal && !quick && !path_sample && plan.sample_index == 0 &&
                     (plan.lattice || plan.resolution_scale == 1);
+  // A path-traced sample in bands of rows (app/sample_bands.hpp), and with the filter on, its
+  // passes in bands too: each call queues one and returns with nothing new to show (the picture
+  // stays until the sample is whole and filtered); the last call reads the frame back.
+  SampleBand band;
+  bool filtered = false;  // this call reads back a sample that denoise_rows filtered
+  if (!path_sample) {
+    bands_.reset();
+    filter_bands_.reset();
+    filter_pass_ = -1;
+    queued_band_rows_ = 0;
+  } else if (filter_pass_ >= Renderer::kDenoisePasses) {
+    filtered = true;
+    filter_pass_ = -1;
+  } else {
+    const bool filtering = filter_pass_ >= 0;
+    band = filtering ? filter_bands_.next(filter_pass_, s.height_px)
+                     : bands_.next(plan.sample_index, s.height_px);
+    if (filtering || !band.last || s.denoise) {
+      const auto queued_from = std::chrono::steady_clock::now();
+      try {
+        if (filtering)
+          worker_.denoise_rows(s, filter_pass_, band.rows);
+        else
+          worker_.render_sample(slot.scene->info, slot.state, s, plan.sample_index,
+                                Readback::Everything, band.rows);
+      } catch (const RenderWorkerFailure& e) {
+        last_ = FrameView{};
+        filter_pass_ = -1;
+        worker_failed(slot, e);
+        return nullptr;
+      } catch (const std::exception& e) {
+        last_ = FrameView{};
+        filter_pass_ = -1;
+        if (slot.error != e.what()) spdlog::error("{}", e.what());
+        slot.error = e.what();
+        return nullptr;
+      }
+      if (band.last) ++filter_pass_;  // the sample whole: the first pass; a pass whole: the next
+      frames_.sample_unfinished();
+      time_band(
+          filtering ? &filter_bands_ : &bands_, band.rows.rows_px, false,
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - queued_from)
+              .count());
+      return nullptr;
+    }
+  }
   const auto start = std::chrono::steady_clock::now();
   last_ = FrameView{};  // the last frame's memory may go with a failing worker
   try {
@@ -236,10 +284,13 @@ const FrameView* Explorer::render(int window_width_px, int window_height_px) {
     // Path-traced samples: every pass, for the linear mean that the noise estimate reads.
     const Readback outputs =
         (temporal && !quick) || path_sample ? Readback::Everything : Readback::DisplayAndSteps;
-    last_ = worker_.render_frame(slot.scene->info, slot.state, s, plan.sample_index, outputs,
-                                 keep || path_sample      ? Readback::Everything
-                                 : plan.sample_index == 0 ? Readback::DisplayAndSteps
-                                                          : Readback::Display);
+    last_ = filtered
+                ? worker_.finish_frame(s, Readback::Everything)
+                : worker_.render_frame(slot.scene->info, slot.state, s, plan.sample_index, outputs,
+                                       keep || path_sample      ? Readback::Everything
+                                       : plan.sample_index == 0 ? Readback::DisplayAndSteps
+                                                                : Readback::Display,
+                                       band.rows);
   } catch (const RenderWorkerFailure& e) {
     worker_failed(slot, e);
     return nullptr;
@@ -255,6 +306,8 @@ const FrameView* Explorer::render(int window_width_px, int window_height_px) {
   ++frames_rendered_;
   double frame_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  if (path_sample)
+    time_band(filtered ? nullptr : &bands_, filtered ? 0 : band.rows.rows_px, true, frame_ms);
   // (Statistics of the traced frame, before it becomes the shown one; not part of its time.)
   if (plan.sample_index == 0 && last_.steps && last_.pixel_count() > 0) {
     const size_t n = last_.pixel_count();
@@ -315,6 +368,29 @@ const FrameView* Explorer::render(int window_width_px, int window_height_px) {
   }
   stats_.precision = last_.precision;
   return &last_;
+}
+
+void Explorer::time_band(SampleBands* bands, int rows, bool read_back, double call_ms) {
+  // A queued band starts on the device as the call that queued it returns (that call waited for
+  // the band before) and runs while the explorer goes on; the next call waits for it. So the time
+  // from one return to the next is the queued band's own when the next call had to wait, and at
+  // most that when it did not (the explorer was the slower). A call that reads the frame back
+  // waits for its own band (if any) and the read-back as well: timed with the band before (at
+  // most), or alone (exactly).
+  constexpr double kWaitedMs = 1;  // a call that took longer waited for the device
+  const auto now = std::chrono::steady_clock::now();
+  const double since_queued_ms =
+      std::chrono::duration<double, std::milli>(now - queued_band_at_).count();
+  if (queued_band_rows_ > 0 && read_back)
+    queued_band_of_->measured(queued_band_rows_ + (bands == queued_band_of_ ? rows : 0),
+                              since_queued_ms, true);
+  else if (queued_band_rows_ > 0)
+    queued_band_of_->measured(queued_band_rows_, since_queued_ms, call_ms < kWaitedMs);
+  else if (read_back && bands && rows > 0)
+    bands->measured(rows, call_ms, false);
+  queued_band_rows_ = read_back ? 0 : rows;
+  queued_band_of_ = bands;
+  queued_band_at_ = now;
 }
 
 std::optional<double> Explorer::focus_at(int x, int y, int width_px, int height_px) {

@@ -7,12 +7,14 @@
 #include "app/frame_controller.hpp"
 #include "app/input.hpp"
 #include "app/path_recorder.hpp"
+#include "app/sample_bands.hpp"
 #include "app/scene_library.hpp"
 #include "app/temporal_reuse.hpp"
 #include "render/renderer.hpp"
 #include "settings/settings.hpp"
 #include "worker/render_worker.hpp"
 
+#include <chrono>
 #include <deque>
 #include <optional>
 #include <string>
@@ -125,6 +127,10 @@ class Explorer {
   // The slot's scene and state are what took the worker down last: not tried again (a fresh
   // worker and the same error every frame) until one of them changes.
   bool took_the_worker_down(const SceneSlot& slot) const;
+  // Times the bands of a path-traced sample and its filter (app/sample_bands.hpp) after a call
+  // that queued `rows` rows of `bands` (read_back: and read the frame back; rows 0 and no bands
+  // for a read-back alone); `call_ms`, the call's own time.
+  void time_band(SampleBands* bands, int rows, bool read_back, double call_ms);
 
   RenderWorker& worker_;
   SceneLibrary& library_;
@@ -144,6 +150,16 @@ class Explorer {
   // More than the camera changed since the last frame: earlier frames' pixels are not reused.
   bool scene_changed_ = true;
   TemporalReuse reuse_;
+  // The path-traced sample under way in bands, and its filter's passes (filter_pass_: the pass
+  // to queue next, kDenoisePasses once all are, -1 while the sample is not whole); the rows of
+  // the band queued last, not yet timed (0: none), whose bands they were, and when the call that
+  // queued it returned.
+  SampleBands bands_{1000.0 / 30.0};
+  SampleBands filter_bands_{1000.0 / 30.0};
+  int filter_pass_ = -1;
+  int queued_band_rows_ = 0;
+  SampleBands* queued_band_of_ = nullptr;
+  std::chrono::steady_clock::time_point queued_band_at_;
   std::vector<float> previous_linear_;  // the path-traced view's mean before its latest sample
   std::optional<std::pair<int, int>> pending_focus_;  // a click, focused at the next render
   uint64_t lattice_frames_ = 0;                       // the lattice phase's clock

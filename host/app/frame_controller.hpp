@@ -46,6 +46,11 @@ class FrameController {
   FramePlan plan(bool changed, bool reuse = false);
   // How long the render of the last plan took.
   void report(double render_ms);
+  // The last plan's sample was rendered only in part (a band of its rows: app/sample_bands.hpp):
+  // the next still plan is the same sample.
+  void sample_unfinished() {
+    if (!moving_ && last_.still && !last_.done) next_sample_ = last_.sample_index;
+  }
 
   double scale() const { return moving_scale_; }
   double lattice_share() const { return moving_share_; }  // wanted share of pixels traced

@@ -61,17 +61,21 @@ int bench_explore(ParsedOptions options, std::ostream& out,
   bench.measure_error = options.has("error");
   const ExploreBenchResult r =
       run_explore_bench(explorer, render.width_px, render.height_px, bench);
+  const bool path = setup.settings.render.integrator == Integrator::Path;
   char line[512];
   std::snprintf(
       line, sizeof line,
       "explore bench: scene %s, window %dx%d, %d frames flying\n"
       "moving: median %.2f ms (%.1f fps), p95 %.2f ms, min %.2f ms, max %.2f ms, mean "
       "resolution scale %.2f\n"
-      "stopped: full resolution after %.2f s, full quality (%d samples) after %.2f s, %d frames\n",
+      "stopped: full resolution after %.2f s, full quality (%d %ssamples) after %.2f s, %d "
+      "frames, the longest %.0f ms\n",
       explorer.current().scene->info.id.c_str(), render.width_px, render.height_px, frames,
       r.moving.p50_ms, 1000.0 / r.moving.p50_ms, r.moving.p95_ms, r.moving.min_ms, r.moving.max_ms,
       r.mean_resolution_scale, r.seconds_to_full_resolution,
-      setup.settings.explorer.full_quality_samples, r.seconds_to_full_quality, r.refine_frames);
+      path ? setup.settings.explorer.path_samples : setup.settings.explorer.full_quality_samples,
+      path ? "path-traced " : "", r.seconds_to_full_quality, r.refine_frames,
+      r.refine_frame_max_ms);
   out << line;
   if (r.temporal_frames > 0) {
     const double px = double(render.width_px) * render.height_px;

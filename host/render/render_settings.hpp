@@ -113,6 +113,18 @@ struct ImageWindow {
   int stride_y_px = 1;
 };
 
+// The rows of the image that one sample's call renders: rows_px rows from first_row_px (rows_px
+// 0: all of them). The other rows keep what they hold, so a sample may be added band by band, each
+// pixel getting what the whole image's sample gives it (the kernel runs as for the whole image,
+// offset): the explorer's path-traced refinement, which so answers input between bands. A band
+// starts at a multiple of kRowBandAlign rows (every packet's height divides it) and, unless it
+// ends the image, spans such a multiple.
+struct RowBand {
+  int first_row_px = 0;
+  int rows_px = 0;
+};
+constexpr int kRowBandAlign = 16;
+
 // A file path as plain data: RenderSettings travels to the render worker as its bytes. Empty
 // (the first character NUL) means none.
 struct PathText {

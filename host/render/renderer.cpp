@@ -81,9 +81,18 @@ FrameImage Renderer::render(const SceneInfo& info, const SceneState& state,
 }
 
 void Renderer::render_sample(const SceneInfo& info, const SceneState& state,
-                             const RenderSettings& requested, int sample_index, Readback outputs) {
+                             const RenderSettings& requested, int sample_index, Readback outputs,
+                             RowBand rows) {
   if (requested.precision == Precision::Double && !runtime_.device().has_fp64)
     throw std::runtime_error("device " + runtime_.device().name + " has no double precision");
+  const int w = requested.width_px, h = requested.height_px;
+  if (rows.rows_px == 0) rows = RowBand{0, h};
+  const int end_row = rows.first_row_px + rows.rows_px;
+  if (rows.first_row_px < 0 || rows.rows_px < 0 || end_row > h ||
+      rows.first_row_px % kRowBandAlign != 0 || (end_row != h && rows.rows_px % kRowBandAlign != 0))
+    throw std::invalid_argument("rows " + std::to_string(rows.first_row_px) + " to " +
+                                std::to_string(end_row) + " are not a band of a " +
+                                std::to_string(w) + "x" + std::to_string(h) + " image's rows");
   // Auto is decided once per accumulation, at its first sample.
   RenderSettings settings = requested;
   settings.precision = sample_index == 0 || requested.precision != Precision::Auto
@@ -100,7 +109,6 @@ void Renderer::render_sample(const SceneInfo& info, const SceneState& state,
   cl_kernel kernel = runtime_.kernel(program, "fr_render");
   const bool cone = make_kernel_config(info, settings, lanes).stages & kStageCone;
 
-  const int w = settings.width_px, h = settings.height_px;
   const size_t n = static_cast<size_t>(w) * h;
   ensure_buffers(n);
   last_lanes_ = lanes;
@@ -126,6 +134,7 @@ void Renderer::render_sample(const SceneInfo& info, const SceneState& state,
            "clEnqueueWriteBuffer", "uploading scene parameters");
 
   if (sample_index == 0) counted_samples_ = 0;
+  denoise_pass_ = denoise_next_row_ = 0;  // a new mean: nothing of it is filtered
   if (settings.count_evaluations) {
     if (counted_samples_ == 0) {
       const cl_uint zero = 0;
@@ -154,19 +163,27 @@ void Renderer::render_sample(const SceneInfo& info, const SceneState& state,
     const cl_mem cone_args[] = {constants_.get(), params_.get(), cone_t_.get(), cone_ao_.get(),
                                 counts_.get()};
     for (cl_uint i = 0; i < std::size(cone_args); ++i) set_arg(cone_kernel, i, cone_args[i]);
+    // The work-items whose blocks hold the band's rows (pixel row y is in block row
+    // (y + phase) / FR_CONE_BLOCK; bands that share a block row both compute it, alike).
+    const size_t first_block = (rows.first_row_px + fc.cone_phase_y) / FR_CONE_BLOCK;
+    const size_t last_block = (end_row - 1 + fc.cone_phase_y) / FR_CONE_BLOCK;
+    const size_t cone_offset[2] = {0, first_block / tile.height_px};
     const size_t cone_global[2] = {round_up_div(fc.cone_blocks_x, tile.width_px),
-                                   round_up_div(fc.cone_blocks_y, tile.height_px)};
-    cl_check(
-        clEnqueueNDRangeKernel(q, cone_kernel, 2, nullptr, cone_global, local, 0, nullptr, nullptr),
-        "clEnqueueNDRangeKernel", "the cone pre-pass of " + description);
+                                   last_block / tile.height_px + 1 - cone_offset[1]};
+    cl_check(clEnqueueNDRangeKernel(q, cone_kernel, 2, cone_offset, cone_global, local, 0, nullptr,
+                                    nullptr),
+             "clEnqueueNDRangeKernel", "the cone pre-pass of " + description);
   }
   const cl_mem args[] = {constants_.get(), params_.get(),  hdr_.get(),    depth_.get(),
                          steps_.get(),     factors_.get(), status_.get(), normal_.get(),
                          albedo_.get(),    counts_.get(),  cone_t_.get(), cone_ao_.get(),
                          environment};
   for (cl_uint i = 0; i < std::size(args); ++i) set_arg(kernel, i, args[i]);
-  const size_t global[2] = {round_up_div(w, tile.width_px), round_up_div(h, tile.height_px)};
-  cl_check(clEnqueueNDRangeKernel(q, kernel, 2, nullptr, global, local, 0, nullptr, nullptr),
+  // A band: the work-items of its rows, numbered as in the whole image's launch.
+  const size_t offset[2] = {0, static_cast<size_t>(rows.first_row_px / tile.height_px)};
+  const size_t global[2] = {round_up_div(w, tile.width_px),
+                            round_up_div(rows.rows_px, tile.height_px)};
+  cl_check(clEnqueueNDRangeKernel(q, kernel, 2, offset, global, local, 0, nullptr, nullptr),
            "clEnqueueNDRangeKernel", "rendering " + description);
 }
 
@@ -360,13 +377,15 @@ Renderer::FinishedFrame Renderer::finish_into(const RenderSettings& settings, Re
   return {last_lanes_, last_precision_};
 }
 
-cl_mem Renderer::denoise(const RenderSettings& settings) {
+cl_kernel Renderer::denoise_kernel(const RenderSettings& settings) {
   if (settings.window.full_width_px > 0)
     throw std::invalid_argument(
         "render.denoise filters the whole picture, and this is a window of it (a poster's band "
         "or an MPI rank's share): render it whole, or without render.denoise");
   if (last_outputs_ != Readback::Everything)
     throw std::logic_error("Renderer::denoise: the samples did not write the guiding passes");
+  if (static_cast<size_t>(settings.width_px) * settings.height_px != frame_pixels_)
+    throw std::logic_error("Renderer::denoise: the size differs from the samples'");
   static const std::string source = std::string(kernel_source("denoise.cl"));
   cl_kernel k =
       runtime_.kernel(runtime_.program(source, "-cl-std=CL1.2", "the denoiser"), "fr_denoise");
@@ -374,37 +393,70 @@ cl_mem Renderer::denoise(const RenderSettings& settings) {
     if (!b)
       b = make_buffer(runtime_.context(), CL_MEM_READ_WRITE,
                       round_up_div(buffer_pixels_, 4) * 4 * 4 * sizeof(float), "the denoiser");
+  return k;
+}
+
+cl_mem Renderer::enqueue_denoise_pass(cl_kernel k, const RenderSettings& settings, int pass,
+                                      RowBand rows) {
   const cl_int width = settings.width_px, height = settings.height_px;
   const cl_float angle = last_pixel_angle_rad_;
   const size_t local[2] = {8, 8};
+  // A band's rows start at a multiple of 16, so of the groups' 8 (render_settings.hpp).
+  const size_t offset[2] = {0, static_cast<size_t>(rows.first_row_px)};
   const size_t global[2] = {round_up_div(static_cast<size_t>(width), 8) * 8,
-                            round_up_div(static_cast<size_t>(height), 8) * 8};
+                            round_up_div(static_cast<size_t>(rows.rows_px), 8) * 8};
   // Five passes, taps 1 to 16 pixels apart; the colour's tolerance halves each pass (Dammertz
   // et al.), so the wide passes keep what the narrow ones left as an edge.
-  cl_mem from = hdr_.get();
-  constexpr int kPasses = 5;
-  for (int pass = 0; pass < kPasses; ++pass) {
-    const cl_mem to = denoised_[pass % 2].get();
-    const cl_int step = 1 << pass, first = pass == 0, last = pass == kPasses - 1;
-    const cl_float color_sigma = 0.5f / static_cast<float>(1 << pass);
-    set_arg(k, 0, from);
-    set_arg(k, 1, to);
-    set_arg(k, 2, normal_.get());
-    set_arg(k, 3, albedo_.get());
-    set_arg(k, 4, depth_.get());
-    set_arg(k, 5, width);
-    set_arg(k, 6, height);
-    set_arg(k, 7, step);
-    set_arg(k, 8, angle);
-    set_arg(k, 9, color_sigma);
-    set_arg(k, 10, first);
-    set_arg(k, 11, last);
-    cl_check(
-        clEnqueueNDRangeKernel(runtime_.queue(), k, 2, nullptr, global, local, 0, nullptr, nullptr),
-        "clEnqueueNDRangeKernel", "the denoiser");
-    from = to;
+  const cl_mem from = pass == 0 ? hdr_.get() : denoised_[(pass - 1) % 2].get();
+  const cl_mem to = denoised_[pass % 2].get();
+  const cl_int step = 1 << pass, first = pass == 0, last = pass == kDenoisePasses - 1;
+  const cl_float color_sigma = 0.5f / static_cast<float>(1 << pass);
+  set_arg(k, 0, from);
+  set_arg(k, 1, to);
+  set_arg(k, 2, normal_.get());
+  set_arg(k, 3, albedo_.get());
+  set_arg(k, 4, depth_.get());
+  set_arg(k, 5, width);
+  set_arg(k, 6, height);
+  set_arg(k, 7, step);
+  set_arg(k, 8, angle);
+  set_arg(k, 9, color_sigma);
+  set_arg(k, 10, first);
+  set_arg(k, 11, last);
+  cl_check(
+      clEnqueueNDRangeKernel(runtime_.queue(), k, 2, offset, global, local, 0, nullptr, nullptr),
+      "clEnqueueNDRangeKernel", "the denoiser");
+  return to;
+}
+
+void Renderer::denoise_rows(const RenderSettings& settings, int pass, RowBand rows) {
+  const int h = settings.height_px;
+  if (rows.rows_px == 0) rows = RowBand{0, h};
+  const int end_row = rows.first_row_px + rows.rows_px;
+  if (pass != denoise_pass_ || rows.first_row_px != denoise_next_row_ || rows.rows_px < 0 ||
+      end_row > h || (end_row != h && rows.rows_px % kRowBandAlign != 0))
+    throw std::logic_error("Renderer::denoise_rows: pass " + std::to_string(pass) + ", rows " +
+                           std::to_string(rows.first_row_px) + " to " + std::to_string(end_row) +
+                           " of " + std::to_string(h) + ", where pass " +
+                           std::to_string(denoise_pass_) + " from row " +
+                           std::to_string(denoise_next_row_) + " comes next");
+  enqueue_denoise_pass(denoise_kernel(settings), settings, pass, rows);
+  denoise_next_row_ = end_row;
+  if (denoise_next_row_ == h) {
+    ++denoise_pass_;
+    denoise_next_row_ = 0;
   }
-  return from;
+}
+
+cl_mem Renderer::denoise(const RenderSettings& settings) {
+  const cl_kernel k = denoise_kernel(settings);
+  if (denoise_pass_ == kDenoisePasses) return denoised_[(kDenoisePasses - 1) % 2].get();
+  if (denoise_pass_ != 0 || denoise_next_row_ != 0)
+    throw std::logic_error("Renderer::denoise: denoise_rows stopped half-way");
+  cl_mem result = nullptr;
+  for (int pass = 0; pass < kDenoisePasses; ++pass)
+    result = enqueue_denoise_pass(k, settings, pass, RowBand{0, settings.height_px});
+  return result;
 }
 
 EvalCounts Renderer::eval_counts() {

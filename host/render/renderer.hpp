@@ -115,9 +115,10 @@ class Renderer {
   // storage (an interactive caller passes the same image every frame: no allocation, no page
   // faults). Fields that `what` does not ask for are emptied. The kernel writes only the passes
   // `outputs` names (writing all of them cost about 1.3 ms a 1280x720 frame here); `finish` may
-  // not ask for more than the samples wrote (std::logic_error).
+  // not ask for more than the samples wrote (std::logic_error). `rows`: only those rows get the
+  // sample (render_settings.hpp, RowBand; std::invalid_argument for a band that is not one).
   void render_sample(const SceneInfo& info, const SceneState& state, const RenderSettings& settings,
-                     int sample_index, Readback outputs = Readback::Everything);
+                     int sample_index, Readback outputs = Readback::Everything, RowBand rows = {});
   void finish(const RenderSettings& settings, Readback what, FrameImage& image);
   // `finish` into memory the caller owns (the render worker's shared frame): every pointer that
   // `what` names must hold width x height pixels of its pass. Returns the lanes and precision
@@ -133,6 +134,15 @@ class Renderer {
   // buffer itself (CL_MEM_USE_HOST_PTR; on PoCL no copy at all). Null: the device's own buffer
   // and a read-back.
   void set_display_memory(uint8_t* memory, size_t bytes);
+
+  // The denoiser (settings.denoise) in steps, so that its second or so at 1280x720 on a CPU does
+  // not hold a caller that has input to answer (the explorer's filtered preview): pass `pass` of
+  // kDenoisePasses over `rows` of the accumulated picture (RowBand, as render_sample's). The
+  // passes come in order, each covering every row, top to bottom, before the next
+  // (std::logic_error otherwise); once all have, `finish` with settings.denoise reads their
+  // result rather than filtering again. A new sample starts over.
+  static constexpr int kDenoisePasses = 5;
+  void denoise_rows(const RenderSettings& settings, int pass, RowBand rows);
 
   // The DE evaluations of the samples rendered since the last sample 0, when they were rendered
   // with settings.count_evaluations (otherwise all zero). Waits for the device.
@@ -157,8 +167,15 @@ class Renderer {
   // std::runtime_error naming the file when it cannot be read), or a placeholder without one;
   // sets environment_width_px_ and environment_height_px_.
   cl_mem environment_memory(const RenderSettings& settings);
-  // Filters the accumulated picture (render.denoise) and returns the buffer holding the result.
+  // Filters the accumulated picture (render.denoise), unless denoise_rows did, and returns the
+  // buffer holding the result.
   cl_mem denoise(const RenderSettings& settings);
+  // Checks that the picture may be filtered (the whole, its guides written) and makes the
+  // filter's buffers; returns its kernel.
+  cl_kernel denoise_kernel(const RenderSettings& settings);
+  // Enqueues pass `pass` over `rows`; returns the buffer it writes.
+  cl_mem enqueue_denoise_pass(cl_kernel kernel, const RenderSettings& settings, int pass,
+                              RowBand rows);
 
   ClRuntime& runtime_;
   size_t buffer_pixels_ = 0;  // capacity of the buffers
@@ -176,6 +193,8 @@ class Renderer {
   size_t rgba8_bytes_ = 0;           // rgba8_'s size
   ClBufferHandle cone_t_, cone_ao_;  // per cone block (kernels/cone.cl)
   ClBufferHandle denoised_[2];       // the denoiser's passes (kernels/denoise.cl), like hdr_
+  // denoise_rows's progress since the last sample: the pass under way and its next row.
+  int denoise_pass_ = 0, denoise_next_row_ = 0;
   ClBufferHandle environment_, no_environment_;  // environment_memory
   std::string environment_path_;  // the panorama in environment_: path, size, time of change
   int environment_width_px_ = 0, environment_height_px_ = 0;

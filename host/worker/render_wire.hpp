@@ -20,7 +20,7 @@ namespace fr {
 
 // Bumped whenever a message's layout changes; fractalis passes it to the worker, which refuses to
 // talk to another version.
-constexpr uint32_t kRenderWireVersion = 3;
+constexpr uint32_t kRenderWireVersion = 4;
 
 // Kinds share the frame header with the scene host's (scene_wire.hpp), numbered apart from them.
 enum class RenderWireKind : uint32_t {
@@ -28,7 +28,8 @@ enum class RenderWireKind : uint32_t {
   SetScene = 102,       // u64 key, u64 key to forget (0: none), SceneInfo: the scene later
                         // messages name by key
   Prepare = 103,        // u64 key, SceneState, RenderSettings; reply: u32 Precision
-  RenderSample = 104,   // u64 key, SceneState, RenderSettings, i32 sample, u32 Readback
+  RenderSample = 104,   // u64 key, SceneState, RenderSettings, i32 sample, u32 Readback,
+                        // i32 first row, i32 rows (RowBand)
   Finish = 105,         // RenderSettings, u32 Readback, u64 bytes of the shared frame
                         // reply: i32 lanes, u32 Precision (the pixels are in the shared frame)
   EvalCounts = 106,     // reply: EvalCounts
@@ -43,6 +44,8 @@ enum class RenderWireKind : uint32_t {
                         // frame: a sample and Finish in one round trip; reply: Finish's
   ProbeMaterial = 113,  // u64 key, u32 count, count fr_value, u32 count, count x 3 floats,
                         // fr_frame_constants; reply: u32 count, count floats
+  DenoiseRows = 114,    // RenderSettings, i32 pass, i32 first row, i32 rows: a denoiser pass
+                        // over a band (Renderer::denoise_rows), answered once queued
 };
 
 enum class ReplyStatus : uint32_t {

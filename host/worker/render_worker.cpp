@@ -359,17 +359,21 @@ Precision RenderWorker::prepare(const SceneInfo& info, const SceneState& state,
 }
 
 void RenderWorker::write_sample(WireWriter& w, const SceneInfo& info, const SceneState& state,
-                                const RenderSettings& settings, int sample_index,
-                                Readback outputs) {
+                                const RenderSettings& settings, int sample_index, Readback outputs,
+                                RowBand rows) {
   const uint64_t key = send_scene(info);
   w.u64(key);
   write_scene_state(w, state);
   write_render_settings(w, settings);
   w.i32(sample_index);
   w.u32(static_cast<uint32_t>(outputs));
+  w.i32(rows.first_row_px);
+  w.i32(rows.rows_px);
   if (pending_samples_ == 0) samples_started_ = Clock::now();
   last_scene_id_ = info.id;
-  last_sample_pixels_ = static_cast<double>(settings.width_px) * settings.height_px;
+  // The limit follows the pixels this call renders (a band's, of a banded sample).
+  last_sample_pixels_ = static_cast<double>(settings.width_px) *
+                        (rows.rows_px > 0 ? rows.rows_px : settings.height_px);
   last_sample_scene_ = key;
 }
 
@@ -382,12 +386,13 @@ double RenderWorker::sample_limit_s() const {
 }
 
 void RenderWorker::render_sample(const SceneInfo& info, const SceneState& state,
-                                 const RenderSettings& settings, int sample_index,
-                                 Readback outputs) {
+                                 const RenderSettings& settings, int sample_index, Readback outputs,
+                                 RowBand rows) {
   ensure_started();
-  if (local_) return local_->renderer.render_sample(info, state, settings, sample_index, outputs);
+  if (local_)
+    return local_->renderer.render_sample(info, state, settings, sample_index, outputs, rows);
   WireWriter w;
-  write_sample(w, info, state, settings, sample_index, outputs);
+  write_sample(w, info, state, settings, sample_index, outputs, rows);
   // The worker answers once the sample is queued; this call also waits for the sample before
   // (its upload is a blocking write), and `finish` for the last: each within one sample's limit.
   call(static_cast<uint32_t>(RenderWireKind::RenderSample), w.bytes(), info.id, kFrameStage,
@@ -443,9 +448,51 @@ void RenderWorker::finish(const RenderSettings& settings, Readback what, FrameIm
   copy(to.albedo, from.albedo, n * 12);
 }
 
+namespace {
+
+// A frame view of the passes the explorer reads, where they lie in the shared frame.
+void point_view_at(FrameView& view, const FramePassPointers& at) {
+  view.rgba8 = at.rgba8;
+  view.steps = at.steps;
+  view.ray_status = at.ray_status;
+  view.depth = at.depth;
+  view.linear_rgba = at.linear_rgba;
+}
+
+}  // namespace
+
+void RenderWorker::denoise_rows(const RenderSettings& settings, int pass, RowBand rows) {
+  ensure_started();
+  if (local_) return local_->renderer.denoise_rows(settings, pass, rows);
+  WireWriter w;
+  write_render_settings(w, settings);
+  w.i32(pass);
+  w.i32(rows.first_row_px);
+  w.i32(rows.rows_px);
+  call(static_cast<uint32_t>(RenderWireKind::DenoiseRows), w.bytes(), last_scene_id_, kFrameStage,
+       sample_limit_s());
+}
+
+FrameView RenderWorker::finish_frame(const RenderSettings& settings, Readback what) {
+  ensure_started();
+  FrameView view;
+  view.width_px = settings.width_px;
+  view.height_px = settings.height_px;
+  if (local_) {
+    local_->renderer.finish(settings, what, local_->image);
+    return view_of(local_->image);
+  }
+  WireWriter w;
+  write_render_settings(w, settings);
+  const FramePassPointers at =
+      finish_in_place(settings, what, w, RenderWireKind::Finish, &view.lanes, &view.precision);
+  point_view_at(view, at);
+  return view;
+}
+
 FrameView RenderWorker::render_frame(const SceneInfo& info, const SceneState& state,
                                      const RenderSettings& settings, int sample_index,
-                                     Readback outputs, Readback read) {
+                                     Readback outputs, Readback read, RowBand rows) {
   if (static_cast<int>(read) > static_cast<int>(outputs))
     throw std::logic_error("RenderWorker::render_frame: reads the passes the sample wrote");
   ensure_started();
@@ -453,20 +500,16 @@ FrameView RenderWorker::render_frame(const SceneInfo& info, const SceneState& st
   view.width_px = settings.width_px;
   view.height_px = settings.height_px;
   if (local_) {
-    local_->renderer.render_sample(info, state, settings, sample_index, outputs);
+    local_->renderer.render_sample(info, state, settings, sample_index, outputs, rows);
     local_->renderer.finish(settings, read, local_->image);
     return view_of(local_->image);
   }
   WireWriter w;
-  write_sample(w, info, state, settings, sample_index, outputs);
+  write_sample(w, info, state, settings, sample_index, outputs, rows);
   ++pending_samples_;
   const FramePassPointers at =
       finish_in_place(settings, read, w, RenderWireKind::RenderFrame, &view.lanes, &view.precision);
-  view.rgba8 = at.rgba8;
-  view.steps = at.steps;
-  view.ray_status = at.ray_status;
-  view.depth = at.depth;
-  view.linear_rgba = at.linear_rgba;
+  point_view_at(view, at);
   return view;
 }
 

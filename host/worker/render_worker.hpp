@@ -87,15 +87,21 @@ class RenderWorker {
   int lanes_for(const RenderSettings& settings) const;
   Precision prepare(const SceneInfo& info, const SceneState& state, const RenderSettings& settings);
   void render_sample(const SceneInfo& info, const SceneState& state, const RenderSettings& settings,
-                     int sample_index, Readback outputs = Readback::Everything);
+                     int sample_index, Readback outputs = Readback::Everything, RowBand rows = {});
   void finish(const RenderSettings& settings, Readback what, FrameImage& image);
-  // A sample and its read-back in one round trip, with no copy: the explorer's frame. `read` is
+  // A sample (or its last band of rows) and the frame's read-back in one round trip, with no
+  // copy: the explorer's frame. `read` is
   // within what the sample's `outputs` wrote (the view shows the display passes and the depth). The
   // view points into the shared frame (or this object, in process) and is valid until the next call
   // on this RenderWorker.
   FrameView render_frame(const SceneInfo& info, const SceneState& state,
                          const RenderSettings& settings, int sample_index, Readback outputs,
-                         Readback read);
+                         Readback read, RowBand rows = {});
+  // Renderer::denoise_rows in the worker (queued: the next call waits for it).
+  void denoise_rows(const RenderSettings& settings, int pass, RowBand rows);
+  // `finish` with no copy, as render_frame reads its frame: the view points into the shared frame
+  // and is valid until the next call.
+  FrameView finish_frame(const RenderSettings& settings, Readback what);
   FrameImage render(const SceneInfo& info, const SceneState& state, const RenderSettings& settings,
                     bool read_linear = false);
   EvalCounts eval_counts();
@@ -122,7 +128,8 @@ class RenderWorker {
   uint64_t send_scene(const SceneInfo& info);
   // A sample's request; notes it as the last sample (its scene, size, the samples' clock).
   void write_sample(WireWriter& w, const SceneInfo& info, const SceneState& state,
-                    const RenderSettings& settings, int sample_index, Readback outputs);
+                    const RenderSettings& settings, int sample_index, Readback outputs,
+                    RowBand rows);
   // Ends `request` (a Finish or RenderFrame) with what to read back, sends it, and returns where
   // the passes lie in the shared frame.
   FramePassPointers finish_in_place(const RenderSettings& settings, Readback what,

@@ -146,6 +146,16 @@ class Worker {
         result.raw(values.data(), values.size() * sizeof(float));
         return;
       }
+      case RenderWireKind::DenoiseRows: {
+        const RenderSettings settings = read_render_settings(r);
+        const int pass = r.i32();
+        RowBand rows;
+        rows.first_row_px = r.i32();
+        rows.rows_px = r.i32();
+        check(r);
+        renderer_.denoise_rows(settings, pass, rows);
+        return;
+      }
       case RenderWireKind::Build: {
         const std::string source = r.str(64u << 20);
         const std::string options = r.str(1u << 20);
@@ -166,6 +176,7 @@ class Worker {
     RenderSettings settings;
     int index;
     uint32_t outputs;
+    RowBand rows;
   };
   Sample read_sample(WireReader& r) const {
     Sample s;
@@ -174,12 +185,14 @@ class Worker {
     s.settings = read_render_settings(r);
     s.index = r.i32();
     s.outputs = r.u32();
+    s.rows.first_row_px = r.i32();
+    s.rows.rows_px = r.i32();
     return s;
   }
   void render(const Sample& s) {
     if (s.outputs > static_cast<uint32_t>(Readback::Everything)) throw BadRequest("bad outputs");
-    renderer_.render_sample(*s.info, s.state, s.settings, s.index,
-                            static_cast<Readback>(s.outputs));
+    renderer_.render_sample(*s.info, s.state, s.settings, s.index, static_cast<Readback>(s.outputs),
+                            s.rows);
   }
   // Reads the frame's passes `what` into the shared frame, which fractalis made `bytes` long;
   // the reply carries the lanes and precision.
