@@ -21,7 +21,8 @@
  *   diffuse (the rest): Lambert, cosine-weighted, so its throughput is its albedo.
  * Next-event estimation towards every light (a shadow ray, hard: shadow.cl built with
  * FR_SHADOW_HARD) through the diffuse lobe, where a walk leaves the surface, and through the
- * rough metal and coat (their GGX BRDF, so a point light has a highlight); a light with a size is
+ * rough metal, coat and glass (their GGX BRDF, the glass's reflection weighted by its Fresnel
+ * reflectance, so a point light has a highlight on each); a light with a size is
  * also found by bounces, and the two estimates are weighted by multiple importance sampling
  * (area_lights.cl). A path that leaves the bounds sees the sky (FR_SKY, radiance): the
  * gradient is found only by bounces; a panorama (environment.cl) is also sampled by next-event
@@ -53,13 +54,27 @@
  * highlight of a light is then found by bounces alone. */
 #define FR_GLOSSY_NEE_MIN_ALPHA 1e-3f
 
-/* The glossy lobes at a hit, for next-event estimation: the metal's and the coat's weights
- * (throughput times their odds), the metal's colour, the roughness, the way back to the eye, and
- * the lanes where there is such a lobe rough enough to be estimated. */
+/* The exact unpolarised Fresnel reflectance of a dielectric for the cosine c_i (0 to 1) between
+ * the ray and the (micro)normal, eta the index the ray leaves over the one it enters: 1 beyond
+ * the critical angle. *cos_t: the refracted ray's cosine (Snell's law). */
+inline real_t dielectric_fresnel(real_t c_i, real_t eta, real_t* cos_t) {
+  const real_t sin2_t = eta * eta * fmax((real_t)1 - c_i * c_i, (real_t)0);
+  *cos_t = sqrt(fmax((real_t)1 - sin2_t, (real_t)0));
+  const real_t r_s = (eta * c_i - *cos_t) / (eta * c_i + *cos_t);
+  const real_t r_p = (c_i - eta * *cos_t) / (c_i + eta * *cos_t);
+  return lane_select(sin2_t >= (real_t)1, 1, (real_t)0.5 * (r_s * r_s + r_p * r_p));
+}
+
+/* The glossy lobes at a hit, for next-event estimation: the metal's, the coat's and the glass's
+ * weights (throughput times their odds; the glass's only where the ray meets it from outside),
+ * the metal's colour, the glass's eta (dielectric_fresnel's), the roughness, the way back to the
+ * eye, and the lanes where there is such a lobe rough enough to be estimated. */
 typedef struct glossy_lobes_t {
   vec3_t metal_weight;
   vec3_t coat_weight;
+  vec3_t glass_weight;
   vec3_t base_color;
+  real_t glass_eta;
   real_t alpha;
   vec3_t to_eye;
   mask_t lanes;
@@ -67,15 +82,18 @@ typedef struct glossy_lobes_t {
 
 /* What light sample s (lights.cl's unit: radiance per unit cos that a white Lambertian facing it
  * reflects) sends to the eye through the glossy lobes of normal n: pi f cos (f the GGX BRDF,
- * D G F / (4 cos_i cos_o); F Schlick's in the metal's colour, 1 for the coat), times `weight`;
- * *pdf: the lobes' density of drawing its direction (for multiple importance sampling). */
+ * D G F / (4 cos_i cos_o); F Schlick's in the metal's colour, 1 for the coat, the dielectric's
+ * for the glass), times `weight`, each lobe weighted against its own bounce by multiple
+ * importance sampling where the light was drawn with density light_pdf (0: a point or a
+ * direction, which no bounce finds). The bounce draws the metal's and the coat's direction with
+ * the GGX density, the glass's reflection with that times F (it refracts otherwise). */
 inline vec3_t glossy_light(light_sample_t s, vec3_t n, glossy_lobes_t g, real_t weight,
-                           real_t* pdf) {
+                           real_t light_pdf) {
   const vec3_t half_vec = v3_normalize(v3_add(g.to_eye, s.to_light));
   const real_t cos_h = v3_dot(n, half_vec), v_h = fmax(v3_dot(g.to_eye, half_vec), (real_t)0);
   const real_t cos_i = v3_dot(n, g.to_eye), cos_o = v3_dot(n, s.to_light);
   const real_t d = ggx_d(cos_h, g.alpha);
-  *pdf = ggx_reflection_pdf(cos_h, v_h, g.alpha);
+  const real_t pdf = ggx_reflection_pdf(cos_h, v_h, g.alpha);
   const real_t common = lane_select(
       (cos_i > (real_t)0) & (cos_o > (real_t)0),
       (real_t)M_PI_F * d * ggx_g1(cos_i, g.alpha) * ggx_g1(cos_o, g.alpha) /
@@ -84,8 +102,14 @@ inline vec3_t glossy_light(light_sample_t s, vec3_t n, glossy_lobes_t g, real_t 
   const real_t grazing = pow_nonneg((real_t)1 - fmin(v_h, (real_t)1), 5);
   const vec3_t metal_color =
       v3_add(g.base_color, v3_scale(v3_sub(v3s(1, 1, 1), g.base_color), grazing));
+  real_t cos_t;
+  const real_t fresnel = dielectric_fresnel(fmin(v_h, (real_t)1), g.glass_eta, &cos_t);
+  const mask_t sized = light_pdf > (real_t)0;
+  const real_t w_mirror = lane_select(sized, power_heuristic(light_pdf, pdf), 1);
+  const real_t w_glass = lane_select(sized, power_heuristic(light_pdf, pdf * fresnel), 1);
   const vec3_t reflect =
-      v3_add(v3_mul(g.metal_weight, metal_color), g.coat_weight);
+      v3_add(v3_scale(v3_add(v3_mul(g.metal_weight, metal_color), g.coat_weight), w_mirror),
+             v3_scale(g.glass_weight, fresnel * w_glass));
   return v3_mul(v3_scale(reflect, common), s.radiance);
 }
 
@@ -132,14 +156,10 @@ vec3_t direct_light(vec3_t p, vec3_t n, real_t h, mask_t diffuse, vec3_t diffuse
                                    v3_scale(lights[i].radiance,
                                             lane_select(facing[i] & diffuse,
                                                         visible[i] * cos_l * w_diffuse, 0))));
-    if (any_lane(facing[i] & g.lanes)) {
-      real_t glossy_pdf;
-      const vec3_t glossy = glossy_light(lights[i], n, g, visible[i], &glossy_pdf);
-      const real_t w_glossy =
-          lane_select(sized > (real_t)0, power_heuristic(sized, glossy_pdf), 1);
-      direct = v3_add(direct, v3_select(facing[i] & g.lanes, v3_scale(glossy, w_glossy),
+    if (any_lane(facing[i] & g.lanes))
+      direct = v3_add(direct, v3_select(facing[i] & g.lanes,
+                                        glossy_light(lights[i], n, g, visible[i], sized),
                                         v3s(0, 0, 0)));
-    }
   }
 #ifdef FR_SKY_SAMPLED
   /* The panorama: one direction drawn in proportion to its light, its own shadow ray (counted
@@ -163,13 +183,10 @@ vec3_t direct_light(vec3_t p, vec3_t n, real_t h, mask_t diffuse, vec3_t diffuse
                              v3_scale(sky[0].radiance,
                                       lane_select(sky_facing[0] & diffuse,
                                                   sky_visible[0] * cos_l * w, 0))));
-      if (any_lane(sky_facing[0] & g.lanes)) {
-        real_t glossy_pdf;
-        const vec3_t glossy = glossy_light(sky[0], n, g, sky_visible[0], &glossy_pdf);
+      if (any_lane(sky_facing[0] & g.lanes))
         direct = v3_add(direct, v3_select(sky_facing[0] & g.lanes,
-                                          v3_scale(glossy, power_heuristic(pdf, glossy_pdf)),
+                                          glossy_light(sky[0], n, g, sky_visible[0], pdf),
                                           v3s(0, 0, 0)));
-      }
     }
   }
 #endif
@@ -377,7 +394,7 @@ __kernel void fr_render(FR_RENDER_KERNEL_PARAMS) {
       const mask_t last = hit & (bounces > (real_t)fc->path_max_bounces);
 
       /* Next-event estimation through the diffuse lobe (of the outer side where a walk leaves)
-       * and the rough metal and coat. */
+       * and the rough metal, coat and glass (its reflection, met from outside). */
       const real_t alpha = mat.roughness * mat.roughness;
       const vec3_t lit_normal = v3_select(leaving_medium, v3_neg(n), n);
       const vec3_t lit_weight =
@@ -387,10 +404,13 @@ __kernel void fr_render(FR_RENDER_KERNEL_PARAMS) {
       glossy_lobes_t lobes;
       lobes.metal_weight = v3_scale(throughput, metal_odds);
       lobes.coat_weight = v3_scale(throughput, coat_odds);
+      const real_t glass_nee_odds = lane_select(from_outside, glass_odds, 0);
+      lobes.glass_weight = v3_scale(throughput, glass_nee_odds);
+      lobes.glass_eta = (real_t)1 / mat.ior;
       lobes.base_color = mat.base_color;
       lobes.alpha = alpha;
       lobes.to_eye = v3_neg(ray.dir);
-      lobes.lanes = hit & (metal_odds + coat_odds > (real_t)0) &
+      lobes.lanes = hit & (metal_odds + coat_odds + glass_nee_odds > (real_t)0) &
                     (alpha >= (real_t)FR_GLOSSY_NEE_MIN_ALPHA);
       if (any_lane(lit | lobes.lanes))
         radiance = v3_add(radiance, direct_light(p, lit_normal, h, lit, lit_weight, lobes,
@@ -421,12 +441,8 @@ __kernel void fr_render(FR_RENDER_KERNEL_PARAMS) {
        * ray leaves over the one it enters. */
       const real_t eta = lane_select(in_glass, mat.ior, (real_t)1 / mat.ior);
       const real_t c_i = fmin(fabs(cos_im), (real_t)1);
-      const real_t sin2_t = eta * eta * fmax((real_t)1 - c_i * c_i, (real_t)0);
-      const real_t cos_t = sqrt(fmax((real_t)1 - sin2_t, (real_t)0));
-      const real_t r_s = (eta * c_i - cos_t) / (eta * c_i + cos_t);
-      const real_t r_p = (c_i - eta * cos_t) / (c_i + eta * cos_t);
-      const real_t fresnel =
-          lane_select(sin2_t >= (real_t)1, 1, (real_t)0.5 * (r_s * r_s + r_p * r_p));
+      real_t cos_t;
+      const real_t fresnel = dielectric_fresnel(c_i, eta, &cos_t);
       const mask_t refract = hit & glass & (u_fresnel >= fresnel);
       const vec3_t mirrored = v3_mad(ray.dir, micro, -2 * v3_dot(ray.dir, micro));
       const vec3_t refracted =
@@ -463,7 +479,12 @@ __kernel void fr_render(FR_RENDER_KERNEL_PARAMS) {
           hit,
           lane_select(diffuse, diffuse_pdf,
                       lane_select((metal | coat) & (alpha >= (real_t)FR_GLOSSY_NEE_MIN_ALPHA),
-                                  glossy_pdf, 0)),
+                                  glossy_pdf,
+                                  /* the glass's reflection, met from outside (next-event
+                                   * estimation covers it); not its refraction */
+                                  lane_select(glass & !refract & from_outside &
+                                                  (alpha >= (real_t)FR_GLOSSY_NEE_MIN_ALPHA),
+                                              glossy_pdf * fresnel, 0))),
           lobe_pdf);
       /* Entering glass: its absorption; entering a medium: its albedo and mean free path. */
       sigma = v3_select(refract & !in_glass, mat.absorption, sigma);

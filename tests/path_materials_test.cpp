@@ -248,6 +248,76 @@ TEST(Metal, ARoughMetalShowsALightsHighlightAsTheMicrofacetModelSays) {
   EXPECT_NEAR(disc_sum / point_sum, 1.0, 0.03);
 }
 
+// The exact unpolarised reflectance of a dielectric, the ray coming from the side of index 1
+// into one of index `ior`, at cosine c to the (micro)normal.
+double dielectric_fresnel(double c, double ior) {
+  const double eta = 1 / ior, sin2_t = eta * eta * (1 - c * c);
+  if (sin2_t >= 1) return 1;
+  const double cos_t = std::sqrt(1 - sin2_t);
+  const double r_s = (eta * c - cos_t) / (eta * c + cos_t);
+  const double r_p = (c - eta * cos_t) / (c + eta * cos_t);
+  return 0.5 * (r_s * r_s + r_p * r_p);
+}
+
+// A rough glass ball under one light and a black sky: the light it reflects is next-event
+// estimation through the GGX BRDF times the dielectric's Fresnel reflectance (before, a bounce
+// alone could find it, and none finds a direction: no highlight at all). What enters the glass is
+// absorbed (a sun disc seen through the ball would add its own light), so a pixel is that
+// reflection alone, from a direction exactly; from a small sun disc, met by the bounces too and
+// weighted by MIS, the same light overall.
+TEST(Glass, RoughGlassReflectsALightAsTheMicrofacetModelSays) {
+  Renderer renderer(test::runtime());
+  const auto scene = test::unit_ball();
+  ASSERT_TRUE(scene);
+  SceneState state = dark_state(scene->info);
+  const glm::dvec3 color(20, 20, 20);
+  const double alpha = 0.25, ior = 1.5;
+  const glm::dvec3 travel = glm::normalize(glm::dvec3(-0.6, -0.5, -1));
+  state.lights = {light(FR_LIGHT_DIRECTIONAL, travel, color)};
+  RenderSettings s = uniform_sky(path_traced(40, 30, 1), 0);
+  s.transmission = 1;
+  s.ior = static_cast<float>(ior);
+  s.specular_roughness = static_cast<float>(std::sqrt(alpha));
+  s.absorption = 1e4f;
+  const FrameImage point = render_all_samples(renderer, scene->info, state, s, true);
+  const CameraRays rays = make_camera_rays(state.camera, s.width_px, s.height_px);
+  double peak = 0, worst = 0, point_sum = 0;
+  int compared = 0;
+  for (int y = 0; y < s.height_px; ++y)
+    for (int x = 0; x < s.width_px; ++x) {
+      glm::dvec3 n;
+      double cos_view = 0;
+      if (!ball_point(rays, x, y, &n, &cos_view) || cos_view < 0.3) continue;
+      const glm::dvec3 v = -camera_ray_dir(rays, x, y);
+      const size_t i = static_cast<size_t>(y) * s.width_px + x;
+      const glm::dvec3 hit = glm::normalize(rays.eye - v * static_cast<double>(point.depth[i]));
+      // ggx_highlight with a white base is the BRDF with F = 1: times the dielectric's F.
+      const glm::dvec3 l = -travel, h = glm::normalize(v + l);
+      const double expected =
+          ggx_highlight(hit, v, l, alpha, 1, color.x) * dielectric_fresnel(glm::dot(v, h), ior);
+      peak = std::max(peak, expected);
+      worst = std::max(worst, std::abs(point.linear_rgba[4 * i] - expected));
+      point_sum += point.linear_rgba[4 * i];
+      ++compared;
+    }
+  ASSERT_GT(compared, 300);
+  ASSERT_GT(peak, 1.0) << "the view holds the highlight";
+  EXPECT_LT(worst, 0.005 * peak);
+
+  state.lights = {light(FR_LIGHT_DIRECTIONAL, travel, color, 0.03)};
+  s.samples = 256;
+  const FrameImage disc = render_all_samples(renderer, scene->info, state, s, true);
+  double disc_sum = 0;
+  for (int y = 0; y < s.height_px; ++y)
+    for (int x = 0; x < s.width_px; ++x) {
+      glm::dvec3 n;
+      double cos_view = 0;
+      if (!ball_point(rays, x, y, &n, &cos_view) || cos_view < 0.3) continue;
+      disc_sum += disc.linear_rgba[4 * (static_cast<size_t>(y) * s.width_px + x)];
+    }
+  EXPECT_NEAR(disc_sum / point_sum, 1.0, 0.03);
+}
+
 TEST(Subsurface, BelowThePixelsScaleItIsTheDiffuseColour) {
   // A mean free path far below the hit threshold (the scale the walk's entry and exit are
   // resolved to) scatters within the pixel: the convex ball under a uniform sky shows its colour
