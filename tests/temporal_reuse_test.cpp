@@ -167,6 +167,43 @@ TEST(TemporalReuse, ASidewaysMoveCarriesAPlaneByWholePixels) {
   EXPECT_EQ(reuse.counts().reused + reuse.counts().fresh + reuse.counts().filled, size_t(w) * h);
 }
 
+TEST(TemporalReuse, MovingTowardsAPlaneEachPixelTakesTheSampleThatLandsNearest) {
+  // A plane facing the camera, 1.2 away, then 1.0 away: the picture grows 1.2 times about its
+  // centre c, so the old pixel q lands at c + 1.2 (q - c) (similar triangles, not the projection
+  // the code does). Samples land 1.2 px apart: a pixel has no sample of its own within half a
+  // pixel in places, but always one within 0.6 px in x and in y (0.85 px < 0.87 px): none is
+  // filled, and each takes the nearest, per axis the old pixel round((p - c) / 1.2 + c) (never
+  // within 0.1 px of a tie at these sizes: the centre is a half-integer).
+  const int w = 64, h = 36;
+  const double m = 1.2, fov_deg = 20;  // narrow: the plane's distances from the new eye within 5%
+  const CameraRays old_rays = make_camera_rays(camera_at({0, 0, 0}, {0, 0, -1}, fov_deg), w, h);
+  const CameraRays new_rays =
+      make_camera_rays(camera_at({0, 0, -0.2}, {0, 0, -1.2}, fov_deg), w, h);
+  const PlaneFrame old = plane_frame(old_rays, [&](int) { return m; });
+  PlaneFrame fresh = plane_frame(new_rays, [](int) { return 1.0; });
+  for (size_t i = 0; i < fresh.rgba8.size(); i += 4) fresh.rgba8[i + 3] = 7;  // told apart
+  TemporalReuse reuse;
+  reuse.compose(old_rays, LatticePhase{}, old.rgba8.data(), old.depth.data());
+  const LatticePhase phase{2, 2, 0, 0};
+  const PlaneFrame l = lattice_of(fresh, w, h, phase);
+  const uint8_t* shown = reuse.compose(new_rays, phase, l.rgba8.data(), l.depth.data());
+  EXPECT_EQ(reuse.counts().filled, 0u);
+  EXPECT_EQ(reuse.counts().rejected, 0u);
+  const auto nearest_old = [&](int p, int size) {
+    const double c = 0.5 * (size - 1);
+    return static_cast<int>(std::lround((p - c) / m + c));
+  };
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      if (x % 2 == 0 && y % 2 == 0) continue;  // the fresh lattice's own
+      const size_t i = size_t(y) * w + x;
+      const int qx = nearest_old(x, w), qy = nearest_old(y, h);
+      ASSERT_EQ(shown[4 * i + 3], 255) << x << "," << y << ": carried, not the fresh lattice's";
+      ASSERT_EQ(shown[4 * i], qx) << x << "," << y;
+      ASSERT_EQ(shown[4 * i + 1], qy) << x << "," << y;
+    }
+}
+
 TEST(TemporalReuse, WhatWasHiddenIsNotCarried) {
   // The left half of the old image sees a plane at distance 2, the right half one at 4: moving
   // right shifts the near one 4 pixels left and the far one 2, so the 2 columns between them

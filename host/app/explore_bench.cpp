@@ -57,7 +57,7 @@ ExploreBenchResult run_explore_bench(Explorer& explorer, int w, int h,
   explorer.set_mouse_look(true);
   InputState input;
   input.held.insert(Action::MoveForward);
-  std::vector<double> frame_ms;
+  std::vector<double> frame_ms, trace_ms, compose_ms;
   double scale_sum = 0;
   uint64_t moving_pixels = 0;
   double last = now_s();
@@ -81,6 +81,8 @@ ExploreBenchResult run_explore_bench(Explorer& explorer, int w, int h,
       result.mean_reused_px += static_cast<double>(st.reuse.reused);
       result.mean_rejected_px += static_cast<double>(st.reuse.rejected);
       result.mean_filled_px += static_cast<double>(st.reuse.filled);
+      trace_ms.push_back(st.frame_ms - st.compose_ms);
+      compose_ms.push_back(st.compose_ms);
     }
     if (explorer.count_evaluations()) {
       // Frames of different sizes: the sums over all their pixels, one sample each.
@@ -100,6 +102,8 @@ ExploreBenchResult run_explore_bench(Explorer& explorer, int w, int h,
     result.mean_reused_px /= f;
     result.mean_rejected_px /= f;
     result.mean_filled_px /= f;
+    result.median_trace_ms = summarize_frames(trace_ms).p50_ms;
+    result.median_compose_ms = summarize_frames(compose_ms).p50_ms;
   }
 
   InputState still;

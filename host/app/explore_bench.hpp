@@ -25,6 +25,9 @@ struct ExploreBenchResult {
   // Temporal reuse: the moving frames that used it, and their pixels per frame (means).
   int temporal_frames = 0;
   double mean_fresh_px = 0, mean_reused_px = 0, mean_rejected_px = 0, mean_filled_px = 0;
+  // ... and the medians of their render's time (the lattice traced and read back) and of
+  // carrying the rest (TemporalReuse::compose), ms.
+  double median_trace_ms = 0, median_compose_ms = 0;
   double seconds_to_full_resolution = 0;  // after the camera stops: first full-size sample shown
   double seconds_to_full_quality = 0;     // ... and all anti-aliasing samples
   int refine_frames = 0;

@@ -322,6 +322,7 @@ const FrameView* Explorer::render(int window_width_px, int window_height_px) {
     stats_.stride_x = plan.lattice ? phase.stride_x : 1;
     stats_.stride_y = plan.lattice ? phase.stride_y : 1;
     stats_.reuse = ReuseCounts{};
+    stats_.compose_ms = 0;
   }
   if (keep && last_.depth && last_.rgba8) {
     // The window's frame: this one's pixels where it traced them, earlier frames' elsewhere.
@@ -336,9 +337,10 @@ const FrameView* Explorer::render(int window_width_px, int window_height_px) {
     composed.precision = last_.precision;
     composed.rgba8 = shown;
     last_ = composed;
-    frame_ms +=
+    stats_.compose_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - compose_start)
             .count();
+    frame_ms += stats_.compose_ms;
   } else if (plan.sample_index == 0) {
     reuse_.reset();  // a scaled frame: nothing of it can be carried
   }

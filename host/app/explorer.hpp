@@ -31,6 +31,7 @@ struct ExplorerStats {
   bool temporal = false;
   int stride_x = 1, stride_y = 1;
   ReuseCounts reuse;
+  double compose_ms = 0;  // of frame_ms, carrying the earlier frames' pixels (temporal)
   int sample_index = 0;
   bool refined = false;  // full quality reached and shown
   // A parked view being path-traced (render.integrator = "path"): its samples so far (0: not

@@ -94,17 +94,16 @@ struct TemporalReuse::Frame {
   const float* depth;
   int max_age;
   bool carry;  // kept_ holds samples of old_rays_
-  FloatCamera cam, old_cam;
+  FloatCamera cam;
   glm::vec3 shift;  // the old eye seen from the new one
   int width_px, height_px, lattice_w, lattice_h;
-  // Per image column (or row): the lattice columns (rows) on either side of it, `left` and
-  // `left + 1` (the first or last two beyond the lattice's ends; both 0 in a lattice one column
-  // wide); the weight of the right one (lower one) for interpolating, clamped to [0, 1], and for
-  // extrapolating positions beyond the lattice's ends, not clamped; and whether the pixel lies
-  // between the two.
+  // Per image column (or row): the lattice columns (rows) on either side of it, `first` and
+  // `first + 1` (the first or last two beyond the lattice's ends; both 0 in a lattice one column
+  // wide); the weight of the second for interpolating, clamped to [0, 1]; and whether the pixel
+  // lies between the two.
   struct Span {
     int first = 0, second = 0;
-    float weight = 0, extrapolating_weight = 0;
+    float weight = 0;
     bool bracketed = false;
   };
   std::vector<Span> columns, rows;
@@ -139,7 +138,6 @@ const uint8_t* TemporalReuse::compose(const CameraRays& rays, const LatticePhase
           std::min(254, std::max(settings_.max_age_frames, 2 * phase.stride_x * phase.stride_y)),
           has_history_ && !whole,
           FloatCamera(rays),
-          FloatCamera(has_history_ ? old_rays_ : rays),
           glm::vec3(old_rays_.eye - rays.eye),  // in double: the scene may be far from the origin
           w,
           h,
@@ -147,10 +145,7 @@ const uint8_t* TemporalReuse::compose(const CameraRays& rays, const LatticePhase
           phase.height_px(h),
           {},
           {}};
-  const size_t lattice_n = static_cast<size_t>(f.lattice_w) * f.lattice_h;
-  lattice_old_x_.resize(lattice_n);
-  lattice_old_y_.resize(lattice_n);
-  lattice_surface_.resize(lattice_n);
+  slots_.resize(slot_stride(w) * h);
   const auto spans = [](int size_px, int origin, int stride, int lattice_size) {
     std::vector<Frame::Span> spans(static_cast<size_t>(size_px));
     for (int x = 0; x < size_px; ++x) {
@@ -159,8 +154,7 @@ const uint8_t* TemporalReuse::compose(const CameraRays& rays, const LatticePhase
       if (lattice_size < 2) continue;  // one column: the same sample on both sides
       s.first = std::clamp(static_cast<int>(std::floor(u)), 0, lattice_size - 2);
       s.second = s.first + 1;
-      s.extrapolating_weight = u - static_cast<float>(s.first);
-      s.weight = std::clamp(s.extrapolating_weight, 0.0f, 1.0f);
+      s.weight = std::clamp(u - static_cast<float>(s.first), 0.0f, 1.0f);
       s.bracketed = u >= 0 && u <= static_cast<float>(lattice_size - 1);
     }
     return spans;
@@ -174,13 +168,14 @@ const uint8_t* TemporalReuse::compose(const CameraRays& rays, const LatticePhase
     pass(0, size / 2);
     second.join();
   };
-  if (f.carry)
-    on_two_threads(h, [&](int begin, int end) {
+  if (f.carry) {
+    on_two_threads(h, [&](int begin, int /*end*/) {
       // The samples split at a whole vector (the arrays are padded past the end).
       const size_t split = n / 2 / kLanes * kLanes;
       project_samples(f, begin == 0 ? 0 : split, begin == 0 ? split : n);
-      project_lattice_rows(f, begin * f.lattice_h / h, end * f.lattice_h / h);
     });
+    on_two_threads(h, [&](int begin, int end) { scatter_rows(f, begin, end); });
+  }
   ReuseCounts halves[2];
   on_two_threads(h, [&](int begin, int end) { gather_rows(f, begin, end, halves[begin > 0]); });
   counts_ = ReuseCounts{};
@@ -225,38 +220,60 @@ void TemporalReuse::project_samples(const Frame& f, size_t begin, size_t end) {
   }
 }
 
-// Where each fresh lattice sample of these lattice rows was in the old image.
-void TemporalReuse::project_lattice_rows(const Frame& f, int row_begin, int row_end) {
-  const FloatCamera& old = f.old_cam;
-  const glm::vec3 old_rx = old.right * old.px_per_unit_x, old_uy = old.up * old.px_per_unit_y;
-  const float nan = std::numeric_limits<float>::quiet_NaN();
-  for (int j = row_begin; j < row_end; ++j)
-    for (int i = 0; i < f.lattice_w; ++i) {
-      const size_t k = f.lattice_at(i, j);
-      const glm::vec3 d =
-          f.ray(f.phase.x0 + i * f.phase.stride_x, f.phase.y0 + j * f.phase.stride_y);
-      const float t = f.depth[k];
-      const bool surface = std::isfinite(t);
-      const glm::vec3 q = surface ? d * t - f.shift : d;  // from the old eye
-      const float along = glm::dot(q, old.forward);
-      lattice_surface_[k] = surface;
-      if (along > 1e-12f) {  // in front of the old eye, and 1 / along finite
-        lattice_old_x_[k] = old.centre_x + glm::dot(q, old_rx) / along;
-        lattice_old_y_[k] = old.centre_y - glm::dot(q, old_uy) / along;
-      } else {
-        lattice_old_x_[k] = lattice_old_y_[k] = nan;
-      }
+// Every kept sample, offered to each pixel of rows [row_begin, row_end) whose centre its point
+// lands within 0.87 px of (at most the four around it): the pixel's slot keeps the best one offered
+// (sample_key: the nearest surface, then the nearest the centre, then the lowest index, so the
+// result does not depend on the order). One thread per half of the rows: each reads every
+// sample's landing position, and writes only its own rows' slots.
+void TemporalReuse::scatter_rows(const Frame& f, int row_begin, int row_end) {
+  const int w = f.width_px;
+  const size_t stride = slot_stride(w);
+  // Column -1 and column w of each row are padding (slot index 0 is column -1 of row 0): a point
+  // beside the image offers itself there unchecked.
+  uint64_t* __restrict slot = slots_.data();
+  std::fill(slot + row_begin * stride, slot + row_end * stride, kNoSample);
+  const float* __restrict landed_x = landed_x_.data();
+  const float* __restrict landed_y = landed_y_.data();
+  const float* __restrict key2 = landed_key2_.data();
+  const float top = static_cast<float>(row_begin - 1), bottom = static_cast<float>(row_end);
+  const float right = static_cast<float>(w);
+  const size_t n = static_cast<size_t>(w) * f.height_px;
+  const auto offer = [](uint64_t& s, uint64_t near, float d2, size_t i) {
+    // (d2 > 0.75: too far from this pixel's centre; the slot keeps what it has.)
+    const uint64_t key = d2 <= 0.75f ? sample_key(near, d2, i) : kNoSample;
+    s = key < s ? key : s;
+  };
+  for (size_t i = 0; i < n; ++i) {
+    const float x = landed_x[i], y = landed_y[i];
+    // (False for NaN: a sample not usable, or behind the new eye.)
+    if (!(y > top && y < bottom && x > -1.0f && x < right)) continue;
+    // The pixels around the point: columns x0 and x0 + 1, rows y0 and y0 + 1 ((int)(v + 1) - 1
+    // is floor(v) for v > -1).
+    const int x0 = static_cast<int>(x + 1.0f) - 1, y0 = static_cast<int>(y + 1.0f) - 1;
+    const float dx0 = x - static_cast<float>(x0), dx1 = dx0 - 1.0f;
+    const float dy0 = y - static_cast<float>(y0), dy1 = dy0 - 1.0f;
+    const uint64_t near = sample_nearness(key2[i]);
+    // Pixel (x0, y0)'s slot, negative for row -1 (then only the row below is offered).
+    const ptrdiff_t at = static_cast<ptrdiff_t>(y0) * static_cast<ptrdiff_t>(stride) + x0 + 1;
+    if (y0 >= row_begin) {
+      offer(slot[at], near, dx0 * dx0 + dy0 * dy0, i);
+      offer(slot[at + 1], near, dx1 * dx1 + dy0 * dy0, i);
     }
+    if (y0 + 1 < row_end) {
+      const size_t below = static_cast<size_t>(at + static_cast<ptrdiff_t>(stride));
+      offer(slot[below], near, dx0 * dx0 + dy1 * dy1, i);
+      offer(slot[below + 1], near, dx1 * dx1 + dy1 * dy1, i);
+    }
+  }
 }
 
 void TemporalReuse::gather_rows(const Frame& f, int row_begin, int row_end,
                                 ReuseCounts& counts_out) {
   ReuseCounts counts;  // here, not in counts_out: the threads' counts share a cache line
   const LatticePhase& phase = f.phase;
-  const int w = f.width_px, h = f.height_px;
+  const int w = f.width_px;
   const float margin = 1 + settings_.occlusion_tolerance, margin2 = margin * margin;
-  // A 3x3 search needs three columns and rows; a smaller image carries nothing.
-  const bool carry = f.carry && w >= 3 && h >= 3;
+  const bool carry = f.carry;
   // Through local pointers: a byte store may alias anything, and would make the compiler reload
   // every vector's address after it.
   float* __restrict next_x = next_.x.data();
@@ -265,6 +282,8 @@ void TemporalReuse::gather_rows(const Frame& f, int row_begin, int row_end,
   uint32_t* __restrict next_rgba8 = next_.rgba8.data();
   uint8_t* __restrict next_kind = next_.kind.data();
   uint8_t* __restrict next_age = next_.age.data();
+  const uint64_t* __restrict slot = slots_.data();
+  const size_t stride = slot_stride(w);
   const auto set = [&](size_t at, const glm::vec3& v, uint32_t rgba8, uint8_t kind, int age) {
     next_x[at] = v.x;
     next_y[at] = v.y;
@@ -295,83 +314,20 @@ void TemporalReuse::gather_rows(const Frame& f, int row_begin, int row_end,
       const size_t corner[4] = {
           f.lattice_at(col.first, row.first), f.lattice_at(col.second, row.first),
           f.lattice_at(col.first, row.second), f.lattice_at(col.second, row.second)};
-      const auto weights = [](float fu, float fv) {
-        return std::array<float, 4>{(1 - fu) * (1 - fv), fu * (1 - fv), (1 - fu) * fv, fu * fv};
-      };
-      const std::array<float, 4> weight = weights(col.weight, row.weight);
+      const float fu = col.weight, fv = row.weight;
+      const float weight[4] = {(1 - fu) * (1 - fv), fu * (1 - fv), (1 - fu) * fv, fu * fv};
       if (carry) {
-        // Where this pixel's ray met the scene in the old image, from where the lattice's points
-        // around it were: all four's, extrapolated beyond the lattice's ends, when they are all
-        // surfaces or all sky; the surfaces' alone, interpolated, otherwise.
-        int surfaces = 0;
-        for (size_t k : corner) surfaces += lattice_surface_[k];
-        float gx = 0, gy = 0, sum = 0;
-        const std::array<float, 4> guess_weight =
-            surfaces == 0 || surfaces == 4
-                ? weights(col.extrapolating_weight, row.extrapolating_weight)
-                : weight;
-        for (int k = 0; k < 4; ++k) {
-          const bool used = surfaces == 0 || lattice_surface_[corner[k]];
-          const float wk = used ? guess_weight[k] : 0.0f;
-          gx += wk * lattice_old_x_[corner[k]];
-          gy += wk * lattice_old_y_[corner[k]];
-          sum += wk;
-        }
-        gx /= sum;
-        gy /= sum;
-        ptrdiff_t best = -1;
-        float best_key2 = INFINITY;
-        if (gx == gx && gy == gy) {  // not NaN: no lattice point behind the old eye
-          // The 3x3 old pixels around the guess (kept inside the image; clamped before the
-          // conversion, as a point just in front of the old eye lands anywhere): of the samples
-          // whose points land within 0.87 px of this pixel, the nearest surface, and of samples
-          // of that surface (within the margin), the one nearest the pixel. Without branches.
-          // (int)(v + 2) - 2 is floor(v) for v >= -2, without a call to floorf.
-          const int ox = std::clamp(
-              static_cast<int>(std::clamp(gx + 0.5f, -2.0f, w + 2.0f) + 2.0f) - 2, 1, w - 2);
-          const int oy = std::clamp(
-              static_cast<int>(std::clamp(gy + 0.5f, -2.0f, h + 2.0f) + 2.0f) - 2, 1, h - 2);
-          // Three rows of three candidates, a vector each (its fourth lane unused).
-          const i4 three_lanes = {-1, -1, -1, 0};
-          f4 d2[3], key2[3];
-          i4 lands[3];
-          f4 nearest = splat(INFINITY);
-          for (int r = 0; r < 3; ++r) {
-            const size_t k = static_cast<size_t>(oy - 1 + r) * w + static_cast<size_t>(ox - 1);
-            const f4 dx = load4(&landed_x_[k]) - static_cast<float>(x);
-            const f4 dy = load4(&landed_y_[k]) - static_cast<float>(y);
-            d2[r] = dx * dx + dy * dy;
-            lands[r] = (d2[r] <= 0.75f) & three_lanes;  // (NaN: not usable)
-            key2[r] = lands[r] ? load4(&landed_key2_[k]) : splat(INFINITY);
-            nearest = key2[r] < nearest ? key2[r] : nearest;
-          }
-          const auto min_of = [](f4 v) {
-            return std::min(std::min(v[0], v[1]), std::min(v[2], v[3]));
-          };
-          const float within = min_of(nearest) * margin2;
-          f4 nearest_d2 = splat(INFINITY);
-          for (int r = 0; r < 3; ++r) {
-            d2[r] = lands[r] && key2[r] <= within ? d2[r] : splat(INFINITY);
-            nearest_d2 = d2[r] < nearest_d2 ? d2[r] : nearest_d2;
-          }
-          const float best_d2 = min_of(nearest_d2);
-          if (best_d2 <= 0.75f)
-            for (int i = 0; i < 9 && best < 0; ++i)
-              if (d2[i / 3][i % 3] == best_d2) {
-                best = static_cast<ptrdiff_t>(oy - 1 + i / 3) * w + (ox - 1 + i % 3);
-                best_key2 = key2[i / 3][i % 3];
-              }
-        }
-        if (best >= 0) {
+        const uint64_t best = slot[static_cast<size_t>(y) * stride + x + 1];
+        if (best != kNoSample) {
+          const size_t k = sample_index(best);
           // Every fresh sample around it is nearer: something now stands in front of it. (Not
           // beyond the lattice's last row or column, where the samples are on one side and a
           // surface sloping away is deeper than all of them.)
           float farthest = 0;
-          for (size_t k : corner) farthest = std::max(farthest, f.depth[k]);  // +inf: the sky
-          if (col.bracketed && row.bracketed && best_key2 > farthest * farthest * margin2) {
+          for (size_t c : corner) farthest = std::max(farthest, f.depth[c]);  // +inf: the sky
+          if (col.bracketed && row.bracketed && landed_key2_[k] > farthest * farthest * margin2) {
             ++counts.rejected;
           } else {
-            const auto k = static_cast<size_t>(best);
             const uint8_t kind = kept_.kind[k];
             const glm::vec3 v(kept_.x[k], kept_.y[k], kept_.z[k]);
             set(at, kind == kSurface ? v + f.shift : v, kept_.rgba8[k], kind, kept_.age[k] + 1);

@@ -3,29 +3,29 @@
 //
 // Each frame traces one lattice of the window's pixels (every stride_x-th column of every
 // stride_y-th row, from a phase that rotates so that every pixel is traced again within
-// stride_x * stride_y frames: RenderSettings::window). Every other pixel gathers what the
-// frames before traced: each kept sample is the point its ray hit (the vector from the eye to it)
-// or, for the sky, its direction. A pixel guesses where in the old image its ray met the scene
-// from the fresh lattice's samples around it (where each of their points was seen in the old
-// camera, interpolated), and takes the kept sample whose own point lands within 0.87 px of it
-// (the old pixel at the guess if it does, else the nearest of its neighbours that do), carrying
-// that exact point on, so positions do not drift from frame to frame. A carried sample is rejected
+// stride_x * stride_y frames: RenderSettings::window). Every other pixel takes what the frames
+// before traced: each kept sample is the point its ray hit (the vector from the eye to it) or, for
+// the sky, its direction. Every kept sample is projected into the new camera and offered to the
+// pixels whose centres its point lands within 0.87 px of (at most four); a pixel keeps, of those
+// offered, the nearest surface's (within a few percent) that lands nearest its centre. The exact
+// point is carried on, so positions do not drift from frame to frame. A carried sample is rejected
 // where the fresh lattice samples around it are all nearer than it by more than a tolerance
 // (something came in front of it), and when it is older than `max_age_frames`. A pixel left without
 // one (a disocclusion, the image's new edge) takes the fresh lattice's bilinear value. The scene
 // must not have changed (the caller resets the history when anything but the camera did); colours
 // are display values (rgba8), so exposure and tone mapping must be the same.
 //
-// Two passes, each on two threads: every kept sample is projected into the new image (one
-// vectorised pass over the samples, by field), then every pixel looks at the old image where the
-// lattice's own old positions, interpolated, say its ray came from (tests/temporal_reuse_bench
-// times it; docs/performance.md, "Temporal reuse").
+// Three passes, each on two threads: every kept sample is projected into the new image (one
+// vectorised pass over the samples, by field), offered to the pixels around where it lands (each
+// thread to those of its half of the rows), and every pixel takes the best
+// (tests/temporal_reuse_bench times it; docs/performance.md, "Temporal reuse").
 #pragma once
 
 #include "render/camera.hpp"
 
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 namespace fr {
@@ -92,7 +92,7 @@ class TemporalReuse {
   struct Frame;
   static constexpr int kLanes = 4;  // floats in one vector of the projection and the search
   void project_samples(const Frame& frame, size_t begin, size_t end);
-  void project_lattice_rows(const Frame& frame, int row_begin, int row_end);
+  void scatter_rows(const Frame& frame, int row_begin, int row_end);
   void gather_rows(const Frame& frame, int row_begin, int row_end, ReuseCounts& counts);
 
   TemporalReuseSettings settings_;
@@ -100,10 +100,28 @@ class TemporalReuse {
   // Per kept sample, where it lands in the new image (NaN: nowhere usable), and its distance
   // from the new eye, squared (+inf: the sky).
   std::vector<float> landed_x_, landed_y_, landed_key2_;
-  // Per fresh lattice sample, where its point was in the old image (NaN: behind the old eye), and
-  // whether it is a surface.
-  std::vector<float> lattice_old_x_, lattice_old_y_;
-  std::vector<uint8_t> lattice_surface_;
+  // Per pixel of the new image, the best kept sample offered to it (sample_key), or kNoSample;
+  // each row with a column of padding on either side.
+  std::vector<uint64_t> slots_;
+  static size_t slot_stride(int width_px) { return static_cast<size_t>(width_px) + 2; }
+  static constexpr uint64_t kNoSample = ~uint64_t{0};
+  // The order in which a pixel prefers the samples offered to it, as one integer (smaller is
+  // better): the distance from the new eye (its square's float bits, to 4 bits of mantissa:
+  // samples within about 3% are of one surface), then how far from the pixel's centre it landed
+  // (d2, in pixels squared, at most 0.75: its float bits, which order as the values do, to 12
+  // bits of mantissa), then its index (which the key carries).
+  static uint64_t float_bits(float v) {
+    uint32_t bits;
+    std::memcpy(&bits, &v, sizeof bits);
+    return bits;
+  }
+  static uint64_t sample_nearness(float key2) {
+    return float_bits(key2) >> 19 << 52;  // 12 bits: key2 is not negative
+  }
+  static uint64_t sample_key(uint64_t nearness, float d2, size_t index) {
+    return nearness | float_bits(d2) >> 11 << 32 | static_cast<uint64_t>(index);  // 20 bits
+  }
+  static size_t sample_index(uint64_t key) { return static_cast<size_t>(key & 0xffffffffu); }
   bool has_history_ = false;
   int width_px_ = 0, height_px_ = 0;
   CameraRays old_rays_;  // the camera of kept_ (its vectors start at its eye)

@@ -81,10 +81,12 @@ int bench_explore(ParsedOptions options, std::ostream& out,
     const double px = double(render.width_px) * render.height_px;
     std::snprintf(line, sizeof line,
                   "temporal reuse in %d of %d moving frames; pixels per frame: %.0f traced "
-                  "(%.1f%%), %.0f reused (%.1f%%), %.0f filled (%.1f%%), %.0f rejected\n",
+                  "(%.1f%%), %.0f reused (%.1f%%), %.0f filled (%.1f%%), %.0f rejected; median "
+                  "%.2f ms tracing, %.2f ms carrying\n",
                   r.temporal_frames, frames, r.mean_fresh_px, 100 * r.mean_fresh_px / px,
                   r.mean_reused_px, 100 * r.mean_reused_px / px, r.mean_filled_px,
-                  100 * r.mean_filled_px / px, r.mean_rejected_px);
+                  100 * r.mean_filled_px / px, r.mean_rejected_px, r.median_trace_ms,
+                  r.median_compose_ms);
     out << line;
   }
   if (explorer.count_evaluations())
