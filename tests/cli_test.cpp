@@ -277,8 +277,10 @@ TEST(Cli, ExploreBenchCountsTheMovingFrames) {
 // 60% of the steps: bench/image_error.hpp) against a fully traced one of the same camera: some
 // error, never more than full scale, each worst frame at least as bad as the mean.
 TEST(Cli, ExploreBenchJudgesTheShownFrames) {
+  const auto dir = test::fresh_dir("cli_explore_error");
+  const std::string prefix = (dir / "f-").string();
   const CliRun r = run({"bench", "--explore", "--error", "--size", "96x54", "--frames", "3",
-                        "--set", "explorer.quality=\"fast\""});
+                        "--set", "explorer.quality=\"fast\"", "--save-frame", "2:" + prefix});
   ASSERT_EQ(r.code, 0) << r.err;
   const auto at = r.out.find("shown while moving");
   ASSERT_NE(at, std::string::npos) << r.out;
@@ -297,6 +299,29 @@ TEST(Cli, ExploreBenchJudgesTheShownFrames) {
   EXPECT_LT(ssim, 1);
   EXPECT_LE(worst_ssim, ssim);
   EXPECT_GE(worst_ssim, -1);
+  // --save-frame wrote the last frame as shown (stretched to the window) and its reference: their
+  // error, computed here, is one of the frames' the report averaged.
+  const LoadedPng shown = load_png(prefix + "shown.png"),
+                  truth = load_png(prefix + "reference.png");
+  ASSERT_EQ(shown.width_px, 96);
+  ASSERT_EQ(shown.height_px, 54);
+  ASSERT_EQ(truth.rgba8.size(), shown.rgba8.size());
+  double sum = 0;
+  for (size_t i = 0; i < shown.rgba8.size(); ++i)
+    if (i % 4 != 3) sum += std::abs(int(shown.rgba8[i]) - int(truth.rgba8[i]));
+  const double saved_mae = sum / (3.0 * 96 * 54 * 255);
+  EXPECT_GT(saved_mae, 0) << "a stretched frame differs from a fully traced one";
+  EXPECT_LE(saved_mae, worst_mae + 1e-4);
+  EXPECT_GE(saved_mae, 3 * mae - 2 * worst_mae - 5e-4) << "the other two frames at their worst";
+  for (const auto& [args, says] : std::vector<std::pair<std::vector<std::string>, std::string>>{
+           {{"bench", "--explore", "--error", "--frames", "3", "--save-frame", "3:x"},
+            "--save-frame: 3 is outside [0, 2]"},
+           {{"bench", "--explore", "--error", "--save-frame", "7"}, "expected N:PREFIX"},
+           {{"bench", "--explore", "--save-frame", "1:x"}, "only with --explore --error"}}) {
+    const CliRun bad = run(args);
+    EXPECT_EQ(bad.code, 2) << args.back();
+    EXPECT_NE(bad.err.find(says), std::string::npos) << bad.err;
+  }
   // Every kept frame must fit: 1000 frames of 3840x2160 would be 31 GiB.
   const CliRun huge =
       run({"bench", "--explore", "--error", "--size", "3840x2160", "--frames", "1000"});

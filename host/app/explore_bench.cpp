@@ -1,9 +1,12 @@
 #include "app/explore_bench.hpp"
 
+#include "image/png_write.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 namespace fr {
 
@@ -15,8 +18,14 @@ struct KeptFrame {
   SceneState state;
 };
 
-DisplayedError judge_displayed(Explorer& explorer, const std::vector<KeptFrame>& kept, int w,
-                               int h) {
+void save_png(const std::string& path, const Rgba8Image& image) {
+  std::string error;
+  if (!write_png_atomic(path, image.width_px, image.height_px, image.rgba, &error))
+    throw std::runtime_error(error);
+}
+
+DisplayedError judge_displayed(Explorer& explorer, const std::vector<KeptFrame>& kept, int w, int h,
+                               const ExploreBenchOptions& options) {
   DisplayedError e;
   RenderSettings reference = explorer.render_settings();
   reference.width_px = w;
@@ -29,6 +38,10 @@ DisplayedError judge_displayed(Explorer& explorer, const std::vector<KeptFrame>&
     const Rgba8Image truth{w, h, std::vector<uint8_t>(full.rgba8, full.rgba8 + size_t(w) * h * 4)};
     const Rgba8Image shown =
         upscale_bilinear(k.frame.rgba.data(), k.frame.width_px, k.frame.height_px, w, h);
+    if (e.frames == options.save_frame) {
+      save_png(options.save_prefix + "shown.png", shown);
+      save_png(options.save_prefix + "reference.png", truth);
+    }
     const double mae = mean_absolute_error(shown, truth);
     const double ssim = structural_similarity(shown, truth);
     mae_sum += mae;
@@ -124,7 +137,7 @@ ExploreBenchResult run_explore_bench(Explorer& explorer, int w, int h,
     ++result.refine_frames;
   }
   result.seconds_to_full_quality = now_s() - stopped;
-  if (options.measure_error) result.moving_error = judge_displayed(explorer, kept, w, h);
+  if (options.measure_error) result.moving_error = judge_displayed(explorer, kept, w, h, options);
   return result;
 }
 

@@ -9,6 +9,8 @@
 #include "bench/frame_stats.hpp"
 #include "bench/image_error.hpp"
 
+#include <string>
+
 namespace fr {
 
 // The moving frames as displayed (stretched to the window) against a full-resolution frame of
@@ -45,6 +47,11 @@ struct ExploreBenchOptions {
   // Keep each moving frame and its camera, and after the run (so that no timing includes it)
   // render the reference of each and compare.
   bool measure_error = false;
+  // With measure_error: moving frame `save_frame` (0 first; -1 none) as shown and its reference,
+  // written to save_prefix + "shown.png" and save_prefix + "reference.png" (what the user saw,
+  // beside what full tracing gives: docs/performance.md's crops).
+  int save_frame = -1;
+  std::string save_prefix;
 };
 
 // Flies for `options.moving_frames` frames (forward, weaving left and right; each frame moves the

@@ -59,6 +59,16 @@ int bench_explore(ParsedOptions options, std::ostream& out,
   ExploreBenchOptions bench;
   bench.moving_frames = frames;
   bench.measure_error = options.has("error");
+  if (const auto save = options.get("save-frame")) {
+    // N:PREFIX, said before the flight rather than after it.
+    const size_t colon = save->find(':');
+    if (colon == std::string::npos || colon + 1 == save->size())
+      throw UsageError("--save-frame: expected N:PREFIX (for example 60:flight-), got '" + *save +
+                       "'");
+    bench.save_frame =
+        static_cast<int>(parse_integer("--save-frame", save->substr(0, colon), 0, frames - 1));
+    bench.save_prefix = save->substr(colon + 1);
+  }
   const ExploreBenchResult r =
       run_explore_bench(explorer, render.width_px, render.height_px, bench);
   const bool path = setup.settings.render.integrator == Integrator::Path;
@@ -131,6 +141,10 @@ std::vector<OptionSpec> bench_option_specs() {
                    "with --explore and explorer.temporal: trace every SX-th column of every\n"
                    "                                 SY-th row while moving (1 to 5), not what the "
                    "frame rate asks"});
+  specs.push_back({"save-frame", "N:PREFIX", false,
+                   "with --explore --error: write moving frame N (from 0) as shown and its\n"
+                   "                                 reference to PREFIXshown.png and "
+                   "PREFIXreference.png"});
   specs.push_back({"help", nullptr, false, "show this help"});
   return specs;
 }
@@ -266,6 +280,8 @@ int command_bench(const std::vector<std::string>& args, std::ostream& out, std::
     throw UsageError("--error: only with --explore");
   if (options.has("lattice") && !options.has("explore"))
     throw UsageError("--lattice: only with --explore");
+  if (options.has("save-frame") && !options.has("error"))
+    throw UsageError("--save-frame: only with --explore --error");
   if (options.has("explore")) {
     // Its figures go to the terminal only; a --json that would silently not be written is refused.
     if (options.has("json")) throw UsageError("--json: not written by bench --explore");
