@@ -301,8 +301,8 @@ TEST(Cli, ExploreBenchJudgesTheShownFrames) {
   EXPECT_GE(worst_ssim, -1);
   // --save-frame wrote the last frame as shown (stretched to the window) and its reference: their
   // error, computed here, is one of the frames' the report averaged.
-  const LoadedPng shown = load_png(prefix + "shown.png"),
-                  truth = load_png(prefix + "reference.png");
+  const test::LoadedPng shown = test::load_png(prefix + "shown.png");
+  const test::LoadedPng truth = test::load_png(prefix + "reference.png");
   ASSERT_EQ(shown.width_px, 96);
   ASSERT_EQ(shown.height_px, 54);
   ASSERT_EQ(truth.rgba8.size(), shown.rgba8.size());
