@@ -3,7 +3,6 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -126,8 +125,7 @@ const uint8_t* TemporalReuse::compose(const CameraRays& rays, const LatticePhase
   }
   kept_.resize(n);
   next_.resize(n);
-  // Padded by a vector: the projection runs to a whole vector past the end, the 3x3 search reads
-  // a vector from its last column on.
+  // Padded by a vector: the projection runs to a whole vector past the end.
   landed_x_.resize(n + kLanes);
   landed_y_.resize(n + kLanes);
   landed_key2_.resize(n + kLanes);

@@ -90,7 +90,7 @@ class TemporalReuse {
   };
   // One compose call's inputs and the arrays its passes share.
   struct Frame;
-  static constexpr int kLanes = 4;  // floats in one vector of the projection and the search
+  static constexpr int kLanes = 4;  // floats in one vector of the projection
   void project_samples(const Frame& frame, size_t begin, size_t end);
   void scatter_rows(const Frame& frame, int row_begin, int row_end);
   void gather_rows(const Frame& frame, int row_begin, int row_end, ReuseCounts& counts);
