@@ -317,6 +317,8 @@ TEST(Cli, ExploreBenchJudgesTheShownFrames) {
            {{"bench", "--explore", "--error", "--frames", "3", "--save-frame", "3:x"},
             "--save-frame: 3 is outside [0, 2]"},
            {{"bench", "--explore", "--error", "--save-frame", "7"}, "expected N:PREFIX"},
+           {{"bench", "--explore", "--error", "--save-frame", "1:/no/such/folder/f-"},
+            "--save-frame: folder '/no/such/folder' does not exist"},
            {{"bench", "--explore", "--save-frame", "1:x"}, "only with --explore --error"}}) {
     const CliRun bad = run(args);
     EXPECT_EQ(bad.code, 2) << args.back();

@@ -68,6 +68,9 @@ int bench_explore(ParsedOptions options, std::ostream& out,
     bench.save_frame =
         static_cast<int>(parse_integer("--save-frame", save->substr(0, colon), 0, frames - 1));
     bench.save_prefix = save->substr(colon + 1);
+    // A folder that is not there is said now, not after minutes of flight.
+    check_output_file("--save-frame", bench.save_prefix + "shown.png");
+    check_output_file("--save-frame", bench.save_prefix + "reference.png");
   }
   const ExploreBenchResult r =
       run_explore_bench(explorer, render.width_px, render.height_px, bench);
