@@ -27,7 +27,8 @@ const std::vector<std::string> kFloors = {
     "settings",  // the settings file over RenderSettings and the rest
     "image",     // PNG, OpenEXR, posters
     "video",     // the FFmpeg encoder
-    "path",      // camera paths
+    "path",      // camera paths, presets
+    "import",    // other tools' files as presets (Mandelbulber2's .fract)
     "animate",   // frame plans, PNG sequences
     "bench",     // frame timing and reports
     "sweep",     // error against run time

@@ -1,0 +1,262 @@
+/* fr/mandelbulber.cl — the formulas of Mandelbulber2 (Krzysztof Marczak and contributors) that
+ * the importer brings over, each one iteration step exactly as Mandelbulber2 2.20 defines it
+ * (its formulas as facts; this code is written here). The scene `mandelbulber` chains them in
+ * Mandelbulber2's hybrid order; docs/mandelbulber2.md says what maps to what.
+ *
+ * Conventions shared by every step, as Mandelbulber2 has them:
+ *   - z is a 4-vector (x, y, z as a vec3_t, w apart); r is its 4D length at the start of the step.
+ *   - dr is Mandelbulber2's running derivative (aux.DE), starting at 1.
+ *   - No step adds c: the loop does, after the step, when the slot adds it.
+ *   - Angles are degrees, turned into rotation matrices once per evaluation (mb2_rotation_*).
+ * Every step computes all lanes; the loop keeps the result only on the lanes still iterating. */
+
+#define MB2_NONE 0
+#define MB2_MANDELBULB 1      /* id 2: White and Nylander's bulb, latitude by asin */
+#define MB2_POWER2 2          /* id 3: the power-2 bulb's polynomial form */
+#define MB2_HYPERCOMPLEX 3    /* id 4: hypercomplex square (4D) */
+#define MB2_QUATERNION 4      /* id 5: quaternion square (x, y, z) */
+#define MB2_MENGER 5          /* id 7: Menger's sponge as an IFS (Knighty's folds) */
+#define MB2_MANDELBOX 6       /* id 8: Tom Lowe's Mandelbox with Mandelbulber's options */
+#define MB2_KIFS 7            /* id 10: Knighty's kaleidoscopic IFS with up to nine planes */
+#define MB2_PSEUDO_KLEINIAN 8 /* id 103: Theli-at's pseudo-Kleinian */
+
+#define MB2_DE_LOGARITHMIC 0 /* 0.5 r ln r / dr */
+#define MB2_DE_LINEAR 1      /* (r - offset) / dr */
+#define MB2_DE_IFS 2         /* (r - 2) / dr */
+#define MB2_DE_PSEUDO_KLEINIAN 3
+
+/* A rotation as its three rows. */
+typedef struct mb2_rot_t {
+  vec3_t x, y, z;
+} mb2_rot_t;
+
+inline vec3_t mb2_rotate(mb2_rot_t m, vec3_t v) {
+  return v3(v3_dot(m.x, v), v3_dot(m.y, v), v3_dot(m.z, v));
+}
+/* The inverse (transpose) rotation. */
+inline vec3_t mb2_rotate_back(mb2_rot_t m, vec3_t v) {
+  return v3(m.x.x * v.x + m.y.x * v.y + m.z.x * v.z, m.x.y * v.x + m.y.y * v.y + m.z.y * v.z,
+            m.x.z * v.x + m.y.z * v.y + m.z.z * v.z);
+}
+
+/* Rz(c) Ry(b) Rx(a), right-handed, angles in degrees: rotate about x first, then y, then z. */
+inline mb2_rot_t mb2_rotation_zyx(real_t a_deg, real_t b_deg, real_t c_deg) {
+  const real_t k = to_real(M_PI / 180);
+  const real_t ca = cos(a_deg * k), sa = sin(a_deg * k);
+  const real_t cb = cos(b_deg * k), sb = sin(b_deg * k);
+  const real_t cc = cos(c_deg * k), sc = sin(c_deg * k);
+  mb2_rot_t m;
+  m.x = v3(cc * cb, cc * sb * sa - sc * ca, cc * sb * ca + sc * sa);
+  m.y = v3(sc * cb, sc * sb * sa + cc * ca, sc * sb * ca - cc * sa);
+  m.z = v3(-sb, cb * sa, cb * ca);
+  return m;
+}
+/* Mandelbulber's "rotation 2" (the Mandelbox's, the pseudo-Kleinian's): Rz(v.z) Ry(v.y) Rx(v.x). */
+inline mb2_rot_t mb2_rotation2(vec3_t deg) { return mb2_rotation_zyx(deg.x, deg.y, deg.z); }
+/* Mandelbulber's "rotation 3" (the kaleidoscopic IFS's): Rz(v.x) Ry(v.y) Rx(v.z). */
+inline mb2_rot_t mb2_rotation3(vec3_t deg) { return mb2_rotation_zyx(deg.z, deg.y, deg.x); }
+
+/* id 2: theta = asin(z/r) + beta, phi = atan2(y, x) + alpha, both times the power;
+ * dr <- p r^(p-1) dr + 1. */
+inline void mb2_mandelbulb(vec3_t* z, real_t r, real_t* dr, scalar_t power, scalar_t alpha_rad,
+                           scalar_t beta_rad) {
+  const real_t safe_r = fmax(r, to_real(FR_SCALAR_MIN));
+  const real_t th = (asin(clamp(z->z / safe_r, to_real(-1), to_real(1))) + to_real(beta_rad)) *
+                    to_real(power);
+  const real_t ph = (atan2(z->y, z->x) + to_real(alpha_rad)) * to_real(power);
+  const real_t rp1 = pow_nonneg(r, to_real(power - 1));
+  *dr = rp1 * to_real(power) * *dr + to_real(1);
+  const real_t rp = rp1 * r;
+  const real_t cth = cos(th);
+  *z = v3(rp * cth * cos(ph), rp * cth * sin(ph), rp * sin(th));
+}
+
+/* id 3: x' = (x^2 - y^2) t, y' = 2 x y t, z' = -2 z sqrt(x^2 + y^2), t = 1 - z^2 / (x^2 + y^2);
+ * dr <- 2 r dr. */
+inline void mb2_power2(vec3_t* z, real_t r, real_t* dr) {
+  const real_t s = fmax(z->x * z->x + z->y * z->y, to_real(FR_SCALAR_MIN));
+  const real_t t = to_real(1) - z->z * z->z / s;
+  *dr = 2 * r * *dr;
+  *z = v3((z->x * z->x - z->y * z->y) * t, 2 * z->x * z->y * t, -2 * z->z * sqrt(s));
+}
+
+/* id 4: the hypercomplex square on (x, y, z, w); dr <- 2 r dr. */
+inline void mb2_hypercomplex(vec3_t* z, real_t* w, real_t r, real_t* dr) {
+  const vec3_t q = *z;
+  const real_t qw = *w;
+  *dr = 2 * r * *dr;
+  *z = v3(q.x * q.x - q.y * q.y - q.z * q.z - qw * qw, 2 * q.x * q.y - 2 * qw * q.z,
+          2 * q.x * q.z - 2 * q.y * qw);
+  *w = 2 * q.x * qw - 2 * q.y * q.z;
+}
+
+/* id 5: the quaternion square on (x, y, z) (w untouched in 2.20); dr <- 2 r dr. */
+inline void mb2_quaternion(vec3_t* z, real_t r, real_t* dr) {
+  const vec3_t q = *z;
+  *dr = 2 * r * *dr;
+  *z = v3(q.x * q.x - q.y * q.y - q.z * q.z, 2 * q.x * q.y, 2 * q.x * q.z);
+}
+
+/* id 7: abs, sort descending, scale, then the fixed offsets x, y -= 2 and z -= 2 when z > 1;
+ * dr <- s dr. */
+inline void mb2_menger(vec3_t* z, real_t* dr, scalar_t scale) {
+  vec3_t q = v3_abs(*z);
+  real_t t;
+  mask_t m = q.x < q.y;
+  t = q.x;
+  q.x = lane_select(m, q.y, q.x);
+  q.y = lane_select(m, t, q.y);
+  m = q.x < q.z;
+  t = q.x;
+  q.x = lane_select(m, q.z, q.x);
+  q.z = lane_select(m, t, q.z);
+  m = q.y < q.z;
+  t = q.y;
+  q.y = lane_select(m, q.z, q.y);
+  q.z = lane_select(m, t, q.z);
+  q = v3_scale(q, to_real(scale));
+  q.x -= 2;
+  q.y -= 2;
+  q.z = lane_select(q.z > to_real(1), q.z - 2, q.z);
+  *z = q;
+  *dr = *dr * to_real(scale);
+}
+
+/* Box fold of one coordinate: beyond +-limit it becomes +-value minus itself. */
+inline real_t mb2_fold(real_t a, real_t limit, real_t value) {
+  return lane_select(a > limit, value - a, lane_select(a < -limit, -value - a, a));
+}
+
+typedef struct mb2_mandelbox_t {
+  scalar_t scale, limit, value, min_r2, fixed_r2;
+  vec3_t offset;
+  int main_rotation, fold_rotations;
+  mb2_rot_t main;
+  mb2_rot_t neg[3], pos[3]; /* per-axis fold rotations */
+} mb2_mandelbox_t;
+
+inline real_t mb2_component(vec3_t v, int axis) { return axis == 0 ? v.x : axis == 1 ? v.y : v.z; }
+inline vec3_t mb2_with_component(vec3_t v, int axis, real_t a) {
+  if (axis == 0) v.x = a;
+  else if (axis == 1) v.y = a;
+  else v.z = a;
+  return v;
+}
+
+/* id 8: box fold (optionally in rotated frames per axis), sphere fold about -offset, the main
+ * rotation, scale; dr <- dr |s| (times the sphere fold's factor) + 1. w takes the scalings. */
+inline void mb2_mandelbox(vec3_t* z, real_t* w, real_t* dr, const mb2_mandelbox_t* b) {
+  vec3_t q = *z;
+  const real_t limit = to_real(b->limit), value = to_real(b->value);
+  if (b->fold_rotations) {
+    for (int axis = 0; axis < 3; ++axis) {
+      /* Mandelbulber's naming: the "neg" rotation frames the fold on the positive side. */
+      vec3_t a = mb2_rotate(b->neg[axis], q);
+      const real_t ad = mb2_component(a, axis);
+      const mask_t high = ad > limit;
+      const vec3_t from_high = mb2_rotate_back(b->neg[axis], mb2_with_component(a, axis, value - ad));
+      vec3_t c = mb2_rotate(b->pos[axis], q);
+      const real_t cd = mb2_component(c, axis);
+      const mask_t low = cd < -limit;
+      const vec3_t from_low = mb2_rotate_back(b->pos[axis], mb2_with_component(c, axis, -value - cd));
+      q = v3_select(high, from_high, v3_select(low, from_low, q));
+    }
+  } else {
+    q = v3(mb2_fold(q.x, limit, value), mb2_fold(q.y, limit, value), mb2_fold(q.z, limit, value));
+  }
+  const real_t r2 = v3_length2(q) + *w * *w;
+  q = v3_add(q, b->offset);
+  const real_t factor =
+      lane_select(r2 < to_real(b->min_r2), to_real(b->fixed_r2 / b->min_r2),
+                  lane_select(r2 < to_real(b->fixed_r2),
+                              to_real(b->fixed_r2) / fmax(r2, to_real(FR_SCALAR_MIN)), to_real(1)));
+  q = v3_sub(v3_scale(q, factor), b->offset);
+  if (b->main_rotation) q = mb2_rotate(b->main, q);
+  *z = v3_scale(q, to_real(b->scale));
+  *w = *w * factor * to_real(b->scale);
+  *dr = *dr * factor * to_real(fabs(b->scale)) + to_real(1);
+}
+
+#define MB2_KIFS_PLANES 9
+
+typedef struct mb2_kifs_t {
+  scalar_t scale;
+  vec3_t offset, edge;
+  int abs_x, abs_y, abs_z, menger_mode, rotation_enabled;
+  mb2_rot_t rotation;
+  int enabled[MB2_KIFS_PLANES];
+  vec3_t direction[MB2_KIFS_PLANES]; /* unit */
+  scalar_t distance[MB2_KIFS_PLANES], intensity[MB2_KIFS_PLANES];
+  mb2_rot_t plane_rotation[MB2_KIFS_PLANES];
+} mb2_kifs_t;
+
+/* id 10: abs per axis; each enabled plane rotates, then reflects what lies below its distance;
+ * the main rotation about the offset point; the edge fold; scale about the offset (Menger mode:
+ * z only above half its offset); dr <- dr |s|. */
+inline void mb2_kifs(vec3_t* z, real_t* w, real_t* dr, const mb2_kifs_t* k) {
+  vec3_t q = *z;
+  if (k->abs_x) q.x = fabs(q.x);
+  if (k->abs_y) q.y = fabs(q.y);
+  if (k->abs_z) q.z = fabs(q.z);
+  for (int i = 0; i < MB2_KIFS_PLANES; ++i) {
+    if (!k->enabled[i]) continue;
+    q = mb2_rotate(k->plane_rotation[i], q);
+    const real_t l = v3_dot(q, k->direction[i]);
+    const real_t d = to_real(k->distance[i]);
+    q = v3_select(l < d, v3_sub(q, v3_scale(k->direction[i], 2 * (l - d) * to_real(k->intensity[i]))),
+                  q);
+  }
+  if (k->rotation_enabled)
+    q = v3_add(mb2_rotate(k->rotation, v3_sub(q, k->offset)), k->offset);
+  /* The edge: a component whose edge value is positive folds back from it. */
+  q.x = lane_select(k->edge.x > 0, k->edge.x - fabs(k->edge.x - q.x), q.x);
+  q.y = lane_select(k->edge.y > 0, k->edge.y - fabs(k->edge.y - q.y), q.y);
+  q.z = lane_select(k->edge.z > 0, k->edge.z - fabs(k->edge.z - q.z), q.z);
+  const real_t s = to_real(k->scale);
+  q = v3_scale(q, s);
+  const vec3_t shift = v3_scale(k->offset, s - 1);
+  q.x -= shift.x;
+  q.y -= shift.y;
+  if (k->menger_mode)
+    q.z = lane_select(q.z > to_real(0.5) * shift.z, q.z - shift.z, q.z);
+  else
+    q.z -= shift.z;
+  *z = q;
+  *w = *w * s;
+  *dr = *dr * fabs(s);
+}
+
+/* id 103: the box's clamp fold, then the inversion k = max(K / |z|^2, 1) (K a squared radius);
+ * dr <- dr (k + tweak); then the offset. */
+inline void mb2_pseudo_kleinian(vec3_t* z, real_t* w, real_t* dr, vec3_t box, scalar_t min_r2,
+                                scalar_t tweak, vec3_t offset) {
+  vec3_t q = *z;
+  q = v3(2 * clamp(q.x, -box.x, box.x) - q.x, 2 * clamp(q.y, -box.y, box.y) - q.y,
+         2 * clamp(q.z, -box.z, box.z) - q.z);
+  const real_t k =
+      fmax(to_real(min_r2) / fmax(v3_length2(q) + *w * *w, to_real(FR_SCALAR_MIN)), to_real(1));
+  q = v3_scale(q, k);
+  *w = *w * k;
+  *dr = *dr * (k + to_real(tweak));
+  *z = v3_add(q, offset);
+}
+
+/* The distance from the last z (4D length r) and dr, by the chosen estimate; Mandelbulber2 keeps
+ * it within [0, 10] and falls back to r when dr is not positive. */
+inline real_t mb2_distance(int estimate, vec3_t z, real_t r, real_t dr, scalar_t linear_offset,
+                           scalar_t pk_offset) {
+  real_t d;
+  const real_t safe_dr = fmax(dr, to_real(FR_SCALAR_MIN));
+  if (estimate == MB2_DE_LOGARITHMIC) {
+    d = to_real(0.5) * r * log(fmax(r, to_real(FR_SCALAR_MIN))) / safe_dr;
+  } else if (estimate == MB2_DE_IFS) {
+    d = (r - 2) / safe_dr;
+  } else if (estimate == MB2_DE_PSEUDO_KLEINIAN) {
+    const real_t rxy = sqrt(z.x * z.x + z.y * z.y);
+    d = fmax(rxy - to_real(pk_offset), fabs(rxy * z.z) / fmax(r, to_real(FR_SCALAR_MIN))) / safe_dr;
+  } else {
+    d = (r - to_real(linear_offset)) / safe_dr;
+  }
+  d = lane_select(dr > 0, d, r);
+  return clamp(d, to_real(0), to_real(10));
+}

@@ -1,0 +1,223 @@
+/* mandelbulber.cl — Mandelbulber2's iteration loop over the nine slots of fr/mandelbulber.cl.
+ *
+ * Per iteration i (Mandelbulber2 2.20's order): choose the slot (hybrid: the sequence below;
+ * otherwise slot 1), run its formula, add c when the slot adds it, then r = |z| (4D) and stop the
+ * lane once r passes the bailout (when the slot checks it), when z turns NaN (keeping the last
+ * finite z) or, after a pseudo-Kleinian step, when the orbit has converged. The estimate comes
+ * from the last z, r and dr.
+ *
+ * The hybrid sequence: a counter counts iterations; a slot that is empty or outside its
+ * [start, stop] iterations is passed over (at most nine times); once the counter reaches the
+ * slot's iterations-in-a-row the counter restarts and the next slot follows, slot 9 being followed
+ * by repeat_from. The same for every lane, so it is scalar work. */
+#include "fr/mandelbulber.cl"
+
+#if FR_CHOICE_f1_mandelbulb != MB2_MANDELBULB || FR_CHOICE_f1_menger != MB2_MENGER || \
+    FR_CHOICE_f1_pseudo_kleinian != MB2_PSEUDO_KLEINIAN ||                            \
+    FR_CHOICE_estimate_pseudo_kleinian != MB2_DE_PSEUDO_KLEINIAN
+#error "mandelbulber.c's kinds are out of step with fr/mandelbulber.cl"
+#endif
+
+/* What the formulas need, gathered once per evaluation (rotations as matrices). */
+typedef struct mb2_setup_t {
+  mb2_mandelbox_t box;
+  mb2_kifs_t kifs;
+} mb2_setup_t;
+
+#define MB2_PLANE(i)                                                                            \
+  s.kifs.enabled[i] = PARAM(kifs_plane##i);                                                     \
+  if (s.kifs.enabled[i]) {                                                                      \
+    s.kifs.direction[i] = v3_normalize(PARAM(kifs_plane##i##_direction));                       \
+    s.kifs.distance[i] = PARAM(kifs_plane##i##_distance);                                       \
+    s.kifs.intensity[i] = PARAM(kifs_plane##i##_intensity);                                     \
+    s.kifs.plane_rotation[i] = mb2_rotation3(PARAM(kifs_plane##i##_rotation));                  \
+  }
+
+#define MB2_USES(kind)                                                                        \
+  (PARAM(f1) == (kind) || PARAM(f2) == (kind) || PARAM(f3) == (kind) || PARAM(f4) == (kind) || \
+   PARAM(f5) == (kind) || PARAM(f6) == (kind) || PARAM(f7) == (kind) || PARAM(f8) == (kind) || \
+   PARAM(f9) == (kind))
+
+inline mb2_setup_t mb2_setup(__constant const scene_params_t* params) {
+  mb2_setup_t s;
+  if (MB2_USES(MB2_MANDELBOX)) {
+    s.box.scale = PARAM(box_scale);
+    s.box.limit = PARAM(box_fold_limit);
+    s.box.value = PARAM(box_fold_value);
+    s.box.min_r2 = PARAM(box_min_radius) * PARAM(box_min_radius);
+    s.box.fixed_r2 = PARAM(box_fixed_radius) * PARAM(box_fixed_radius);
+    s.box.offset = PARAM(box_offset);
+    s.box.main_rotation = PARAM(box_main_rotation);
+    if (s.box.main_rotation) s.box.main = mb2_rotation2(PARAM(box_rotation));
+    s.box.fold_rotations = PARAM(box_fold_rotations);
+    if (s.box.fold_rotations) {
+      s.box.neg[0] = mb2_rotation2(PARAM(box_rotation_neg_1));
+      s.box.neg[1] = mb2_rotation2(PARAM(box_rotation_neg_2));
+      s.box.neg[2] = mb2_rotation2(PARAM(box_rotation_neg_3));
+      s.box.pos[0] = mb2_rotation2(PARAM(box_rotation_pos_1));
+      s.box.pos[1] = mb2_rotation2(PARAM(box_rotation_pos_2));
+      s.box.pos[2] = mb2_rotation2(PARAM(box_rotation_pos_3));
+    }
+  }
+  if (MB2_USES(MB2_KIFS)) {
+    s.kifs.scale = PARAM(kifs_scale);
+    s.kifs.offset = PARAM(kifs_offset);
+    s.kifs.edge = PARAM(kifs_edge);
+    s.kifs.abs_x = PARAM(kifs_abs_x);
+    s.kifs.abs_y = PARAM(kifs_abs_y);
+    s.kifs.abs_z = PARAM(kifs_abs_z);
+    s.kifs.menger_mode = PARAM(kifs_menger_mode);
+    s.kifs.rotation_enabled = PARAM(kifs_rotation_enabled);
+    if (s.kifs.rotation_enabled) s.kifs.rotation = mb2_rotation3(PARAM(kifs_rotation));
+    MB2_PLANE(0)
+    MB2_PLANE(1)
+    MB2_PLANE(2)
+    MB2_PLANE(3)
+    MB2_PLANE(4)
+    MB2_PLANE(5)
+    MB2_PLANE(6)
+    MB2_PLANE(7)
+    MB2_PLANE(8)
+  }
+  return s;
+}
+
+/* One formula step of kind `kind` (a compile-time constant at each call). */
+inline void mb2_step(int kind, vec3_t* z, real_t* w, real_t r, real_t* dr, const mb2_setup_t* s,
+                     __constant const scene_params_t* params) {
+  switch (kind) {
+    case MB2_MANDELBULB:
+      mb2_mandelbulb(z, r, dr, PARAM(bulb_power), PARAM(bulb_alpha) * (scalar_t)(M_PI / 180),
+                     PARAM(bulb_beta) * (scalar_t)(M_PI / 180));
+      break;
+    case MB2_POWER2:
+      mb2_power2(z, r, dr);
+      break;
+    case MB2_HYPERCOMPLEX:
+      mb2_hypercomplex(z, w, r, dr);
+      break;
+    case MB2_QUATERNION:
+      mb2_quaternion(z, r, dr);
+      break;
+    case MB2_MENGER:
+      mb2_menger(z, dr, PARAM(menger_scale));
+      break;
+    case MB2_MANDELBOX:
+      mb2_mandelbox(z, w, dr, &s->box);
+      break;
+    case MB2_KIFS:
+      mb2_kifs(z, w, dr, &s->kifs);
+      break;
+    case MB2_PSEUDO_KLEINIAN:
+      mb2_pseudo_kleinian(z, w, dr, PARAM(pk_box), PARAM(pk_min_r2), PARAM(pk_tweak),
+                          PARAM(pk_offset));
+      break;
+    default:
+      break;
+  }
+}
+
+/* The slot's parameters by index 0..8 (uniform, so every lane takes the same branch). */
+#define MB2_SLOT_FIELD(slot, field)                                                         \
+  ((slot) == 0   ? PARAM(f1##field)                                                         \
+   : (slot) == 1 ? PARAM(f2##field)                                                         \
+   : (slot) == 2 ? PARAM(f3##field)                                                         \
+   : (slot) == 3 ? PARAM(f4##field)                                                         \
+   : (slot) == 4 ? PARAM(f5##field)                                                         \
+   : (slot) == 5 ? PARAM(f6##field)                                                         \
+   : (slot) == 6 ? PARAM(f7##field)                                                         \
+   : (slot) == 7 ? PARAM(f8##field)                                                         \
+                 : PARAM(f9##field))
+
+inline int mb2_next_slot(int slot, __constant const scene_params_t* params) {
+  return slot < 8 ? slot + 1 : clamp(PARAM(repeat_from), 1, 9) - 1;
+}
+
+/* Whether the slot runs at iteration i: it has a formula and i lies in its window. */
+inline int mb2_slot_runs(int slot, int i, __constant const scene_params_t* params) {
+  return MB2_SLOT_FIELD(slot, ) != MB2_NONE && i >= MB2_SLOT_FIELD(slot, _start) &&
+         i <= MB2_SLOT_FIELD(slot, _stop);
+}
+
+#define MB2_RUN_SLOT(n)                                                        \
+  case n - 1:                                                                  \
+    kind = PARAM(f##n);                                                        \
+    mb2_step(PARAM(f##n), &nz, &nw, r, &ndr, &setup, params);                 \
+    add_c = PARAM(f##n##_add_c);                                               \
+    check = PARAM(f##n##_check_bailout);                                       \
+    break;
+
+inline real_t mb2_de(vec3_t p, __constant const scene_params_t* params, real_t* trap) {
+  const mb2_setup_t setup = mb2_setup(params);
+  const vec3_t c = v3_mul(PARAM(julia) ? PARAM(julia_c) : p, PARAM(constant_factor));
+  vec3_t z = p, z_prev = p, z_prev2 = p;
+  real_t w = to_real(0);
+  real_t dr = to_real(1);
+  real_t r = v3_length(z);
+  real_t orbit_min = r * r;
+  const real_t bailout = to_real(PARAM(bailout));
+  mask_t live = FR_MASK_TRUE;
+  int slot = 0, counter = 0;
+  for (int i = 0; i < PARAM(iterations); ++i) {
+    if (!any_lane(live)) break;
+    if (PARAM(hybrid)) {
+      ++counter;
+      for (int tries = 0; tries < 9 && !mb2_slot_runs(slot, i, params); ++tries)
+        slot = mb2_next_slot(slot, params);
+    }
+    const int seq = slot;
+    if (MB2_SLOT_FIELD(seq, ) == MB2_NONE) {
+      /* Mandelbulber2 leaves such a point outside (distance 10). */
+      r = lane_select(live, to_real(1e10), r);
+      dr = lane_select(live, to_real(1), dr);
+      break;
+    }
+    vec3_t nz = z;
+    real_t nw = w, ndr = dr;
+    int kind = MB2_NONE, add_c = 1, check = 1;
+    switch (seq) {
+      MB2_RUN_SLOT(1)
+      MB2_RUN_SLOT(2)
+      MB2_RUN_SLOT(3)
+      MB2_RUN_SLOT(4)
+      MB2_RUN_SLOT(5)
+      MB2_RUN_SLOT(6)
+      MB2_RUN_SLOT(7)
+      MB2_RUN_SLOT(8)
+      MB2_RUN_SLOT(9)
+    }
+    if (add_c) nz = v3_add(nz, c);
+    if (!PARAM(hybrid)) check = 1;
+    if (PARAM(hybrid) && counter >= MB2_SLOT_FIELD(seq, _iterations)) {
+      counter = 0;
+      slot = mb2_next_slot(slot, params);
+    }
+    const real_t nr = sqrt(v3_length2(nz) + nw * nw);
+    /* A NaN orbit keeps its last finite z and stops. */
+    const mask_t finite = !isnan(nr);
+    const mask_t step = live & finite;
+    z_prev2 = v3_select(step, z_prev, z_prev2);
+    z_prev = v3_select(step, z, z_prev);
+    z = v3_select(step, nz, z);
+    w = lane_select(step, nw, w);
+    dr = lane_select(step, ndr, dr);
+    r = lane_select(step, nr, r);
+    orbit_min = lane_select(step, fmin(orbit_min, nr * nr), orbit_min);
+    mask_t stop = live & !finite;
+    if (check) stop = stop | (step & (nr > bailout));
+    if (kind == MB2_PSEUDO_KLEINIAN) {
+      /* Mandelbulber2's convergence test for Kleinian orbits. */
+      const real_t limit = to_real(0.1) / bailout * fmax(nr, to_real(FR_SCALAR_MIN));
+      stop = stop | (step & ((v3_length(v3_sub(z, z_prev)) < limit) |
+                             (v3_length(v3_sub(z, z_prev2)) < limit)));
+    }
+    live = live & !stop;
+  }
+  *trap = orbit_min;
+  return mb2_distance(PARAM(estimate), z, r, dr, PARAM(linear_offset), PARAM(pk_de_offset));
+}
+
+real_t scene_de(vec3_t p, __constant const scene_params_t* params) {
+  real_t trap;
+  return mb2_de(p, params, &trap);
+}
