@@ -45,6 +45,7 @@ const CommandEntry kCommands[] = {
     {"new", "write, build and install a new scene project (for scene authors)", command_new},
     {"devices", "list OpenCL platforms and devices", command_devices},
     {"check", "run the conformance checks on a scene plugin (for scene authors)", command_check},
+    {"import", "import a Mandelbulber2 settings file (.fract) as a preset", command_import},
     {"cache", "show fractalis's cache folders and their sizes; --clear empties them",
      command_cache},
     {"vet-scene", nullptr, command_vet_scene},

@@ -44,6 +44,7 @@ int command_new(const std::vector<std::string>& args, std::ostream& out, std::os
 int command_explore(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 int command_sweep(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 int command_check(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+int command_import(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 // Hidden: the explorer's test render of a scene in a child process (render/scene_vetting.hpp).
 int command_vet_scene(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 int command_cache(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);

@@ -45,6 +45,10 @@ PreparedScene prepare_scene(const ParsedOptions& options, int max_side) {
     throw std::runtime_error("no plugin folder found (build the plugins, or pass --plugins DIR)");
   const auto outcomes = load_plugins(folders, p.settings.plugins);
   p.preset = preset_option(options, folders);
+  if (p.preset) {
+    apply_preset_settings(options, p.preset, p.settings);
+    p.render = render_settings_from(p.settings, options, max_side);
+  }
   p.scene = find_scene(outcomes, scene_id_option(options, p.preset));
   p.state = make_default_state(p.scene->info);
   if (auto t = options.get("time")) p.state.time_s = parse_finite("--time", *t);

@@ -1,4 +1,5 @@
 #include "cli/scene_options.hpp"
+#include "cli/preset_files.hpp"
 
 #include "io/build_paths.hpp"
 #include "io/echo.hpp"
@@ -39,8 +40,9 @@ std::vector<OptionSpec> scene_option_specs() {
       {"up", "X,Y,Z", false,
        "camera up direction (default: the scene's); parallel to the view: a stable perpendicular"},
       {"fov", "DEG", false, "horizontal field of view in degrees, (0, 180)"},
-      {"preset", "NAME", false,
-       "start from a preset (values and view; `fractalis list` shows them); --scene may be left "
+      {"preset", "NAME|FILE", false,
+       "start from a preset (values and view; `fractalis list` shows them), a preset file "
+       "(.toml) or a Mandelbulber2 settings file (.fract, imported on the fly); --scene may be left "
        "out"},
       {"param", "KEY=VALUE", true, "set a scene parameter (repeatable); vec3 as x,y,z"},
       {"time", "SECONDS", false, "scene time for the update callback (default 0)"},
@@ -302,6 +304,7 @@ std::optional<Preset> preset_option(const ParsedOptions& options,
                                     const std::vector<std::filesystem::path>& folders) {
   const auto id = options.get("preset");
   if (!id) return std::nullopt;
+  if (is_preset_path(*id)) return preset_from_path(*id);
   std::vector<PresetProblem> problems;
   const std::vector<Preset> presets = load_presets(folders, &problems);
   if (auto found = find_preset(presets, *id)) return found;
@@ -314,6 +317,23 @@ std::optional<Preset> preset_option(const ParsedOptions& options,
   }
   throw UsageError("--preset: no preset '" + echo(*id) +
                    "' (there are: " + (names.empty() ? std::string("none") : names) + ")");
+}
+
+void apply_preset_settings(const ParsedOptions& options, const std::optional<Preset>& preset,
+                           Settings& settings) {
+  if (!preset) return;
+  std::vector<std::string> problems;
+  const auto assignments = preset_settings(*preset, &problems);
+  if (!problems.empty()) throw UsageError("--preset " + echo(preset->id) + ": " + problems.front());
+  for (const auto& [key, value] : assignments) {
+    const auto wrong = apply_setting_override(key + "=" + value, settings);
+    if (!wrong.empty())
+      throw UsageError("--preset " + echo(preset->file.string()) + ": [settings] " +
+                       wrong.front().to_string());
+  }
+  // The command line has the last word.
+  if (auto it = options.values.find("set"); it != options.values.end())
+    for (const std::string& assignment : it->second) apply_setting_override(assignment, settings);
 }
 
 std::string scene_id_option(const ParsedOptions& options, const std::optional<Preset>& preset) {

@@ -58,10 +58,16 @@ UsageError unknown_scene(const std::string& id, const std::vector<std::string>& 
 std::shared_ptr<const LoadedScene> find_scene(const std::vector<LoadOutcome>& outcomes,
                                               const std::string& id);
 
-// --preset NAME, found in the plugin folders' presets/ (nullopt without --preset). A UsageError
-// names an unknown preset (with the ones there are) or one whose file has a problem.
+// --preset NAME, found in the plugin folders' presets/ (nullopt without --preset), or --preset
+// FILE: a preset file (.toml) or a Mandelbulber2 settings file (.fract) imported on the fly
+// (cli/preset_files.hpp). A UsageError names an unknown preset (with the ones there are), a file
+// with a problem, or every reason a .fract file cannot be imported.
 std::optional<Preset> preset_option(const ParsedOptions& options,
                                     const std::vector<std::filesystem::path>& folders);
+// The preset's [settings] over `settings`, then --set again (the command line wins). A setting
+// the preset gets wrong is a UsageError naming the preset's file.
+void apply_preset_settings(const ParsedOptions& options, const std::optional<Preset>& preset,
+                           Settings& settings);
 // The scene to use: --scene, else the preset's, else mandelbulb; a --scene that differs from the
 // preset's scene is a UsageError.
 std::string scene_id_option(const ParsedOptions& options, const std::optional<Preset>& preset);

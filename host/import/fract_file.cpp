@@ -22,9 +22,9 @@ std::string trim(const std::string& s) {
 
 std::string fract_where(const FractFile& f, int line, const std::string& key) {
   std::string out = f.file.string();
-  if (line > 0) out += ":" + std::to_string(line);
-  out += ": ";
-  if (!key.empty()) out += echo(key) + ": ";
+  if (line > 0) out.append(":").append(std::to_string(line));
+  out.append(": ");
+  if (!key.empty()) out.append(echo(key)).append(": ");
   return out;
 }
 

@@ -43,10 +43,96 @@ std::optional<toml::table> parse(const std::string& text, const std::filesystem:
   }
 }
 
-const char* const kTopKeys[] = {"scene", "name", "description", "params", "camera"};
+const char* const kTopKeys[] = {"scene", "name", "description", "params", "camera", "settings"};
 const char* const kCameraKeys[] = {"eye", "target", "up", "fov_deg"};
 
 }  // namespace
+
+std::optional<Preset> preset_from_text(const std::string& text, const std::filesystem::path& file,
+                                       const std::string& id, std::vector<std::string>* problems) {
+  auto problem = [&](int line, const std::string& what) {
+    problems->push_back(where(file, line) + what);
+  };
+  auto root = parse(text, file, problems);
+  if (!root) return std::nullopt;
+  bool ok = true;
+  for (const auto& [key, node] : *root)
+    if (std::find(std::begin(kTopKeys), std::end(kTopKeys), key.str()) == std::end(kTopKeys)) {
+      problem(toml_line(node), "unknown key '" + echo(key.str()) +
+                                   "' (a preset has scene, name, description, [params], "
+                                   "[camera], [settings])");
+      ok = false;
+    }
+  if (const toml::node* n = root->get("settings"); n && !n->as_table()) {
+    problem(toml_line(*n), "[settings] must be a table of settings by key");
+    ok = false;
+  }
+  Preset p;
+  p.id = id;
+  p.file = file;
+  p.text = text;
+  const auto scene = (*root)["scene"].value<std::string>();
+  const auto name = (*root)["name"].value<std::string>();
+  if (!scene || scene->empty()) {
+    problem(0, "needs scene = \"ID\", the scene it is for");
+    ok = false;
+  }
+  if (!name || name->empty()) {
+    problem(0, "needs name = \"...\", its display name");
+    ok = false;
+  }
+  if (!ok) return std::nullopt;
+  p.scene_id = *scene;
+  p.name = *name;
+  p.description = (*root)["description"].value<std::string>().value_or("");
+  return p;
+}
+
+std::optional<Preset> read_preset_file(const std::filesystem::path& file, const std::string& id,
+                                       std::vector<std::string>* problems) {
+  std::ifstream in(file, std::ios::binary);
+  std::string text;
+  text.resize(kMaxPresetBytes + 1);
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<size_t>(in.gcount()));
+  if (!in.eof() && text.size() > kMaxPresetBytes) {
+    problems->push_back(where(file, 0) + "larger than " + std::to_string(kMaxPresetBytes) +
+                        " bytes");
+    return std::nullopt;
+  }
+  if (!in.is_open() || in.bad() || (!in.eof() && !in)) {
+    problems->push_back(where(file, 0) + "cannot be read");
+    return std::nullopt;
+  }
+  return preset_from_text(text, file, id, problems);
+}
+
+std::vector<std::pair<std::string, std::string>> preset_settings(const Preset& preset,
+                                                                 std::vector<std::string>* problems) {
+  std::vector<std::pair<std::string, std::string>> out;
+  auto root = parse(preset.text, preset.file, problems);
+  if (!root) return out;
+  const toml::table* t = root->get("settings") ? root->get("settings")->as_table() : nullptr;
+  if (!t) return out;
+  for (const auto& [key, value] : *t) {
+    std::string text;
+    if (auto b = value.value_exact<bool>()) text = *b ? "true" : "false";
+    else if (auto i = value.value_exact<int64_t>()) text = std::to_string(*i);
+    else if (auto d = value.value_exact<double>()) {
+      std::ostringstream s;
+      s.precision(17);
+      s << *d;
+      text = s.str();
+    } else if (auto str = value.value_exact<std::string>()) text = *str;
+    else {
+      problems->push_back(where(preset.file, toml_line(value)) + std::string(key.str()) +
+                          ": expected a number, a boolean or a string");
+      continue;
+    }
+    out.emplace_back(std::string(key.str()), text);
+  }
+  return out;
+}
 
 std::vector<Preset> load_presets(const std::vector<std::filesystem::path>& plugin_folders,
                                  std::vector<PresetProblem>* problems) {
@@ -73,52 +159,11 @@ std::vector<Preset> load_presets(const std::vector<std::filesystem::path>& plugi
                        "; this one is not used");
         continue;
       }
-      std::ifstream in(file, std::ios::binary);
-      std::string text;
-      text.resize(kMaxPresetBytes + 1);
-      in.read(text.data(), static_cast<std::streamsize>(text.size()));
-      text.resize(static_cast<size_t>(in.gcount()));
-      if (!in.eof() && text.size() > kMaxPresetBytes) {
-        problem(0, "larger than " + std::to_string(kMaxPresetBytes) + " bytes");
-        continue;
-      }
-      if (in.bad() || (!in.eof() && !in)) {
-        problem(0, "cannot be read");
-        continue;
-      }
-      std::vector<std::string> parse_problems;
-      auto root = parse(text, file, &parse_problems);
-      if (!root) {
-        for (auto& m : parse_problems) problems->push_back({file, std::move(m)});
-        continue;
-      }
-      bool ok = true;
-      for (const auto& [key, node] : *root)
-        if (std::find(std::begin(kTopKeys), std::end(kTopKeys), key.str()) == std::end(kTopKeys)) {
-          problem(toml_line(node), "unknown key '" + echo(key.str()) +
-                                       "' (a preset has scene, name, description, [params], "
-                                       "[camera])");
-          ok = false;
-        }
-      Preset p;
-      p.id = id;
-      p.file = file;
-      p.text = text;
-      const auto scene = (*root)["scene"].value<std::string>();
-      const auto name = (*root)["name"].value<std::string>();
-      if (!scene || scene->empty()) {
-        problem(0, "needs scene = \"ID\", the scene it is for");
-        ok = false;
-      }
-      if (!name || name->empty()) {
-        problem(0, "needs name = \"...\", its display name");
-        ok = false;
-      }
-      if (!ok) continue;
-      p.scene_id = *scene;
-      p.name = *name;
-      p.description = (*root)["description"].value<std::string>().value_or("");
-      by_id.emplace(id, std::move(p));
+      std::vector<std::string> file_problems;
+      auto p = read_preset_file(file, id, &file_problems);
+      for (auto& m : file_problems) problems->push_back({file, std::move(m)});
+      if (!p) continue;
+      by_id.emplace(id, std::move(*p));
     }
   }
   std::vector<Preset> out;

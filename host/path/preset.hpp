@@ -9,6 +9,8 @@
 //   [camera]                            # optional; any of eye, target, up, fov_deg
 //   eye = [9.0, 6.0, 10.0]
 //   target = [0.0, 0.0, 0.0]
+//   [settings]                          # optional; settings keys as --set takes them
+//   "render.hit_threshold_k" = 2.0      # (an imported file's quality and effects)
 //
 // A preset's id is its file's name without ".toml": [a-z][a-z0-9_-]*, unique over all folders
 // (the first folder wins; a later file with the same id is reported, not used). Presets live in
@@ -46,6 +48,19 @@ std::vector<Preset> load_presets(const std::vector<std::filesystem::path>& plugi
                                  std::vector<PresetProblem>* problems);
 
 constexpr size_t kMaxPresetBytes = 64 * 1024;
+
+// A preset from its text (`file` names it in problems, `id` is its id); nullopt with problems
+// ("FILE:LINE: what") when it is not a preset.
+std::optional<Preset> preset_from_text(const std::string& text, const std::filesystem::path& file,
+                                       const std::string& id, std::vector<std::string>* problems);
+// The same, read from a file (at most kMaxPresetBytes).
+std::optional<Preset> read_preset_file(const std::filesystem::path& file, const std::string& id,
+                                       std::vector<std::string>* problems);
+
+// The preset's [settings] as KEY and VALUE texts, as `--set KEY=VALUE` takes them (in the file's
+// order); checking them is the settings table's (settings/settings.hpp).
+std::vector<std::pair<std::string, std::string>> preset_settings(const Preset& preset,
+                                                                 std::vector<std::string>* problems);
 
 // Applies the preset's values and camera over `state` (which holds the scene's defaults or
 // more). Every problem — a key the scene does not have, a value of the wrong type or outside its

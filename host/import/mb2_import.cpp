@@ -1,0 +1,621 @@
+#include "import/mb2_import.hpp"
+
+#include "import/fract_values.hpp"
+#include "import/mb2_defaults.hpp"
+#include "io/echo.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace fr {
+namespace {
+
+using Kind = ImportNote::Kind;
+
+// Mandelbulber2 2.20's formula ids that the scene has, with its kind names (mandelbulber.c).
+struct Formula {
+  int id;
+  const char* kind;             // the scene's choice name
+  const char* estimate;         // the analytic estimate of the formula alone
+  const char* hybrid_estimate;  // its DE-function family in a hybrid: linear, logarithmic, pk
+  bool adds_c;                  // c added unless dont_add_c_constant (else only with it)
+  double bailout;               // its default bailout
+};
+const Formula kFormulas[] = {
+    {2, "mandelbulb", "logarithmic", "logarithmic", true, 10},
+    {3, "power2", "logarithmic", "logarithmic", true, 10},
+    {4, "hypercomplex", "logarithmic", "logarithmic", true, 10},
+    {5, "quaternion", "logarithmic", "logarithmic", true, 10},
+    {7, "menger", "ifs", "linear", false, 10},
+    {8, "mandelbox", "linear", "linear", true, 100},
+    {10, "kifs", "ifs", "linear", false, 100},
+    {103, "pseudo_kleinian", "pseudo_kleinian", "pseudo_kleinian", false, 100},
+};
+
+// Names of other formulas the examples use, for refusals that say what the formula is.
+const std::map<int, const char*> kOtherFormulaNames = {
+    {11, "xenodreambuie"},        {13, "mandelbulb2"},          {14, "mandelbulb3"},
+    {15, "mandelbulb4"},          {16, "box_fold_bulb_pow2"},   {17, "mandelbox_smooth"},
+    {18, "mandelbox_vary_scale4d"}, {19, "aexion"},             {20, "benesi"},
+    {21, "bristorbrot"},          {101, "pseudo_kleinian_std_de"}, {104, "pseudo_kleinian_mod1"},
+    {117, "pseudo_kleinian_mod2"}};
+
+const Formula* find_formula(long long id) {
+  for (const Formula& f : kFormulas)
+    if (f.id == id) return &f;
+  return nullptr;
+}
+
+// Each kind's parameters: the scene's key and the [fractal_N] key it comes from.
+struct KindParam {
+  const char* scene_key;
+  const char* fract_key;
+  enum Type { Number, Vec3, Bool, Degrees, Degrees3, Direction } type;
+};
+const std::map<std::string, std::vector<KindParam>> kKindParams = {
+    {"mandelbulb",
+     {{"bulb_power", "power", KindParam::Number},
+      {"bulb_alpha", "alpha_angle_offset", KindParam::Degrees},
+      {"bulb_beta", "beta_angle_offset", KindParam::Degrees}}},
+    {"mandelbox",
+     {{"box_scale", "mandelbox_scale", KindParam::Number},
+      {"box_fold_limit", "mandelbox_folding_limit", KindParam::Number},
+      {"box_fold_value", "mandelbox_folding_value", KindParam::Number},
+      {"box_min_radius", "mandelbox_folding_min_radius", KindParam::Number},
+      {"box_fixed_radius", "mandelbox_folding_fixed_radius", KindParam::Number},
+      {"box_offset", "mandelbox_offset", KindParam::Vec3},
+      {"box_main_rotation", "mandelbox_main_rotation_enabled", KindParam::Bool},
+      {"box_rotation", "mandelbox_rotation_main", KindParam::Degrees3},
+      {"box_fold_rotations", "mandelbox_rotations_enabled", KindParam::Bool},
+      {"box_rotation_neg_1", "mandelbox_rotation_neg_1", KindParam::Degrees3},
+      {"box_rotation_neg_2", "mandelbox_rotation_neg_2", KindParam::Degrees3},
+      {"box_rotation_neg_3", "mandelbox_rotation_neg_3", KindParam::Degrees3},
+      {"box_rotation_pos_1", "mandelbox_rotation_pos_1", KindParam::Degrees3},
+      {"box_rotation_pos_2", "mandelbox_rotation_pos_2", KindParam::Degrees3},
+      {"box_rotation_pos_3", "mandelbox_rotation_pos_3", KindParam::Degrees3}}},
+    {"menger", {{"menger_scale", "transf_scale_3", KindParam::Number}}},
+    {"kifs",
+     [] {
+       std::vector<KindParam> v = {
+           {"kifs_scale", "IFS_scale", KindParam::Number},
+           {"kifs_offset", "IFS_offset", KindParam::Vec3},
+           {"kifs_rotation_enabled", "IFS_rotation_enabled", KindParam::Bool},
+           {"kifs_rotation", "IFS_rotation", KindParam::Degrees3},
+           {"kifs_edge", "IFS_edge", KindParam::Vec3},
+           {"kifs_abs_x", "IFS_abs_x", KindParam::Bool},
+           {"kifs_abs_y", "IFS_abs_y", KindParam::Bool},
+           {"kifs_abs_z", "IFS_abs_z", KindParam::Bool},
+           {"kifs_menger_mode", "IFS_menger_sponge_mode", KindParam::Bool}};
+       static const char* const plane_keys[9][10] = {
+#define FR_PLANE_KEYS(i)                                                                    \
+  {"kifs_plane" #i, "IFS_enabled_" #i, "kifs_plane" #i "_direction", "IFS_direction_" #i,   \
+   "kifs_plane" #i "_distance", "IFS_distance_" #i, "kifs_plane" #i "_intensity",           \
+   "IFS_intensity_" #i, "kifs_plane" #i "_rotation", "IFS_rotations_" #i}
+           FR_PLANE_KEYS(0), FR_PLANE_KEYS(1), FR_PLANE_KEYS(2), FR_PLANE_KEYS(3), FR_PLANE_KEYS(4),
+           FR_PLANE_KEYS(5), FR_PLANE_KEYS(6), FR_PLANE_KEYS(7), FR_PLANE_KEYS(8)};
+#undef FR_PLANE_KEYS
+       for (const auto& k : plane_keys) {
+         v.push_back({k[0], k[1], KindParam::Bool});
+         v.push_back({k[2], k[3], KindParam::Direction});
+         v.push_back({k[4], k[5], KindParam::Number});
+         v.push_back({k[6], k[7], KindParam::Number});
+         v.push_back({k[8], k[9], KindParam::Degrees3});
+       }
+       return v;
+     }()},
+    {"pseudo_kleinian",
+     {{"pk_box", "transf_addition_constant_0777", KindParam::Vec3},
+      {"pk_min_r2", "transf_minimum_radius_05", KindParam::Number},
+      {"pk_tweak", "analyticDE_tweak_005", KindParam::Number},
+      {"pk_de_offset", "analyticDE_scale_1", KindParam::Number},
+      {"pk_offset", "transf_addition_constant", KindParam::Vec3}}},
+};
+
+// The pseudo-Kleinian's optional steps, which the scene does not have.
+const std::pair<const char*, const char*> kPseudoKleinianOptions[] = {
+    {"transf_function_enabledR_false", "its rotation"},
+    {"transf_function_enabledBx_false", "its box fold"},
+    {"transf_function_enabledBy_false", "its Tglad fold"},
+    {"transf_function_enabledP_false", "its prism shape"},
+    {"transf_sphere_inversion_enabled_false", "its sphere inversion"}};
+
+// Main keys that do not change the picture (views of the GUI, animation, file paths, info).
+const std::set<std::string> kNotPicture = {
+    "camera_rotation", "camera_distance_to_target", "image_width", "image_height",
+    "image_proportion", "keyframe_last_to_render", "flight_last_to_render", "frames_per_keyframe",
+    "flight_speed", "flight_rotation_speed_vector", "flight_movement_speed_vector", "info",
+    "description", "stereo_eye_distance", "stereo_mode", "analityc_DE_mode", "hdr",
+    "coloring_random_seed", "mat1_coloring_random_seed", "DOF_samples", "DOF_min_samples",
+    "DOF_max_noise", "DOF_monte_carlo", "DOF_number_of_passes", "voxel_custom_limit_enabled",
+    "file_destination", "file_background", "file_envmap", "file_lightmap", "formula_maxiter"};
+
+std::string number_text(double v) {
+  char buffer[40];
+  std::snprintf(buffer, sizeof buffer, "%.17g", v);
+  std::string s = buffer;
+  if (s.find_first_of(".en") == std::string::npos) s += ".0";
+  return s;
+}
+
+std::string vec3_text(const std::array<double, 3>& v) {
+  std::string s = "[";
+  s.append(number_text(v[0])).append(", ").append(number_text(v[1])).append(", ");
+  return s.append(number_text(v[2])).append("]");
+}
+
+// An angle in degrees brought into [-360, 360] (the scene's range): the same rotation.
+double wrap_degrees(double deg) { return std::fmod(deg, 360.0); }
+
+double length(const std::array<double, 3>& v) {
+  return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+}
+
+struct Importer {
+  explicit Importer(const FractFile& file) : f(file) {}
+  const FractFile& f;
+  Mb2Import out;
+  std::string camera_toml;
+  std::vector<std::pair<std::string, std::string>> params;    // scene key, TOML value
+  std::vector<std::pair<std::string, std::string>> settings;  // settings key, TOML value
+  std::set<std::string> handled;                               // main keys looked at
+
+  void note(Kind kind, const std::string& item, const std::string& text) {
+    out.notes.push_back({kind, item, text});
+  }
+  void refuse(const std::string& item, const std::string& text) { note(Kind::Refused, item, text); }
+
+  FractEntry main(const std::string& key) {
+    handled.insert(key);
+    return mb2_main_entry(f, key);
+  }
+  double number(const std::string& key) { return fract_number(f, key, main(key)); }
+  long long integer(const std::string& key) { return fract_integer(f, key, main(key)); }
+  bool flag(const std::string& key) { return fract_bool(f, key, main(key)); }
+  std::array<double, 3> vec3(const std::string& key) { return fract_vec3(f, key, main(key)); }
+  bool given(const std::string& key) const { return f.main.count(key) != 0; }
+
+  void param(const std::string& key, const std::string& toml) { params.emplace_back(key, toml); }
+  void setting(const std::string& key, const std::string& toml) { settings.emplace_back(key, toml); }
+
+  void run(const std::string& name);
+  void version();
+  void refuse_unsupported_features();
+  void formulas();
+  void camera();
+  void quality();
+  void look();
+  void unhandled_keys();
+  std::string toml(const std::string& name) const;
+};
+
+void Importer::version() {
+  if (f.version > kMb2NewestVersion + 1e-9) {
+    char v[32];
+    std::snprintf(v, sizeof v, "%.2f", f.version);
+    refuse("version", std::string("version ") + v +
+                          ": newer than Mandelbulber2 2.20, the format read here (2.21 changed "
+                          "fov to degrees and later versions renamed the lights)");
+  }
+}
+
+void Importer::refuse_unsupported_features() {
+  if (flag("boolean_operators")) refuse("boolean_operators", "not supported");
+  {
+    const FractEntry e = main("perspective_type");
+    const std::string t = e.value;
+    if (t != "three_point" && t != "0") refuse("perspective_type " + echo(t), "not supported");
+  }
+  for (const char* key : {"interior_mode", "iteration_threshold_mode", "limits_enabled",
+                          "box_folding", "spherical_folding", "constant_DE_threshold",
+                          "stereo_enabled"})
+    if (flag(key)) refuse(key, "not supported");
+  for (const char* key : {"fractal_position", "fractal_rotation", "repeat"}) {
+    const auto v = vec3(key);
+    if (v[0] != 0 || v[1] != 0 || v[2] != 0) refuse(key, "not supported");
+  }
+  if (number("initial_waxis") != 0) refuse("initial_waxis", "not supported");
+  if (integer("minN") > 1) refuse("minN", "a minimum iteration count is not supported");
+  if (integer("delta_DE_method") == 1)
+    refuse("delta_DE_method", "the numerical (delta) distance estimate is not supported");
+  if (flag("legacy_coordinate_system"))
+    refuse("legacy_coordinate_system", "the vertically mirrored picture is not supported yet");
+  // Primitives: enabled ones change the shape.
+  std::set<std::string> primitives;
+  for (const auto& [key, entry] : f.main) {
+    if (key.rfind("primitive_", 0) != 0) continue;
+    handled.insert(key);
+    const size_t enabled = key.rfind("_enabled");
+    if (enabled != std::string::npos && enabled + 8 == key.size() && fract_bool(f, key, entry))
+      primitives.insert(key.substr(0, enabled));
+  }
+  for (const std::string& p : primitives) refuse(p, "primitives are not supported");
+}
+
+void Importer::formulas() {
+  const bool hybrid = flag("hybrid_fractal_enable");
+  const int slots = hybrid ? kFractFormulaSlots : 1;
+  long long n = integer("N");
+  if (n < 1 || n > 1000) refuse("N", std::to_string(n) + ": 1 to 1000 iterations are supported");
+  n = std::clamp(n, 1LL, 1000LL);
+  param("iterations", std::to_string(n));
+  param("hybrid", hybrid ? "true" : "false");
+  const long long repeat_from = integer("repeat_from");
+  if (repeat_from < 1 || repeat_from > 9) refuse("repeat_from", "expected 1 to 9");
+  param("repeat_from", std::to_string(std::clamp(repeat_from, 1LL, 9LL)));
+
+  // Each slot's formula; a kind's parameters from the first slot using it, the others compared.
+  std::map<std::string, int> kind_slot;  // kind -> first slot (0-based)
+  std::map<std::string, long long> estimate_iterations;
+  double bailout_max = 1;
+  const Formula* first = nullptr;
+  for (int s = 0; s < kFractFormulaSlots; ++s) {
+    const std::string k = std::to_string(s + 1);
+    const std::string slot = "slot " + k;
+    const Formula* formula = nullptr;
+    long long id = 0;
+    if (s < slots) {
+      id = integer("formula_" + k);
+      if (!flag("fractal_enable_" + k)) id = 0;
+    }
+    if (id != 0) {
+      formula = find_formula(id);
+      if (!formula) {
+        const auto named = kOtherFormulaNames.find(static_cast<int>(id));
+        refuse(slot, "formula " + std::to_string(id) +
+                         (named != kOtherFormulaNames.end()
+                              ? std::string(" (") + named->second + ")"
+                              : (id == 1 || id == 6 || id == 9 || id == 12)
+                                    ? std::string(" (none in Mandelbulber2 2.20)")
+                                    : std::string()) +
+                         " is not supported");
+      }
+    }
+    if (s == 0 && id == 0) refuse(slot, "no formula (Mandelbulber2 draws nothing)");
+    const std::string f_key = "f" + k;
+    param(f_key, "\"" + std::string(formula ? formula->kind : "none") + "\"");
+    if (!formula) continue;
+    if (!first) first = formula;
+    note(Kind::Mapped, slot, "formula " + std::to_string(id) + " -> " + f_key + " = " + formula->kind);
+    bailout_max = std::max(bailout_max, formula->bailout);
+    long long iterations = 1, start = 0, stop = 1000;
+    bool check = true;
+    if (hybrid) {
+      iterations = integer("formula_iterations_" + k);
+      start = integer("formula_start_iteration_" + k);
+      stop = integer("formula_stop_iteration_" + k);
+      check = flag("check_for_bailout_" + k);
+      if (iterations < 1 || iterations > 1000)
+        refuse("formula_iterations_" + k, "1 to 1000 are supported");
+      if (start < 0 || start > 1000 || stop < 0 || stop > 1000)
+        refuse(slot, "start and stop iterations from 0 to 1000 are supported");
+      if (number("formula_weight_" + k) != 1)
+        refuse("formula_weight_" + k, "a weight other than 1 is not supported");
+      estimate_iterations[formula->hybrid_estimate] += std::max(iterations, 1LL);
+    }
+    param(f_key + "_iterations", std::to_string(std::clamp(iterations, 1LL, 1000LL)));
+    param(f_key + "_start", std::to_string(std::clamp(start, 0LL, 1000LL)));
+    param(f_key + "_stop", std::to_string(std::clamp(stop, 0LL, 1000LL)));
+    const bool dont_add = flag("dont_add_c_constant_" + k);
+    param(f_key + "_add_c", (formula->adds_c ? !dont_add : dont_add) ? "true" : "false");
+    param(f_key + "_check_bailout", check ? "true" : "false");
+
+    // The kind's parameters.
+    const auto& kind_params = kKindParams.count(formula->kind) ? kKindParams.at(formula->kind)
+                                                               : std::vector<KindParam>{};
+    const auto seen = kind_slot.find(formula->kind);
+    for (const KindParam& p : kind_params) {
+      const FractEntry e = mb2_fractal_entry(f, s, p.fract_key);
+      std::string value;
+      switch (p.type) {
+        case KindParam::Number:
+          value = number_text(fract_number(f, p.fract_key, e));
+          break;
+        case KindParam::Degrees:
+          value = number_text(wrap_degrees(fract_number(f, p.fract_key, e)));
+          break;
+        case KindParam::Bool:
+          value = fract_bool(f, p.fract_key, e) ? "true" : "false";
+          break;
+        case KindParam::Vec3:
+          value = vec3_text(fract_vec3(f, p.fract_key, e));
+          break;
+        case KindParam::Degrees3: {
+          auto v = fract_vec3(f, p.fract_key, e);
+          for (double& c : v) c = wrap_degrees(c);
+          value = vec3_text(v);
+          break;
+        }
+        case KindParam::Direction: {
+          auto v = fract_vec3(f, p.fract_key, e);
+          const double len = length(v);
+          if (!(len > 0)) {
+            refuse(slot, std::string(p.fract_key) + ": a plane's direction of length 0");
+            v = {1, 0, 0};
+          } else {
+            for (double& c : v) c /= len;
+          }
+          value = vec3_text(v);
+          break;
+        }
+      }
+      if (seen == kind_slot.end()) {
+        param(p.scene_key, value);
+      } else {
+        const auto it = std::find_if(params.begin(), params.end(),
+                                     [&](const auto& kv) { return kv.first == p.scene_key; });
+        if (it != params.end() && it->second != value)
+          refuse(slot, "formula " + std::to_string(id) + " (" + formula->kind + ") in slot " +
+                           std::to_string(seen->second + 1) + " too, with another " +
+                           p.fract_key + ": two different sets are not supported");
+      }
+    }
+    if (std::string(formula->kind) == "mandelbox") {
+      const double min_r = fract_number(f, "mandelbox_folding_min_radius",
+                                        mb2_fractal_entry(f, s, "mandelbox_folding_min_radius"));
+      if (!(min_r > 0)) refuse(slot, "mandelbox_folding_min_radius must be above 0");
+    }
+    if (std::string(formula->kind) == "pseudo_kleinian")
+      for (const auto& [key, what] : kPseudoKleinianOptions)
+        if (fract_bool(f, key, mb2_fractal_entry(f, s, key)))
+          refuse(slot, std::string(key) + " (" + what + ") is not supported");
+    if (std::string(formula->kind) == "kifs" && f.version <= 2.06 + 1e-9 && s < 4 &&
+        seen == kind_slot.end()) {
+      // Mandelbulber2's fix-up for files from 2.06 and before: the IFS rotation is on.
+      auto it = std::find_if(params.begin(), params.end(),
+                             [](const auto& kv) { return kv.first == "kifs_rotation_enabled"; });
+      if (it != params.end()) it->second = "true";
+    }
+    if (seen == kind_slot.end()) kind_slot.emplace(formula->kind, s);
+  }
+  if (!first) return;
+
+  // The estimate: the formula's own; in a hybrid the family with the most iterations (linear
+  // first on a tie); an explicit delta_DE_function overrides either.
+  long long function = integer("delta_DE_function");
+  if (f.version < 2.20 - 1e-9 && integer("delta_DE_method") == 0) function = 0;
+  std::string estimate;
+  if (function == 0) {
+    if (!hybrid) {
+      estimate = first->estimate;
+    } else {
+      long long best = -1;
+      for (const char* family : {"linear", "logarithmic", "pseudo_kleinian"}) {
+        const auto it = estimate_iterations.find(family);
+        if (it != estimate_iterations.end() && it->second > best) {
+          best = it->second;
+          estimate = family;
+        }
+      }
+    }
+  } else if (function == 1) {
+    estimate = "linear";
+  } else if (function == 2) {
+    estimate = "logarithmic";
+  } else if (function == 3) {
+    estimate = "pseudo_kleinian";
+  } else {
+    refuse("delta_DE_function", std::to_string(function) +
+                                    (function == 4 ? " (Jos-Kleinian)" : function == 5 ? " (dIFS)" : "") +
+                                    " is not supported");
+    estimate = "linear";
+  }
+  param("estimate", "\"" + estimate + "\"");
+  param("linear_offset", number_text(hybrid && estimate == "linear" ? number("linear_DE_offset") : 0));
+
+  const double bailout = flag("use_default_bailout") ? (hybrid ? bailout_max : first->bailout)
+                                                     : number("bailout");
+  if (!(bailout >= 0.01 && bailout <= 1e10)) refuse("bailout", "0.01 to 1e10 is supported");
+  param("bailout", number_text(std::clamp(bailout, 0.01, 1e10)));
+
+  const bool julia = flag("julia_mode");
+  const auto julia_c = vec3("julia_c");
+  std::array<double, 3> factor;
+  {
+    // Files from 2.04 and before wrote the factor as one number.
+    const FractEntry e = main("fractal_constant_factor");
+    if (e.value.find(' ') == std::string::npos) {
+      const double v = fract_number(f, "fractal_constant_factor", e);
+      factor = {v, v, v};
+    } else {
+      factor = fract_vec3(f, "fractal_constant_factor", e);
+    }
+  }
+  param("julia", julia ? "true" : "false");
+  param("julia_c", vec3_text(julia_c));
+  param("constant_factor", vec3_text(factor));
+
+  // The bound: the bulbs' escape radius where it is proven (|z'| >= |z|^2 - |c|, so an orbit
+  // beyond max(2, |c|) escapes); else everything Mandelbulber2 can see, view_distance_max from
+  // its eye.
+  bool squaring = true;
+  for (const auto& [kind, slot] : kind_slot) {
+    if (kind == "power2" || kind == "quaternion") continue;
+    if (kind == "mandelbulb") {
+      const double p = fract_number(f, "power", mb2_fractal_entry(f, slot, "power"));
+      if (p >= 2) continue;
+    }
+    squaring = false;
+  }
+  const double max_factor = std::max({std::fabs(factor[0]), std::fabs(factor[1]), std::fabs(factor[2])});
+  const std::array<double, 3> jc = {julia_c[0] * factor[0], julia_c[1] * factor[1], julia_c[2] * factor[2]};
+  double bound;
+  if (squaring && !julia && max_factor <= 1) {
+    bound = 2.05;
+  } else if (squaring && julia) {
+    bound = std::max(2.0, length(jc)) * 1.025;
+  } else {
+    bound = length(vec3("camera")) + number("view_distance_max");
+  }
+  param("bound", number_text(std::clamp(bound, 0.1, 1e6)));
+}
+
+void Importer::camera() {
+  const auto eye = vec3("camera"), target = vec3("target"), top = vec3("camera_top");
+  const auto w = integer("image_width"), h = integer("image_height");
+  const double fov = number("fov");
+  if (eye == target) refuse("camera", "the camera is at the target");
+  if (!(fov > 0 && fov < 100)) refuse("fov", "expected a value above 0 (the image plane's height at unit distance)");
+  if (w < 1 || h < 1 || w > 65535 || h > 65535) refuse("image_width", "a size of 1 to 65535 pixels");
+  const double aspect = static_cast<double>(std::max(w, 1LL)) / static_cast<double>(std::max(h, 1LL));
+  // Mandelbulber2's fov is the image plane's height at unit distance; Fractalis's fov_deg the
+  // horizontal angle, so the same picture at Mandelbulber2's aspect.
+  const double fov_deg = 2 * std::atan(std::clamp(fov, 1e-9, 99.0) * aspect / 2) * 180 / M_PI;
+  std::ostringstream c;
+  c << "eye = " << vec3_text(eye) << "\ntarget = " << vec3_text(target)
+    << "\nup = " << vec3_text(top) << "\nfov_deg = " << number_text(fov_deg) << "\n";
+  camera_toml = c.str();
+  note(Kind::Mapped, "camera, target, camera_top, fov",
+       "the view (fov " + number_text(fov) + " -> fov_deg " + number_text(fov_deg) + ")");
+  note(Kind::Approximated, "image_width, image_height",
+       std::to_string(w) + "x" + std::to_string(h) + ": the view keeps its width; render at the "
+       "same aspect (--size " + std::to_string(w) + "x" + std::to_string(h) +
+       " or a multiple) for Mandelbulber2's height");
+  handled.insert("camera_rotation");
+  handled.insert("camera_distance_to_target");
+}
+
+void Importer::quality() {
+  const double detail = number("detail_level");
+  if (!(detail > 0)) refuse("detail_level", "expected a value above 0");
+  // Mandelbulber2 hits at distance < |eye - p| fov / (height detail_level): one pixel's
+  // footprint over detail_level, Fractalis's k times the footprint.
+  const double k = 1 / std::max(detail, 1e-12);
+  if (k > 100) note(Kind::Approximated, "detail_level", "below 0.01: hit threshold factor 100");
+  setting("render.hit_threshold_k", number_text(std::min(k, 100.0)));
+  note(Kind::Mapped, "detail_level", "render.hit_threshold_k = " + number_text(std::min(k, 100.0)));
+  const double de_factor = number("DE_factor");
+  if (!(de_factor > 0)) refuse("DE_factor", "expected a value above 0");
+  if (de_factor > 1)
+    note(Kind::Approximated, "DE_factor",
+         number_text(de_factor) + ": steps longer than the estimate are not taken (step scale 1)");
+  const double step = std::clamp(de_factor, 1e-3, 1.0);
+  setting("render.step_scale", number_text(step));
+  note(Kind::Mapped, "DE_factor", "render.step_scale = " + number_text(step));
+  if (step < 1)
+    setting("render.max_steps", std::to_string(std::min(10000, static_cast<int>(std::ceil(160 / step)))));
+  number("view_distance_max");  // read by the bound
+  number("view_distance_min");
+  number("DE_thresh");
+}
+
+void Importer::look() {
+  const bool light = flag("main_light_enable");
+  const bool shadows = flag("shadows_enabled");
+  setting("render.effects.shadows", light && shadows ? "true" : "false");
+  for (const char* key : {"main_light_alpha", "main_light_beta", "main_light_colour",
+                          "main_light_intensity", "main_light_position_relative"})
+    if (given(key)) note(Kind::Ignored, key, "the scene's own lights are used");
+  handled.insert({"main_light_alpha", "main_light_beta", "main_light_colour",
+                  "main_light_intensity", "main_light_position_relative"});
+  const bool ao = flag("ambient_occlusion_enabled");
+  setting("render.effects.ao", ao ? "true" : "false");
+  if (ao) note(Kind::Approximated, "ambient_occlusion_enabled", "Fractalis's step-count occlusion");
+  handled.insert({"ambient_occlusion", "ambient_occlusion_mode", "ambient_occlusion_quality",
+                  "ambient_occlusion_fast_tune"});
+  const bool glow = flag("glow_enabled");
+  setting("render.effects.glow", glow ? "true" : "false");
+  if (glow) note(Kind::Approximated, "glow_enabled", "Fractalis's glow, its own colour and strength");
+  handled.insert({"glow_intensity", "glow_color_1", "glow_color_2"});
+  const bool fog = flag("basic_fog_enabled");
+  setting("render.effects.fog", fog ? "true" : "false");
+  if (fog) note(Kind::Approximated, "basic_fog_enabled", "Fractalis's exponential fog");
+  handled.insert({"basic_fog_visibility", "basic_fog_color"});
+  if (flag("DOF_enabled"))
+    note(Kind::Ignored, "DOF_enabled", "Mandelbulber2's depth of field is a blur after rendering");
+  handled.insert({"DOF_focus", "DOF_radius"});
+  setting("render.effects.dof", "false");
+  const bool reflections = flag("raytraced_reflections");
+  setting("render.effects.reflections", reflections ? "true" : "false");
+  if (reflections) {
+    setting("render.max_bounces", std::to_string(std::clamp(integer("reflections_max"), 0LL, 8LL)));
+    note(Kind::Approximated, "raytraced_reflections", "mirror bounces with reflectivity mat1_reflectance");
+  }
+  setting("render.reflectivity", number_text(std::clamp(number("mat1_reflectance"), 0.0, 1.0)));
+  for (int i = 1; i <= 4; ++i) {
+    const std::string k = std::to_string(i);
+    if (flag("aux_light_enabled_" + k))
+      note(Kind::Ignored, "aux_light_enabled_" + k, "auxiliary lights are not imported");
+    handled.insert({"aux_light_position_" + k, "aux_light_colour_" + k, "aux_light_intensity_" + k});
+  }
+  for (const char* key : {"background_color_1", "background_color_2", "background_color_3",
+                          "background_3_colors_enable", "brightness", "contrast", "gamma"})
+    if (given(key)) note(Kind::Ignored, key, "Fractalis's own sky and tone mapping");
+  handled.insert({"background_color_1", "background_color_2", "background_color_3",
+                  "background_3_colors_enable", "brightness", "contrast", "gamma"});
+}
+
+void Importer::unhandled_keys() {
+  for (const auto& [key, entry] : f.main)
+    if (!handled.count(key) && !kNotPicture.count(key)) note(Kind::Ignored, key, "not imported");
+}
+
+std::string Importer::toml(const std::string& name) const {
+  std::ostringstream t;
+  t << "# Imported by `fractalis import` from " << f.file.filename().string()
+    << " (Mandelbulber2 settings, version " << number_text(f.version) << ")\n";
+  t << "scene = \"" << kMb2SceneId << "\"\n";
+  std::string escaped;
+  for (char c : name) {
+    if (c == '"' || c == '\\') escaped += '\\';
+    if (static_cast<unsigned char>(c) >= 0x20) escaped += c;
+  }
+  t << "name = \"" << escaped << "\"\n";
+  t << "description = \"Imported from Mandelbulber2.\"\n";
+  t << "[params]\n";
+  for (const auto& [k, v] : params) t << k << " = " << v << "\n";
+  t << "[camera]\n" << camera_toml;
+  t << "[settings]\n";
+  for (const auto& [k, v] : settings) t << "\"" << k << "\" = " << v << "\n";
+  return t.str();
+}
+
+void Importer::run(const std::string& name) {
+  version();
+  refuse_unsupported_features();
+  formulas();
+  camera();
+  quality();
+  look();
+  unhandled_keys();
+  if (out.faithful()) out.preset_toml = toml(name);
+}
+
+}  // namespace
+
+const char* import_note_kind_name(ImportNote::Kind kind) {
+  switch (kind) {
+    case Kind::Mapped:
+      return "mapped";
+    case Kind::Approximated:
+      return "approximated";
+    case Kind::Ignored:
+      return "ignored";
+    case Kind::Refused:
+      return "refused";
+  }
+  return "?";
+}
+
+bool Mb2Import::faithful() const {
+  return std::none_of(notes.begin(), notes.end(),
+                      [](const ImportNote& n) { return n.kind == Kind::Refused; });
+}
+
+std::vector<std::string> Mb2Import::refusals() const {
+  std::vector<std::string> out;
+  for (const ImportNote& n : notes)
+    if (n.kind == Kind::Refused) out.push_back(n.item + ": " + n.text);
+  return out;
+}
+
+Mb2Import import_fract(const FractFile& file, const std::string& name) {
+  Importer importer(file);
+  importer.run(name);
+  return std::move(importer.out);
+}
+
+}  // namespace fr
