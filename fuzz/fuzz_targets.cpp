@@ -1,5 +1,8 @@
 #include "fuzz_targets.hpp"
 
+#include "import/fract_file.hpp"
+#include "import/mb2_import.hpp"
+
 #include "cli/cli.hpp"
 #include "cli/options.hpp"
 #include "path/camera_path.hpp"
@@ -268,6 +271,16 @@ int fuzz_camera_path(const uint8_t* data, size_t size) {
   for (int i = -1; i <= 33; ++i) {
     const PathSample s = sample_camera_path(*path, scene, path->start_s() + span * i / 32.0);
     (void)check_camera(s.camera);
+  }
+  return 0;
+}
+
+int fuzz_fract_file(const uint8_t* data, size_t size) {
+  try {
+    const FractFile f = parse_fract(std::string(reinterpret_cast<const char*>(data), size), "fuzz.fract");
+    const Mb2Import imported = import_fract(f, "fuzz");
+    if (imported.faithful() && imported.preset_toml.empty()) __builtin_trap();
+  } catch (const FractError&) {
   }
   return 0;
 }

@@ -34,6 +34,10 @@ int fuzz_camera_path(const uint8_t* data, size_t size);
 // (plugin/descriptor_copy.hpp), the only code that reads plugin memory.
 int fuzz_scene_desc_copy(const uint8_t* data, size_t size);
 
+// A Mandelbulber2 settings file (import/fract_file.hpp), read and imported as a preset
+// (import/mb2_import.hpp): refused with a FractError or notes, never a crash.
+int fuzz_fract_file(const uint8_t* data, size_t size);
+
 struct FuzzTarget {
   const char* name;  // its folder under fuzz/corpus and fuzz/regressions
   int (*run)(const uint8_t* data, size_t size);
@@ -42,6 +46,7 @@ inline constexpr FuzzTarget kFuzzTargets[] = {
     {"settings_file", fuzz_settings_file},     {"set_override", fuzz_set_override},
     {"command_line", fuzz_command_line},       {"scene_descriptor", fuzz_scene_descriptor},
     {"scene_desc_copy", fuzz_scene_desc_copy}, {"camera_path", fuzz_camera_path},
+    {"fract_file", fuzz_fract_file},
 };
 
 }  // namespace fr

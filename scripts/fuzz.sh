@@ -9,7 +9,7 @@ fractalis_install_packages
 seconds="${1:-20}"
 shift || true
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(settings_file set_override command_line scene_descriptor scene_desc_copy camera_path)
+[ ${#targets[@]} -eq 0 ] && targets=(settings_file set_override command_line scene_descriptor scene_desc_copy camera_path fract_file)
 
 FRACTALIS_BUILD="$FRACTALIS_ROOT/build-fuzz"
 # Without MPI: the fuzz targets need none, and so CI also builds the host library without it here

@@ -221,8 +221,6 @@ void Importer::refuse_unsupported_features() {
   if (integer("minN") > 1) refuse("minN", "a minimum iteration count is not supported");
   if (integer("delta_DE_method") == 1)
     refuse("delta_DE_method", "the numerical (delta) distance estimate is not supported");
-  if (flag("legacy_coordinate_system"))
-    refuse("legacy_coordinate_system", "the vertically mirrored picture is not supported yet");
   // Primitives: enabled ones change the shape.
   std::set<std::string> primitives;
   for (const auto& [key, entry] : f.main) {
@@ -356,7 +354,7 @@ void Importer::formulas() {
     if (std::string(formula->kind) == "mandelbox") {
       const double min_r = fract_number(f, "mandelbox_folding_min_radius",
                                         mb2_fractal_entry(f, s, "mandelbox_folding_min_radius"));
-      if (!(min_r > 0)) refuse(slot, "mandelbox_folding_min_radius must be above 0");
+      if (min_r < 0) refuse(slot, "mandelbox_folding_min_radius below 0");
     }
     if (std::string(formula->kind) == "pseudo_kleinian")
       for (const auto& [key, what] : kPseudoKleinianOptions)
@@ -474,6 +472,9 @@ void Importer::camera() {
        std::to_string(w) + "x" + std::to_string(h) + ": the view keeps its width; render at the "
        "same aspect (--size " + std::to_string(w) + "x" + std::to_string(h) +
        " or a multiple) for Mandelbulber2's height");
+  const bool mirror = flag("legacy_coordinate_system");
+  setting("render.mirror_vertical", mirror ? "true" : "false");
+  if (mirror) note(Kind::Mapped, "legacy_coordinate_system", "render.mirror_vertical = true");
   handled.insert("camera_rotation");
   handled.insert("camera_distance_to_target");
 }

@@ -8,7 +8,7 @@
 #include <numbers>
 
 namespace fr {
-CameraRays make_camera_rays(const fr_camera& c, int k, int m) {
+CameraRays make_camera_rays(const fr_camera& c, int k, int m, bool mirror_vertical) {
   const glm::dvec3 t = to_dvec3(c.target) - to_dvec3(c.eye);
   const glm::dvec3 b = glm::cross(effective_up(c), t);
   const glm::dvec3 v = glm::cross(t, b);
@@ -27,6 +27,10 @@ CameraRays make_camera_rays(const fr_camera& c, int k, int m) {
   r.pixel_step_y = m > 1 ? (2.0 * g_y / (m - 1)) * v_n : glm::dvec3(0.0);
   r.first_pixel_dir = t_n - (k > 1 ? g_x : 0.0) * b_n - (m > 1 ? g_y : 0.0) * v_n;
   r.pixel_angle_rad = k > 1 ? std::atan(2.0 * g_x / (k - 1)) : 2.0 * std::atan(g_x);
+  if (mirror_vertical) {
+    r.first_pixel_dir += r.pixel_step_y * static_cast<double>(m - 1);
+    r.pixel_step_y = -r.pixel_step_y;
+  }
   return r;
 }
 

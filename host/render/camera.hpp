@@ -36,7 +36,10 @@ struct CameraRays {
 
 // The model's vectors for a width_px x height_px image (each >= 1). The camera must pass
 // check_camera (scene/scene_data.hpp).
-CameraRays make_camera_rays(const fr_camera& camera, int width_px, int height_px);
+// mirror_vertical: the picture mirrored top to bottom (row y shows the ray of row height - 1 - y),
+// as Mandelbulber2's legacy_coordinate_system draws; no camera move gives a mirror image.
+CameraRays make_camera_rays(const fr_camera& camera, int width_px, int height_px,
+                            bool mirror_vertical = false);
 
 // Unit direction of the ray through image pixel (x, y), row 0 at the top; the same arithmetic
 // as kernels/rays.cl, in double.

@@ -234,6 +234,8 @@ struct RenderSettings {
   float aperture_radius = 0.0f;  // thin lens, world units; 0: no depth of field
   float focus_distance = 0.0f;   // world units; 0: the distance from eye to target
   int aperture_blades = 0;       // the aperture's sides (bokeh shape); below 3: round
+  // The picture mirrored top to bottom (Mandelbulber2's legacy_coordinate_system; camera.hpp).
+  bool mirror_vertical = false;
   // An edge-avoiding filter over the accumulated picture, guided by the first hits' normals,
   // depths and albedos (kernels/denoise.cl): for path tracing at few samples.
   bool denoise = false;
@@ -318,6 +320,7 @@ void visit_render_fields(Settings& s, Visit&& visit) {
   visit("aperture_radius", s.aperture_radius);
   visit("focus_distance", s.focus_distance);
   visit("aperture_blades", s.aperture_blades);
+  visit("mirror_vertical", s.mirror_vertical);
   visit("denoise", s.denoise);
   visit("albedo", s.albedo);
   visit("ambient", s.ambient);
@@ -346,7 +349,7 @@ constexpr size_t aggregate_member_count() {
 }  // namespace detail
 // RenderSettings' direct members (the window counts once): a new field changes the count. List
 // it in visit_render_fields, then update this number.
-static_assert(detail::aggregate_member_count<RenderSettings>() == 67,
+static_assert(detail::aggregate_member_count<RenderSettings>() == 68,
               "RenderSettings changed: list the new field in visit_render_fields");
 
 }  // namespace fr

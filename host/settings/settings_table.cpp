@@ -383,6 +383,10 @@ std::vector<SettingSpec> make_table() {
       "render.aperture_blades", 0, 32,
       "Sides of the lens's aperture, the shape of out-of-focus highlights (bokeh): 0 (or 1, 2) "
       "is round."));
+  t.push_back(bool_setting<&S::render, &R::mirror_vertical>(
+      "render.mirror_vertical",
+      "Mirror the picture top to bottom, as Mandelbulber2's legacy_coordinate_system does\n"
+      "(imported .fract files set it)."));
   t.push_back(in_overlay(number_setting<&S::render, &R::aperture_radius>(
                              "render.aperture", 0, 10, false,
                              "Thin-lens aperture radius in world units; 0 is a pinhole (no depth "

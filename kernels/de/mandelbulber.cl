@@ -167,7 +167,7 @@ inline void mb2_mandelbox(vec3_t* z, real_t* w, real_t* dr, const mb2_mandelbox_
   const real_t r2 = v3_length2(q) + *w * *w;
   q = v3_add(q, b->offset);
   const real_t factor =
-      lane_select(r2 < to_real(b->min_r2), to_real(b->fixed_r2 / b->min_r2),
+      lane_select(r2 < to_real(b->min_r2), to_real(b->fixed_r2 / fmax(b->min_r2, FR_SCALAR_MIN)),
                   lane_select(r2 < to_real(b->fixed_r2),
                               to_real(b->fixed_r2) / fmax(r2, to_real(FR_SCALAR_MIN)), to_real(1)));
   q = v3_sub(v3_scale(q, factor), b->offset);

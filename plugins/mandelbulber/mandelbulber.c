@@ -104,7 +104,7 @@ static const fr_param_desc box_fold_value = FR_FLOAT_PARAM(
     "+-value - a.", 2, -100, 100, 0);
 static const fr_param_desc box_min_radius = FR_FLOAT_PARAM(
     "box_min_radius", "Min radius", "Mandelbox", "Inside it the sphere fold scales by "
-    "(fixed / min)^2.", 0.5, 1e-4, 100, 0);
+    "(fixed / min)^2 (0: never).", 0.5, 0, 100, 0);
 static const fr_param_desc box_fixed_radius = FR_FLOAT_PARAM(
     "box_fixed_radius", "Fixed radius", "Mandelbox", "Inside it the sphere fold inverts.", 1,
     1e-4, 100, 0);

@@ -1,0 +1,328 @@
+// The Mandelbulber2 import: the .fract reader on hand-written snippets, the mapping (defaults,
+// camera, hybrid rules, refusals) against Mandelbulber2 2.20's rules worked out here, and the
+// mandelbulber scene's formula steps on the device (double) against the formulas written out in
+// double in this file.
+#include "import/fract_file.hpp"
+#include "import/fract_values.hpp"
+#include "import/mb2_import.hpp"
+#include "path/preset.hpp"
+#include "plugin/scene_instance.hpp"
+#include "render/de_probe.hpp"
+#include "test_support.hpp"
+
+#include <gtest/gtest.h>
+#include <toml++/toml.h>
+
+#include <cmath>
+#include <numbers>
+
+namespace fr {
+namespace {
+
+const std::string kHeader = "# Mandelbulber settings file\n# version 2.20\n# only modified parameters\n";
+
+FractFile parse(const std::string& body) { return parse_fract(kHeader + body, "test.fract"); }
+
+std::string fract_error(const std::string& text) {
+  try {
+    parse_fract(text, "bad.fract");
+  } catch (const FractError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+TEST(FractFile, ReadsBothDecimalSeparatorsColoursAndVectors) {
+  const FractFile f = parse(
+      "[main_parameters]\nDE_factor 0,25;\ndetail_level 1.5;\ncamera 1,5 -2,661 1e-3;\n"
+      "glow_color_1 ff00 9700 0;\nperspective_type three_point;\n[fractal_1]\npower 8;\n"
+      "[keyframes]\nframe;main_camera_x\n0;1,5\n");
+  EXPECT_DOUBLE_EQ(fract_number(f, "DE_factor", f.main.at("DE_factor")), 0.25);
+  EXPECT_DOUBLE_EQ(fract_number(f, "detail_level", f.main.at("detail_level")), 1.5);
+  const auto cam = fract_vec3(f, "camera", f.main.at("camera"));
+  EXPECT_DOUBLE_EQ(cam[0], 1.5);
+  EXPECT_DOUBLE_EQ(cam[1], -2.661);
+  EXPECT_DOUBLE_EQ(cam[2], 1e-3);
+  const auto glow = fract_colour(f, "glow_color_1", f.main.at("glow_color_1"));
+  EXPECT_DOUBLE_EQ(glow[0], 0xff00 / 65535.0);
+  EXPECT_DOUBLE_EQ(glow[1], 0x9700 / 65535.0);
+  EXPECT_DOUBLE_EQ(glow[2], 0.0);
+  EXPECT_EQ(f.fractal[0].at("power").value, "8");
+  EXPECT_EQ(f.main.at("camera").line, 7);  // after the 3 header lines and the section
+  EXPECT_DOUBLE_EQ(f.version, 2.20);
+  EXPECT_TRUE(f.only_modified);
+}
+
+// Every kind of bad input: a clear error naming the file, the line and the key.
+TEST(FractFile, BadInputNamesFileLineAndKey) {
+  EXPECT_NE(fract_error("").find("bad.fract: empty file"), std::string::npos);
+  EXPECT_NE(fract_error("[main_parameters]\nN 5;\n").find("not a Mandelbulber settings file"),
+            std::string::npos);
+  EXPECT_NE(fract_error(kHeader + std::string("[main_parameters]\nN 5\0;\n", 23)).find("control byte"),
+            std::string::npos);
+  std::string noise = kHeader;
+  for (int i = 0; i < 300; ++i) noise += static_cast<char>((i * 37) % 256);
+  EXPECT_NE(fract_error(noise).find("bad.fract:"), std::string::npos);
+  EXPECT_NE(fract_error(kHeader + "[main_parameters]\nN " + std::string(200000, '9') + ";\n")
+                .find("bad.fract:5: a line of 200003 characters"),
+            std::string::npos);
+  EXPECT_NE(fract_error(kHeader + "[main_parameters]\nN 5;\nN 6;\n").find("bad.fract:6: N: given twice"),
+            std::string::npos);
+  EXPECT_NE(fract_error(kHeader + "N 5;\n").find("before the first section"), std::string::npos);
+  const FractFile f = parse("[main_parameters]\nN 1e308;\ncamera nan nan nan;\nformula_1 abc;\n");
+  try {
+    fract_integer(f, "N", f.main.at("N"));
+    ADD_FAILURE() << "N 1e308 read as an integer";
+  } catch (const FractError& e) {
+    EXPECT_NE(std::string(e.what()).find("test.fract:5: N: expected an integer"), std::string::npos) << e.what();
+  }
+  try {
+    fract_vec3(f, "camera", f.main.at("camera"));
+    ADD_FAILURE() << "camera nan read";
+  } catch (const FractError& e) {
+    EXPECT_NE(std::string(e.what()).find("test.fract:6: camera: expected three finite numbers"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+toml::table preset_of(const Mb2Import& imported) {
+  EXPECT_TRUE(imported.faithful()) << (imported.refusals().empty() ? "" : imported.refusals()[0]);
+  return toml::parse(imported.preset_toml);
+}
+
+double num(const toml::table& t, const char* table, const char* key) {
+  return t[table][key].value<double>().value_or(NAN);
+}
+
+// An absent key takes Mandelbulber2 2.20's default: the power-9 bulb, N 250, bailout 10, the
+// camera at (3, -6, 2).
+TEST(Mb2Import, AbsentKeysTakeMandelbulber2Defaults) {
+  const toml::table t = preset_of(import_fract(parse("[main_parameters]\n"), "x"));
+  EXPECT_EQ(t["scene"].value<std::string>(), "mandelbulber");
+  EXPECT_EQ(t["params"]["f1"].value<std::string>(), "mandelbulb");
+  EXPECT_EQ(t["params"]["f2"].value<std::string>(), "none");
+  EXPECT_DOUBLE_EQ(num(t, "params", "bulb_power"), 9);
+  EXPECT_EQ(t["params"]["iterations"].value<int64_t>(), 250);
+  EXPECT_DOUBLE_EQ(num(t, "params", "bailout"), 10);
+  EXPECT_EQ(t["params"]["estimate"].value<std::string>(), "logarithmic");
+  EXPECT_DOUBLE_EQ(t["camera"]["eye"][1].value<double>().value_or(0), -6);
+  EXPECT_DOUBLE_EQ(num(t, "settings", "render.hit_threshold_k"), 1);
+}
+
+// Mandelbulber2's fov is the image plane's height at unit distance; the preset's fov_deg is the
+// horizontal angle at the file's aspect: 2 atan(fov * w / h / 2).
+TEST(Mb2Import, FieldOfViewFromTheImagePlane) {
+  const toml::table t = preset_of(import_fract(
+      parse("[main_parameters]\nfov 0,6;\nimage_width 1600;\nimage_height 900;\n"), "x"));
+  EXPECT_NEAR(num(t, "camera", "fov_deg"), 2 * std::atan(0.6 * 16.0 / 9.0 / 2) * 180 / std::numbers::pi,
+              1e-9);
+}
+
+// A hybrid: the estimate family with the most iterations (linear on a tie), the largest default
+// bailout, c added as each formula's rule says (the Menger sponge's inverted).
+TEST(Mb2Import, HybridRules) {
+  const toml::table t = preset_of(import_fract(
+      parse("[main_parameters]\nhybrid_fractal_enable true;\nformula_1 2;\nformula_2 8;\n"
+            "formula_3 7;\nformula_iterations_1 3;\ndont_add_c_constant_3 true;\n"),
+      "x"));
+  EXPECT_EQ(t["params"]["f2"].value<std::string>(), "mandelbox");
+  EXPECT_EQ(t["params"]["f3"].value<std::string>(), "menger");
+  // logarithmic 3 iterations (bulb) against linear 2 (box and sponge): logarithmic.
+  EXPECT_EQ(t["params"]["estimate"].value<std::string>(), "logarithmic");
+  EXPECT_DOUBLE_EQ(num(t, "params", "bailout"), 100);
+  EXPECT_EQ(t["params"]["f2_add_c"].value<bool>(), true);
+  EXPECT_EQ(t["params"]["f3_add_c"].value<bool>(), true);  // dont_add_c on the sponge adds it
+  const toml::table tie = preset_of(import_fract(
+      parse("[main_parameters]\nhybrid_fractal_enable true;\nformula_1 2;\nformula_2 8;\n"), "x"));
+  EXPECT_EQ(tie["params"]["estimate"].value<std::string>(), "linear");
+  const toml::table single = preset_of(import_fract(parse("[main_parameters]\nformula_1 7;\n"), "x"));
+  EXPECT_EQ(single["params"]["estimate"].value<std::string>(), "ifs");
+  EXPECT_EQ(single["params"]["f1_add_c"].value<bool>(), false);
+}
+
+std::vector<std::string> refusals(const std::string& body) {
+  return import_fract(parse(body), "x").refusals();
+}
+
+TEST(Mb2Import, RefusesWhatWouldChangeTheShape) {
+  auto has = [](const std::vector<std::string>& r, const std::string& text) {
+    for (const auto& s : r)
+      if (s == text) return true;
+    ADD_FAILURE() << "no refusal '" << text << "' in " << r.size() << " refusals"
+                  << (r.empty() ? "" : ": " + r[0]);
+    return false;
+  };
+  has(refusals("[main_parameters]\nformula_1 16;\n"),
+      "slot 1: formula 16 (box_fold_bulb_pow2) is not supported");
+  has(refusals("[main_parameters]\nhybrid_fractal_enable true;\nformula_2 16;\n"),
+      "slot 2: formula 16 (box_fold_bulb_pow2) is not supported");
+  has(refusals("[main_parameters]\nprimitive_water_1_enabled true;\n"),
+      "primitive_water_1: primitives are not supported");
+  has(refusals("[main_parameters]\nboolean_operators true;\n"), "boolean_operators: not supported");
+  has(refusals("[main_parameters]\nperspective_type equirectangular;\n"),
+      "perspective_type equirectangular: not supported");
+  EXPECT_EQ(refusals("[main_parameters]\nperspective_type 0;\n").size(), 0u);
+  EXPECT_EQ(refusals("[main_parameters]\nprimitive_water_1_enabled false;\n").size(), 0u);
+  EXPECT_EQ(parse_fract("# Mandelbulber settings file\n# version 2.25\n[main_parameters]\n", "n.fract")
+                .version,
+            2.25);
+  EXPECT_EQ(import_fract(parse_fract("# Mandelbulber settings file\n# version 2.25\n[main_parameters]\n",
+                                     "n.fract"),
+                         "x")
+                .faithful(),
+            false);
+  has(refusals("[main_parameters]\nhybrid_fractal_enable true;\nformula_1 8;\nformula_2 8;\n"
+               "[fractal_2]\nmandelbox_scale -1,5;\n"),
+      "slot 2: formula 8 (mandelbox) in slot 1 too, with another mandelbox_scale: two different "
+      "sets are not supported");
+  EXPECT_EQ(refusals("[main_parameters]\nhybrid_fractal_enable true;\nformula_1 8;\nformula_2 8;\n").size(),
+            0u);
+}
+
+// The scene's DE on the device, in double, against the formulas written out here.
+class Mb2De : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    scene = test::load_or_fail(std::filesystem::path(SCENE_PLUGIN_DIR) / "mandelbulber" PLUGIN_SUFFIX);
+    ASSERT_TRUE(scene);
+    values = make_default_state(scene->info).params;
+  }
+  void set(const char* key, double v) {
+    const int i = scene->info.find_param(key);
+    ASSERT_GE(i, 0) << key;
+    values[i].v[0] = v;
+  }
+  void set3(const char* key, double x, double y, double z) {
+    const int i = scene->info.find_param(key);
+    ASSERT_GE(i, 0) << key;
+    values[i].v[0] = x;
+    values[i].v[1] = y;
+    values[i].v[2] = z;
+  }
+  void choose(const char* key, const char* name) {
+    const int i = scene->info.find_param(key);
+    ASSERT_GE(i, 0) << key;
+    values[i].v[0] = scene->info.params[i].choice_index(name);
+  }
+  float de(std::array<float, 3> p) {
+    return probe_de(test::runtime(), scene->info, values, {p}, 16, Precision::Double)[0];
+  }
+  std::shared_ptr<const LoadedScene> scene;
+  std::vector<fr_value> values;
+};
+
+struct V4 {
+  double x, y, z, w;
+  double length() const { return std::sqrt(x * x + y * y + z * z + w * w); }
+};
+
+double log_estimate(double r, double dr) { return std::clamp(0.5 * r * std::log(r) / dr, 0.0, 10.0); }
+
+// The power-2 bulb's map at a point, one iteration, c = p.
+TEST_F(Mb2De, Power2MapAtAPoint) {
+  choose("f1", "power2");
+  set("iterations", 1);
+  const double x = 0.5, y = 0.3, z = 0.2;
+  const double s = x * x + y * y, t = 1 - z * z / s;
+  V4 q{(x * x - y * y) * t + x, 2 * x * y * t + y, -2 * z * std::sqrt(s) + z, 0};
+  const double dr = 2 * std::sqrt(x * x + y * y + z * z);
+  EXPECT_NEAR(de({0.5f, 0.3f, 0.2f}), log_estimate(q.length(), dr), 1e-6);
+}
+
+// The hypercomplex square at a point, one iteration: w becomes -2 y z and counts in r.
+TEST_F(Mb2De, HypercomplexMapAtAPoint) {
+  choose("f1", "hypercomplex");
+  set("iterations", 1);
+  const double x = 0.6, y = -0.4, z = 0.7;
+  V4 q{x * x - y * y - z * z + x, 2 * x * y + y, 2 * x * z + z, -2 * y * z};
+  const double dr = 2 * std::sqrt(x * x + y * y + z * z);
+  EXPECT_NEAR(de({0.6f, -0.4f, 0.7f}), log_estimate(q.length(), dr), 1e-6);
+}
+
+// A kaleidoscopic IFS plane's reflection: normal (0, 0, 1) at distance 0.1 reflects z = -0.5 to
+// 0.7; then scale 2 about the offset (1, 0, 0): (-0.4, 0.4, 1.4), linear estimate r / 2.
+TEST_F(Mb2De, KifsPlaneReflection) {
+  choose("f1", "kifs");
+  choose("estimate", "linear");
+  set("iterations", 1);
+  set("bailout", 100);
+  set("f1_add_c", 0);
+  set("kifs_plane0", 1);
+  set3("kifs_plane0_direction", 0, 0, 1);
+  set("kifs_plane0_distance", 0.1);
+  EXPECT_NEAR(de({0.3f, 0.2f, -0.5f}), std::sqrt(0.16 + 0.16 + 1.96) / 2, 1e-6);
+  // Above the plane nothing is reflected: (0.6, 0.4, 0.4) - (1, 0, 0).
+  EXPECT_NEAR(de({0.3f, 0.2f, 0.2f}), std::sqrt(0.16 + 0.16 + 0.16) / 2, 1e-6);
+}
+
+// Mandelbulber2's bulb (latitude by asin) with beta = 90/p - 90 degrees is the classic (acos)
+// bulb: the same DE as the mandelbulb scene's at random points, power 8, the same bailout.
+TEST_F(Mb2De, AsinBulbWithBetaOffsetIsTheAcosBulb) {
+  const double power = 8;
+  set("bulb_power", power);
+  set("bulb_beta", 90 / power - 90);
+  set("iterations", 12);
+  set("bailout", 2);
+  auto classic = test::mandelbulb();
+  ASSERT_TRUE(classic);
+  auto classic_values = make_default_state(classic->info).params;
+  auto put = [&](const char* key, double v) {
+    const int i = classic->info.find_param(key);
+    ASSERT_GE(i, 0) << key;
+    classic_values[i].v[0] = v;
+  };
+  put("power", power);
+  put("iterations", 12);
+  put("bailout", 2);
+  std::vector<std::array<float, 3>> points;
+  for (int i = 0; i < 64; ++i)
+    points.push_back({static_cast<float>(std::sin(i * 1.7) * 1.1),
+                      static_cast<float>(std::cos(i * 2.3) * 1.1),
+                      static_cast<float>(std::sin(i * 0.9 + 1) * 1.1)});
+  const auto ours = probe_de(test::runtime(), scene->info, values, points, 16, Precision::Double);
+  const auto theirs =
+      probe_de(test::runtime(), classic->info, classic_values, points, 16, Precision::Double);
+  int compared = 0;
+  for (size_t i = 0; i < points.size(); ++i) {
+    if (!(theirs[i] > 1e-4f && theirs[i] < 10)) continue;  // Mandelbulber2 keeps [0, 10]
+    EXPECT_NEAR(ours[i], theirs[i], 1e-4 * theirs[i]) << "point " << i;
+    ++compared;
+  }
+  EXPECT_GT(compared, 20);
+}
+
+// The hybrid sequence by hand: slot 1 (bulb, power 2, two in a row), slot 2 (power-2 bulb), N = 3:
+// bulb, bulb, power2, each followed by + c.
+TEST_F(Mb2De, HybridSequenceByHand) {
+  set("hybrid", 1);
+  set("iterations", 3);
+  set("bulb_power", 2);
+  set("f1_iterations", 2);
+  choose("f2", "power2");
+  set("bailout", 1e6);
+  const V4 p{0.3, -0.2, 0.25, 0};
+  V4 z = p;
+  double dr = 1;
+  auto bulb = [&] {
+    const double r = z.length();
+    const double th = std::asin(z.z / r) * 2, ph = std::atan2(z.y, z.x) * 2;
+    dr = 2 * r * dr + 1;
+    z = V4{r * r * std::cos(th) * std::cos(ph) + p.x, r * r * std::cos(th) * std::sin(ph) + p.y,
+           r * r * std::sin(th) + p.z, 0};
+  };
+  auto pow2 = [&] {
+    const double r = z.length();
+    const double s = z.x * z.x + z.y * z.y, t = 1 - z.z * z.z / s;
+    dr = 2 * r * dr;
+    z = V4{(z.x * z.x - z.y * z.y) * t + p.x, 2 * z.x * z.y * t + p.y,
+           -2 * z.z * std::sqrt(s) + p.z, 0};
+  };
+  bulb();
+  bulb();
+  pow2();
+  EXPECT_NEAR(de({0.3f, -0.2f, 0.25f}), log_estimate(z.length(), dr), 1e-6 * std::max(1.0, log_estimate(z.length(), dr)));
+}
+
+}  // namespace
+}  // namespace fr
