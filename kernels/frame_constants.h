@@ -156,6 +156,7 @@ typedef struct fr_frame_constants {
   int env_width;
   int env_height;
   float env_intensity;
+  float hit_threshold_abs; /* > 0: epsilon is this, in world units, instead of the clarity term */
 } fr_frame_constants;
 
 #endif /* FR_FRAME_CONSTANTS_H */

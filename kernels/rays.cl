@@ -46,7 +46,8 @@ ray_t camera_ray(__constant const fr_frame_constants* fc, real_t px, real_t py, 
  * and without the floor a ray next to a singular point (the Mandelbulb's centre, |p| -> 0,
  * DE -> 0) would crawl by ever smaller steps for its whole budget. */
 inline real_t hit_threshold(__constant const fr_frame_constants* fc, real_t t, vec3_t p) {
-  real_t clarity = (real_t)(fc->hit_threshold_k * fc->pixel_angle_rad) * t;
+  real_t clarity = fc->hit_threshold_abs > 0 ? (real_t)fc->hit_threshold_abs
+                                             : (real_t)(fc->hit_threshold_k * fc->pixel_angle_rad) * t;
   real_t ulp_floor =
       (real_t)(4 * FR_SCALAR_EPSILON) * fmax(v3_length(p), (real_t)fc->bounding_radius);
   return fmax(clarity, ulp_floor);

@@ -208,7 +208,7 @@ TEST(Cli, HelpAndVersion) {
     EXPECT_EQ(r.code, 0) << name;
     EXPECT_NE(r.out.find("usage: fractalis " + name), std::string::npos) << r.out;
   }
-  EXPECT_EQ(listed, 11);
+  EXPECT_EQ(listed, 12);
   const CliRun v = run({"--version"});
   EXPECT_EQ(v.code, 0);
   EXPECT_NE(v.out.find("scene ABI 1.3"), std::string::npos);

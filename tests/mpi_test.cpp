@@ -321,7 +321,7 @@ TEST(Mpi, ErrorsAndOtherCommandsComeFromRankZeroAlone) {
   EXPECT_EQ(count_of(bad.output, "unknown scene 'no_such_scene'"), 1u) << bad.output;
   const JobRun list = run(mpirun(3) + kFractalis + " list");
   EXPECT_EQ(list.code, 0) << list.output;
-  EXPECT_EQ(count_of(list.output, "mandelbulb "), 1u) << list.output;
+  EXPECT_EQ(count_of(list.output, "mandelbulb 1."), 1u) << list.output;  // its line, once
   const JobRun help = run(mpirun(2) + kFractalis + " render --help");
   EXPECT_EQ(help.code, 0);
   EXPECT_EQ(count_of(help.output, "usage: fractalis render"), 1u) << help.output;

@@ -22,7 +22,7 @@ namespace {
 
 const char* const kUsage =
     "usage: fractalis import FILE.fract [--out DIR]\n"
-    "       fractalis import --check DIR\n"
+    "       fractalis import --check DIR [--list]\n"
     "\n"
     "Imports a Mandelbulber2 settings file as a preset of the `mandelbulber` scene (its formulas,\n"
     "hybrid order, view, quality and effects), written to DIR or the user's presets folder, and\n"
@@ -68,7 +68,8 @@ std::string reason_of(const std::string& refusal) {
   return refusal;
 }
 
-int check_folder(const std::filesystem::path& dir, const ParsedOptions& options, std::ostream& out) {
+int check_folder(const std::filesystem::path& dir, const ParsedOptions& options, bool list,
+                 std::ostream& out) {
   std::error_code ec;
   if (!std::filesystem::is_directory(dir, ec))
     throw UsageError("--check: '" + echo(dir.string()) + "' is not a folder");
@@ -97,11 +98,18 @@ int check_folder(const std::filesystem::path& dir, const ParsedOptions& options,
       out << "unreadable: " << e.what() << "\n";
       continue;
     }
+    const std::string shown = printable(std::filesystem::relative(file, dir, ec).string());
     if (why.empty()) {
       ++imported;
+      if (list) out << "imports: " << shown << "\n";
       continue;
     }
     ++refused;
+    if (list) {
+      out << "refused: " << shown << ":";
+      for (const std::string& w : why) out << " " << w << ";";
+      out << "\n";
+    }
     std::vector<std::string> seen;
     for (const std::string& w : why) {
       const std::string r = reason_of(w);
@@ -131,6 +139,7 @@ int command_import(const std::vector<std::string>& args, std::ostream& out, std:
   auto specs = plugin_option_specs();
   specs.push_back({"out", "DIR", false, "write the preset into DIR (default: the user's presets folder)"});
   specs.push_back({"check", "DIR", false, "import every .fract file under DIR, count the refusals"});
+  specs.push_back({"list", nullptr, false, "with --check: a line for each file"});
   specs.push_back({"help", nullptr, false, "show this help"});
   const ParsedOptions options = parse_options("import", rest, specs);
   if (options.has("help")) {
@@ -139,7 +148,7 @@ int command_import(const std::vector<std::string>& args, std::ostream& out, std:
   }
   if (auto dir = options.get("check")) {
     if (file) throw UsageError("import: give FILE.fract or --check DIR, not both");
-    return check_folder(*dir, options, out);
+    return check_folder(*dir, options, options.has("list"), out);
   }
   if (!file) {
     err << kUsage;

@@ -69,6 +69,8 @@ const Mb2Default kMain[] = {
     {"view_distance_max", "50"},
     {"view_distance_min", "1e-15"},
     {"limits_enabled", "false"},
+    {"limit_min", "-10 -10 -10"},
+    {"limit_max", "10 10 10"},
     {"fractal_position", "0 0 0"},
     {"fractal_rotation", "0 0 0"},
     {"repeat", "0 0 0"},

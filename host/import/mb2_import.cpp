@@ -209,9 +209,7 @@ void Importer::refuse_unsupported_features() {
     const std::string t = e.value;
     if (t != "three_point" && t != "0") refuse("perspective_type " + echo(t), "not supported");
   }
-  for (const char* key : {"interior_mode", "iteration_threshold_mode", "limits_enabled",
-                          "box_folding", "spherical_folding", "constant_DE_threshold",
-                          "stereo_enabled"})
+  for (const char* key : {"interior_mode", "box_folding", "spherical_folding", "stereo_enabled"})
     if (flag(key)) refuse(key, "not supported");
   for (const char* key : {"fractal_position", "fractal_rotation", "repeat"}) {
     const auto v = vec3(key);
@@ -440,13 +438,23 @@ void Importer::formulas() {
   }
   const double max_factor = std::max({std::fabs(factor[0]), std::fabs(factor[1]), std::fabs(factor[2])});
   const std::array<double, 3> jc = {julia_c[0] * factor[0], julia_c[1] * factor[1], julia_c[2] * factor[2]};
-  double bound;
+  // The Menger sponge alone, scale 3, no c: a point with a coordinate beyond 1 has its largest
+  // coordinate tripled less 2 each step, so it escapes; the sponge lies in the unit cube.
+  bool lone_sponge = kind_slot.size() == 1 && kind_slot.count("menger") != 0;
+  if (lone_sponge) {
+    const int slot = kind_slot.at("menger");
+    const std::string k = std::to_string(slot + 1);
+    const bool dont_add = flag("dont_add_c_constant_" + k);  // inverted for the sponge: adds c
+    lone_sponge = !dont_add &&
+                  fract_number(f, "transf_scale_3", mb2_fractal_entry(f, slot, "transf_scale_3")) == 3;
+  }
+  double bound = length(vec3("camera")) + number("view_distance_max");
   if (squaring && !julia && max_factor <= 1) {
-    bound = 2.05;
+    bound = std::min(bound, 2.05);
   } else if (squaring && julia) {
-    bound = std::max(2.0, length(jc)) * 1.025;
-  } else {
-    bound = length(vec3("camera")) + number("view_distance_max");
+    bound = std::min(bound, std::max(2.0, length(jc)) * 1.025);
+  } else if (lone_sponge) {
+    bound = std::min(bound, std::sqrt(3.0) * 1.01);
   }
   param("bound", number_text(std::clamp(bound, 0.1, 1e6)));
 }
@@ -480,8 +488,27 @@ void Importer::camera() {
 }
 
 void Importer::quality() {
-  const double detail = number("detail_level");
+  double detail = number("detail_level");
   if (!(detail > 0)) refuse("detail_level", "expected a value above 0");
+  // Iteration-threshold mode ignores the detail level; an orbit that never escapes is surface
+  // there, and with limits too.
+  const bool iteration_threshold = flag("iteration_threshold_mode");
+  const bool limits = flag("limits_enabled");
+  if (iteration_threshold) {
+    detail = 1;
+    note(Kind::Mapped, "iteration_threshold_mode", "solid_interior = true, detail level 1");
+  }
+  param("solid_interior", iteration_threshold || limits ? "true" : "false");
+  param("limits", limits ? "true" : "false");
+  param("limit_min", vec3_text(vec3("limit_min")));
+  param("limit_max", vec3_text(vec3("limit_max")));
+  if (limits) note(Kind::Mapped, "limits_enabled", "limits, limit_min, limit_max, solid_interior = true");
+  if (flag("constant_DE_threshold")) {
+    const double thr = number("DE_thresh");
+    if (!(thr > 0 && thr <= 1e6)) refuse("DE_thresh", "expected a distance above 0");
+    setting("render.hit_threshold_abs", number_text(std::clamp(thr, 1e-12, 1e6)));
+    note(Kind::Mapped, "constant_DE_threshold, DE_thresh", "render.hit_threshold_abs = " + number_text(thr));
+  }
   // Mandelbulber2 hits at distance < |eye - p| fov / (height detail_level): one pixel's
   // footprint over detail_level, Fractalis's k times the footprint.
   const double k = 1 / std::max(detail, 1e-12);
@@ -500,7 +527,6 @@ void Importer::quality() {
     setting("render.max_steps", std::to_string(std::min(10000, static_cast<int>(std::ceil(160 / step)))));
   number("view_distance_max");  // read by the bound
   number("view_distance_min");
-  number("DE_thresh");
 }
 
 void Importer::look() {

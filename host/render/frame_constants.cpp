@@ -19,7 +19,7 @@ static_assert(FR_KERNEL_LIGHT_DIRECTIONAL == FR_LIGHT_DIRECTIONAL &&
 
 // The kernels read this struct with OpenCL C's layout rules; with only 4-byte fields both sides
 // agree, and these checks keep it so.
-static_assert(sizeof(fr_frame_constants) == 1024, "fr_frame_constants layout changed");
+static_assert(sizeof(fr_frame_constants) == 1028, "fr_frame_constants layout changed");
 static_assert(offsetof(fr_frame_constants, first_pixel_dir) == 0);
 static_assert(offsetof(fr_frame_constants, light_vector) == 96);
 static_assert(offsetof(fr_frame_constants, light_kind) == 352);
@@ -39,6 +39,7 @@ static_assert(offsetof(fr_frame_constants, light_radius) == 912);
 static_assert(offsetof(fr_frame_constants, aperture_blades) == 960);
 static_assert(offsetof(fr_frame_constants, env_axes) == 964);
 static_assert(offsetof(fr_frame_constants, env_intensity) == 1020);
+static_assert(offsetof(fr_frame_constants, hit_threshold_abs) == 1024);
 namespace {
 void put(float out[4], glm::dvec3 v) {
   out[0] = static_cast<float>(v.x);
@@ -193,6 +194,7 @@ fr_frame_constants make_frame_constants(const CameraRays& rays, const SceneState
   fc.sample_index = sample_index;
   fc.pixel_angle_rad = static_cast<float>(rays.pixel_angle_rad);
   fc.hit_threshold_k = s.hit_threshold_k;
+  fc.hit_threshold_abs = s.hit_threshold_abs;
   fc.bounding_radius = static_cast<float>(radius);
   fc.step_scale = s.step_scale;
   fc.ao_strength = s.ao_strength;

@@ -181,6 +181,9 @@ struct RenderSettings {
   int bounce_shadow_max_steps = 16;
   int ao_samples = 5;
   float hit_threshold_k = 0.5f;  // epsilon = k * t * pixel angle
+  // When above 0, epsilon is this distance everywhere instead (world units; Mandelbulber2's
+  // constant DE threshold).
+  float hit_threshold_abs = 0.0f;
   float step_scale = 1.0f;
   // Over-relaxed sphere tracing's largest omega; 1 is plain sphere tracing. 1.6 with the
   // adaptive omega: on the sweep's front for the benchmark scene (1.3 fixed was the default).
@@ -287,6 +290,7 @@ void visit_render_fields(Settings& s, Visit&& visit) {
   visit("bounce_shadow_max_steps", s.bounce_shadow_max_steps);
   visit("ao_samples", s.ao_samples);
   visit("hit_threshold_k", s.hit_threshold_k);
+  visit("hit_threshold_abs", s.hit_threshold_abs);
   visit("step_scale", s.step_scale);
   visit("relaxation", s.relaxation);
   visit("adaptive_relaxation", s.adaptive_relaxation);
@@ -349,7 +353,7 @@ constexpr size_t aggregate_member_count() {
 }  // namespace detail
 // RenderSettings' direct members (the window counts once): a new field changes the count. List
 // it in visit_render_fields, then update this number.
-static_assert(detail::aggregate_member_count<RenderSettings>() == 68,
+static_assert(detail::aggregate_member_count<RenderSettings>() == 69,
               "RenderSettings changed: list the new field in visit_render_fields");
 
 }  // namespace fr

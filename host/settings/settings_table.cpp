@@ -261,6 +261,10 @@ std::vector<SettingSpec> make_table() {
           "render.hit_threshold_k", 0, 100, true,
           "Hit threshold factor k: a ray has hit when the DE < k * distance * pixel angle."),
       "Detail (k)", 0.05, 4, true));
+  t.push_back(number_setting<&S::render, &R::hit_threshold_abs>(
+      "render.hit_threshold_abs", 0, 1e6, false,
+      "When above 0, a ray has hit when the DE < this distance (world units), near or far,\n"
+      "instead of k * distance * pixel angle (Mandelbulber2's constant DE threshold)."));
   t.push_back(in_overlay(
       number_setting<&S::render, &R::step_scale>(
           "render.step_scale", 0, 1, true,

@@ -84,6 +84,19 @@ static const fr_param_desc bound =
                    "and the view distance).",
                    2, 0.1, 1e6, FR_PARAM_LOG_SCALE);
 
+static const fr_param_desc solid_interior = FR_BOOL_PARAM(
+    "solid_interior", "Solid interior", "Iteration",
+    "An orbit that never escapes is inside the surface (Mandelbulber2's limits and "
+    "iteration-threshold modes); off, the estimate decides there too.",
+    0, FR_PARAM_SPECIALIZE);
+static const fr_param_desc limits =
+    FR_BOOL_PARAM("limits", "Limits", "Iteration", "Cut the fractal to the box between the limits.",
+                  0, FR_PARAM_SPECIALIZE);
+static const fr_param_desc limit_min = FR_VEC3_PARAM(
+    "limit_min", "Limit min", "Iteration", "The box's lower corner.", -10, -10, -10, -1e4, 1e4, 0);
+static const fr_param_desc limit_max = FR_VEC3_PARAM(
+    "limit_max", "Limit max", "Iteration", "The box's upper corner.", 10, 10, 10, -1e4, 1e4, 0);
+
 static const fr_param_desc bulb_power = FR_FLOAT_PARAM(
     "bulb_power", "Power", "Mandelbulb", "The bulb's power (Mandelbulber2's default is 9).", 9, 1,
     64, FR_PARAM_ANIMATABLE);
@@ -224,7 +237,7 @@ static const fr_param_desc* const params[] = {
     SLOT_LIST(1), SLOT_LIST(2), SLOT_LIST(3), SLOT_LIST(4), SLOT_LIST(5), SLOT_LIST(6),
     SLOT_LIST(7), SLOT_LIST(8), SLOT_LIST(9),
     &iterations, &hybrid, &repeat_from, &bailout, &julia, &julia_c, &constant_factor, &estimate,
-    &linear_offset, &bound,
+    &linear_offset, &bound, &solid_interior, &limits, &limit_min, &limit_max,
     &bulb_power, &bulb_alpha, &bulb_beta,
     &box_scale, &box_fold_limit, &box_fold_value, &box_min_radius, &box_fixed_radius, &box_offset,
     &box_main_rotation, &box_rotation, &box_fold_rotations, &box_rotation_neg_1,

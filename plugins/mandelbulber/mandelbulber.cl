@@ -11,6 +11,7 @@
  * slot's iterations-in-a-row the counter restarts and the next slot follows, slot 9 being followed
  * by repeat_from. The same for every lane, so it is scalar work. */
 #include "fr/mandelbulber.cl"
+#include "fr/primitives.cl"
 
 #if FR_CHOICE_f1_mandelbulb != MB2_MANDELBULB || FR_CHOICE_f1_menger != MB2_MENGER || \
     FR_CHOICE_f1_pseudo_kleinian != MB2_PSEUDO_KLEINIAN ||                            \
@@ -157,6 +158,7 @@ inline real_t mb2_de(vec3_t p, __constant const scene_params_t* params, real_t* 
   real_t orbit_min = r * r;
   const real_t bailout = to_real(PARAM(bailout));
   mask_t live = FR_MASK_TRUE;
+  mask_t escaped = FR_MASK_FALSE; /* by the bailout or the Kleinian convergence test */
   int slot = 0, counter = 0;
   for (int i = 0; i < PARAM(iterations); ++i) {
     if (!any_lane(live)) break;
@@ -204,17 +206,33 @@ inline real_t mb2_de(vec3_t p, __constant const scene_params_t* params, real_t* 
     r = lane_select(step, nr, r);
     orbit_min = lane_select(step, fmin(orbit_min, nr * nr), orbit_min);
     mask_t stop = live & !finite;
-    if (check) stop = stop | (step & (nr > bailout));
+    if (check) {
+      const mask_t out = step & (nr > bailout);
+      stop = stop | out;
+      escaped = escaped | out;
+    }
     if (kind == MB2_PSEUDO_KLEINIAN) {
       /* Mandelbulber2's convergence test for Kleinian orbits. */
       const real_t limit = to_real(0.1) / bailout * fmax(nr, to_real(FR_SCALAR_MIN));
-      stop = stop | (step & ((v3_length(v3_sub(z, z_prev)) < limit) |
-                             (v3_length(v3_sub(z, z_prev2)) < limit)));
+      const mask_t converged = step & ((v3_length(v3_sub(z, z_prev)) < limit) |
+                                       (v3_length(v3_sub(z, z_prev2)) < limit));
+      stop = stop | converged;
+      escaped = escaped | converged;
     }
     live = live & !stop;
   }
   *trap = orbit_min;
-  return mb2_distance(PARAM(estimate), z, r, dr, PARAM(linear_offset), PARAM(pk_de_offset));
+  real_t d = mb2_distance(PARAM(estimate), z, r, dr, PARAM(linear_offset), PARAM(pk_de_offset));
+  /* Mandelbulber2 with limits or in iteration-threshold mode: an orbit that ran all N
+   * iterations is surface. */
+  if (PARAM(solid_interior)) d = lane_select(escaped, d, to_real(0));
+  if (PARAM(limits)) {
+    const vec3_t lo = PARAM(limit_min), hi = PARAM(limit_max);
+    const vec3_t centre = v3_scale(v3_add(lo, hi), to_real(0.5));
+    const vec3_t half_size = v3_abs(v3_scale(v3_sub(hi, lo), to_real(0.5)));
+    d = fmax(d, sd_box(v3_sub(p, centre), half_size));
+  }
+  return d;
 }
 
 real_t scene_de(vec3_t p, __constant const scene_params_t* params) {

@@ -1,0 +1,125 @@
+#!/usr/bin/env bash
+# Renders each importable Mandelbulber2 example in Mandelbulber2 itself (Debian's mandelbulber2,
+# headless, its z-buffer pass) and in Fractalis (the same file through --preset, an OpenEXR with
+# depth and hit mask), at the same size, and compares the surfaces (tests/mb2_compare.cpp: hit
+# mask mismatch with one pixel of tolerance, depth difference in pixel footprints). Both render
+# with the effects that do not move the surface switched off, at the file's own detail level
+# (Fractalis's hit threshold 1/detail_level), on every core; the times are each program's
+# rendering alone (Mandelbulber2's wall time less that of an 8x8 render of the same file, for its
+# start-up; Fractalis's reported render time, its kernel already built).
+#
+# usage: scripts/compare-mandelbulber2.sh [--examples DIR] [--width PX] [--limit N] [--out DIR]
+#                                         [--match TEXT]
+#   --examples  the .fract files (default: mandelbulber2-data's examples)
+#   --width     image width; the height keeps each file's aspect (default 160)
+#   --limit     compare at most N importable files (default: all)
+#   --match     only files whose path contains TEXT
+#   --out       where renders, logs and results.tsv go (default: build/mb2-compare)
+# Prints one line per file and a summary; results.tsv has the table (docs/mandelbulber2.md).
+set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+
+examples=/usr/share/mandelbulber2/examples
+width=160
+limit=0
+match=""
+out="$FRACTALIS_BUILD/mb2-compare"
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --examples) examples="$2"; shift 2 ;;
+    --width) width="$2"; shift 2 ;;
+    --limit) limit="$2"; shift 2 ;;
+    --match) match="$2"; shift 2 ;;
+    --out) out="$2"; shift 2 ;;
+    *) echo "compare-mandelbulber2: unknown argument '$1'" >&2; exit 2 ;;
+  esac
+done
+
+FRACTALIS_PACKAGES+=(mandelbulber2 mandelbulber2-data)
+fractalis_install_packages
+fractalis_build
+fractalis="$FRACTALIS_BUILD/host/fractalis"
+compare="$FRACTALIS_BUILD/tests/mb2_compare"
+[ -x "$compare" ] || { echo "compare-mandelbulber2: $compare was not built (needs OpenEXR)" >&2; exit 1; }
+[ -d "$examples" ] || { echo "compare-mandelbulber2: no folder $examples" >&2; exit 2; }
+
+mkdir -p "$out/mb" "$out/fr" "$out/presets" "$out/log"
+results="$out/results.tsv"
+printf 'file\tformulas\tsize\tmismatch_percent\tmedian_footprints\tp90_footprints\tmb2_s\tfractalis_s\tspeed_ratio\n' >"$results"
+
+# Mandelbulber2's switches for a plain surface: no effect that blurs, jitters or costs time
+# without moving the surface. Booleans are 1/0 on its command line.
+mb2_plain='zbuffer_enabled=1#antialiasing_enabled=0#DOF_enabled=0#DOF_monte_carlo=0'
+mb2_plain+='#ambient_occlusion_enabled=0#shadows_enabled=0#raytraced_reflections=0'
+mb2_plain+='#volumetric_fog_enabled=0#iteration_fog_enable=0#glow_enabled=0#basic_fog_enabled=0'
+mb2_plain+='#fake_lights_enabled=0#main_light_volumetric_enabled=0#hdr_blur_enabled=0'
+mb2_plain+='#aux_light_volumetric_enabled_1=0#aux_light_volumetric_enabled_2=0'
+mb2_plain+='#aux_light_volumetric_enabled_3=0#aux_light_volumetric_enabled_4=0#env_mapping_enable=0'
+fractalis_plain=(--set render.effects.shadows=false --set render.effects.ao=false
+  --set render.effects.glow=false --set render.effects.fog=false
+  --set render.effects.reflections=false --set render.effects.dof=false --samples 1)
+
+# The value of a [main_parameters] key of a .fract file, decimal comma made a dot; $2 if absent.
+fract_value() {
+  local v
+  v=$(sed -n "/^\[main_parameters\]/,/^\[/{s/^$2 \(.*\);\s*$/\1/p}" "$1" | head -n 1 | tr ',' '.')
+  echo "${v:-$3}"
+}
+
+now() { date +%s.%N; }
+
+compared=0
+while IFS= read -r -d '' file; do
+  [ -n "$match" ] && [[ "$file" != *"$match"* ]] && continue
+  [ "$limit" -gt 0 ] && [ "$compared" -ge "$limit" ] && break
+  name=$(basename "$file" .fract)
+  id=$(echo "$name" | tr 'A-Z' 'a-z' | tr -c 'a-z0-9\n' '_')
+  if ! "$fractalis" import "$file" --out "$out/presets" >"$out/log/$id.import" 2>&1; then
+    continue
+  fi
+  compared=$((compared + 1))
+  iw=$(fract_value "$file" image_width 800)
+  ih=$(fract_value "$file" image_height 600)
+  fov=$(fract_value "$file" fov 1)
+  height=$(( (width * ih + iw / 2) / iw ))
+  [ "$height" -ge 8 ] || height=8
+  preset=$(sed -n 's/^wrote \(.*\) (preset .*/\1/p' "$out/log/$id.import")
+  formulas=$(sed -n 's/^f[1-9] = "\([a-z0-9_]*\)"$/\1/p' "$preset" | grep -v '^none$' | sort -u | paste -sd+ -)
+
+  # Mandelbulber2: the view, then an 8x8 render for its start-up time.
+  t0=$(now)
+  mandelbulber2 -n -r "${width}x${height}" -f png -o "$out/mb/$id" -O "$mb2_plain" "$file" \
+    >"$out/log/$id.mb2" 2>&1 || { echo "$name: mandelbulber2 failed (log: $out/log/$id.mb2)"; continue; }
+  t1=$(now)
+  mandelbulber2 -n -r 8x8 -f png -o "$out/mb/${id}_startup" -O "$mb2_plain" "$file" \
+    >/dev/null 2>&1 || true
+  t2=$(now)
+  mb2_s=$(echo "$t0 $t1 $t2" | awk '{ s = ($2 - $1) - ($3 - $2); if (s < 0.001) s = 0.001; printf "%.3f", s }')
+
+  # Fractalis: once to build the kernel, once timed.
+  "$fractalis" render --preset "$file" --size "${width}x${height}" "${fractalis_plain[@]}" \
+    --out "$out/fr/$id.exr" >"$out/log/$id.fractalis" 2>&1 || { echo "$name: fractalis failed"; continue; }
+  "$fractalis" render --preset "$file" --size "${width}x${height}" "${fractalis_plain[@]}" \
+    --out "$out/fr/$id.exr" >"$out/log/$id.fractalis" 2>&1
+  fr_ms=$(sed -n 's/.*render \([0-9.]*\) ms.*/\1/p' "$out/log/$id.fractalis" | head -n 1)
+  fr_s=$(awk -v ms="${fr_ms:-0}" 'BEGIN { s = ms / 1000; if (s < 0.001) s = 0.001; printf "%.3f", s }')
+  metrics=$("$compare" "$out/mb/${id}_zbuffer.png" "$out/fr/$id.exr" "$fov") || { echo "$name: compare failed"; continue; }
+  read -r mismatch median p90 _ _ <<<"$metrics"
+  ratio=$(awk -v a="$mb2_s" -v b="$fr_s" 'BEGIN { printf "%.1f", a / b }')
+  printf '%s\t%s\t%sx%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "${file#"$examples"/}" "$formulas" "$width" \
+    "$height" "$mismatch" "$median" "$p90" "$mb2_s" "$fr_s" "$ratio" >>"$results"
+  echo "$name [$formulas]: mismatch ${mismatch}%, depth ${median} footprints (p90 $p90), mandelbulber2 ${mb2_s} s, fractalis ${fr_s} s (${ratio}x)"
+done < <(find "$examples" -name '*.fract' -print0 | sort -z)
+
+# The summary: files within 3% mismatch and 5 footprints; median and worst speed ratio.
+n=$(($(wc -l <"$results") - 1))
+if [ "$n" -le 0 ]; then
+  echo "no importable file compared" >&2
+  exit 1
+fi
+ok=$(awk -F'\t' 'NR > 1 && $4 <= 3 && $5 != "nan" && $5 <= 5 { k++ } END { print k + 0 }' "$results")
+ratios=$(awk -F'\t' 'NR > 1 { print $9 }' "$results" | sort -g)
+median=$(echo "$ratios" | awk '{ r[NR] = $1 } END { print (NR % 2 ? r[(NR + 1) / 2] : (r[NR / 2] + r[NR / 2 + 1]) / 2) }')
+worst=$(echo "$ratios" | head -n 1)
+echo "$n files compared: $ok within 3% mismatch and 5 footprints; speed ratio median ${median}x, worst ${worst}x"
+echo "table: $results"
