@@ -4,6 +4,7 @@
 #include "io/printable.hpp"
 #include "plugin/scene_instance.hpp"
 #include "settings/settings.hpp"
+#include "settings/settings_table.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -78,7 +79,14 @@ void SceneBrowser::rebuild(SceneLibrary& library, const RenderSettings& settings
       p.search_text = lower(preset.id + " " + preset.name + " " + preset.description + " ") +
                       entry.search_text;
       ThumbnailJob pj = job;
-      const std::vector<std::string> problems = apply_preset(preset, info, pj.state);
+      std::vector<std::string> problems = apply_preset(preset, info, pj.state);
+      {
+        // The preset's settings (an imported file's detail, mirror) show in its picture too.
+        Settings with_preset;
+        with_preset.render = pj.settings;
+        for (std::string& s : apply_preset_settings(preset, with_preset)) problems.push_back(s);
+        pj.settings = with_preset.render;
+      }
       if (!problems.empty()) p.error = problems.front();
       rows.emplace_back(p, pj);
     }
@@ -212,12 +220,21 @@ bool SceneBrowser::open(int position, Explorer& explorer, std::string* error) {
     return false;
   }
   explorer.select_scene(slot);
+  // The settings the last preset opened here set go back to what they were before it.
+  for (const std::string& key : preset_setting_keys_)
+    if (const SettingSpec* spec = find_setting(key))
+      spec->set(explorer.settings(), spec->get(settings_before_preset_));
+  preset_setting_keys_.clear();
   if (!entry.preset_id.empty()) {
     const auto preset = find_preset(presets_, entry.preset_id);
     SceneSlot& current = explorer.current();
-    const std::vector<std::string> problems =
+    std::vector<std::string> problems =
         preset ? apply_preset(*preset, current.scene->info, current.state)
                : std::vector<std::string>{"preset '" + entry.preset_id + "' is gone"};
+    if (preset && problems.empty()) {
+      settings_before_preset_ = explorer.settings();
+      problems = apply_preset_settings(*preset, explorer.settings(), &preset_setting_keys_);
+    }
     if (!problems.empty()) {
       *error = problems.front();
       return false;

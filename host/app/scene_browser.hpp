@@ -84,6 +84,10 @@ class SceneBrowser {
   void filter();
 
   std::vector<Preset> presets_;
+  // The settings keys the preset opened last set (an imported file's [settings]), and the
+  // settings from before it, to put back when something else is opened.
+  std::vector<std::string> preset_setting_keys_;
+  Settings settings_before_preset_;
   std::vector<PresetProblem> preset_problems_;
   SceneBrowserOptions options_;
   ThumbnailCache cache_;

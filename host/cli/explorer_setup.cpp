@@ -23,6 +23,10 @@ ExplorerSetup prepare_explorer(ParsedOptions options, bool settings_problems_are
   // The scene asked for, checked against the plugins' descriptors (the scan cache: no kernel
   // built) before the library vets every scene's kernel, which on a first start can take minutes.
   const std::optional<Preset> preset = preset_option(options, folders);
+  if (preset) {
+    apply_preset_settings(options, preset, x.settings);
+    x.settings.render = render_settings_from(x.settings, options);
+  }
   x.presets = load_presets(folders, &x.preset_problems);
   x.scene_asked = options.has("scene") || options.has("preset") || options.has("path");
   const std::string scene_id = scene_id_option(options, preset);

@@ -322,15 +322,8 @@ std::optional<Preset> preset_option(const ParsedOptions& options,
 void apply_preset_settings(const ParsedOptions& options, const std::optional<Preset>& preset,
                            Settings& settings) {
   if (!preset) return;
-  std::vector<std::string> problems;
-  const auto assignments = preset_settings(*preset, &problems);
+  const std::vector<std::string> problems = apply_preset_settings(*preset, settings);
   if (!problems.empty()) throw UsageError("--preset " + echo(preset->id) + ": " + problems.front());
-  for (const auto& [key, value] : assignments) {
-    const auto wrong = apply_setting_override(key + "=" + value, settings);
-    if (!wrong.empty())
-      throw UsageError("--preset " + echo(preset->file.string()) + ": [settings] " +
-                       wrong.front().to_string());
-  }
   // The command line has the last word.
   if (auto it = options.values.find("set"); it != options.values.end())
     for (const std::string& assignment : it->second) apply_setting_override(assignment, settings);

@@ -488,33 +488,22 @@ void Importer::camera() {
 }
 
 void Importer::quality() {
-  double detail = number("detail_level");
+  const double detail = number("detail_level");
   if (!(detail > 0)) refuse("detail_level", "expected a value above 0");
-  // Iteration-threshold mode ignores the detail level; an orbit that never escapes is surface
-  // there, and with limits too.
-  const bool iteration_threshold = flag("iteration_threshold_mode");
+  // With limits an orbit that never escapes is surface. (Iteration-threshold mode makes that the
+  // only surface: an escaping point is never hit, its distance raised to above the hit
+  // threshold, which an estimate cannot know here; refused.)
+  if (flag("iteration_threshold_mode"))
+    refuse("iteration_threshold_mode",
+           "not supported (only orbits that never escape are surface there)");
   const bool limits = flag("limits_enabled");
-  if (iteration_threshold) {
-    detail = 1;
-    note(Kind::Mapped, "iteration_threshold_mode", "solid_interior = true, detail level 1");
-  }
-  param("solid_interior", iteration_threshold || limits ? "true" : "false");
+  param("solid_interior", limits ? "true" : "false");
   param("limits", limits ? "true" : "false");
   param("limit_min", vec3_text(vec3("limit_min")));
   param("limit_max", vec3_text(vec3("limit_max")));
   if (limits) note(Kind::Mapped, "limits_enabled", "limits, limit_min, limit_max, solid_interior = true");
-  if (flag("constant_DE_threshold")) {
-    const double thr = number("DE_thresh");
-    if (!(thr > 0 && thr <= 1e6)) refuse("DE_thresh", "expected a distance above 0");
-    setting("render.hit_threshold_abs", number_text(std::clamp(thr, 1e-12, 1e6)));
-    note(Kind::Mapped, "constant_DE_threshold, DE_thresh", "render.hit_threshold_abs = " + number_text(thr));
-  }
-  // Mandelbulber2 hits at distance < |eye - p| fov / (height detail_level): one pixel's
-  // footprint over detail_level, Fractalis's k times the footprint.
-  const double k = 1 / std::max(detail, 1e-12);
-  if (k > 100) note(Kind::Approximated, "detail_level", "below 0.01: hit threshold factor 100");
-  setting("render.hit_threshold_k", number_text(std::min(k, 100.0)));
-  note(Kind::Mapped, "detail_level", "render.hit_threshold_k = " + number_text(std::min(k, 100.0)));
+  // DE_factor scales Mandelbulber2's steps only; Fractalis's step scale multiplies the estimate
+  // before the hit test too, so the threshold is scaled by it to hit where Mandelbulber2 does.
   const double de_factor = number("DE_factor");
   if (!(de_factor > 0)) refuse("DE_factor", "expected a value above 0");
   if (de_factor > 1)
@@ -525,6 +514,19 @@ void Importer::quality() {
   note(Kind::Mapped, "DE_factor", "render.step_scale = " + number_text(step));
   if (step < 1)
     setting("render.max_steps", std::to_string(std::min(10000, static_cast<int>(std::ceil(160 / step)))));
+  if (flag("constant_DE_threshold")) {
+    const double thr = number("DE_thresh");
+    if (!(thr > 0 && thr <= 1e6)) refuse("DE_thresh", "expected a distance above 0");
+    const double abs = std::clamp(thr * step, 1e-12, 1e6);
+    setting("render.hit_threshold_abs", number_text(abs));
+    note(Kind::Mapped, "constant_DE_threshold, DE_thresh", "render.hit_threshold_abs = " + number_text(abs));
+  }
+  // Mandelbulber2 hits at distance < |eye - p| fov / (height detail_level): one pixel's
+  // footprint over detail_level, Fractalis's k times the footprint.
+  const double k = step / std::max(detail, 1e-12);
+  if (k > 100) note(Kind::Approximated, "detail_level", "below 0.01: hit threshold factor 100");
+  setting("render.hit_threshold_k", number_text(std::min(k, 100.0)));
+  note(Kind::Mapped, "detail_level", "render.hit_threshold_k = " + number_text(std::min(k, 100.0)));
   number("view_distance_max");  // read by the bound
   number("view_distance_min");
 }

@@ -134,6 +134,20 @@ std::vector<std::pair<std::string, std::string>> preset_settings(const Preset& p
   return out;
 }
 
+std::vector<std::string> apply_preset_settings(const Preset& preset, Settings& settings,
+                                               std::vector<std::string>* applied) {
+  std::vector<std::string> problems;
+  for (const auto& [key, value] : preset_settings(preset, &problems)) {
+    const auto wrong = apply_setting_override(key + "=" + value, settings);
+    if (!wrong.empty()) {
+      problems.push_back(where(preset.file, 0) + "[settings] " + wrong.front().to_string());
+      continue;
+    }
+    if (applied) applied->push_back(key);
+  }
+  return problems;
+}
+
 std::vector<Preset> load_presets(const std::vector<std::filesystem::path>& plugin_folders,
                                  std::vector<PresetProblem>* problems) {
   std::map<std::string, Preset> by_id;

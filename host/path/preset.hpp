@@ -19,6 +19,7 @@
 #pragma once
 
 #include "scene/scene_data.hpp"
+#include "settings/settings.hpp"
 
 #include <filesystem>
 #include <optional>
@@ -61,6 +62,11 @@ std::optional<Preset> read_preset_file(const std::filesystem::path& file, const 
 // order); checking them is the settings table's (settings/settings.hpp).
 std::vector<std::pair<std::string, std::string>> preset_settings(const Preset& preset,
                                                                  std::vector<std::string>* problems);
+
+// Applies the preset's [settings] over `settings`; each problem ("FILE: [settings] KEY: what")
+// is returned and that setting left as it was. `applied`, when given, receives the keys set.
+std::vector<std::string> apply_preset_settings(const Preset& preset, Settings& settings,
+                                               std::vector<std::string>* applied = nullptr);
 
 // Applies the preset's values and camera over `state` (which holds the scene's defaults or
 // more). Every problem — a key the scene does not have, a value of the wrong type or outside its

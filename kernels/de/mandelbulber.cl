@@ -185,6 +185,7 @@ typedef struct mb2_kifs_t {
   int abs_x, abs_y, abs_z, menger_mode, rotation_enabled;
   mb2_rot_t rotation;
   int enabled[MB2_KIFS_PLANES];
+  int rotated[MB2_KIFS_PLANES]; /* the plane's rotation is not the identity */
   vec3_t direction[MB2_KIFS_PLANES]; /* unit */
   scalar_t distance[MB2_KIFS_PLANES], intensity[MB2_KIFS_PLANES];
   mb2_rot_t plane_rotation[MB2_KIFS_PLANES];
@@ -200,7 +201,7 @@ inline void mb2_kifs(vec3_t* z, real_t* w, real_t* dr, const mb2_kifs_t* k) {
   if (k->abs_z) q.z = fabs(q.z);
   for (int i = 0; i < MB2_KIFS_PLANES; ++i) {
     if (!k->enabled[i]) continue;
-    q = mb2_rotate(k->plane_rotation[i], q);
+    if (k->rotated[i]) q = mb2_rotate(k->plane_rotation[i], q);
     const real_t l = v3_dot(q, k->direction[i]);
     const real_t d = to_real(k->distance[i]);
     q = v3_select(l < d, v3_sub(q, v3_scale(k->direction[i], 2 * (l - d) * to_real(k->intensity[i]))),

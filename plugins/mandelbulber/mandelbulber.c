@@ -86,8 +86,8 @@ static const fr_param_desc bound =
 
 static const fr_param_desc solid_interior = FR_BOOL_PARAM(
     "solid_interior", "Solid interior", "Iteration",
-    "An orbit that never escapes is inside the surface (Mandelbulber2's limits and "
-    "iteration-threshold modes); off, the estimate decides there too.",
+    "An orbit that never escapes is inside the surface (as Mandelbulber2 has it with limits); "
+    "off, the estimate decides there too.",
     0, FR_PARAM_SPECIALIZE);
 static const fr_param_desc limits =
     FR_BOOL_PARAM("limits", "Limits", "Iteration", "Cut the fractal to the box between the limits.",

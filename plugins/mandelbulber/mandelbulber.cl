@@ -31,7 +31,9 @@ typedef struct mb2_setup_t {
     s.kifs.direction[i] = v3_normalize(PARAM(kifs_plane##i##_direction));                       \
     s.kifs.distance[i] = PARAM(kifs_plane##i##_distance);                                       \
     s.kifs.intensity[i] = PARAM(kifs_plane##i##_intensity);                                     \
-    s.kifs.plane_rotation[i] = mb2_rotation3(PARAM(kifs_plane##i##_rotation));                  \
+    const vec3_t angles = PARAM(kifs_plane##i##_rotation);                                     \
+    s.kifs.rotated[i] = any_lane((angles.x != 0) | (angles.y != 0) | (angles.z != 0));         \
+    if (s.kifs.rotated[i]) s.kifs.plane_rotation[i] = mb2_rotation3(angles);                    \
   }
 
 #define MB2_USES(kind)                                                                        \
@@ -198,8 +200,10 @@ inline real_t mb2_de(vec3_t p, __constant const scene_params_t* params, real_t* 
     /* A NaN orbit keeps its last finite z and stops. */
     const mask_t finite = !isnan(nr);
     const mask_t step = live & finite;
-    z_prev2 = v3_select(step, z_prev, z_prev2);
-    z_prev = v3_select(step, z, z_prev);
+    if (MB2_USES(MB2_PSEUDO_KLEINIAN)) {
+      z_prev2 = v3_select(step, z_prev, z_prev2);
+      z_prev = v3_select(step, z, z_prev);
+    }
     z = v3_select(step, nz, z);
     w = lane_select(step, nw, w);
     dr = lane_select(step, ndr, dr);
@@ -211,7 +215,7 @@ inline real_t mb2_de(vec3_t p, __constant const scene_params_t* params, real_t* 
       stop = stop | out;
       escaped = escaped | out;
     }
-    if (kind == MB2_PSEUDO_KLEINIAN) {
+    if (check && kind == MB2_PSEUDO_KLEINIAN) {
       /* Mandelbulber2's convergence test for Kleinian orbits. */
       const real_t limit = to_real(0.1) / bailout * fmax(nr, to_real(FR_SCALAR_MIN));
       const mask_t converged = step & ((v3_length(v3_sub(z, z_prev)) < limit) |
@@ -223,8 +227,7 @@ inline real_t mb2_de(vec3_t p, __constant const scene_params_t* params, real_t* 
   }
   *trap = orbit_min;
   real_t d = mb2_distance(PARAM(estimate), z, r, dr, PARAM(linear_offset), PARAM(pk_de_offset));
-  /* Mandelbulber2 with limits or in iteration-threshold mode: an orbit that ran all N
-   * iterations is surface. */
+  /* Mandelbulber2 with limits: an orbit that ran all N iterations is surface. */
   if (PARAM(solid_interior)) d = lane_select(escaped, d, to_real(0));
   if (PARAM(limits)) {
     const vec3_t lo = PARAM(limit_min), hi = PARAM(limit_max);
