@@ -169,7 +169,7 @@ BenchJob plan_bench(ParsedOptions& options) {
   job.duration_s = parse_finite("--duration", options.get("duration").value_or("10"));
   if (!(job.duration_s >= 0))
     throw UsageError("--duration: expected seconds >= 0, got " + echo(*options.get("duration")));
-  if (!options.has("scene")) options.values["scene"] = {"benchmark"};
+  if (!options.has("scene") && !options.has("preset")) options.values["scene"] = {"benchmark"};
   if (!options.has("path") && options.get("scene") == "benchmark")
     options.values["path"] = {shipped_path_file("benchmark.toml").string()};
   job.json_file = options.get("json");

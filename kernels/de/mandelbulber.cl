@@ -7,7 +7,9 @@
  *   - z is a 4-vector (x, y, z as a vec3_t, w apart); r is its 4D length at the start of the step.
  *   - dr is Mandelbulber2's running derivative (aux.DE), starting at 1.
  *   - No step adds c: the loop does, after the step, when the slot adds it.
- *   - Angles are degrees, turned into rotation matrices once per evaluation (mb2_rotation_*).
+ *   - Angles are degrees, turned into rotation matrices once per evaluation (mb2_rotation_*), in
+ *     scalar_t: parameters are the same in every lane, so their trigonometry is done once, not
+ *     per lane (mb2_lane0 takes a uniform value out of a lane vector).
  * Every step computes all lanes; the loop keeps the result only on the lanes still iterating. */
 
 #define MB2_NONE 0
@@ -25,36 +27,59 @@
 #define MB2_DE_IFS 2         /* (r - 2) / dr */
 #define MB2_DE_PSEUDO_KLEINIAN 3
 
-/* A rotation as its three rows. */
+/* A value that is the same in every lane (a parameter), as one scalar. */
+#if FR_LANES == 1
+#define mb2_lane0(x) ((scalar_t)(x))
+#else
+#define mb2_lane0(x) ((scalar_t)(x).s0)
+#endif
+
+/* A rotation as its matrix, row by row (uniform: the same for every lane). */
 typedef struct mb2_rot_t {
-  vec3_t x, y, z;
+  scalar_t m[9];
 } mb2_rot_t;
 
-inline vec3_t mb2_rotate(mb2_rot_t m, vec3_t v) {
-  return v3(v3_dot(m.x, v), v3_dot(m.y, v), v3_dot(m.z, v));
+inline vec3_t mb2_rotate(mb2_rot_t r, vec3_t v) {
+  return v3(r.m[0] * v.x + r.m[1] * v.y + r.m[2] * v.z, r.m[3] * v.x + r.m[4] * v.y + r.m[5] * v.z,
+            r.m[6] * v.x + r.m[7] * v.y + r.m[8] * v.z);
 }
 /* The inverse (transpose) rotation. */
-inline vec3_t mb2_rotate_back(mb2_rot_t m, vec3_t v) {
-  return v3(m.x.x * v.x + m.y.x * v.y + m.z.x * v.z, m.x.y * v.x + m.y.y * v.y + m.z.y * v.z,
-            m.x.z * v.x + m.y.z * v.y + m.z.z * v.z);
+inline vec3_t mb2_rotate_back(mb2_rot_t r, vec3_t v) {
+  return v3(r.m[0] * v.x + r.m[3] * v.y + r.m[6] * v.z, r.m[1] * v.x + r.m[4] * v.y + r.m[7] * v.z,
+            r.m[2] * v.x + r.m[5] * v.y + r.m[8] * v.z);
 }
 
 /* Rz(c) Ry(b) Rx(a), right-handed, angles in degrees: rotate about x first, then y, then z. */
-inline mb2_rot_t mb2_rotation_zyx(real_t a_deg, real_t b_deg, real_t c_deg) {
-  const real_t k = to_real(M_PI / 180);
-  const real_t ca = cos(a_deg * k), sa = sin(a_deg * k);
-  const real_t cb = cos(b_deg * k), sb = sin(b_deg * k);
-  const real_t cc = cos(c_deg * k), sc = sin(c_deg * k);
-  mb2_rot_t m;
-  m.x = v3(cc * cb, cc * sb * sa - sc * ca, cc * sb * ca + sc * sa);
-  m.y = v3(sc * cb, sc * sb * sa + cc * ca, sc * sb * ca - cc * sa);
-  m.z = v3(-sb, cb * sa, cb * ca);
-  return m;
+inline mb2_rot_t mb2_rotation_zyx(scalar_t a_deg, scalar_t b_deg, scalar_t c_deg) {
+  const scalar_t k = (scalar_t)(M_PI / 180);
+  const scalar_t ca = cos(a_deg * k), sa = sin(a_deg * k);
+  const scalar_t cb = cos(b_deg * k), sb = sin(b_deg * k);
+  const scalar_t cc = cos(c_deg * k), sc = sin(c_deg * k);
+  mb2_rot_t r;
+  r.m[0] = cc * cb;
+  r.m[1] = cc * sb * sa - sc * ca;
+  r.m[2] = cc * sb * ca + sc * sa;
+  r.m[3] = sc * cb;
+  r.m[4] = sc * sb * sa + cc * ca;
+  r.m[5] = sc * sb * ca - cc * sa;
+  r.m[6] = -sb;
+  r.m[7] = cb * sa;
+  r.m[8] = cb * ca;
+  return r;
 }
-/* Mandelbulber's "rotation 2" (the Mandelbox's, the pseudo-Kleinian's): Rz(v.z) Ry(v.y) Rx(v.x). */
-inline mb2_rot_t mb2_rotation2(vec3_t deg) { return mb2_rotation_zyx(deg.x, deg.y, deg.z); }
+/* Mandelbulber's "rotation 2" (the Mandelbox's, the pseudo-Kleinian's): Rz(v.z) Ry(v.y) Rx(v.x),
+ * from a vec3 parameter (uniform). */
+inline mb2_rot_t mb2_rotation2(vec3_t deg) {
+  return mb2_rotation_zyx(mb2_lane0(deg.x), mb2_lane0(deg.y), mb2_lane0(deg.z));
+}
 /* Mandelbulber's "rotation 3" (the kaleidoscopic IFS's): Rz(v.x) Ry(v.y) Rx(v.z). */
-inline mb2_rot_t mb2_rotation3(vec3_t deg) { return mb2_rotation_zyx(deg.z, deg.y, deg.x); }
+inline mb2_rot_t mb2_rotation3(vec3_t deg) {
+  return mb2_rotation_zyx(mb2_lane0(deg.z), mb2_lane0(deg.y), mb2_lane0(deg.x));
+}
+/* Whether a vec3 parameter of angles is not all zero (no rotation then). */
+inline int mb2_turns(vec3_t deg) {
+  return mb2_lane0(deg.x) != 0 || mb2_lane0(deg.y) != 0 || mb2_lane0(deg.z) != 0;
+}
 
 /* id 2: theta = asin(z/r) + beta, phi = atan2(y, x) + alpha, both times the power;
  * dr <- p r^(p-1) dr + 1. */
@@ -186,7 +211,7 @@ typedef struct mb2_kifs_t {
   mb2_rot_t rotation;
   int enabled[MB2_KIFS_PLANES];
   int rotated[MB2_KIFS_PLANES]; /* the plane's rotation is not the identity */
-  vec3_t direction[MB2_KIFS_PLANES]; /* unit */
+  scalar_t direction[MB2_KIFS_PLANES][3]; /* unit */
   scalar_t distance[MB2_KIFS_PLANES], intensity[MB2_KIFS_PLANES];
   mb2_rot_t plane_rotation[MB2_KIFS_PLANES];
 } mb2_kifs_t;
@@ -202,10 +227,11 @@ inline void mb2_kifs(vec3_t* z, real_t* w, real_t* dr, const mb2_kifs_t* k) {
   for (int i = 0; i < MB2_KIFS_PLANES; ++i) {
     if (!k->enabled[i]) continue;
     if (k->rotated[i]) q = mb2_rotate(k->plane_rotation[i], q);
-    const real_t l = v3_dot(q, k->direction[i]);
+    const scalar_t nx = k->direction[i][0], ny = k->direction[i][1], nz = k->direction[i][2];
+    const real_t l = q.x * nx + q.y * ny + q.z * nz;
     const real_t d = to_real(k->distance[i]);
-    q = v3_select(l < d, v3_sub(q, v3_scale(k->direction[i], 2 * (l - d) * to_real(k->intensity[i]))),
-                  q);
+    const real_t push = lane_select(l < d, 2 * (l - d) * to_real(k->intensity[i]), to_real(0));
+    q = v3(q.x - nx * push, q.y - ny * push, q.z - nz * push);
   }
   if (k->rotation_enabled)
     q = v3_add(mb2_rotate(k->rotation, v3_sub(q, k->offset)), k->offset);

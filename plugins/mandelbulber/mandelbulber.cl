@@ -28,12 +28,16 @@ typedef struct mb2_setup_t {
 #define MB2_PLANE(i)                                                                            \
   s.kifs.enabled[i] = PARAM(kifs_plane##i);                                                     \
   if (s.kifs.enabled[i]) {                                                                      \
-    s.kifs.direction[i] = v3_normalize(PARAM(kifs_plane##i##_direction));                       \
+    const vec3_t n = PARAM(kifs_plane##i##_direction);                                          \
+    const scalar_t nx = mb2_lane0(n.x), ny = mb2_lane0(n.y), nz = mb2_lane0(n.z);               \
+    const scalar_t length = fmax(sqrt(nx * nx + ny * ny + nz * nz), (scalar_t)FR_SCALAR_MIN);   \
+    s.kifs.direction[i][0] = nx / length;                                                       \
+    s.kifs.direction[i][1] = ny / length;                                                       \
+    s.kifs.direction[i][2] = nz / length;                                                       \
     s.kifs.distance[i] = PARAM(kifs_plane##i##_distance);                                       \
     s.kifs.intensity[i] = PARAM(kifs_plane##i##_intensity);                                     \
-    const vec3_t angles = PARAM(kifs_plane##i##_rotation);                                     \
-    s.kifs.rotated[i] = any_lane((angles.x != 0) | (angles.y != 0) | (angles.z != 0));         \
-    if (s.kifs.rotated[i]) s.kifs.plane_rotation[i] = mb2_rotation3(angles);                    \
+    s.kifs.rotated[i] = mb2_turns(PARAM(kifs_plane##i##_rotation));                             \
+    if (s.kifs.rotated[i]) s.kifs.plane_rotation[i] = mb2_rotation3(PARAM(kifs_plane##i##_rotation)); \
   }
 
 #define MB2_USES(kind)                                                                        \
@@ -50,7 +54,7 @@ inline mb2_setup_t mb2_setup(__constant const scene_params_t* params) {
     s.box.min_r2 = PARAM(box_min_radius) * PARAM(box_min_radius);
     s.box.fixed_r2 = PARAM(box_fixed_radius) * PARAM(box_fixed_radius);
     s.box.offset = PARAM(box_offset);
-    s.box.main_rotation = PARAM(box_main_rotation);
+    s.box.main_rotation = PARAM(box_main_rotation) && mb2_turns(PARAM(box_rotation));
     if (s.box.main_rotation) s.box.main = mb2_rotation2(PARAM(box_rotation));
     s.box.fold_rotations = PARAM(box_fold_rotations);
     if (s.box.fold_rotations) {
@@ -70,7 +74,8 @@ inline mb2_setup_t mb2_setup(__constant const scene_params_t* params) {
     s.kifs.abs_y = PARAM(kifs_abs_y);
     s.kifs.abs_z = PARAM(kifs_abs_z);
     s.kifs.menger_mode = PARAM(kifs_menger_mode);
-    s.kifs.rotation_enabled = PARAM(kifs_rotation_enabled);
+    /* (A rotation by zero angles is skipped: files from 2.06 and before have it on.) */
+    s.kifs.rotation_enabled = PARAM(kifs_rotation_enabled) && mb2_turns(PARAM(kifs_rotation));
     if (s.kifs.rotation_enabled) s.kifs.rotation = mb2_rotation3(PARAM(kifs_rotation));
     MB2_PLANE(0)
     MB2_PLANE(1)
