@@ -21,6 +21,7 @@ FRACTALIS_PACKAGES=(
   libopenexr-dev
   clang libclang-rt-14-dev
   libopenmpi-dev openmpi-bin
+  mandelbulber2 mandelbulber2-data  # the import's independent answer and its 422 example files
 )
 
 fractalis_missing_packages() {

@@ -9,12 +9,17 @@
 # start-up; Fractalis's reported render time, its kernel already built).
 #
 # usage: scripts/compare-mandelbulber2.sh [--examples DIR] [--width PX] [--limit N] [--out DIR]
-#                                         [--match TEXT]
+#                                         [--match TEXT] [--require PERCENT] [--build DIR]
+#                                         [--no-build]
 #   --examples  the .fract files (default: mandelbulber2-data's examples)
 #   --width     image width; the height keeps each file's aspect (default 160)
 #   --limit     compare at most N importable files (default: all)
 #   --match     only files whose path contains TEXT
 #   --out       where renders, logs and results.tsv go (default: build/mb2-compare)
+#   --require   exit 1 unless at least PERCENT of the files compared are within 3% mismatch and
+#               5 footprints (the CTest entry, label mandelbulber2, runs a few files so)
+#   --build     the build folder to take fractalis and mb2_compare from (default: build/)
+#   --no-build  install nothing and build nothing (CTest runs it from a built tree)
 # Prints one line per file and a summary; results.tsv has the table (docs/mandelbulber2.md).
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
@@ -23,7 +28,9 @@ examples=/usr/share/mandelbulber2/examples
 width=160
 limit=0
 match=""
-out="$FRACTALIS_BUILD/mb2-compare"
+out=""
+require=""
+build=1
 while [ $# -gt 0 ]; do
   case "$1" in
     --examples) examples="$2"; shift 2 ;;
@@ -31,13 +38,19 @@ while [ $# -gt 0 ]; do
     --limit) limit="$2"; shift 2 ;;
     --match) match="$2"; shift 2 ;;
     --out) out="$2"; shift 2 ;;
+    --require) require="$2"; shift 2 ;;
+    --build) FRACTALIS_BUILD="$2"; shift 2 ;;
+    --no-build) build=0; shift ;;
     *) echo "compare-mandelbulber2: unknown argument '$1'" >&2; exit 2 ;;
   esac
 done
 
-FRACTALIS_PACKAGES+=(mandelbulber2 mandelbulber2-data)
-fractalis_install_packages
-fractalis_build
+[ -n "$out" ] || out="$FRACTALIS_BUILD/mb2-compare"
+if [ "$build" -eq 1 ]; then
+  fractalis_install_packages
+  fractalis_build
+fi
+command -v mandelbulber2 >/dev/null || { echo "compare-mandelbulber2: mandelbulber2 is not installed" >&2; exit 1; }
 fractalis="$FRACTALIS_BUILD/host/fractalis"
 compare="$FRACTALIS_BUILD/tests/mb2_compare"
 [ -x "$compare" ] || { echo "compare-mandelbulber2: $compare was not built (needs OpenEXR)" >&2; exit 1; }
@@ -122,4 +135,15 @@ ratios=$(awk -F'\t' 'NR > 1 { print $9 }' "$results" | sort -g)
 median=$(echo "$ratios" | awk '{ r[NR] = $1 } END { print (NR % 2 ? r[(NR + 1) / 2] : (r[NR / 2] + r[NR / 2 + 1]) / 2) }')
 worst=$(echo "$ratios" | head -n 1)
 echo "$n files compared: $ok within 3% mismatch and 5 footprints; speed ratio median ${median}x, worst ${worst}x"
+# By formula family: files, within tolerance, median speed ratio.
+echo "by formulas (files, within tolerance, median speed ratio):"
+awk -F'\t' 'NR > 1 { print $2 "\t" ($4 <= 3 && $5 != "nan" && $5 <= 5) "\t" $9 }' "$results" |
+  sort -t$'\t' -k1,1 -k3,3g |
+  awk -F'\t' '{ n[$1]++; ok[$1] += $2; r[$1, n[$1]] = $3 }
+    END { for (f in n) { m = n[f]; med = (m % 2 ? r[f, (m + 1) / 2] : (r[f, m / 2] + r[f, m / 2 + 1]) / 2)
+            printf "  %-32s %3d %3d %6.1fx\n", f, m, ok[f], med } }' | sort
 echo "table: $results"
+if [ -n "$require" ] && [ $((100 * ok)) -lt $((require * n)) ]; then
+  echo "compare-mandelbulber2: $ok of $n within tolerance, fewer than $require%" >&2
+  exit 1
+fi

@@ -167,11 +167,19 @@ TEST(KernelAssembly, ParameterBlockAndSpecialisation) {
   EXPECT_NE(k.source, k2.source);
   EXPECT_TRUE(contains(k2.source, "((scalar_t)0.125f)"));
 
+  // A number travels as its float and the rest: a double kernel adds them back.
+  values[0].v[0] = 0.1;
   const auto bytes = pack_scene_params(info, values);
-  ASSERT_EQ(bytes.size(), 4u);
-  float radius = 0;
-  std::memcpy(&radius, bytes.data(), 4);
-  EXPECT_EQ(radius, 1.0f);
+  ASSERT_EQ(bytes.size(), 8u);
+  float radius[2] = {0, 0};
+  std::memcpy(radius, bytes.data(), 8);
+  EXPECT_EQ(radius[0], 0.1f);
+  EXPECT_NEAR(double(radius[0]) + double(radius[1]), 0.1, 1e-15);
+  EXPECT_NE(radius[1], 0.0f);
+  const auto d = assemble_render_kernel(info, values, KernelConfig{16, Precision::Double});
+  EXPECT_TRUE(contains(d.source, "  float radius;\n  float radius__lo;\n"));
+  EXPECT_TRUE(contains(
+      d.source, "#define FR_PARAM_radius ((scalar_t)params->radius + (scalar_t)params->radius__lo)"));
 }
 
 TEST(KernelAssembly, LaneWidthAndPrecisionDefines) {

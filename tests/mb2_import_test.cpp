@@ -2,6 +2,7 @@
 // camera, hybrid rules, refusals) against Mandelbulber2 2.20's rules worked out here, and the
 // mandelbulber scene's formula steps on the device (double) against the formulas written out in
 // double in this file.
+#include "cli_run.hpp"
 #include "import/fract_file.hpp"
 #include "import/fract_values.hpp"
 #include "import/mb2_import.hpp"
@@ -14,6 +15,7 @@
 #include <toml++/toml.h>
 
 #include <cmath>
+#include <fstream>
 #include <numbers>
 
 namespace fr {
@@ -322,6 +324,78 @@ TEST_F(Mb2De, HybridSequenceByHand) {
   bulb();
   pow2();
   EXPECT_NEAR(de({0.3f, -0.2f, 0.25f}), log_estimate(z.length(), dr), 1e-6 * std::max(1.0, log_estimate(z.length(), dr)));
+}
+
+void write_text(const std::filesystem::path& file, const std::string& text) {
+  std::ofstream(file, std::ios::binary) << text;
+}
+
+// `fractalis import`: 0 and a preset that `render --preset` takes for a faithful import; 1 with
+// one line per reason and nothing written for a refused one; 2 for a file that is not one.
+TEST(Mb2ImportCli, ExitCodesAndWhatIsWritten) {
+  const auto dir = test::fresh_dir("mb2_import_cli");
+  const auto good = dir / "My Sponge 1.fract";
+  write_text(good, kHeader + "[main_parameters]\nformula_1 7;\ncamera 3 -2 1,5;\nN 12;\n");
+  test::CliRun r = test::run({"import", good.string(), "--out", dir.string()});
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("mapped: slot 1: formula 7 -> f1 = menger"), std::string::npos) << r.out;
+  EXPECT_TRUE(std::filesystem::exists(dir / "my_sponge_1.toml")) << r.out;
+
+  const auto refused = dir / "refused.fract";
+  write_text(refused, kHeader + "[main_parameters]\nformula_1 16;\nprimitive_water_1_enabled true;\n");
+  r = test::run({"import", refused.string(), "--out", dir.string()});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("refused: slot 1: formula 16 (box_fold_bulb_pow2) is not supported\n"),
+            std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("refused: primitive_water_1: primitives are not supported\n"), std::string::npos)
+      << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "refused.toml"));
+
+  const auto noise = dir / "noise.fract";
+  write_text(noise, std::string("\x7f" "ELF\x02\x01\x01\0\0\0", 10));
+  test::expect_usage_error({"import", noise.string(), "--out", dir.string()}, "noise.fract:1:");
+  EXPECT_FALSE(std::filesystem::exists(dir / "noise.toml"));
+  test::expect_usage_error({"render", "--preset", refused.string(), "--out", (dir / "x.png").string()},
+                           "cannot be imported faithfully: slot 1: formula 16");
+  test::expect_usage_error({"import", (dir / "missing.fract").string()}, "cannot be opened");
+}
+
+// The .fract file itself as --preset: the imported view and settings render (the sponge from
+// outside: the middle pixel hits it).
+TEST(Mb2ImportCli, RenderTakesTheFractFile) {
+  const auto dir = test::fresh_dir("mb2_render_preset");
+  const auto file = dir / "sponge.fract";
+  write_text(file, kHeader + "[main_parameters]\nformula_1 7;\ncamera 3 -2 1,5;\nN 8;\n"
+                             "legacy_coordinate_system true;\nimage_width 64;\nimage_height 48;\n");
+  const auto out = dir / "sponge.exr";
+  const test::CliRun r =
+      test::run({"render", "--preset", file.string(), "--size", "64x48", "--out", out.string()});
+  ASSERT_EQ(r.code, 0) << r.err;
+}
+
+// Every example Debian's mandelbulber2-data installs (scripts/common.sh installs it) is read and
+// imported or refused, none unreadable, and at least 119 import.
+TEST(Mb2ImportExamples, EveryExampleImportsOrIsRefused) {
+  const std::filesystem::path dir = "/usr/share/mandelbulber2/examples";
+  if (!std::filesystem::is_directory(dir)) GTEST_SKIP() << "mandelbulber2-data is not installed";
+  size_t files = 0, imported = 0;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(dir)) {
+    if (entry.path().extension() != ".fract") continue;
+    ++files;
+    try {
+      const Mb2Import result = import_fract(load_fract(entry.path()), "x");
+      if (result.faithful()) {
+        ++imported;
+        EXPECT_FALSE(result.preset_toml.empty());
+      } else {
+        EXPECT_FALSE(result.refusals().empty());
+      }
+    } catch (const FractError& e) {
+      ADD_FAILURE() << e.what();
+    }
+  }
+  EXPECT_EQ(files, 422u);
+  EXPECT_GE(imported, 119u);
 }
 
 }  // namespace

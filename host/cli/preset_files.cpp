@@ -49,8 +49,10 @@ Preset preset_from_path(const std::string& value) {
       throw UsageError(std::string("--preset: ") + e.what());
     }
     if (!imported.faithful()) {
-      std::string message = "--preset " + echo(value) + ": cannot be imported faithfully:";
-      for (const std::string& why : imported.refusals()) message += "\n  " + why;
+      // One line, as every usage error: the reasons joined.
+      std::string message = "--preset " + echo(value) + ": cannot be imported faithfully: ";
+      const std::vector<std::string> why = imported.refusals();
+      for (size_t i = 0; i < why.size(); ++i) message += (i ? "; " : "") + why[i];
       throw UsageError(message);
     }
     if (auto p = preset_from_text(imported.preset_toml, file, id, &problems)) return *p;

@@ -22,7 +22,7 @@ std::string preset_id_from_file(const std::filesystem::path& file);
 Mb2Import import_fract_file(const std::filesystem::path& file);
 
 // The preset in the file; a UsageError names what is wrong (for a .fract file, every reason it
-// cannot be imported, one per line).
+// cannot be imported, on one line).
 Preset preset_from_path(const std::string& value);
 
 }  // namespace fr

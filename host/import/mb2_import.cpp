@@ -371,7 +371,17 @@ void Importer::formulas() {
 
   // The estimate: the formula's own; in a hybrid the family with the most iterations (linear
   // first on a tie); an explicit delta_DE_function overrides either.
+  // Mandelbulber2's fix-ups of the stored choice: before 2.09 0 and 2 were swapped; 2.06 and
+  // before had linear_DE_mode (linear, else logarithmic); before 2.20 the choice is reset to the
+  // formulas' own unless the DE method was forced.
   long long function = integer("delta_DE_function");
+  if (f.version < 2.09 - 1e-9 && given("delta_DE_function"))
+    function = function == 0 ? 2 : function == 2 ? 0 : function;
+  handled.insert("linear_DE_mode");
+  if (f.version <= 2.06 + 1e-9) {
+    if (given("linear_DE_mode")) function = 1;
+    if (function != 1) function = 2;
+  }
   if (f.version < 2.20 - 1e-9 && integer("delta_DE_method") == 0) function = 0;
   std::string estimate;
   if (function == 0) {

@@ -137,6 +137,15 @@ std::string literal(double v, Precision p) {
 
 void append_params(std::ostringstream& out, const SceneInfo& info,
                    const std::vector<fr_value>& values, Precision precision) {
+  // A runtime number in the kernel: key alone in float, key + key__lo in double.
+  const auto number = [&](const std::string& key, const char* index) {
+    const std::string hi = "(scalar_t)params->" + key + index;
+    if (precision != Precision::Double) return "(" + hi + ")";
+    return "(" + hi + " + (scalar_t)params->" + key + "__lo" + index + ")";
+  };
+  // A number travels as two floats, its value rounded to float and the rest (key__lo), so that a
+  // double kernel gets the host's double back to about 48 bits (a deep view of an imported
+  // scene moves by a float-rounded rotation angle or constant); a float kernel reads key alone.
   out << "/* Generated from the scene's parameter table. */\n";
   out << "typedef struct scene_params_t {\n";
   int runtime_count = 0;
@@ -145,7 +154,7 @@ void append_params(std::ostringstream& out, const SceneInfo& info,
     ++runtime_count;
     switch (p.type) {
       case FR_PARAM_FLOAT:
-        out << "  float " << p.key << ";\n";
+        out << "  float " << p.key << ";\n  float " << p.key << "__lo;\n";
         break;
       case FR_PARAM_INT:
       case FR_PARAM_BOOL:
@@ -153,7 +162,7 @@ void append_params(std::ostringstream& out, const SceneInfo& info,
         out << "  int " << p.key << ";\n";
         break;
       default:
-        out << "  float " << p.key << "[3];\n";
+        out << "  float " << p.key << "[3];\n  float " << p.key << "__lo[3];\n";
         break;
     }
   }
@@ -181,7 +190,7 @@ void append_params(std::ostringstream& out, const SceneInfo& info,
     } else {
       switch (p.type) {
         case FR_PARAM_FLOAT:
-          out << "((scalar_t)params->" << p.key << ")";
+          out << number(p.key, "");
           break;
         case FR_PARAM_INT:
         case FR_PARAM_BOOL:
@@ -189,8 +198,8 @@ void append_params(std::ostringstream& out, const SceneInfo& info,
           out << "(params->" << p.key << ")";
           break;
         default:
-          out << "v3s(params->" << p.key << "[0], params->" << p.key << "[1], params->" << p.key
-              << "[2])";
+          out << "v3s(" << number(p.key, "[0]") << ", " << number(p.key, "[1]") << ", "
+              << number(p.key, "[2]") << ")";
       }
     }
     out << "\n";
@@ -397,10 +406,13 @@ std::vector<uint8_t> pack_scene_params(const SceneInfo& info, const std::vector<
       int32_t v = static_cast<int32_t>(values[i].v[0]);
       push(&v);
     } else {
+      float hi[3] = {0, 0, 0}, lo[3] = {0, 0, 0};
       for (int c = 0; c < p.component_count(); ++c) {
-        float v = static_cast<float>(values[i].v[c]);
-        push(&v);
+        hi[c] = static_cast<float>(values[i].v[c]);
+        lo[c] = static_cast<float>(values[i].v[c] - static_cast<double>(hi[c]));
       }
+      for (int c = 0; c < p.component_count(); ++c) push(&hi[c]);
+      for (int c = 0; c < p.component_count(); ++c) push(&lo[c]);
     }
   }
   if (bytes.empty()) bytes.assign(4, 0);
