@@ -68,6 +68,7 @@ mb2_plain+='#volumetric_fog_enabled=0#iteration_fog_enable=0#glow_enabled=0#basi
 mb2_plain+='#fake_lights_enabled=0#main_light_volumetric_enabled=0#hdr_blur_enabled=0'
 mb2_plain+='#aux_light_volumetric_enabled_1=0#aux_light_volumetric_enabled_2=0'
 mb2_plain+='#aux_light_volumetric_enabled_3=0#aux_light_volumetric_enabled_4=0#env_mapping_enable=0'
+mb2_plain+='#mat1_transparency_of_surface=0'
 fractalis_plain=(--set render.effects.shadows=false --set render.effects.ao=false
   --set render.effects.glow=false --set render.effects.fog=false
   --set render.effects.reflections=false --set render.effects.dof=false --samples 1)

@@ -356,7 +356,7 @@ TEST(Mb2ImportCli, ExitCodesAndWhatIsWritten) {
   test::expect_usage_error({"import", noise.string(), "--out", dir.string()}, "noise.fract:1:");
   EXPECT_FALSE(std::filesystem::exists(dir / "noise.toml"));
   test::expect_usage_error({"render", "--preset", refused.string(), "--out", (dir / "x.png").string()},
-                           "cannot be imported faithfully: slot 1: formula 16");
+                           "slot 1: formula 16 (box_fold_bulb_pow2) is not supported");
   test::expect_usage_error({"import", (dir / "missing.fract").string()}, "cannot be opened");
 }
 

@@ -22,11 +22,12 @@ Precision resolve_precision(ClRuntime& runtime, const SceneInfo& info, const Sce
   const std::array<float, 3> eye{static_cast<float>(rays.eye.x), static_cast<float>(rays.eye.y),
                                  static_cast<float>(rays.eye.z)};
   const float de = probe_de(runtime, info, state.params, {eye}, 1, Precision::Double)[0];
-  const double eye_distance = glm::length(rays.eye);
-  // The nearest surface is at least |DE| away; it lies inside the bounding sphere, and within
-  // |eye| + DE of the origin.
+  // The nearest surface is at least |DE| away. The hit threshold never falls below a few ulps of
+  // max(|p|, bounding radius) (kernels/rays.cl), so the bounding radius is the scale float must
+  // resolve a footprint at: a scene bounded generously (an imported view's, to everything
+  // Mandelbulber2 could see) needs double sooner than its eye's distance alone would say.
   const double distance = std::isfinite(de) ? std::abs(double(de)) : 0.0;
-  const double position_scale = std::min(state.bounding_radius, eye_distance + distance);
+  const double position_scale = state.bounding_radius;
   const double footprint = distance * rays.pixel_angle_rad;
   return footprint < kFloatFootprintUlps * float_resolution(position_scale) ? Precision::Double
                                                                             : Precision::Float;
