@@ -167,19 +167,22 @@ TEST(KernelAssembly, ParameterBlockAndSpecialisation) {
   EXPECT_NE(k.source, k2.source);
   EXPECT_TRUE(contains(k2.source, "((scalar_t)0.125f)"));
 
-  // A number travels as its float and the rest: a double kernel adds them back.
-  values[0].v[0] = 0.1;
-  const auto bytes = pack_scene_params(info, values);
-  ASSERT_EQ(bytes.size(), 8u);
-  float radius[2] = {0, 0};
-  std::memcpy(radius, bytes.data(), 8);
-  EXPECT_EQ(radius[0], 0.1f);
-  EXPECT_NEAR(double(radius[0]) + double(radius[1]), 0.1, 1e-15);
-  EXPECT_NE(radius[1], 0.0f);
+  // A number travels as its float and the rest in two more floats: a double kernel adds them
+  // back to the double exactly.
+  for (double v : {0.1, 1.3, -2.718281828459045, 1e-7, 12345.678901234567}) {
+    values[0].v[0] = v;
+    const auto bytes = pack_scene_params(info, values);
+    ASSERT_EQ(bytes.size(), 12u);
+    float radius[3] = {0, 0, 0};
+    std::memcpy(radius, bytes.data(), 12);
+    EXPECT_EQ(radius[0], static_cast<float>(v));
+    EXPECT_EQ(double(radius[0]) + (double(radius[1]) + double(radius[2])), v) << v;
+  }
   const auto d = assemble_render_kernel(info, values, KernelConfig{16, Precision::Double});
-  EXPECT_TRUE(contains(d.source, "  float radius;\n  float radius__lo;\n"));
-  EXPECT_TRUE(contains(
-      d.source, "#define FR_PARAM_radius ((scalar_t)params->radius + (scalar_t)params->radius__lo)"));
+  EXPECT_TRUE(contains(d.source, "  float radius;\n  float radius__mid;\n  float radius__lo;\n"));
+  EXPECT_TRUE(contains(d.source,
+                       "#define FR_PARAM_radius ((scalar_t)params->radius + ((scalar_t)params->"
+                       "radius__mid + (scalar_t)params->radius__lo))"));
 }
 
 TEST(KernelAssembly, LaneWidthAndPrecisionDefines) {

@@ -143,6 +143,24 @@ TEST(Mb2Import, HybridRules) {
   EXPECT_EQ(single["params"]["f1_add_c"].value<bool>(), false);
 }
 
+// The main light: (sin a cos b, -cos a cos b, sin b) towards the light in the camera's frame
+// (x right, y forward, z up). Looking along +y with z up, the default a = -45, b = 45 degrees is
+// towards (-0.5, -0.5, 0.7071): the key light travels the opposite way.
+TEST(Mb2Import, MainLightRelativeToTheCamera) {
+  const toml::table t = preset_of(import_fract(
+      parse("[main_parameters]\ncamera 0 -6 0;\ntarget 0 0 0;\ncamera_top 0 0 1;\n"
+            "main_light_colour ffff 8000 0;\nmain_light_intensity 2;\n"),
+      "x"));
+  const toml::array* lights = t["lights"].as_array();
+  ASSERT_TRUE(lights && lights->size() == 1);
+  const toml::table& key = *lights->get(0)->as_table();
+  const double expected[3] = {0.5, 0.5, -std::sqrt(0.5)};
+  for (int i = 0; i < 3; ++i)
+    EXPECT_NEAR(key["direction"][i].value<double>().value_or(NAN), expected[i], 1e-12) << i;
+  EXPECT_NEAR(key["color"][1].value<double>().value_or(NAN), 0x8000 / 65535.0, 1e-12);
+  EXPECT_NEAR(key["intensity"].value<double>().value_or(NAN), 2.6, 1e-12);
+}
+
 std::vector<std::string> refusals(const std::string& body) {
   return import_fract(parse(body), "x").refusals();
 }
@@ -180,6 +198,44 @@ TEST(Mb2Import, RefusesWhatWouldChangeTheShape) {
       "sets are not supported");
   EXPECT_EQ(refusals("[main_parameters]\nhybrid_fractal_enable true;\nformula_1 8;\nformula_2 8;\n").size(),
             0u);
+}
+
+// A preset's [[lights]] replace the scene's first lights (directional), and anything wrong in
+// them is reported with its line, leaving the state as it was.
+TEST(PresetLights, ReplaceTheFirstLightsOrAreReported) {
+  const auto scene =
+      test::load_or_fail(std::filesystem::path(SCENE_PLUGIN_DIR) / "mandelbulber" PLUGIN_SUFFIX);
+  ASSERT_TRUE(scene);
+  auto preset = [](const std::string& lights) {
+    std::vector<std::string> problems;
+    auto p = preset_from_text("scene = \"mandelbulber\"\nname = \"x\"\n" + lights, "p.toml", "p",
+                              &problems);
+    EXPECT_TRUE(p) << (problems.empty() ? "" : problems[0]);
+    return *p;
+  };
+  SceneState state = make_default_state(scene->info);
+  const fr_light fill = state.lights.at(1);
+  EXPECT_TRUE(apply_preset(preset("[[lights]]\ndirection = [0, 0, -1]\ncolor = [1, 0.5, 0]\n"
+                                  "intensity = 2.5\n"),
+                           scene->info, state)
+                  .empty());
+  EXPECT_EQ(state.lights[0].kind, FR_LIGHT_DIRECTIONAL);
+  EXPECT_EQ(state.lights[0].vector[2], -1);
+  EXPECT_EQ(state.lights[0].color[1], 0.5);
+  EXPECT_EQ(state.lights[0].intensity, 2.5);
+  EXPECT_EQ(state.lights[1].vector[0], fill.vector[0]) << "the second light is the scene's";
+  const SceneState before = state;
+  auto first = [&](const std::string& lights) {
+    const auto problems = apply_preset(preset(lights), scene->info, state);
+    EXPECT_EQ(state.lights[0].intensity, before.lights[0].intensity) << "state left as it was";
+    return problems.empty() ? std::string("(none)") : problems[0];
+  };
+  EXPECT_NE(first("[[lights]]\ndirection = [0, 0, 0]\n").find("p.toml:4: direction"), std::string::npos);
+  EXPECT_NE(first("[[lights]]\ncolour = [1, 1, 1]\n").find("unknown light key 'colour'"),
+            std::string::npos);
+  EXPECT_NE(first("[[lights]]\n[[lights]]\n[[lights]]\n").find("3 lights, and scene 'mandelbulber' has 2"),
+            std::string::npos);
+  EXPECT_NE(first("[[lights]]\nintensity = -1\n").find("intensity: expected"), std::string::npos);
 }
 
 // The scene's DE on the device, in double, against the formulas written out here.

@@ -159,6 +159,7 @@ struct Importer {
   const FractFile& f;
   Mb2Import out;
   std::string camera_toml;
+  std::string lights_toml;
   std::vector<std::pair<std::string, std::string>> params;    // scene key, TOML value
   std::vector<std::pair<std::string, std::string>> settings;  // settings key, TOML value
   std::set<std::string> handled;                               // main keys looked at
@@ -519,11 +520,41 @@ void Importer::look() {
   const bool light = flag("main_light_enable");
   const bool shadows = flag("shadows_enabled");
   setting("render.effects.shadows", light && shadows ? "true" : "false");
-  for (const char* key : {"main_light_alpha", "main_light_beta", "main_light_colour",
-                          "main_light_intensity", "main_light_position_relative"})
-    if (given(key)) note(Kind::Ignored, key, "the scene's own lights are used");
-  handled.insert({"main_light_alpha", "main_light_beta", "main_light_colour",
-                  "main_light_intensity", "main_light_position_relative"});
+  {
+    // The main light as the scene's key light. Mandelbulber2's points from the surface towards
+    // the light: (sin a cos b, -cos a cos b, sin b) in the camera's frame (x right, y forward,
+    // z up) when relative, in the world's otherwise; a directional light here travels the
+    // other way. The scene's key light has intensity 1.3 where Mandelbulber2's has 1.
+    const double a = number("main_light_alpha") * M_PI / 180, b = number("main_light_beta") * M_PI / 180;
+    const std::array<double, 3> local = {std::sin(a) * std::cos(b), -std::cos(a) * std::cos(b),
+                                         std::sin(b)};
+    std::array<double, 3> to_light = local;
+    if (flag("main_light_position_relative")) {
+      const auto eye = vec3("camera"), target = vec3("target"), top = vec3("camera_top");
+      std::array<double, 3> fw = {target[0] - eye[0], target[1] - eye[1], target[2] - eye[2]};
+      const double fl = std::max(length(fw), 1e-300);
+      for (double& c : fw) c /= fl;
+      const double along = top[0] * fw[0] + top[1] * fw[1] + top[2] * fw[2];
+      std::array<double, 3> up = {top[0] - along * fw[0], top[1] - along * fw[1], top[2] - along * fw[2]};
+      const double ul = length(up);
+      if (ul > 0) {
+        for (double& c : up) c /= ul;
+        const std::array<double, 3> right = {fw[1] * up[2] - fw[2] * up[1],
+                                             fw[2] * up[0] - fw[0] * up[2],
+                                             fw[0] * up[1] - fw[1] * up[0]};
+        for (int i = 0; i < 3; ++i) to_light[i] = right[i] * local[0] + fw[i] * local[1] + up[i] * local[2];
+      }
+    }
+    const auto colour = fract_colour(f, "main_light_colour", main("main_light_colour"));
+    const double intensity = light ? 1.3 * std::clamp(number("main_light_intensity"), 0.0, 1e5) : 0.0;
+    std::ostringstream t;
+    t << "[[lights]]\ndirection = "
+      << vec3_text({-to_light[0], -to_light[1], -to_light[2]}) << "\ncolor = " << vec3_text(colour)
+      << "\nintensity = " << number_text(intensity) << "\n";
+    lights_toml = t.str();
+    note(Kind::Approximated, "main_light_alpha, main_light_beta, main_light_colour, main_light_intensity",
+         "the scene's key light (its fill light stays)");
+  }
   const bool ao = flag("ambient_occlusion_enabled");
   setting("render.effects.ao", ao ? "true" : "false");
   if (ao) note(Kind::Approximated, "ambient_occlusion_enabled", "Fractalis's step-count occlusion");
@@ -581,6 +612,7 @@ std::string Importer::toml(const std::string& name) const {
   t << "[params]\n";
   for (const auto& [k, v] : params) t << k << " = " << v << "\n";
   t << "[camera]\n" << camera_toml;
+  t << lights_toml;
   t << "[settings]\n";
   for (const auto& [k, v] : settings) t << "\"" << k << "\" = " << v << "\n";
   return t.str();

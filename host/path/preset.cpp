@@ -43,7 +43,9 @@ std::optional<toml::table> parse(const std::string& text, const std::filesystem:
   }
 }
 
-const char* const kTopKeys[] = {"scene", "name", "description", "params", "camera", "settings"};
+const char* const kTopKeys[] = {"scene", "name", "description", "params", "camera", "settings",
+                                "lights"};
+const char* const kLightKeys[] = {"direction", "color", "intensity"};
 const char* const kCameraKeys[] = {"eye", "target", "up", "fov_deg"};
 
 }  // namespace
@@ -60,7 +62,7 @@ std::optional<Preset> preset_from_text(const std::string& text, const std::files
     if (std::find(std::begin(kTopKeys), std::end(kTopKeys), key.str()) == std::end(kTopKeys)) {
       problem(toml_line(node), "unknown key '" + echo(key.str()) +
                                    "' (a preset has scene, name, description, [params], "
-                                   "[camera], [settings])");
+                                   "[camera], [settings], [[lights]])");
       ok = false;
     }
   if (const toml::node* n = root->get("settings"); n && !n->as_table()) {
@@ -246,6 +248,48 @@ std::vector<std::string> apply_preset(const Preset& preset, const SceneInfo& sce
                     *v);
       }
       if (auto why = check_camera(next.camera)) problem(toml_line(*n), "camera: " + *why);
+    }
+  }
+  if (const toml::node* n = root->get("lights")) {
+    // [[lights]]: directional lights in place of the scene's first ones, in order.
+    const toml::array* lights = n->as_array();
+    if (!lights || !lights->is_array_of_tables()) {
+      problem(toml_line(*n), "[[lights]] must be tables (direction, color, intensity)");
+    } else if (lights->size() > next.lights.size()) {
+      problem(toml_line(*n), std::to_string(lights->size()) + " lights, and scene '" + scene.id +
+                                 "' has " + std::to_string(next.lights.size()));
+    } else {
+      for (size_t i = 0; i < lights->size(); ++i) {
+        const toml::table& t = *lights->get(i)->as_table();
+        fr_light light = next.lights[i];
+        light.kind = FR_LIGHT_DIRECTIONAL;
+        for (const auto& [key, value] : t) {
+          const std::string k(key.str());
+          if (std::find(std::begin(kLightKeys), std::end(kLightKeys), k) == std::end(kLightKeys)) {
+            problem(toml_line(value), "unknown light key '" + echo(k) +
+                                          "' (direction, color, intensity)");
+            continue;
+          }
+          if (k == "intensity") {
+            const auto v = toml_number(value);
+            if (v && *v >= 0 && *v <= 1e6)
+              light.intensity = *v;
+            else
+              problem(toml_line(value), "intensity: expected a number from 0 to 1e6");
+            continue;
+          }
+          const auto v = toml_vec3(value);
+          const bool ok = v && (k == "color" ? v->x >= 0 && v->y >= 0 && v->z >= 0
+                                             : v->x != 0 || v->y != 0 || v->z != 0);
+          if (!ok) {
+            problem(toml_line(value), k + (k == "color" ? ": expected [r, g, b], none below 0"
+                                                        : ": expected [x, y, z], not zero"));
+            continue;
+          }
+          store_dvec3(k == "color" ? light.color : light.vector, *v);
+        }
+        next.lights[i] = light;
+      }
     }
   }
   if (problems.empty()) state = std::move(next);

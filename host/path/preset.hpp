@@ -9,6 +9,10 @@
 //   [camera]                            # optional; any of eye, target, up, fov_deg
 //   eye = [9.0, 6.0, 10.0]
 //   target = [0.0, 0.0, 0.0]
+//   [[lights]]                          # optional; directional lights in place of the scene's
+//   direction = [0.3, -0.8, -0.5]       # first ones: the way the light travels, its colour
+//   color = [1.0, 0.9, 0.8]             # (linear RGB) and intensity
+//   intensity = 1.3
 //   [settings]                          # optional; settings keys as --set takes them
 //   "render.hit_threshold_k" = 2.0      # (an imported file's quality and effects)
 //

@@ -137,15 +137,16 @@ std::string literal(double v, Precision p) {
 
 void append_params(std::ostringstream& out, const SceneInfo& info,
                    const std::vector<fr_value>& values, Precision precision) {
-  // A runtime number in the kernel: key alone in float, key + key__lo in double.
+  // A number travels as three floats, its value rounded to float and the rest in two more
+  // (key__mid, key__lo), so that a double kernel gets the host's double back exactly (a deep
+  // view of an imported scene moves by a float-rounded rotation angle or constant); a float
+  // kernel reads key alone. (mid + lo is exact in double, and so is adding it to key.)
   const auto number = [&](const std::string& key, const char* index) {
     const std::string hi = "(scalar_t)params->" + key + index;
     if (precision != Precision::Double) return "(" + hi + ")";
-    return "(" + hi + " + (scalar_t)params->" + key + "__lo" + index + ")";
+    return "(" + hi + " + ((scalar_t)params->" + key + "__mid" + index + " + (scalar_t)params->" +
+           key + "__lo" + index + "))";
   };
-  // A number travels as two floats, its value rounded to float and the rest (key__lo), so that a
-  // double kernel gets the host's double back to about 48 bits (a deep view of an imported
-  // scene moves by a float-rounded rotation angle or constant); a float kernel reads key alone.
   out << "/* Generated from the scene's parameter table. */\n";
   out << "typedef struct scene_params_t {\n";
   int runtime_count = 0;
@@ -154,7 +155,8 @@ void append_params(std::ostringstream& out, const SceneInfo& info,
     ++runtime_count;
     switch (p.type) {
       case FR_PARAM_FLOAT:
-        out << "  float " << p.key << ";\n  float " << p.key << "__lo;\n";
+        out << "  float " << p.key << ";\n  float " << p.key << "__mid;\n  float " << p.key
+            << "__lo;\n";
         break;
       case FR_PARAM_INT:
       case FR_PARAM_BOOL:
@@ -162,7 +164,8 @@ void append_params(std::ostringstream& out, const SceneInfo& info,
         out << "  int " << p.key << ";\n";
         break;
       default:
-        out << "  float " << p.key << "[3];\n  float " << p.key << "__lo[3];\n";
+        out << "  float " << p.key << "[3];\n  float " << p.key << "__mid[3];\n  float " << p.key
+            << "__lo[3];\n";
         break;
     }
   }
@@ -406,12 +409,18 @@ std::vector<uint8_t> pack_scene_params(const SceneInfo& info, const std::vector<
       int32_t v = static_cast<int32_t>(values[i].v[0]);
       push(&v);
     } else {
-      float hi[3] = {0, 0, 0}, lo[3] = {0, 0, 0};
+      // hi + mid + lo is the double exactly: each remainder is exact in double and has 24
+      // fewer significant bits than the last.
+      float hi[3] = {0, 0, 0}, mid[3] = {0, 0, 0}, lo[3] = {0, 0, 0};
       for (int c = 0; c < p.component_count(); ++c) {
-        hi[c] = static_cast<float>(values[i].v[c]);
-        lo[c] = static_cast<float>(values[i].v[c] - static_cast<double>(hi[c]));
+        const double v = values[i].v[c];
+        hi[c] = static_cast<float>(v);
+        const double rest = v - static_cast<double>(hi[c]);
+        mid[c] = static_cast<float>(rest);
+        lo[c] = static_cast<float>(rest - static_cast<double>(mid[c]));
       }
       for (int c = 0; c < p.component_count(); ++c) push(&hi[c]);
+      for (int c = 0; c < p.component_count(); ++c) push(&mid[c]);
       for (int c = 0; c < p.component_count(); ++c) push(&lo[c]);
     }
   }
