@@ -14,6 +14,8 @@
 #include "io/printable.hpp"
 
 #include <algorithm>
+#include <fstream>
+#include <iterator>
 #include <map>
 #include <ostream>
 
@@ -21,7 +23,7 @@ namespace fr {
 namespace {
 
 const char* const kUsage =
-    "usage: fractalis import FILE.fract [--out DIR]\n"
+    "usage: fractalis import FILE.fract [--out DIR] [--force]\n"
     "       fractalis import --check DIR [--list]\n"
     "\n"
     "Imports a Mandelbulber2 settings file as a preset of the `mandelbulber` scene (its formulas,\n"
@@ -75,8 +77,12 @@ int check_folder(const std::filesystem::path& dir, const ParsedOptions& options,
     throw UsageError("--check: '" + echo(dir.string()) + "' is not a folder");
   std::vector<std::filesystem::path> files;
   for (auto it = std::filesystem::recursive_directory_iterator(dir, ec);
-       !ec && it != std::filesystem::recursive_directory_iterator(); it.increment(ec))
-    if (it->path().extension() == ".fract" && it->is_regular_file(ec)) files.push_back(it->path());
+       !ec && it != std::filesystem::recursive_directory_iterator(); it.increment(ec)) {
+    std::error_code kind_ec;
+    if (it->path().extension() == ".fract" && it->is_regular_file(kind_ec))
+      files.push_back(it->path());
+  }
+  if (ec) throw std::runtime_error(printable(dir.string()) + ": cannot be read (" + ec.message() + ")");
   std::sort(files.begin(), files.end());
   const SceneChecker checker = load_checker(options);
   std::map<std::string, int> reasons;  // reason -> files refused for it
@@ -140,6 +146,7 @@ int command_import(const std::vector<std::string>& args, std::ostream& out, std:
   specs.push_back({"out", "DIR", false, "write the preset into DIR (default: the user's presets folder)"});
   specs.push_back({"check", "DIR", false, "import every .fract file under DIR, count the refusals"});
   specs.push_back({"list", nullptr, false, "with --check: a line for each file"});
+  specs.push_back({"force", nullptr, false, "replace a preset of the same name that differs"});
   specs.push_back({"help", nullptr, false, "show this help"});
   const ParsedOptions options = parse_options("import", rest, specs);
   if (options.has("help")) {
@@ -191,6 +198,18 @@ int command_import(const std::vector<std::string>& args, std::ostream& out, std:
     if (ec) throw std::runtime_error(dir.string() + ": cannot be created (" + ec.message() + ")");
   }
   const std::filesystem::path target = dir / (id + ".toml");
+  {
+    // A preset of that name with other contents (edited by hand, or another file's) is kept
+    // unless --force says otherwise; the same import again is fine.
+    std::error_code ec;
+    if (std::filesystem::exists(target, ec) && !options.has("force")) {
+      std::ifstream in(target, std::ios::binary);
+      std::string old((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+      if (old != result.preset_toml)
+        throw UsageError(printable(target.string()) +
+                         " exists with other contents (--force replaces it)");
+    }
+  }
   std::string error;
   if (!write_file_atomic(target, result.preset_toml, &error)) throw std::runtime_error(error);
   out << "wrote " << printable(target.string()) << " (preset '" << id << "' of scene '"

@@ -1,6 +1,7 @@
 #include "import/fract_file.hpp"
 
 #include "io/echo.hpp"
+#include "io/printable.hpp"
 
 #include <cstdlib>
 #include <fstream>
@@ -21,7 +22,7 @@ std::string trim(const std::string& s) {
 }  // namespace
 
 std::string fract_where(const FractFile& f, int line, const std::string& key) {
-  std::string out = f.file.string();
+  std::string out = printable(f.file.string());
   if (line > 0) out.append(":").append(std::to_string(line));
   out.append(": ");
   if (!key.empty()) out.append(echo(key)).append(": ");
@@ -112,11 +113,14 @@ FractFile parse_fract(const std::string& text, const std::filesystem::path& file
 }
 
 FractFile load_fract(const std::filesystem::path& file) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(file, ec))
+    throw FractError(printable(file.string()) + ": is a folder, not a settings file");
   std::ifstream in(file, std::ios::binary);
-  if (!in) throw FractError(file.string() + ": cannot be opened");
+  if (!in) throw FractError(printable(file.string()) + ": cannot be opened");
   std::string text(kMaxFractBytes + 1, '\0');
   in.read(text.data(), static_cast<std::streamsize>(text.size()));
-  if (in.bad()) throw FractError(file.string() + ": cannot be read");
+  if (in.bad()) throw FractError(printable(file.string()) + ": cannot be read");
   text.resize(static_cast<size_t>(in.gcount()));
   return parse_fract(text, file);
 }
