@@ -13,7 +13,8 @@
 //     move the fit): each pixel's difference, in pixel footprints z fov / height, is
 //     |z_fractalis - exp(a + b v)| / (z fov / height). A wrong camera or shape shows up in the
 //     mask and in the fit's spread; a global scale of depth alone would not.
-// Prints one line: "mismatch_percent median_footprints p90_footprints hit_pixels_mb2 hit_pixels_fr".
+// Prints one line: "mismatch_percent median_footprints p90_footprints hit_pixels_mb2
+// hit_pixels_fr".
 #include "exr_read.hpp"
 
 #include <png.h>
@@ -72,7 +73,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "mb2_compare: cannot read %s: %s\n", argv[2], e.what());
     return 2;
   }
-  if (exr.width != w || exr.height != h || !exr.channels.count("Z") || !exr.channels.count("mask")) {
+  if (exr.width != w || exr.height != h || !exr.channels.count("Z") ||
+      !exr.channels.count("mask")) {
     std::fprintf(stderr, "mb2_compare: sizes differ (%dx%d against %dx%d) or no Z/mask\n", w, h,
                  exr.width, exr.height);
     return 2;
@@ -90,7 +92,8 @@ int main(int argc, char** argv) {
     for (int dy = -1; dy <= 1; ++dy)
       for (int dx = -1; dx <= 1; ++dx) {
         const int xx = x + dx, yy = y + dy;
-        if (xx >= 0 && yy >= 0 && xx < w && yy < h && img[size_t(yy) * w + xx] == value) return true;
+        if (xx >= 0 && yy >= 0 && xx < w && yy < h && img[size_t(yy) * w + xx] == value)
+          return true;
       }
     return false;
   };

@@ -2,10 +2,10 @@
 // camera, hybrid rules, refusals) against Mandelbulber2 2.20's rules worked out here, and the
 // mandelbulber scene's formula steps on the device (double) against the formulas written out in
 // double in this file.
+#include "import/mb2_import.hpp"
 #include "cli_run.hpp"
 #include "import/fract_file.hpp"
 #include "import/fract_values.hpp"
-#include "import/mb2_import.hpp"
 #include "path/preset.hpp"
 #include "plugin/scene_instance.hpp"
 #include "render/de_probe.hpp"
@@ -21,9 +21,12 @@
 namespace fr {
 namespace {
 
-const std::string kHeader = "# Mandelbulber settings file\n# version 2.20\n# only modified parameters\n";
+const std::string kHeader =
+    "# Mandelbulber settings file\n# version 2.20\n# only modified parameters\n";
 
-FractFile parse(const std::string& body) { return parse_fract(kHeader + body, "test.fract"); }
+FractFile parse(const std::string& body) {
+  return parse_fract(kHeader + body, "test.fract");
+}
 
 std::string fract_error(const std::string& text) {
   try {
@@ -60,23 +63,26 @@ TEST(FractFile, BadInputNamesFileLineAndKey) {
   EXPECT_NE(fract_error("").find("bad.fract: empty file"), std::string::npos);
   EXPECT_NE(fract_error("[main_parameters]\nN 5;\n").find("not a Mandelbulber settings file"),
             std::string::npos);
-  EXPECT_NE(fract_error(kHeader + std::string("[main_parameters]\nN 5\0;\n", 23)).find("control byte"),
-            std::string::npos);
+  EXPECT_NE(
+      fract_error(kHeader + std::string("[main_parameters]\nN 5\0;\n", 23)).find("control byte"),
+      std::string::npos);
   std::string noise = kHeader;
   for (int i = 0; i < 300; ++i) noise += static_cast<char>((i * 37) % 256);
   EXPECT_NE(fract_error(noise).find("bad.fract:"), std::string::npos);
   EXPECT_NE(fract_error(kHeader + "[main_parameters]\nN " + std::string(200000, '9') + ";\n")
                 .find("bad.fract:5: a line of 200003 characters"),
             std::string::npos);
-  EXPECT_NE(fract_error(kHeader + "[main_parameters]\nN 5;\nN 6;\n").find("bad.fract:6: N: given twice"),
-            std::string::npos);
+  EXPECT_NE(
+      fract_error(kHeader + "[main_parameters]\nN 5;\nN 6;\n").find("bad.fract:6: N: given twice"),
+      std::string::npos);
   EXPECT_NE(fract_error(kHeader + "N 5;\n").find("before the first section"), std::string::npos);
   const FractFile f = parse("[main_parameters]\nN 1e308;\ncamera nan nan nan;\nformula_1 abc;\n");
   try {
     fract_integer(f, "N", f.main.at("N"));
     ADD_FAILURE() << "N 1e308 read as an integer";
   } catch (const FractError& e) {
-    EXPECT_NE(std::string(e.what()).find("test.fract:5: N: expected an integer"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("test.fract:5: N: expected an integer"), std::string::npos)
+        << e.what();
   }
   try {
     fract_vec3(f, "camera", f.main.at("camera"));
@@ -117,8 +123,8 @@ TEST(Mb2Import, AbsentKeysTakeMandelbulber2Defaults) {
 TEST(Mb2Import, FieldOfViewFromTheImagePlane) {
   const toml::table t = preset_of(import_fract(
       parse("[main_parameters]\nfov 0,6;\nimage_width 1600;\nimage_height 900;\n"), "x"));
-  EXPECT_NEAR(num(t, "camera", "fov_deg"), 2 * std::atan(0.6 * 16.0 / 9.0 / 2) * 180 / std::numbers::pi,
-              1e-9);
+  EXPECT_NEAR(num(t, "camera", "fov_deg"),
+              2 * std::atan(0.6 * 16.0 / 9.0 / 2) * 180 / std::numbers::pi, 1e-9);
 }
 
 // A hybrid: the estimate family with the most iterations (linear on a tie), the largest default
@@ -138,7 +144,8 @@ TEST(Mb2Import, HybridRules) {
   const toml::table tie = preset_of(import_fract(
       parse("[main_parameters]\nhybrid_fractal_enable true;\nformula_1 2;\nformula_2 8;\n"), "x"));
   EXPECT_EQ(tie["params"]["estimate"].value<std::string>(), "linear");
-  const toml::table single = preset_of(import_fract(parse("[main_parameters]\nformula_1 7;\n"), "x"));
+  const toml::table single =
+      preset_of(import_fract(parse("[main_parameters]\nformula_1 7;\n"), "x"));
   EXPECT_EQ(single["params"]["estimate"].value<std::string>(), "ifs");
   EXPECT_EQ(single["params"]["f1_add_c"].value<bool>(), false);
 }
@@ -147,10 +154,10 @@ TEST(Mb2Import, HybridRules) {
 // (x right, y forward, z up). Looking along +y with z up, the default a = -45, b = 45 degrees is
 // towards (-0.5, -0.5, 0.7071): the key light travels the opposite way.
 TEST(Mb2Import, MainLightRelativeToTheCamera) {
-  const toml::table t = preset_of(import_fract(
-      parse("[main_parameters]\ncamera 0 -6 0;\ntarget 0 0 0;\ncamera_top 0 0 1;\n"
-            "main_light_colour ffff 8000 0;\nmain_light_intensity 2;\n"),
-      "x"));
+  const toml::table t = preset_of(
+      import_fract(parse("[main_parameters]\ncamera 0 -6 0;\ntarget 0 0 0;\ncamera_top 0 0 1;\n"
+                         "main_light_colour ffff 8000 0;\nmain_light_intensity 2;\n"),
+                   "x"));
   const toml::array* lights = t["lights"].as_array();
   ASSERT_TRUE(lights && lights->size() == 1);
   const toml::table& key = *lights->get(0)->as_table();
@@ -184,19 +191,22 @@ TEST(Mb2Import, RefusesWhatWouldChangeTheShape) {
       "perspective_type equirectangular: not supported");
   EXPECT_EQ(refusals("[main_parameters]\nperspective_type 0;\n").size(), 0u);
   EXPECT_EQ(refusals("[main_parameters]\nprimitive_water_1_enabled false;\n").size(), 0u);
-  EXPECT_EQ(parse_fract("# Mandelbulber settings file\n# version 2.25\n[main_parameters]\n", "n.fract")
-                .version,
-            2.25);
-  EXPECT_EQ(import_fract(parse_fract("# Mandelbulber settings file\n# version 2.25\n[main_parameters]\n",
-                                     "n.fract"),
-                         "x")
-                .faithful(),
-            false);
+  EXPECT_EQ(
+      parse_fract("# Mandelbulber settings file\n# version 2.25\n[main_parameters]\n", "n.fract")
+          .version,
+      2.25);
+  EXPECT_EQ(
+      import_fract(parse_fract("# Mandelbulber settings file\n# version 2.25\n[main_parameters]\n",
+                               "n.fract"),
+                   "x")
+          .faithful(),
+      false);
   has(refusals("[main_parameters]\nhybrid_fractal_enable true;\nformula_1 8;\nformula_2 8;\n"
                "[fractal_2]\nmandelbox_scale -1,5;\n"),
       "slot 2: formula 8 (mandelbox) in slot 1 too, with another mandelbox_scale: two different "
       "sets are not supported");
-  EXPECT_EQ(refusals("[main_parameters]\nhybrid_fractal_enable true;\nformula_1 8;\nformula_2 8;\n").size(),
+  EXPECT_EQ(refusals("[main_parameters]\nhybrid_fractal_enable true;\nformula_1 8;\nformula_2 8;\n")
+                .size(),
             0u);
 }
 
@@ -230,10 +240,12 @@ TEST(PresetLights, ReplaceTheFirstLightsOrAreReported) {
     EXPECT_EQ(state.lights[0].intensity, before.lights[0].intensity) << "state left as it was";
     return problems.empty() ? std::string("(none)") : problems[0];
   };
-  EXPECT_NE(first("[[lights]]\ndirection = [0, 0, 0]\n").find("p.toml:4: direction"), std::string::npos);
+  EXPECT_NE(first("[[lights]]\ndirection = [0, 0, 0]\n").find("p.toml:4: direction"),
+            std::string::npos);
   EXPECT_NE(first("[[lights]]\ncolour = [1, 1, 1]\n").find("unknown light key 'colour'"),
             std::string::npos);
-  EXPECT_NE(first("[[lights]]\n[[lights]]\n[[lights]]\n").find("3 lights, and scene 'mandelbulber' has 2"),
+  EXPECT_NE(first("[[lights]]\n[[lights]]\n[[lights]]\n")
+                .find("3 lights, and scene 'mandelbulber' has 2"),
             std::string::npos);
   EXPECT_NE(first("[[lights]]\nintensity = -1\n").find("intensity: expected"), std::string::npos);
 }
@@ -242,7 +254,8 @@ TEST(PresetLights, ReplaceTheFirstLightsOrAreReported) {
 class Mb2De : public ::testing::Test {
  protected:
   void SetUp() override {
-    scene = test::load_or_fail(std::filesystem::path(SCENE_PLUGIN_DIR) / "mandelbulber" PLUGIN_SUFFIX);
+    scene =
+        test::load_or_fail(std::filesystem::path(SCENE_PLUGIN_DIR) / "mandelbulber" PLUGIN_SUFFIX);
     ASSERT_TRUE(scene);
     values = make_default_state(scene->info).params;
   }
@@ -275,7 +288,9 @@ struct V4 {
   double length() const { return std::sqrt(x * x + y * y + z * z + w * w); }
 };
 
-double log_estimate(double r, double dr) { return std::clamp(0.5 * r * std::log(r) / dr, 0.0, 10.0); }
+double log_estimate(double r, double dr) {
+  return std::clamp(0.5 * r * std::log(r) / dr, 0.0, 10.0);
+}
 
 // The power-2 bulb's map at a point, one iteration, c = p.
 TEST_F(Mb2De, Power2MapAtAPoint) {
@@ -379,7 +394,8 @@ TEST_F(Mb2De, HybridSequenceByHand) {
   bulb();
   bulb();
   pow2();
-  EXPECT_NEAR(de({0.3f, -0.2f, 0.25f}), log_estimate(z.length(), dr), 1e-6 * std::max(1.0, log_estimate(z.length(), dr)));
+  EXPECT_NEAR(de({0.3f, -0.2f, 0.25f}), log_estimate(z.length(), dr),
+              1e-6 * std::max(1.0, log_estimate(z.length(), dr)));
 }
 
 void write_text(const std::filesystem::path& file, const std::string& text) {
@@ -398,21 +414,27 @@ TEST(Mb2ImportCli, ExitCodesAndWhatIsWritten) {
   EXPECT_TRUE(std::filesystem::exists(dir / "my_sponge_1.toml")) << r.out;
 
   const auto refused = dir / "refused.fract";
-  write_text(refused, kHeader + "[main_parameters]\nformula_1 16;\nprimitive_water_1_enabled true;\n");
+  write_text(refused,
+             kHeader + "[main_parameters]\nformula_1 16;\nprimitive_water_1_enabled true;\n");
   r = test::run({"import", refused.string(), "--out", dir.string()});
   EXPECT_EQ(r.code, 1);
   EXPECT_NE(r.err.find("refused: slot 1: formula 16 (box_fold_bulb_pow2) is not supported\n"),
-            std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("refused: primitive_water_1: primitives are not supported\n"), std::string::npos)
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("refused: primitive_water_1: primitives are not supported\n"),
+            std::string::npos)
       << r.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "refused.toml"));
 
   const auto noise = dir / "noise.fract";
-  write_text(noise, std::string("\x7f" "ELF\x02\x01\x01\0\0\0", 10));
+  write_text(noise, std::string("\x7f"
+                                "ELF\x02\x01\x01\0\0\0",
+                                10));
   test::expect_usage_error({"import", noise.string(), "--out", dir.string()}, "noise.fract:1:");
   EXPECT_FALSE(std::filesystem::exists(dir / "noise.toml"));
-  test::expect_usage_error({"render", "--preset", refused.string(), "--out", (dir / "x.png").string()},
-                           "slot 1: formula 16 (box_fold_bulb_pow2) is not supported");
+  test::expect_usage_error(
+      {"render", "--preset", refused.string(), "--out", (dir / "x.png").string()},
+      "slot 1: formula 16 (box_fold_bulb_pow2) is not supported");
   test::expect_usage_error({"import", (dir / "missing.fract").string()}, "cannot be opened");
 }
 
@@ -421,8 +443,9 @@ TEST(Mb2ImportCli, ExitCodesAndWhatIsWritten) {
 TEST(Mb2ImportCli, RenderTakesTheFractFile) {
   const auto dir = test::fresh_dir("mb2_render_preset");
   const auto file = dir / "sponge.fract";
-  write_text(file, kHeader + "[main_parameters]\nformula_1 7;\ncamera 3 -2 1,5;\nN 8;\n"
-                             "legacy_coordinate_system true;\nimage_width 64;\nimage_height 48;\n");
+  write_text(file, kHeader +
+                       "[main_parameters]\nformula_1 7;\ncamera 3 -2 1,5;\nN 8;\n"
+                       "legacy_coordinate_system true;\nimage_width 64;\nimage_height 48;\n");
   const auto out = dir / "sponge.exr";
   const test::CliRun r =
       test::run({"render", "--preset", file.string(), "--size", "64x48", "--out", out.string()});

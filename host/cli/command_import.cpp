@@ -28,7 +28,8 @@ const char* const kUsage =
     "\n"
     "Imports a Mandelbulber2 settings file as a preset of the `mandelbulber` scene (its formulas,\n"
     "hybrid order, view, quality and effects), written to DIR or the user's presets folder, and\n"
-    "prints what was mapped, approximated, ignored or refused. A file whose shape Fractalis cannot\n"
+    "prints what was mapped, approximated, ignored or refused. A file whose shape Fractalis "
+    "cannot\n"
     "draw exactly is refused (exit 1), one reason a line. --check imports every .fract file under\n"
     "DIR without writing and counts the refusals by reason.\n";
 
@@ -82,7 +83,8 @@ int check_folder(const std::filesystem::path& dir, const ParsedOptions& options,
     if (it->path().extension() == ".fract" && it->is_regular_file(kind_ec))
       files.push_back(it->path());
   }
-  if (ec) throw std::runtime_error(printable(dir.string()) + ": cannot be read (" + ec.message() + ")");
+  if (ec)
+    throw std::runtime_error(printable(dir.string()) + ": cannot be read (" + ec.message() + ")");
   std::sort(files.begin(), files.end());
   const SceneChecker checker = load_checker(options);
   std::map<std::string, int> reasons;  // reason -> files refused for it
@@ -143,8 +145,10 @@ int command_import(const std::vector<std::string>& args, std::ostream& out, std:
     rest.erase(rest.begin());
   }
   auto specs = plugin_option_specs();
-  specs.push_back({"out", "DIR", false, "write the preset into DIR (default: the user's presets folder)"});
-  specs.push_back({"check", "DIR", false, "import every .fract file under DIR, count the refusals"});
+  specs.push_back(
+      {"out", "DIR", false, "write the preset into DIR (default: the user's presets folder)"});
+  specs.push_back(
+      {"check", "DIR", false, "import every .fract file under DIR, count the refusals"});
   specs.push_back({"list", nullptr, false, "with --check: a line for each file"});
   specs.push_back({"force", nullptr, false, "replace a preset of the same name that differs"});
   specs.push_back({"help", nullptr, false, "show this help"});

@@ -59,7 +59,8 @@ Preset preset_from_path(const std::string& value) {
   } else if (auto p = read_preset_file(file, id, &problems)) {
     return *p;
   }
-  throw UsageError("--preset: " + (problems.empty() ? echo(value) + ": not a preset" : problems.front()));
+  throw UsageError("--preset: " +
+                   (problems.empty() ? echo(value) + ": not a preset" : problems.front()));
 }
 
 }  // namespace fr

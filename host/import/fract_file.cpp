@@ -35,9 +35,12 @@ FractFile parse_fract(const std::string& text, const std::filesystem::path& file
   auto fail = [&](int line, const std::string& key, const std::string& what) {
     throw FractError(fract_where(f, line, key) + what);
   };
-  if (text.empty()) fail(0, "", "empty file (a Mandelbulber settings file starts with '# Mandelbulber settings file')");
+  if (text.empty())
+    fail(0, "",
+         "empty file (a Mandelbulber settings file starts with '# Mandelbulber settings file')");
   if (text.size() > kMaxFractBytes)
-    fail(0, "", "larger than " + std::to_string(kMaxFractBytes >> 20) + " MiB: not a settings file");
+    fail(0, "",
+         "larger than " + std::to_string(kMaxFractBytes >> 20) + " MiB: not a settings file");
 
   enum class Section { None, Main, Fractal, Skipped } section = Section::None;
   int slot = 0;
@@ -49,19 +52,22 @@ FractFile parse_fract(const std::string& text, const std::filesystem::path& file
     const std::string raw = text.substr(start, end - start);
     start = end + 1;
     if (raw.size() > kMaxFractLineChars)
-      fail(number, "", "a line of " + std::to_string(raw.size()) + " characters (at most " +
-                           std::to_string(kMaxFractLineChars) + "): not a settings file");
+      fail(number, "",
+           "a line of " + std::to_string(raw.size()) + " characters (at most " +
+               std::to_string(kMaxFractLineChars) + "): not a settings file");
     for (unsigned char c : raw)
       if ((c < 0x20 && c != '\t' && c != '\r') || c == 0x7f)
-        fail(number, "", "a control byte (0x" + std::string(1, "0123456789abcdef"[c >> 4]) +
-                             std::string(1, "0123456789abcdef"[c & 15]) +
-                             "): not a text settings file");
+        fail(number, "",
+             "a control byte (0x" + std::string(1, "0123456789abcdef"[c >> 4]) +
+                 std::string(1, "0123456789abcdef"[c & 15]) + "): not a text settings file");
     const std::string line = trim(raw);
     if (line.empty()) continue;
     if (!header) {
       if (line != "# Mandelbulber settings file")
-        fail(number, "", "not a Mandelbulber settings file (its first line should be '# "
-                         "Mandelbulber settings file', it is '" + echo(line) + "')");
+        fail(number, "",
+             "not a Mandelbulber settings file (its first line should be '# "
+             "Mandelbulber settings file', it is '" +
+                 echo(line) + "')");
       header = true;
       continue;
     }
@@ -105,10 +111,11 @@ FractFile parse_fract(const std::string& text, const std::filesystem::path& file
     auto& table = section == Section::Main ? f.main : f.fractal[slot];
     auto [it, inserted] = table.emplace(key, FractEntry{value, number});
     if (!inserted && it->second.value != value)
-      fail(number, key, "given twice with different values (line " +
-                            std::to_string(it->second.line) + " too)");
+      fail(number, key,
+           "given twice with different values (line " + std::to_string(it->second.line) + " too)");
   }
-  if (!header) fail(0, "", "not a Mandelbulber settings file (no '# Mandelbulber settings file' line)");
+  if (!header)
+    fail(0, "", "not a Mandelbulber settings file (no '# Mandelbulber settings file' line)");
   return f;
 }
 

@@ -42,10 +42,10 @@ struct FractEntry {
 };
 
 struct FractFile {
-  std::filesystem::path file;  // for messages
-  double version = 0;          // `# version 2.20` -> 2.20
-  bool only_modified = false;  // `# only modified parameters`
-  std::map<std::string, FractEntry> main;                  // [main_parameters]
+  std::filesystem::path file;                                     // for messages
+  double version = 0;                                             // `# version 2.20` -> 2.20
+  bool only_modified = false;                                     // `# only modified parameters`
+  std::map<std::string, FractEntry> main;                         // [main_parameters]
   std::map<std::string, FractEntry> fractal[kFractFormulaSlots];  // [fractal_1] at 0
 };
 

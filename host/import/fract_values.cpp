@@ -76,7 +76,8 @@ std::array<double, 3> fract_colour(const FractFile& f, const std::string& key,
   std::array<double, 3> v{};
   if (w.size() != 3) bad(f, key, e, "a colour as three hex words (rrrr gggg bbbb)");
   for (int i = 0; i < 3; ++i) {
-    if (w[i].empty() || w[i].size() > 4) bad(f, key, e, "a colour as three hex words of 1-4 digits");
+    if (w[i].empty() || w[i].size() > 4)
+      bad(f, key, e, "a colour as three hex words of 1-4 digits");
     char* stop = nullptr;
     const long c = std::strtol(w[i].c_str(), &stop, 16);
     if (*stop != '\0' || c < 0) bad(f, key, e, "a colour as three hex words of 1-4 digits");

@@ -6,15 +6,15 @@
 namespace fr {
 namespace {
 
-#define FR_SLOTS(key, value)                                                              \
-  {key "_1", value}, {key "_2", value}, {key "_3", value}, {key "_4", value},             \
-      {key "_5", value}, {key "_6", value}, {key "_7", value}, {key "_8", value}, {       \
-    key "_9", value                                                                       \
+#define FR_SLOTS(key, value)                                                                     \
+  {key "_1", value}, {key "_2", value}, {key "_3", value}, {key "_4", value}, {key "_5", value}, \
+      {key "_6", value}, {key "_7", value}, {key "_8", value}, {                                 \
+    key "_9", value                                                                              \
   }
-#define FR_PLANES(key, value)                                                                  \
+#define FR_PLANES(key, value)                                                                    \
   {key "_0", value}, {key "_1", value}, {key "_2", value}, {key "_3", value}, {key "_4", value}, \
-      {key "_5", value}, {key "_6", value}, {key "_7", value}, {                               \
-    key "_8", value                                                                            \
+      {key "_5", value}, {key "_6", value}, {key "_7", value}, {                                 \
+    key "_8", value                                                                              \
   }
 
 const Mb2Default kMain[] = {
@@ -188,8 +188,12 @@ const char* find(std::span<const Mb2Default> table, const std::string& key) {
 
 }  // namespace
 
-std::span<const Mb2Default> mb2_main_defaults() { return kMain; }
-std::span<const Mb2Default> mb2_fractal_defaults() { return kFractal; }
+std::span<const Mb2Default> mb2_main_defaults() {
+  return kMain;
+}
+std::span<const Mb2Default> mb2_fractal_defaults() {
+  return kFractal;
+}
 
 FractEntry mb2_main_entry(const FractFile& f, const std::string& key) {
   if (auto it = f.main.find(key); it != f.main.end()) return it->second;

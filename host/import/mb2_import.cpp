@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <numbers>
 #include <set>
 #include <sstream>
 
@@ -37,12 +38,13 @@ const Formula kFormulas[] = {
 };
 
 // Names of other formulas the examples use, for refusals that say what the formula is.
-const std::map<int, const char*> kOtherFormulaNames = {
-    {11, "xenodreambuie"},        {13, "mandelbulb2"},          {14, "mandelbulb3"},
-    {15, "mandelbulb4"},          {16, "box_fold_bulb_pow2"},   {17, "mandelbox_smooth"},
-    {18, "mandelbox_vary_scale4d"}, {19, "aexion"},             {20, "benesi"},
-    {21, "bristorbrot"},          {101, "pseudo_kleinian_std_de"}, {104, "pseudo_kleinian_mod1"},
-    {117, "pseudo_kleinian_mod2"}};
+// clang-format off
+const std::map<long long, const char*> kOtherFormulaNames = {
+    {11, "xenodreambuie"}, {13, "mandelbulb2"}, {14, "mandelbulb3"}, {15, "mandelbulb4"},
+    {16, "box_fold_bulb_pow2"}, {17, "mandelbox_smooth"}, {18, "mandelbox_vary_scale4d"},
+    {19, "aexion"}, {20, "benesi"}, {21, "bristorbrot"}, {101, "pseudo_kleinian_std_de"},
+    {104, "pseudo_kleinian_mod1"}, {117, "pseudo_kleinian_mod2"}};
+// clang-format on
 
 const Formula* find_formula(long long id) {
   for (const Formula& f : kFormulas)
@@ -91,10 +93,12 @@ const std::map<std::string, std::vector<KindParam>> kKindParams = {
            {"kifs_abs_z", "IFS_abs_z", KindParam::Bool},
            {"kifs_menger_mode", "IFS_menger_sponge_mode", KindParam::Bool}};
        static const char* const plane_keys[9][10] = {
-#define FR_PLANE_KEYS(i)                                                                    \
-  {"kifs_plane" #i, "IFS_enabled_" #i, "kifs_plane" #i "_direction", "IFS_direction_" #i,   \
-   "kifs_plane" #i "_distance", "IFS_distance_" #i, "kifs_plane" #i "_intensity",           \
-   "IFS_intensity_" #i, "kifs_plane" #i "_rotation", "IFS_rotations_" #i}
+#define FR_PLANE_KEYS(i)                                                                   \
+  {                                                                                        \
+    "kifs_plane" #i, "IFS_enabled_" #i, "kifs_plane" #i "_direction", "IFS_direction_" #i, \
+        "kifs_plane" #i "_distance", "IFS_distance_" #i, "kifs_plane" #i "_intensity",     \
+        "IFS_intensity_" #i, "kifs_plane" #i "_rotation", "IFS_rotations_" #i              \
+  }
            FR_PLANE_KEYS(0), FR_PLANE_KEYS(1), FR_PLANE_KEYS(2), FR_PLANE_KEYS(3), FR_PLANE_KEYS(4),
            FR_PLANE_KEYS(5), FR_PLANE_KEYS(6), FR_PLANE_KEYS(7), FR_PLANE_KEYS(8)};
 #undef FR_PLANE_KEYS
@@ -124,14 +128,16 @@ const std::pair<const char*, const char*> kPseudoKleinianOptions[] = {
     {"transf_sphere_inversion_enabled_false", "its sphere inversion"}};
 
 // Main keys that do not change the picture (views of the GUI, animation, file paths, info).
+// clang-format off
 const std::set<std::string> kNotPicture = {
     "camera_rotation", "camera_distance_to_target", "image_width", "image_height",
     "image_proportion", "keyframe_last_to_render", "flight_last_to_render", "frames_per_keyframe",
     "flight_speed", "flight_rotation_speed_vector", "flight_movement_speed_vector", "info",
-    "description", "stereo_eye_distance", "stereo_mode", "analityc_DE_mode", "hdr",
+    "description", "stereo_eye_distance", "stereo_mode", "analityc_DE_mode",
     "coloring_random_seed", "mat1_coloring_random_seed", "DOF_samples", "DOF_min_samples",
     "DOF_max_noise", "DOF_monte_carlo", "DOF_number_of_passes", "voxel_custom_limit_enabled",
     "file_destination", "file_background", "file_envmap", "file_lightmap", "formula_maxiter"};
+// clang-format on
 
 std::string number_text(double v) {
   char buffer[40];
@@ -148,7 +154,9 @@ std::string vec3_text(const std::array<double, 3>& v) {
 }
 
 // An angle in degrees brought into [-360, 360] (the scene's range): the same rotation.
-double wrap_degrees(double deg) { return std::fmod(deg, 360.0); }
+double wrap_degrees(double deg) {
+  return std::fmod(deg, 360.0);
+}
 
 double length(const std::array<double, 3>& v) {
   return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
@@ -162,7 +170,7 @@ struct Importer {
   std::string lights_toml;
   std::vector<std::pair<std::string, std::string>> params;    // scene key, TOML value
   std::vector<std::pair<std::string, std::string>> settings;  // settings key, TOML value
-  std::set<std::string> handled;                               // main keys looked at
+  std::set<std::string> handled;                              // main keys looked at
 
   void note(Kind kind, const std::string& item, const std::string& text) {
     out.notes.push_back({kind, item, text});
@@ -180,7 +188,9 @@ struct Importer {
   bool given(const std::string& key) const { return f.main.count(key) != 0; }
 
   void param(const std::string& key, const std::string& toml) { params.emplace_back(key, toml); }
-  void setting(const std::string& key, const std::string& toml) { settings.emplace_back(key, toml); }
+  void setting(const std::string& key, const std::string& toml) {
+    settings.emplace_back(key, toml);
+  }
 
   void run(const std::string& name);
   void version();
@@ -261,14 +271,14 @@ void Importer::formulas() {
     if (id != 0) {
       formula = find_formula(id);
       if (!formula) {
-        const auto named = kOtherFormulaNames.find(static_cast<int>(id));
-        refuse(slot, "formula " + std::to_string(id) +
-                         (named != kOtherFormulaNames.end()
-                              ? std::string(" (") + named->second + ")"
-                              : (id == 1 || id == 6 || id == 9 || id == 12)
-                                    ? std::string(" (none in Mandelbulber2 2.20)")
-                                    : std::string()) +
-                         " is not supported");
+        const auto named = kOtherFormulaNames.find(id);
+        refuse(slot,
+               "formula " + std::to_string(id) +
+                   (named != kOtherFormulaNames.end() ? std::string(" (") + named->second + ")"
+                    : (id == 1 || id == 6 || id == 9 || id == 12)
+                        ? std::string(" (none in Mandelbulber2 2.20)")
+                        : std::string()) +
+                   " is not supported");
       }
     }
     if (s == 0 && id == 0) refuse(slot, "no formula (Mandelbulber2 draws nothing)");
@@ -276,7 +286,8 @@ void Importer::formulas() {
     param(f_key, "\"" + std::string(formula ? formula->kind : "none") + "\"");
     if (!formula) continue;
     if (!first) first = formula;
-    note(Kind::Mapped, slot, "formula " + std::to_string(id) + " -> " + f_key + " = " + formula->kind);
+    note(Kind::Mapped, slot,
+         "formula " + std::to_string(id) + " -> " + f_key + " = " + formula->kind);
     bailout_max = std::max(bailout_max, formula->bailout);
     long long iterations = 1, start = 0, stop = 1000;
     bool check = true;
@@ -301,8 +312,8 @@ void Importer::formulas() {
     param(f_key + "_check_bailout", check ? "true" : "false");
 
     // The kind's parameters.
-    const auto& kind_params = kKindParams.count(formula->kind) ? kKindParams.at(formula->kind)
-                                                               : std::vector<KindParam>{};
+    const auto& kind_params =
+        kKindParams.count(formula->kind) ? kKindParams.at(formula->kind) : std::vector<KindParam>{};
     const auto seen = kind_slot.find(formula->kind);
     for (const KindParam& p : kind_params) {
       const FractEntry e = mb2_fractal_entry(f, s, p.fract_key);
@@ -346,8 +357,8 @@ void Importer::formulas() {
                                      [&](const auto& kv) { return kv.first == p.scene_key; });
         if (it != params.end() && it->second != value)
           refuse(slot, "formula " + std::to_string(id) + " (" + formula->kind + ") in slot " +
-                           std::to_string(seen->second + 1) + " too, with another " +
-                           p.fract_key + ": two different sets are not supported");
+                           std::to_string(seen->second + 1) + " too, with another " + p.fract_key +
+                           ": two different sets are not supported");
       }
     }
     if (std::string(formula->kind) == "mandelbox") {
@@ -406,15 +417,18 @@ void Importer::formulas() {
     estimate = "pseudo_kleinian";
   } else {
     refuse("delta_DE_function", std::to_string(function) +
-                                    (function == 4 ? " (Jos-Kleinian)" : function == 5 ? " (dIFS)" : "") +
+                                    (function == 4   ? " (Jos-Kleinian)"
+                                     : function == 5 ? " (dIFS)"
+                                                     : "") +
                                     " is not supported");
     estimate = "linear";
   }
   param("estimate", "\"" + estimate + "\"");
-  param("linear_offset", number_text(hybrid && estimate == "linear" ? number("linear_DE_offset") : 0));
+  param("linear_offset",
+        number_text(hybrid && estimate == "linear" ? number("linear_DE_offset") : 0));
 
-  const double bailout = flag("use_default_bailout") ? (hybrid ? bailout_max : first->bailout)
-                                                     : number("bailout");
+  const double bailout =
+      flag("use_default_bailout") ? (hybrid ? bailout_max : first->bailout) : number("bailout");
   if (!(bailout >= 0.01 && bailout <= 1e10)) refuse("bailout", "0.01 to 1e10 is supported");
   param("bailout", number_text(std::clamp(bailout, 0.01, 1e10)));
 
@@ -448,12 +462,16 @@ void Importer::camera() {
   const auto w = integer("image_width"), h = integer("image_height");
   const double fov = number("fov");
   if (eye == target) refuse("camera", "the camera is at the target");
-  if (!(fov > 0 && fov < 100)) refuse("fov", "expected a value above 0 (the image plane's height at unit distance)");
-  if (w < 1 || h < 1 || w > 65535 || h > 65535) refuse("image_width", "a size of 1 to 65535 pixels");
-  const double aspect = static_cast<double>(std::max(w, 1LL)) / static_cast<double>(std::max(h, 1LL));
+  if (!(fov > 0 && fov < 100))
+    refuse("fov", "expected a value above 0 (the image plane's height at unit distance)");
+  if (w < 1 || h < 1 || w > 65535 || h > 65535)
+    refuse("image_width", "a size of 1 to 65535 pixels");
+  const double aspect =
+      static_cast<double>(std::max(w, 1LL)) / static_cast<double>(std::max(h, 1LL));
   // Mandelbulber2's fov is the image plane's height at unit distance; Fractalis's fov_deg the
   // horizontal angle, so the same picture at Mandelbulber2's aspect.
-  const double fov_deg = 2 * std::atan(std::clamp(fov, 1e-9, 99.0) * aspect / 2) * 180 / M_PI;
+  const double fov_deg =
+      2 * std::atan(std::clamp(fov, 1e-9, 99.0) * aspect / 2) * 180 / std::numbers::pi;
   std::ostringstream c;
   c << "eye = " << vec3_text(eye) << "\ntarget = " << vec3_text(target)
     << "\nup = " << vec3_text(top) << "\nfov_deg = " << number_text(fov_deg) << "\n";
@@ -461,9 +479,11 @@ void Importer::camera() {
   note(Kind::Mapped, "camera, target, camera_top, fov",
        "the view (fov " + number_text(fov) + " -> fov_deg " + number_text(fov_deg) + ")");
   note(Kind::Approximated, "image_width, image_height",
-       std::to_string(w) + "x" + std::to_string(h) + ": the view keeps its width; render at the "
-       "same aspect (--size " + std::to_string(w) + "x" + std::to_string(h) +
-       " or a multiple) for Mandelbulber2's height");
+       std::to_string(w) + "x" + std::to_string(h) +
+           ": the view keeps its width; render at the "
+           "same aspect (--size " +
+           std::to_string(w) + "x" + std::to_string(h) +
+           " or a multiple) for Mandelbulber2's height");
   const bool mirror = flag("legacy_coordinate_system");
   setting("render.mirror_vertical", mirror ? "true" : "false");
   if (mirror) note(Kind::Mapped, "legacy_coordinate_system", "render.mirror_vertical = true");
@@ -485,7 +505,8 @@ void Importer::quality() {
   param("limits", limits ? "true" : "false");
   param("limit_min", vec3_text(vec3("limit_min")));
   param("limit_max", vec3_text(vec3("limit_max")));
-  if (limits) note(Kind::Mapped, "limits_enabled", "limits, limit_min, limit_max, solid_interior = true");
+  if (limits)
+    note(Kind::Mapped, "limits_enabled", "limits, limit_min, limit_max, solid_interior = true");
   // DE_factor scales Mandelbulber2's steps only; Fractalis's step scale multiplies the estimate
   // before the hit test too, so the threshold is scaled by it to hit where Mandelbulber2 does.
   const double de_factor = number("DE_factor");
@@ -498,13 +519,15 @@ void Importer::quality() {
   note(Kind::Mapped, "DE_factor", "render.step_scale = " + number_text(step));
   // Mandelbulber2 marches up to 10000 steps; grazing rays of its scenes need more than
   // Fractalis's default (hybrid34: 19% of the rays out of 200 steps, none out of 1000).
-  setting("render.max_steps", std::to_string(std::min(10000, static_cast<int>(std::ceil(1000 / step)))));
+  setting("render.max_steps",
+          std::to_string(std::min(10000, static_cast<int>(std::ceil(1000 / step)))));
   if (flag("constant_DE_threshold")) {
     const double thr = number("DE_thresh");
     if (!(thr > 0 && thr <= 1e6)) refuse("DE_thresh", "expected a distance above 0");
     const double abs = std::clamp(thr * step, 1e-12, 1e6);
     setting("render.hit_threshold_abs", number_text(abs));
-    note(Kind::Mapped, "constant_DE_threshold, DE_thresh", "render.hit_threshold_abs = " + number_text(abs));
+    note(Kind::Mapped, "constant_DE_threshold, DE_thresh",
+         "render.hit_threshold_abs = " + number_text(abs));
   }
   // Mandelbulber2 hits at distance < |eye - p| fov / (height detail_level): one pixel's
   // footprint over detail_level, Fractalis's k times the footprint.
@@ -525,7 +548,8 @@ void Importer::look() {
     // the light: (sin a cos b, -cos a cos b, sin b) in the camera's frame (x right, y forward,
     // z up) when relative, in the world's otherwise; a directional light here travels the
     // other way. The scene's key light has intensity 1.3 where Mandelbulber2's has 1.
-    const double a = number("main_light_alpha") * M_PI / 180, b = number("main_light_beta") * M_PI / 180;
+    const double a = number("main_light_alpha") * std::numbers::pi / 180,
+                 b = number("main_light_beta") * std::numbers::pi / 180;
     const std::array<double, 3> local = {std::sin(a) * std::cos(b), -std::cos(a) * std::cos(b),
                                          std::sin(b)};
     std::array<double, 3> to_light = local;
@@ -535,24 +559,27 @@ void Importer::look() {
       const double fl = std::max(length(fw), 1e-300);
       for (double& c : fw) c /= fl;
       const double along = top[0] * fw[0] + top[1] * fw[1] + top[2] * fw[2];
-      std::array<double, 3> up = {top[0] - along * fw[0], top[1] - along * fw[1], top[2] - along * fw[2]};
+      std::array<double, 3> up = {top[0] - along * fw[0], top[1] - along * fw[1],
+                                  top[2] - along * fw[2]};
       const double ul = length(up);
       if (ul > 0) {
         for (double& c : up) c /= ul;
         const std::array<double, 3> right = {fw[1] * up[2] - fw[2] * up[1],
                                              fw[2] * up[0] - fw[0] * up[2],
                                              fw[0] * up[1] - fw[1] * up[0]};
-        for (int i = 0; i < 3; ++i) to_light[i] = right[i] * local[0] + fw[i] * local[1] + up[i] * local[2];
+        for (int i = 0; i < 3; ++i)
+          to_light[i] = right[i] * local[0] + fw[i] * local[1] + up[i] * local[2];
       }
     }
     const auto colour = fract_colour(f, "main_light_colour", main("main_light_colour"));
-    const double intensity = light ? 1.3 * std::clamp(number("main_light_intensity"), 0.0, 1e5) : 0.0;
+    const double intensity =
+        light ? 1.3 * std::clamp(number("main_light_intensity"), 0.0, 1e5) : 0.0;
     std::ostringstream t;
-    t << "[[lights]]\ndirection = "
-      << vec3_text({-to_light[0], -to_light[1], -to_light[2]}) << "\ncolor = " << vec3_text(colour)
-      << "\nintensity = " << number_text(intensity) << "\n";
+    t << "[[lights]]\ndirection = " << vec3_text({-to_light[0], -to_light[1], -to_light[2]})
+      << "\ncolor = " << vec3_text(colour) << "\nintensity = " << number_text(intensity) << "\n";
     lights_toml = t.str();
-    note(Kind::Approximated, "main_light_alpha, main_light_beta, main_light_colour, main_light_intensity",
+    note(Kind::Approximated,
+         "main_light_alpha, main_light_beta, main_light_colour, main_light_intensity",
          "the scene's key light (its fill light stays)");
   }
   const bool ao = flag("ambient_occlusion_enabled");
@@ -562,7 +589,8 @@ void Importer::look() {
                   "ambient_occlusion_fast_tune"});
   const bool glow = flag("glow_enabled");
   setting("render.effects.glow", glow ? "true" : "false");
-  if (glow) note(Kind::Approximated, "glow_enabled", "Fractalis's glow, its own colour and strength");
+  if (glow)
+    note(Kind::Approximated, "glow_enabled", "Fractalis's glow, its own colour and strength");
   handled.insert({"glow_intensity", "glow_color_1", "glow_color_2"});
   const bool fog = flag("basic_fog_enabled");
   setting("render.effects.fog", fog ? "true" : "false");
@@ -576,14 +604,16 @@ void Importer::look() {
   setting("render.effects.reflections", reflections ? "true" : "false");
   if (reflections) {
     setting("render.max_bounces", std::to_string(std::clamp(integer("reflections_max"), 0LL, 8LL)));
-    note(Kind::Approximated, "raytraced_reflections", "mirror bounces with reflectivity mat1_reflectance");
+    note(Kind::Approximated, "raytraced_reflections",
+         "mirror bounces with reflectivity mat1_reflectance");
   }
   setting("render.reflectivity", number_text(std::clamp(number("mat1_reflectance"), 0.0, 1.0)));
   for (int i = 1; i <= 4; ++i) {
     const std::string k = std::to_string(i);
     if (flag("aux_light_enabled_" + k))
       note(Kind::Ignored, "aux_light_enabled_" + k, "auxiliary lights are not imported");
-    handled.insert({"aux_light_position_" + k, "aux_light_colour_" + k, "aux_light_intensity_" + k});
+    handled.insert(
+        {"aux_light_position_" + k, "aux_light_colour_" + k, "aux_light_intensity_" + k});
   }
   for (const char* key : {"background_color_1", "background_color_2", "background_color_3",
                           "background_3_colors_enable", "brightness", "contrast", "gamma"})

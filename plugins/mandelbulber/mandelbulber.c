@@ -13,30 +13,30 @@
 extern const char fr_de_source[];
 extern const char fr_surface_source[];
 
-/* In the order of fr/mandelbulber.cl's MB2_* kinds; mandelbulber.cl refuses to compile otherwise. */
-static const char* const kinds[] = {"none",       "mandelbulb", "power2",
+/* In the order of fr/mandelbulber.cl's MB2_* kinds (mandelbulber.cl refuses to compile else). */
+static const char* const kinds[] = {"none",         "mandelbulb", "power2",
                                     "hypercomplex", "quaternion", "menger",
-                                    "mandelbox",  "kifs",       "pseudo_kleinian"};
+                                    "mandelbox",    "kifs",       "pseudo_kleinian"};
 static const char* const estimates[] = {"logarithmic", "linear", "ifs", "pseudo_kleinian"};
 
-#define SLOT(n, kind)                                                                            \
-  static const fr_param_desc f##n = FR_CHOICE_PARAM(                                             \
-      "f" #n, "Formula", "Slot " #n, "The formula in Mandelbulber2's slot " #n ".", kind, kinds, \
-      FR_PARAM_SPECIALIZE);                                                                      \
-  static const fr_param_desc f##n##_iterations = FR_INT_PARAM(                                   \
-      "f" #n "_iterations", "Iterations in a row", "Slot " #n,                                   \
-      "How many iterations in a row the hybrid gives this slot.", 1, 1, 1000, 0);                \
-  static const fr_param_desc f##n##_start = FR_INT_PARAM(                                        \
-      "f" #n "_start", "First iteration", "Slot " #n,                                            \
-      "The slot is skipped before this iteration (counted from 0).", 0, 0, 1000, 0);             \
-  static const fr_param_desc f##n##_stop =                                                       \
-      FR_INT_PARAM("f" #n "_stop", "Last iteration", "Slot " #n,                                 \
-                   "The slot is skipped after this iteration.", 250, 0, 1000, 0);                \
-  static const fr_param_desc f##n##_add_c =                                                      \
-      FR_BOOL_PARAM("f" #n "_add_c", "Add c", "Slot " #n,                                        \
-                    "Add the constant (the point, or Julia's c) after the step.", 1, 0);         \
-  static const fr_param_desc f##n##_check_bailout =                                              \
-      FR_BOOL_PARAM("f" #n "_check_bailout", "Check bailout", "Slot " #n,                        \
+#define SLOT(n, kind)                                                                              \
+  static const fr_param_desc f##n = FR_CHOICE_PARAM("f" #n, "Formula", "Slot " #n,                 \
+                                                    "The formula in Mandelbulber2's slot " #n ".", \
+                                                    kind, kinds, FR_PARAM_SPECIALIZE);             \
+  static const fr_param_desc f##n##_iterations =                                                   \
+      FR_INT_PARAM("f" #n "_iterations", "Iterations in a row", "Slot " #n,                        \
+                   "How many iterations in a row the hybrid gives this slot.", 1, 1, 1000, 0);     \
+  static const fr_param_desc f##n##_start =                                                        \
+      FR_INT_PARAM("f" #n "_start", "First iteration", "Slot " #n,                                 \
+                   "The slot is skipped before this iteration (counted from 0).", 0, 0, 1000, 0);  \
+  static const fr_param_desc f##n##_stop =                                                         \
+      FR_INT_PARAM("f" #n "_stop", "Last iteration", "Slot " #n,                                   \
+                   "The slot is skipped after this iteration.", 250, 0, 1000, 0);                  \
+  static const fr_param_desc f##n##_add_c =                                                        \
+      FR_BOOL_PARAM("f" #n "_add_c", "Add c", "Slot " #n,                                          \
+                    "Add the constant (the point, or Julia's c) after the step.", 1, 0);           \
+  static const fr_param_desc f##n##_check_bailout =                                                \
+      FR_BOOL_PARAM("f" #n "_check_bailout", "Check bailout", "Slot " #n,                          \
                     "Stop the orbit after this slot's step once |z| passes the bailout.", 1, 0);
 
 SLOT(1, 1)
@@ -52,10 +52,9 @@ SLOT(9, 0)
 static const fr_param_desc iterations =
     FR_INT_PARAM("iterations", "Iterations (N)", "Iteration",
                  "Mandelbulber2's N: the most iterations an orbit runs.", 250, 1, 1000, 0);
-static const fr_param_desc hybrid =
-    FR_BOOL_PARAM("hybrid", "Hybrid", "Iteration",
-                  "Run the slots in sequence; off, slot 1 runs every iteration.", 0,
-                  FR_PARAM_SPECIALIZE);
+static const fr_param_desc hybrid = FR_BOOL_PARAM(
+    "hybrid", "Hybrid", "Iteration", "Run the slots in sequence; off, slot 1 runs every iteration.",
+    0, FR_PARAM_SPECIALIZE);
 static const fr_param_desc repeat_from =
     FR_INT_PARAM("repeat_from", "Repeat from slot", "Iteration",
                  "After slot 9 the hybrid sequence goes on from this slot.", 1, 1, 9, 0);
@@ -64,16 +63,17 @@ static const fr_param_desc bailout =
                    10, 0.01, 1e10, FR_PARAM_LOG_SCALE);
 static const fr_param_desc julia =
     FR_BOOL_PARAM("julia", "Julia mode", "Iteration", "Add julia_c instead of the point.", 0, 0);
-static const fr_param_desc julia_c = FR_VEC3_PARAM(
-    "julia_c", "Julia c", "Iteration", "The constant of Julia mode.", 0, 0, 0, -1000, 1000, FR_PARAM_ANIMATABLE);
+static const fr_param_desc julia_c =
+    FR_VEC3_PARAM("julia_c", "Julia c", "Iteration", "The constant of Julia mode.", 0, 0, 0, -1000,
+                  1000, FR_PARAM_ANIMATABLE);
 static const fr_param_desc constant_factor = FR_VEC3_PARAM(
     "constant_factor", "Constant factor", "Iteration",
     "Multiplies the added constant, component by component.", 1, 1, 1, -1000, 1000, 0);
-static const fr_param_desc estimate = FR_CHOICE_PARAM(
-    "estimate", "Estimate", "Iteration",
-    "logarithmic: 0.5 r ln r / dr; linear: (r - offset) / dr; ifs: (r - 2) / dr; "
-    "pseudo_kleinian: Theli-at's cylinder estimate.",
-    0, estimates, FR_PARAM_SPECIALIZE);
+static const fr_param_desc estimate =
+    FR_CHOICE_PARAM("estimate", "Estimate", "Iteration",
+                    "logarithmic: 0.5 r ln r / dr; linear: (r - offset) / dr; ifs: (r - 2) / dr; "
+                    "pseudo_kleinian: Theli-at's cylinder estimate.",
+                    0, estimates, FR_PARAM_SPECIALIZE);
 static const fr_param_desc linear_offset =
     FR_FLOAT_PARAM("linear_offset", "Linear offset", "Iteration",
                    "Subtracted from r by the linear estimate (Mandelbulber2's linear_DE_offset).",
@@ -100,44 +100,49 @@ static const fr_param_desc limit_max = FR_VEC3_PARAM(
 static const fr_param_desc bulb_power = FR_FLOAT_PARAM(
     "bulb_power", "Power", "Mandelbulb", "The bulb's power (Mandelbulber2's default is 9).", 9, 1,
     64, FR_PARAM_ANIMATABLE);
-static const fr_param_desc bulb_alpha = FR_FLOAT_PARAM(
-    "bulb_alpha", "Alpha offset (deg)", "Mandelbulb", "Added to the longitude before the power.",
-    0, -360, 360, FR_PARAM_ANIMATABLE);
-static const fr_param_desc bulb_beta = FR_FLOAT_PARAM(
-    "bulb_beta", "Beta offset (deg)", "Mandelbulb", "Added to the latitude before the power.", 0,
-    -360, 360, FR_PARAM_ANIMATABLE);
+static const fr_param_desc bulb_alpha =
+    FR_FLOAT_PARAM("bulb_alpha", "Alpha offset (deg)", "Mandelbulb",
+                   "Added to the longitude before the power.", 0, -360, 360, FR_PARAM_ANIMATABLE);
+static const fr_param_desc bulb_beta =
+    FR_FLOAT_PARAM("bulb_beta", "Beta offset (deg)", "Mandelbulb",
+                   "Added to the latitude before the power.", 0, -360, 360, FR_PARAM_ANIMATABLE);
 
-static const fr_param_desc box_scale = FR_FLOAT_PARAM(
-    "box_scale", "Scale", "Mandelbox", "z <- scale * fold(z) + c.", 2, -100, 100, FR_PARAM_ANIMATABLE);
-static const fr_param_desc box_fold_limit = FR_FLOAT_PARAM(
-    "box_fold_limit", "Folding limit", "Mandelbox", "The box fold acts beyond +-limit.", 1, 0,
-    100, 0);
-static const fr_param_desc box_fold_value = FR_FLOAT_PARAM(
-    "box_fold_value", "Folding value", "Mandelbox", "Beyond the limit a coordinate a becomes "
-    "+-value - a.", 2, -100, 100, 0);
-static const fr_param_desc box_min_radius = FR_FLOAT_PARAM(
-    "box_min_radius", "Min radius", "Mandelbox", "Inside it the sphere fold scales by "
-    "(fixed / min)^2 (0: never).", 0.5, 0, 100, 0);
-static const fr_param_desc box_fixed_radius = FR_FLOAT_PARAM(
-    "box_fixed_radius", "Fixed radius", "Mandelbox", "Inside it the sphere fold inverts.", 1,
-    1e-4, 100, 0);
+static const fr_param_desc box_scale =
+    FR_FLOAT_PARAM("box_scale", "Scale", "Mandelbox", "z <- scale * fold(z) + c.", 2, -100, 100,
+                   FR_PARAM_ANIMATABLE);
+static const fr_param_desc box_fold_limit =
+    FR_FLOAT_PARAM("box_fold_limit", "Folding limit", "Mandelbox",
+                   "The box fold acts beyond +-limit.", 1, 0, 100, 0);
+static const fr_param_desc box_fold_value =
+    FR_FLOAT_PARAM("box_fold_value", "Folding value", "Mandelbox",
+                   "Beyond the limit a coordinate a becomes "
+                   "+-value - a.",
+                   2, -100, 100, 0);
+static const fr_param_desc box_min_radius =
+    FR_FLOAT_PARAM("box_min_radius", "Min radius", "Mandelbox",
+                   "Inside it the sphere fold scales by "
+                   "(fixed / min)^2 (0: never).",
+                   0.5, 0, 100, 0);
+static const fr_param_desc box_fixed_radius =
+    FR_FLOAT_PARAM("box_fixed_radius", "Fixed radius", "Mandelbox",
+                   "Inside it the sphere fold inverts.", 1, 1e-4, 100, 0);
 static const fr_param_desc box_offset =
     FR_VEC3_PARAM("box_offset", "Sphere fold offset", "Mandelbox",
                   "The sphere fold's centre is at minus this.", 0, 0, 0, -100, 100, 0);
 static const fr_param_desc box_main_rotation =
-    FR_BOOL_PARAM("box_main_rotation", "Main rotation", "Mandelbox",
-                  "Rotate after the folds.", 0, FR_PARAM_SPECIALIZE);
-static const fr_param_desc box_rotation = FR_VEC3_PARAM(
-    "box_rotation", "Main rotation (deg)", "Mandelbox", "About x, then y, then z.", 0, 0, 0, -360,
-    360, FR_PARAM_ANIMATABLE);
+    FR_BOOL_PARAM("box_main_rotation", "Main rotation", "Mandelbox", "Rotate after the folds.", 0,
+                  FR_PARAM_SPECIALIZE);
+static const fr_param_desc box_rotation =
+    FR_VEC3_PARAM("box_rotation", "Main rotation (deg)", "Mandelbox", "About x, then y, then z.", 0,
+                  0, 0, -360, 360, FR_PARAM_ANIMATABLE);
 static const fr_param_desc box_fold_rotations =
     FR_BOOL_PARAM("box_fold_rotations", "Fold rotations", "Mandelbox",
                   "Fold each axis in a rotated frame.", 0, FR_PARAM_SPECIALIZE);
-#define BOX_ROTATION(side, n, axis)                                                             \
-  static const fr_param_desc box_rotation_##side##_##n = FR_VEC3_PARAM(                         \
-      "box_rotation_" #side "_" #n, "Fold frame " #side " " #axis " (deg)", "Mandelbox",        \
-      "The frame of the " #axis " fold (Mandelbulber2's mandelbox_rotation_" #side "_" #n ").", \
-      0, 0, 0, -360, 360, 0);
+#define BOX_ROTATION(side, n, axis)                                                                \
+  static const fr_param_desc box_rotation_##side##_##n = FR_VEC3_PARAM(                            \
+      "box_rotation_" #side "_" #n, "Fold frame " #side " " #axis " (deg)", "Mandelbox",           \
+      "The frame of the " #axis " fold (Mandelbulber2's mandelbox_rotation_" #side "_" #n ").", 0, \
+      0, 0, -360, 360, 0);
 BOX_ROTATION(neg, 1, x)
 BOX_ROTATION(neg, 2, y)
 BOX_ROTATION(neg, 3, z)
@@ -145,8 +150,9 @@ BOX_ROTATION(pos, 1, x)
 BOX_ROTATION(pos, 2, y)
 BOX_ROTATION(pos, 3, z)
 
-static const fr_param_desc menger_scale = FR_FLOAT_PARAM(
-    "menger_scale", "Scale", "Menger sponge", "3 is the classic sponge.", 3, 0, 100, FR_PARAM_ANIMATABLE);
+static const fr_param_desc menger_scale =
+    FR_FLOAT_PARAM("menger_scale", "Scale", "Menger sponge", "3 is the classic sponge.", 3, 0, 100,
+                   FR_PARAM_ANIMATABLE);
 
 static const fr_param_desc kifs_scale =
     FR_FLOAT_PARAM("kifs_scale", "Scale", "Kaleidoscopic IFS", "z <- scale z - offset (scale - 1).",
@@ -157,42 +163,43 @@ static const fr_param_desc kifs_offset =
 static const fr_param_desc kifs_rotation_enabled =
     FR_BOOL_PARAM("kifs_rotation_enabled", "Rotation", "Kaleidoscopic IFS",
                   "Rotate about the offset point after the planes.", 0, FR_PARAM_SPECIALIZE);
-static const fr_param_desc kifs_rotation = FR_VEC3_PARAM(
-    "kifs_rotation", "Rotation (deg)", "Kaleidoscopic IFS",
-    "Mandelbulber2's IFS angles: z about x first, then y, then x about z.", 0, 0, 0, -360, 360,
-    FR_PARAM_ANIMATABLE);
-static const fr_param_desc kifs_edge =
-    FR_VEC3_PARAM("kifs_edge", "Edge", "Kaleidoscopic IFS",
-                  "A positive component e folds that coordinate back from e.", 0, 0, 0, -100, 100, 0);
-#define KIFS_ABS(a)                                                                            \
-  static const fr_param_desc kifs_abs_##a =                                                    \
-      FR_BOOL_PARAM("kifs_abs_" #a, "abs " #a, "Kaleidoscopic IFS", "Fold " #a " to |" #a "| first.", 0, \
-                    FR_PARAM_SPECIALIZE);
+static const fr_param_desc kifs_rotation =
+    FR_VEC3_PARAM("kifs_rotation", "Rotation (deg)", "Kaleidoscopic IFS",
+                  "Mandelbulber2's IFS angles: z about x first, then y, then x about z.", 0, 0, 0,
+                  -360, 360, FR_PARAM_ANIMATABLE);
+static const fr_param_desc kifs_edge = FR_VEC3_PARAM(
+    "kifs_edge", "Edge", "Kaleidoscopic IFS",
+    "A positive component e folds that coordinate back from e.", 0, 0, 0, -100, 100, 0);
+#define KIFS_ABS(a)                                                 \
+  static const fr_param_desc kifs_abs_##a =                         \
+      FR_BOOL_PARAM("kifs_abs_" #a, "abs " #a, "Kaleidoscopic IFS", \
+                    "Fold " #a " to |" #a "| first.", 0, FR_PARAM_SPECIALIZE);
 KIFS_ABS(x)
 KIFS_ABS(y)
 KIFS_ABS(z)
-static const fr_param_desc kifs_menger_mode =
-    FR_BOOL_PARAM("kifs_menger_mode", "Menger mode", "Kaleidoscopic IFS",
-                  "Offset z only above half its offset, as the Menger sponge does.", 0,
-                  FR_PARAM_SPECIALIZE);
-#define PLANE(i)                                                                                  \
-  static const fr_param_desc kifs_plane##i = FR_BOOL_PARAM(                                       \
-      "kifs_plane" #i, "Plane " #i, "IFS plane " #i, "Mandelbulber2's IFS_enabled_" #i ".", 0,    \
-      FR_PARAM_SPECIALIZE);                                                                       \
-  static const fr_param_desc kifs_plane##i##_direction = FR_VEC3_PARAM(                           \
-      "kifs_plane" #i "_direction", "Normal", "IFS plane " #i, "The plane's normal (made unit).", \
-      1, 0, 0, -1000, 1000, FR_PARAM_ANIMATABLE);                                                 \
-  static const fr_param_desc kifs_plane##i##_distance = FR_FLOAT_PARAM(                           \
-      "kifs_plane" #i "_distance", "Distance", "IFS plane " #i,                                   \
-      "Points below this distance along the normal are reflected.", 0, -100, 100,                 \
-      FR_PARAM_ANIMATABLE);                                                                       \
-  static const fr_param_desc kifs_plane##i##_intensity = FR_FLOAT_PARAM(                          \
-      "kifs_plane" #i "_intensity", "Intensity", "IFS plane " #i, "1 reflects; other values "     \
-      "push by that multiple.", 1, -100, 100, FR_PARAM_ANIMATABLE);                               \
-  static const fr_param_desc kifs_plane##i##_rotation = FR_VEC3_PARAM(                            \
-      "kifs_plane" #i "_rotation", "Rotation (deg)", "IFS plane " #i,                             \
-      "Applied before the plane's reflection (as kifs_rotation).", 0, 0, 0, -360, 360,            \
-      FR_PARAM_ANIMATABLE);
+static const fr_param_desc kifs_menger_mode = FR_BOOL_PARAM(
+    "kifs_menger_mode", "Menger mode", "Kaleidoscopic IFS",
+    "Offset z only above half its offset, as the Menger sponge does.", 0, FR_PARAM_SPECIALIZE);
+#define PLANE(i)                                                                                   \
+  static const fr_param_desc kifs_plane##i =                                                       \
+      FR_BOOL_PARAM("kifs_plane" #i, "Plane " #i, "IFS plane " #i,                                 \
+                    "Mandelbulber2's IFS_enabled_" #i ".", 0, FR_PARAM_SPECIALIZE);                \
+  static const fr_param_desc kifs_plane##i##_direction =                                           \
+      FR_VEC3_PARAM("kifs_plane" #i "_direction", "Normal", "IFS plane " #i,                       \
+                    "The plane's normal (made unit).", 1, 0, 0, -1000, 1000, FR_PARAM_ANIMATABLE); \
+  static const fr_param_desc kifs_plane##i##_distance =                                            \
+      FR_FLOAT_PARAM("kifs_plane" #i "_distance", "Distance", "IFS plane " #i,                     \
+                     "Points below this distance along the normal are reflected.", 0, -100, 100,   \
+                     FR_PARAM_ANIMATABLE);                                                         \
+  static const fr_param_desc kifs_plane##i##_intensity =                                           \
+      FR_FLOAT_PARAM("kifs_plane" #i "_intensity", "Intensity", "IFS plane " #i,                   \
+                     "1 reflects; other values "                                                   \
+                     "push by that multiple.",                                                     \
+                     1, -100, 100, FR_PARAM_ANIMATABLE);                                           \
+  static const fr_param_desc kifs_plane##i##_rotation =                                            \
+      FR_VEC3_PARAM("kifs_plane" #i "_rotation", "Rotation (deg)", "IFS plane " #i,                \
+                    "Applied before the plane's reflection (as kifs_rotation).", 0, 0, 0, -360,    \
+                    360, FR_PARAM_ANIMATABLE);
 PLANE(0)
 PLANE(1)
 PLANE(2)
@@ -204,21 +211,20 @@ PLANE(7)
 PLANE(8)
 
 static const fr_param_desc pk_box =
-    FR_VEC3_PARAM("pk_box", "Box size", "Pseudo-Kleinian", "The clamp fold's half-sizes.", 0.7,
-                  0.7, 0.7, 0, 100, FR_PARAM_ANIMATABLE);
+    FR_VEC3_PARAM("pk_box", "Box size", "Pseudo-Kleinian", "The clamp fold's half-sizes.", 0.7, 0.7,
+                  0.7, 0, 100, FR_PARAM_ANIMATABLE);
 static const fr_param_desc pk_min_r2 =
     FR_FLOAT_PARAM("pk_min_r2", "Min radius^2", "Pseudo-Kleinian",
                    "Inside |z|^2 < this the inversion scales by it / |z|^2.", 0.5, 0, 100, 0);
-static const fr_param_desc pk_tweak = FR_FLOAT_PARAM(
-    "pk_tweak", "DE tweak", "Pseudo-Kleinian", "Added to the inversion's factor in dr.", 0.05, -10,
-    10, 0);
-static const fr_param_desc pk_de_offset =
-    FR_FLOAT_PARAM("pk_de_offset", "DE offset", "Pseudo-Kleinian",
-                   "The cylinder radius in the estimate (Mandelbulber2's analyticDE_scale_1).", 1,
-                   -100, 100, 0);
+static const fr_param_desc pk_tweak =
+    FR_FLOAT_PARAM("pk_tweak", "DE tweak", "Pseudo-Kleinian",
+                   "Added to the inversion's factor in dr.", 0.05, -10, 10, 0);
+static const fr_param_desc pk_de_offset = FR_FLOAT_PARAM(
+    "pk_de_offset", "DE offset", "Pseudo-Kleinian",
+    "The cylinder radius in the estimate (Mandelbulber2's analyticDE_scale_1).", 1, -100, 100, 0);
 static const fr_param_desc pk_offset =
-    FR_VEC3_PARAM("pk_offset", "Offset", "Pseudo-Kleinian", "Added after the inversion.", 0, 0,
-                  0, -100, 100, FR_PARAM_ANIMATABLE);
+    FR_VEC3_PARAM("pk_offset", "Offset", "Pseudo-Kleinian", "Added after the inversion.", 0, 0, 0,
+                  -100, 100, FR_PARAM_ANIMATABLE);
 
 static const fr_param_desc color_near =
     FR_COLOR_PARAM("color_near", "Colour (deep orbits)", "Colour",
@@ -226,30 +232,83 @@ static const fr_param_desc color_near =
 static const fr_param_desc color_far =
     FR_COLOR_PARAM("color_far", "Colour (outer orbits)", "Colour",
                    "Albedo where the orbit stayed far out.", 0.25, 0.35, 0.55);
-static const fr_param_desc color_contrast = FR_FLOAT_PARAM(
-    "color_contrast", "Colour contrast", "Colour", "Exponent of the orbit-trap blend.", 1, 0.25, 8, 0);
+static const fr_param_desc color_contrast =
+    FR_FLOAT_PARAM("color_contrast", "Colour contrast", "Colour",
+                   "Exponent of the orbit-trap blend.", 1, 0.25, 8, 0);
 
-#define SLOT_LIST(n) &f##n, &f##n##_iterations, &f##n##_start, &f##n##_stop, &f##n##_add_c, \
-                     &f##n##_check_bailout
-#define PLANE_LIST(i) &kifs_plane##i, &kifs_plane##i##_direction, &kifs_plane##i##_distance, \
-                      &kifs_plane##i##_intensity, &kifs_plane##i##_rotation
-static const fr_param_desc* const params[] = {
-    SLOT_LIST(1), SLOT_LIST(2), SLOT_LIST(3), SLOT_LIST(4), SLOT_LIST(5), SLOT_LIST(6),
-    SLOT_LIST(7), SLOT_LIST(8), SLOT_LIST(9),
-    &iterations, &hybrid, &repeat_from, &bailout, &julia, &julia_c, &constant_factor, &estimate,
-    &linear_offset, &bound, &solid_interior, &limits, &limit_min, &limit_max,
-    &bulb_power, &bulb_alpha, &bulb_beta,
-    &box_scale, &box_fold_limit, &box_fold_value, &box_min_radius, &box_fixed_radius, &box_offset,
-    &box_main_rotation, &box_rotation, &box_fold_rotations, &box_rotation_neg_1,
-    &box_rotation_neg_2, &box_rotation_neg_3, &box_rotation_pos_1, &box_rotation_pos_2,
-    &box_rotation_pos_3,
-    &menger_scale,
-    &kifs_scale, &kifs_offset, &kifs_rotation_enabled, &kifs_rotation, &kifs_edge, &kifs_abs_x,
-    &kifs_abs_y, &kifs_abs_z, &kifs_menger_mode,
-    PLANE_LIST(0), PLANE_LIST(1), PLANE_LIST(2), PLANE_LIST(3), PLANE_LIST(4), PLANE_LIST(5),
-    PLANE_LIST(6), PLANE_LIST(7), PLANE_LIST(8),
-    &pk_box, &pk_min_r2, &pk_tweak, &pk_de_offset, &pk_offset,
-    &color_near, &color_far, &color_contrast};
+#define SLOT_LIST(n) \
+  &f##n, &f##n##_iterations, &f##n##_start, &f##n##_stop, &f##n##_add_c, &f##n##_check_bailout
+#define PLANE_LIST(i)                                                    \
+  &kifs_plane##i, &kifs_plane##i##_direction, &kifs_plane##i##_distance, \
+      &kifs_plane##i##_intensity, &kifs_plane##i##_rotation
+static const fr_param_desc* const params[] = {SLOT_LIST(1),
+                                              SLOT_LIST(2),
+                                              SLOT_LIST(3),
+                                              SLOT_LIST(4),
+                                              SLOT_LIST(5),
+                                              SLOT_LIST(6),
+                                              SLOT_LIST(7),
+                                              SLOT_LIST(8),
+                                              SLOT_LIST(9),
+                                              &iterations,
+                                              &hybrid,
+                                              &repeat_from,
+                                              &bailout,
+                                              &julia,
+                                              &julia_c,
+                                              &constant_factor,
+                                              &estimate,
+                                              &linear_offset,
+                                              &bound,
+                                              &solid_interior,
+                                              &limits,
+                                              &limit_min,
+                                              &limit_max,
+                                              &bulb_power,
+                                              &bulb_alpha,
+                                              &bulb_beta,
+                                              &box_scale,
+                                              &box_fold_limit,
+                                              &box_fold_value,
+                                              &box_min_radius,
+                                              &box_fixed_radius,
+                                              &box_offset,
+                                              &box_main_rotation,
+                                              &box_rotation,
+                                              &box_fold_rotations,
+                                              &box_rotation_neg_1,
+                                              &box_rotation_neg_2,
+                                              &box_rotation_neg_3,
+                                              &box_rotation_pos_1,
+                                              &box_rotation_pos_2,
+                                              &box_rotation_pos_3,
+                                              &menger_scale,
+                                              &kifs_scale,
+                                              &kifs_offset,
+                                              &kifs_rotation_enabled,
+                                              &kifs_rotation,
+                                              &kifs_edge,
+                                              &kifs_abs_x,
+                                              &kifs_abs_y,
+                                              &kifs_abs_z,
+                                              &kifs_menger_mode,
+                                              PLANE_LIST(0),
+                                              PLANE_LIST(1),
+                                              PLANE_LIST(2),
+                                              PLANE_LIST(3),
+                                              PLANE_LIST(4),
+                                              PLANE_LIST(5),
+                                              PLANE_LIST(6),
+                                              PLANE_LIST(7),
+                                              PLANE_LIST(8),
+                                              &pk_box,
+                                              &pk_min_r2,
+                                              &pk_tweak,
+                                              &pk_de_offset,
+                                              &pk_offset,
+                                              &color_near,
+                                              &color_far,
+                                              &color_contrast};
 enum { P_BOUND = 9 * 6 + 9 };
 
 /* Mandelbulber2's own start: the power-9 bulb seen from (3, -6, 2), z up. */

@@ -166,6 +166,7 @@ inline real_t mb2_de(vec3_t p, __constant const scene_params_t* params, real_t* 
   const real_t bailout = to_real(PARAM(bailout));
   mask_t live = FR_MASK_TRUE;
   mask_t escaped = FR_MASK_FALSE; /* by the bailout or the Kleinian convergence test */
+  mask_t no_formula = FR_MASK_FALSE; /* reached a slot without a formula */
   int slot = 0, counter = 0;
   for (int i = 0; i < PARAM(iterations); ++i) {
     if (!any_lane(live)) break;
@@ -177,8 +178,7 @@ inline real_t mb2_de(vec3_t p, __constant const scene_params_t* params, real_t* 
     const int seq = slot;
     if (MB2_SLOT_FIELD(seq, ) == MB2_NONE) {
       /* Mandelbulber2 leaves such a point outside (distance 10). */
-      r = lane_select(live, to_real(1e10), r);
-      dr = lane_select(live, to_real(1), dr);
+      no_formula = live;
       break;
     }
     vec3_t nz = z;
@@ -234,6 +234,7 @@ inline real_t mb2_de(vec3_t p, __constant const scene_params_t* params, real_t* 
   real_t d = mb2_distance(PARAM(estimate), z, r, dr, PARAM(linear_offset), PARAM(pk_de_offset));
   /* Mandelbulber2 with limits: an orbit that ran all N iterations is surface. */
   if (PARAM(solid_interior)) d = lane_select(escaped, d, to_real(0));
+  d = lane_select(no_formula, to_real(10), d);
   if (PARAM(limits)) {
     const vec3_t lo = PARAM(limit_min), hi = PARAM(limit_max);
     const vec3_t centre = v3_scale(v3_add(lo, hi), to_real(0.5));
