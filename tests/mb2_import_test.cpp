@@ -6,6 +6,7 @@
 #include "cli_run.hpp"
 #include "import/fract_file.hpp"
 #include "import/fract_values.hpp"
+#include "import/mb2_defaults.hpp"
 #include "path/preset.hpp"
 #include "plugin/scene_instance.hpp"
 #include "render/de_probe.hpp"
@@ -16,6 +17,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <set>
 #include <numbers>
 
 namespace fr {
@@ -92,6 +94,38 @@ TEST(FractFile, BadInputNamesFileLineAndKey) {
               std::string::npos)
         << e.what();
   }
+}
+
+// The defaults table: Mandelbulber2 2.20's values for the keys Fractalis reads, each once, each
+// readable by the same readers as a file's values (checked here against the values its source
+// initialises them to: power 9 and N 250, not 8 and 14).
+TEST(Mb2Defaults, TableHoldsMandelbulber2Values) {
+  const FractFile none = parse("[main_parameters]\n");
+  std::set<std::string> keys;
+  for (const Mb2Default& d : mb2_main_defaults()) EXPECT_TRUE(keys.insert(d.key).second) << d.key;
+  for (const Mb2Default& d : mb2_fractal_defaults())
+    EXPECT_TRUE(keys.insert(d.key).second) << d.key;
+  auto main_number = [&](const char* key) {
+    return fract_number(none, key, mb2_main_entry(none, key));
+  };
+  EXPECT_EQ(fract_integer(none, "N", mb2_main_entry(none, "N")), 250);
+  EXPECT_EQ(fract_integer(none, "formula_1", mb2_main_entry(none, "formula_1")), 2);
+  EXPECT_EQ(main_number("fov"), 1);
+  EXPECT_EQ(main_number("bailout"), 100);
+  EXPECT_EQ(main_number("detail_level"), 1);
+  EXPECT_EQ(main_number("view_distance_max"), 50);
+  EXPECT_TRUE(fract_bool(none, "use_default_bailout", mb2_main_entry(none, "use_default_bailout")));
+  const auto camera = fract_vec3(none, "camera", mb2_main_entry(none, "camera"));
+  EXPECT_EQ(camera, (std::array<double, 3>{3, -6, 2}));
+  EXPECT_EQ(fract_number(none, "power", mb2_fractal_entry(none, 0, "power")), 9);
+  EXPECT_EQ(fract_number(none, "mandelbox_scale", mb2_fractal_entry(none, 0, "mandelbox_scale")), 2);
+  EXPECT_EQ(fract_vec3(none, "IFS_offset", mb2_fractal_entry(none, 0, "IFS_offset")),
+            (std::array<double, 3>{1, 0, 0}));
+  // A file's own value wins over the default.
+  const FractFile given = parse("[main_parameters]\nN 12;\n[fractal_2]\npower 3;\n");
+  EXPECT_EQ(fract_integer(given, "N", mb2_main_entry(given, "N")), 12);
+  EXPECT_EQ(fract_number(given, "power", mb2_fractal_entry(given, 1, "power")), 3);
+  EXPECT_EQ(fract_number(given, "power", mb2_fractal_entry(given, 0, "power")), 9);
 }
 
 toml::table preset_of(const Mb2Import& imported) {
