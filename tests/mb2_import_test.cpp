@@ -284,6 +284,27 @@ TEST(PresetLights, ReplaceTheFirstLightsOrAreReported) {
   EXPECT_NE(first("[[lights]]\nintensity = -1\n").find("intensity: expected"), std::string::npos);
 }
 
+// A preset's [settings] are render settings only: one from elsewhere that would turn plugin
+// isolation off is refused by line, and the settings stay as they were.
+TEST(PresetSettings, OnlyRenderSettings) {
+  std::vector<std::string> problems;
+  const auto p = preset_from_text(
+      "scene = \"mandelbulber\"\nname = \"x\"\n[settings]\n\"render.hit_threshold_k\" = 2.0\n"
+      "\"plugins.isolation\" = \"none\"\n",
+      "p.toml", "p", &problems);
+  ASSERT_TRUE(p) << (problems.empty() ? "" : problems[0]);
+  Settings settings;
+  const PluginIsolation isolation = settings.plugins.isolation;
+  const auto wrong = apply_preset_settings(*p, settings);
+  ASSERT_EQ(wrong.size(), 1u);
+  EXPECT_NE(wrong[0].find("p.toml:5: [settings] plugins.isolation: a preset sets render.* "
+                          "settings only"),
+            std::string::npos)
+      << wrong[0];
+  EXPECT_EQ(settings.plugins.isolation, isolation);
+  EXPECT_EQ(settings.render.hit_threshold_k, 2.0f);
+}
+
 // The scene's DE on the device, in double, against the formulas written out here.
 class Mb2De : public ::testing::Test {
  protected:

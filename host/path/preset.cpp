@@ -117,6 +117,13 @@ std::vector<std::pair<std::string, std::string>> preset_settings(const Preset& p
   const toml::table* t = root->get("settings") ? root->get("settings")->as_table() : nullptr;
   if (!t) return out;
   for (const auto& [key, value] : *t) {
+    // Only how the picture is rendered: a preset file from elsewhere must not turn plugin
+    // isolation off, add plugin folders or change the user's window and keys.
+    if (key.str().rfind("render.", 0) != 0) {
+      problems->push_back(where(preset.file, toml_line(value)) + "[settings] " +
+                          echo(key.str()) + ": a preset sets render.* settings only");
+      continue;
+    }
     std::string text;
     if (auto b = value.value_exact<bool>()) text = *b ? "true" : "false";
     else if (auto i = value.value_exact<int64_t>()) text = std::to_string(*i);

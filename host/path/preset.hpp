@@ -13,7 +13,7 @@
 //   direction = [0.3, -0.8, -0.5]       # first ones: the way the light travels, its colour
 //   color = [1.0, 0.9, 0.8]             # (linear RGB) and intensity
 //   intensity = 1.3
-//   [settings]                          # optional; settings keys as --set takes them
+//   [settings]                          # optional; render.* settings as --set takes them
 //   "render.hit_threshold_k" = 2.0      # (an imported file's quality and effects)
 //
 // A preset's id is its file's name without ".toml": [a-z][a-z0-9_-]*, unique over all folders
@@ -63,7 +63,8 @@ std::optional<Preset> read_preset_file(const std::filesystem::path& file, const 
                                        std::vector<std::string>* problems);
 
 // The preset's [settings] as KEY and VALUE texts, as `--set KEY=VALUE` takes them (in the file's
-// order); checking them is the settings table's (settings/settings.hpp).
+// order); checking them is the settings table's (settings/settings.hpp). Only render.* keys: any
+// other (plugins.isolation, say) is a problem and left out.
 std::vector<std::pair<std::string, std::string>> preset_settings(const Preset& preset,
                                                                  std::vector<std::string>* problems);
 
