@@ -292,6 +292,7 @@ TEST(GameLoop, PollUpdateRenderInOrderOnAFakeClock) {
   steps.render = [&] {
     order.push_back("render");
     clock += 0.025;
+    return true;
   };
   EXPECT_EQ(run_game_loop(steps), 3);
   EXPECT_EQ(order, (std::vector<std::string>{"poll", "update", "render", "poll", "update", "render",
@@ -300,6 +301,19 @@ TEST(GameLoop, PollUpdateRenderInOrderOnAFakeClock) {
   EXPECT_DOUBLE_EQ(dts[0], 0);
   EXPECT_NEAR(dts[1], 0.025, 1e-12);
   EXPECT_NEAR(dts[2], 0.025, 1e-12);
+}
+
+// max_frames counts the frames the window showed, not the turns of the loop: a script that asks
+// for 5 frames gets 5 of the scene even when the first turns only said it was being prepared.
+TEST(GameLoop, MaxFramesCountsFramesShown) {
+  int turns = 0;
+  LoopSteps steps;
+  steps.now_s = [] { return 0.0; };
+  steps.poll = [](InputState&) {};
+  steps.update = [](const InputState&, double) {};
+  steps.render = [&] { return ++turns > 3; };  // three notices, then frames
+  EXPECT_EQ(run_game_loop(steps, 5), 5);
+  EXPECT_EQ(turns, 8);
 }
 
 TEST(Reload, ParametersCarryOverByKey) {

@@ -250,7 +250,10 @@ TEST_F(ExplorerWindow, QuitEndsTheLoop) {
   steps.now_s = [] { return 0.0; };
   steps.poll = [&](InputState& in) { window->poll(KeyBindings::defaults(), in); };
   steps.update = [&](const InputState& in, double dt) { explorer->update(in, dt, 0); };
-  steps.render = [&] { window->present(explorer->render(kW, kH), {}); };
+  steps.render = [&] {
+    window->present(explorer->render(kW, kH), {});
+    return true;
+  };
   EXPECT_EQ(run_game_loop(steps, 100), 0) << "the quit event ends the loop before any frame";
 }
 

@@ -4,12 +4,15 @@
 // changed one reloads keeping parameter values by key; a broken build leaves the old one running
 // with the error kept; a removed one keeps running; and 50 reloads grow neither open files nor
 // threads, and leave one copy of the library mapped.
+#include "app/explorer.hpp"
 #include "app/scene_library.hpp"
 #include "io/log.hpp"
 #include "render/renderer.hpp"
 #include "test_support.hpp"
 
+#include <chrono>
 #include <fstream>
+#include <thread>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -233,6 +236,69 @@ TEST(HotReload, StartupVetsEveryScene) {
                                      ": a test render at 8x8 did not finish within 8 s"),
             std::string::npos)
       << skipped.to_string();
+}
+
+// The explorer's first start: the library returns at once and vets in the background. Nothing
+// renders or probes a scene before its test render passed; the one the user waits for is vetted
+// first; a DE that never returns becomes a refused slot with why, the others usable; and a
+// library destroyed while a test render is under way ends it instead of waiting for its limit.
+TEST(HotReload, StartupVetsInTheBackground) {
+  const auto folder = test::fresh_dir("startup_vet_background");
+  drop(reload_plugin("reload_a"), folder, "good" PLUGIN_SUFFIX);
+  drop(std::filesystem::path(HOSTILE_PLUGIN_DIR) / "hostile_de_loop" PLUGIN_SUFFIX, folder,
+       "loops" PLUGIN_SUFFIX);
+  PluginPolicy policy;
+  policy.vet_timeout_s = 4;
+  std::vector<SceneEvent> events;
+  SceneLibrary lib({folder}, policy, RenderSettings{}, test::worker(), &events,
+                   /*vet_in_background=*/true);
+  ASSERT_EQ(lib.slots().size(), 2u) << "both scenes are listed before their test renders end";
+  const int loops = lib.find("fixture_de_loop"), good = lib.find("reload_probe");
+  ASSERT_GE(loops, 0);
+  ASSERT_GE(good, 0);
+  // (The good scene may be known from an earlier run's markers; the looping one never passes.)
+  EXPECT_TRUE(lib.slots()[loops].preparing);
+  EXPECT_FALSE(lib.slots()[loops].usable());
+  Settings settings;
+  settings.render.width_px = 16;
+  settings.render.height_px = 16;
+  Explorer explorer(settings, test::worker(), lib, "fixture_de_loop");
+  FrameClock clock;
+  std::vector<SceneEvent> said;
+  while (lib.slots()[loops].preparing && clock.now_s < 1000 + 60) {
+    explorer.update(InputState{}, 0.02, clock.now_s);  // polls the library, as the loop does
+    EXPECT_EQ(explorer.render(16, 16), nullptr) << "a scene being prepared is never rendered";
+    clock.now_s += 0.02;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  ASSERT_FALSE(lib.slots()[loops].preparing) << "its test render never ended";
+  EXPECT_TRUE(lib.slots()[loops].refused);
+  EXPECT_NE(lib.slots()[loops].error.find("did not finish within 4 s"), std::string::npos)
+      << lib.slots()[loops].error;
+  EXPECT_EQ(explorer.render(16, 16), nullptr) << "a refused scene is never rendered";
+  EXPECT_EQ(explorer.frames_rendered(), 0u);
+  // The good one, once its own test render is in, renders.
+  explorer.select_scene(good);
+  const FrameView* frame = nullptr;
+  for (int i = 0; i < 3000 && !frame; ++i) {
+    explorer.update(InputState{}, 0.02, clock.now_s += 0.02);
+    frame = explorer.render(16, 16);
+    if (!frame) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  ASSERT_NE(frame, nullptr);
+  EXPECT_TRUE(lib.slots()[good].usable());
+
+  // Quitting during a long test render: the child is ended, not waited for.
+  policy.vet_timeout_s = 120;
+  const auto started = std::chrono::steady_clock::now();
+  {
+    std::vector<SceneEvent> more;
+    SceneLibrary quitting({folder}, policy, RenderSettings{}, test::worker(), &more, true);
+    EXPECT_TRUE(quitting.slots()[quitting.find("fixture_de_loop")].preparing);
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  }
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(), 60)
+      << "the library waited for the test render's 120 s limit";
 }
 
 // Every hostile fixture dropped over a running scene: the old build keeps running, with the

@@ -54,6 +54,7 @@ Explorer::Explorer(const Settings& settings, RenderWorker& worker, SceneLibrary&
   const int index = library_.find(scene_id);
   current_ = index >= 0 ? index : 0;
   if (index < 0) spdlog::warn("no scene '{}'; showing '{}'", scene_id, current().scene->info.id);
+  library_.prioritize(current_);
 }
 
 void Explorer::select_scene(int index) {
@@ -70,6 +71,7 @@ void Explorer::select_scene(int index) {
   }
   changed_ = true;
   scene_changed_ = true;
+  library_.prioritize(current_);
 }
 
 bool Explorer::update(const InputState& input, double dt_s, double now_s) {
@@ -118,8 +120,8 @@ bool Explorer::update(const InputState& input, double dt_s, double now_s) {
   // mode then undoes before anything probes it again.
   const std::array<float, 3> eye_f = to_float3(slot.state.camera.eye);
   try {
-    if (took_the_worker_down(slot))
-      stats_.surface_distance = 0.1;
+    if (took_the_worker_down(slot) || !slot.usable())
+      stats_.surface_distance = 0.1;  // (an unvetted DE is never run: it might not return)
     else if (!quick_frame_)
       stats_.surface_distance = worker_.probe_de(slot.scene->info, slot.state.params, {eye_f})[0];
   } catch (const RenderWorkerFailure& e) {
@@ -150,6 +152,17 @@ bool Explorer::update(const InputState& input, double dt_s, double now_s) {
 }
 
 const FrameView* Explorer::render(int window_width_px, int window_height_px) {
+  // A scene still waiting for its test render (or refused by it) is not rendered: its DE might
+  // never return. The window shows what is being prepared (ui/overlay.hpp) meanwhile.
+  if (!current().usable()) {
+    waiting_for_scene_ = true;
+    pending_focus_.reset();
+    return nullptr;
+  }
+  if (waiting_for_scene_) {
+    waiting_for_scene_ = false;
+    changed_ = scene_changed_ = true;
+  }
   if (pending_focus_) {
     const auto [x, y] = *pending_focus_;
     pending_focus_.reset();
@@ -399,7 +412,7 @@ std::optional<double> Explorer::focus_at(int x, int y, int width_px, int height_
   if (width_px < 1 || height_px < 1 || x < 0 || y < 0 || x >= width_px || y >= height_px)
     return std::nullopt;
   SceneSlot& slot = current();
-  if (took_the_worker_down(slot)) return std::nullopt;
+  if (took_the_worker_down(slot) || !slot.usable()) return std::nullopt;
   RenderSettings s = settings_.render;
   s.window = ImageWindow{width_px, height_px, x, y, 1, 1};
   s.width_px = s.height_px = 1;
@@ -465,6 +478,11 @@ bool Explorer::screenshot(const std::filesystem::path& file, int width_px, int h
                                                : settings_.explorer.full_quality_samples;
   s.denoise = false;  // rendered in bands, below, which the filter cannot take
   SceneSlot& slot = current();
+  if (!slot.usable()) {
+    *error = "scene '" + slot.scene->info.id + "' " +
+             (slot.preparing ? "is still being prepared" : "failed its test render: " + slot.error);
+    return false;
+  }
   if (width_px < 1 || height_px < 1 || width_px > 65535 || height_px > 65535) {
     *error = "screenshot size " + std::to_string(width_px) + "x" + std::to_string(height_px) +
              " is outside 1 to 65535 pixels a side";

@@ -150,6 +150,8 @@ class Explorer {
   bool changed_ = true;
   // More than the camera changed since the last frame: earlier frames' pixels are not reused.
   bool scene_changed_ = true;
+  // The last render() found the current scene not usable yet (preparing or refused).
+  bool waiting_for_scene_ = false;
   TemporalReuse reuse_;
   // The path-traced sample under way in bands, and its filter's passes (filter_pass_: the pass
   // to queue next, kDenoisePasses once all are, -1 while the sample is not whole); the rows of

@@ -12,9 +12,9 @@ int64_t run_game_loop(const LoopSteps& steps, int64_t max_frames) {
     const double now = steps.now_s();
     steps.update(input, now - last);
     last = now;
-    steps.render();
+    const bool shown = steps.render();
     input.end_frame();
-    ++frames;
+    frames += shown;
   }
   return frames;
 }

@@ -67,6 +67,8 @@ void SceneBrowser::rebuild(SceneLibrary& library, const RenderSettings& settings
     entry.family = tags.empty() ? "" : tags.front();
     entry.description = info.description;
     entry.search_text = lower(info.id + " " + info.name + " " + tag_text + info.description);
+    entry.preparing = slot.preparing;
+    if (slot.refused) entry.error = slot.error;
     ThumbnailJob job{"", slot.scene, make_default_state(info), picture};
     std::vector<std::pair<BrowserEntry, ThumbnailJob>> rows;
     rows.emplace_back(entry, job);
@@ -125,7 +127,10 @@ void SceneBrowser::rebuild(SceneLibrary& library, const RenderSettings& settings
     jobs_.emplace_back();
   };
   for (const PresetProblem& problem : preset_problems_) failed(problem.file, problem.message);
-  for (const SceneEvent& event : library.failed_files()) failed(event.file, event.reason);
+  for (const SceneEvent& event : library.failed_files())
+    if (std::none_of(library.slots().begin(), library.slots().end(),
+                     [&](const SceneSlot& slot) { return slot.scene->file == event.file; }))
+      failed(event.file, event.reason);  // (a refused slot is its own entry, above)
   filter();
 }
 
@@ -139,6 +144,8 @@ void SceneBrowser::update(SceneLibrary& library, const RenderSettings& settings)
     cache_.store(done.key, done.image);
     images_[done.key] = std::move(done.image);
   }
+  preparing_scenes_ = library.preparing();
+  library_scenes_ = static_cast<int>(library.slots().size());
   if (!visible_) return;
   // Built again when the library changed (a scene added, reloaded, failed or removed) or the
   // settings the pictures are rendered with did.
@@ -158,6 +165,8 @@ void SceneBrowser::update(SceneLibrary& library, const RenderSettings& settings)
   std::vector<int> to_render;
   for (int index : order) {
     const std::string& key = entries_[index].thumbnail_key;
+    // (A scene is rendered only once its test render passed: its DE might never return.)
+    if (entries_[index].preparing) continue;
     if (key.empty() || images_.count(key) || failed_.count(key) || requested_.count(key)) continue;
     if (auto image =
             cache_.load(key, options_.thumbnail_width_px, options_.thumbnail_height_px)) {

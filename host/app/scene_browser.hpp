@@ -26,6 +26,7 @@ struct BrowserEntry {
   std::string error;       // why the file failed to load, or why its picture failed
   std::string search_text;  // lower case: id, preset id, title, tags, description
   std::string thumbnail_key;  // "" for a failed file
+  bool preparing = false;     // its scene waits for its test render: no picture yet
 };
 
 // Does every word of `query` (split at spaces, case ignored) occur in `search_text`?
@@ -70,6 +71,10 @@ class SceneBrowser {
   std::string failed_reason(const BrowserEntry& entry) const;
   // Pictures still to come for the shown entries.
   int pending() const;
+  // Scenes of the library still waiting for their test render, and all of its scenes (as of the
+  // last update), for "preparing scenes: 12 of 40".
+  int preparing_scenes() const { return preparing_scenes_; }
+  int library_scenes() const { return library_scenes_; }
   // Pictures rendered (not found in the cache) since the browser was made.
   int rendered() const { return rendered_; }
   const ThumbnailCache& cache() const { return cache_; }
@@ -103,6 +108,7 @@ class SceneBrowser {
   std::map<std::string, std::string> failed_;       // by thumbnail key: why
   std::map<std::string, bool> requested_;           // by thumbnail key
   int rendered_ = 0;
+  int preparing_scenes_ = 0, library_scenes_ = 0;
 };
 
 }  // namespace fr

@@ -48,33 +48,14 @@ bool make_slot(std::shared_ptr<const LoadedScene> scene, SceneSlot* slot, std::s
 
 SceneLibrary::SceneLibrary(std::vector<std::filesystem::path> folders, const PluginPolicy& policy,
                            const RenderSettings& settings, RenderWorker& worker,
-                           std::vector<SceneEvent>* events)
-    : policy_(policy), worker_(worker) {
-  std::vector<LoadOutcome> outcomes = load_scene_folder(folders, policy_);
+                           std::vector<SceneEvent>* events, bool vet_in_background)
+    : policy_(policy), vet_settings_(settings), worker_(worker) {
+  const std::vector<LoadOutcome> outcomes = load_scene_folder(folders, policy_);
   // Test renders of the scenes not vetted before, as many at a time as there are cores: each
   // compiles a kernel within plugins.build_timeout_s, and forty compiling at once on two cores
-  // (a first start with empty caches, since the gallery grew) ran every one of them past it.
-  std::vector<uint64_t> hashes(outcomes.size());
-  std::vector<std::future<VetResult>> vets(outcomes.size());
-  const size_t at_once = std::clamp<size_t>(std::thread::hardware_concurrency(), 1, 8);
-  std::vector<size_t> pending;
-  for (size_t i = 0; i < outcomes.size(); ++i) {
-    if (!outcomes[i].scene) continue;
-    hashes[i] = VettedScenes::content_hash(outcomes[i].file);
-    if (!vetted_.contains(hashes[i], settings)) pending.push_back(i);
-  }
-  std::vector<VetResult> results(outcomes.size());
-  for (size_t start = 0; start < pending.size(); start += at_once) {
-    const size_t end = std::min(pending.size(), start + at_once);
-    for (size_t k = start; k < end; ++k)
-      vets[pending[k]] = std::async(std::launch::async, vet_scene, outcomes[pending[k]].file,
-                                    settings, worker_.device().name, policy_);
-    for (size_t k = start; k < end; ++k) results[pending[k]] = vets[pending[k]].get();
-  }
-  std::vector<bool> was_vetted(outcomes.size(), false);
-  for (size_t i : pending) was_vetted[i] = true;
-  for (size_t i = 0; i < outcomes.size(); ++i) {
-    const LoadOutcome& o = outcomes[i];
+  // (a first start with empty caches) ran every one of them past it.
+  vet_queue_ = std::make_unique<VetQueue>(settings, worker_.device().name, policy_);
+  for (const LoadOutcome& o : outcomes) {
     auto skipped = [&](const std::string& why) {
       events->push_back({SceneEvent::Kind::Skipped, "", o.file, why});
       failed_files_.push_back(events->back());
@@ -83,25 +64,66 @@ SceneLibrary::SceneLibrary(std::vector<std::filesystem::path> folders, const Plu
       skipped(o.message);
       continue;
     }
-    if (was_vetted[i]) {
-      const VetResult& vet = results[i];
-      if (!vet.ok) {
-        skipped(vet.error);
-        continue;
-      }
-      vetted_.insert(hashes[i], settings);
-    }
     SceneSlot slot;
     std::string error;
-    if (make_slot(o.scene, &slot, &error)) {
-      worker_.name_scene_file(o.scene->info.id, o.file);
-      events->push_back({SceneEvent::Kind::Added, o.scene->info.id, o.file, ""});
-      slots_.push_back(std::move(slot));
-    } else {
+    if (!make_slot(o.scene, &slot, &error)) {
       skipped(error);
+      continue;
+    }
+    const uint64_t hash = VettedScenes::content_hash(o.file);
+    if (!vetted_.contains(hash, settings)) {
+      slot.preparing = true;
+      vet_queue_->add(o.file, hash);
+    }
+    worker_.name_scene_file(o.scene->info.id, o.file);
+    events->push_back({SceneEvent::Kind::Added, o.scene->info.id, o.file, ""});
+    slots_.push_back(std::move(slot));
+  }
+  if (!vet_in_background) {
+    vet_queue_->wait_idle();
+    // Nobody holds an index yet: a scene that failed leaves the list, as if it never loaded.
+    for (SceneEvent& e : take_vet_results()) {
+      std::erase_if(slots_, [&](const SceneSlot& s) { return s.scene->file == e.file; });
+      std::erase_if(*events, [&](const SceneEvent& a) { return a.file == e.file; });
+      events->push_back(e);
+      failed_files_.push_back(e);
     }
   }
+  if (vet_queue_->outstanding() == 0) vet_queue_.reset();
   for (const auto& f : folders) watchers_.push_back(std::make_unique<PluginWatcher>(f));
+}
+
+std::vector<SceneEvent> SceneLibrary::take_vet_results() {
+  std::vector<SceneEvent> failures;
+  if (!vet_queue_) return failures;
+  for (VetDone& done : vet_queue_->take_done()) {
+    // The slot still waiting for this file's result (a hot reload may have replaced it since).
+    const auto slot = std::find_if(slots_.begin(), slots_.end(), [&](const SceneSlot& s) {
+      return s.preparing && s.scene->file == done.file;
+    });
+    if (slot == slots_.end()) continue;
+    slot->preparing = false;
+    ++generation_;
+    if (done.result.ok) {
+      vetted_.insert(done.hash, vet_settings_);
+      continue;
+    }
+    slot->refused = true;
+    slot->error = done.result.error;
+    failures.push_back({SceneEvent::Kind::Skipped, "", done.file, done.result.error});
+  }
+  return failures;
+}
+
+void SceneLibrary::prioritize(int index) {
+  if (vet_queue_ && index >= 0 && index < static_cast<int>(slots_.size()) &&
+      slots_[index].preparing)
+    vet_queue_->prioritize(slots_[index].scene->file);
+}
+
+int SceneLibrary::preparing() const {
+  return static_cast<int>(
+      std::count_if(slots_.begin(), slots_.end(), [](const SceneSlot& s) { return s.preparing; }));
 }
 
 int SceneLibrary::find(const std::string& id) const {
@@ -172,7 +194,10 @@ SceneEvent SceneLibrary::add_or_replace(const std::filesystem::path& file,
 }
 
 std::vector<SceneEvent> SceneLibrary::poll(double now_s, const RenderSettings& settings) {
-  std::vector<SceneEvent> events;
+  // The background test renders that finished: the scenes that failed are said (and kept, as
+  // refused slots, so that no index moves under the explorer).
+  std::vector<SceneEvent> events = take_vet_results();
+  if (vet_queue_ && vet_queue_->outstanding() == 0 && preparing() == 0) vet_queue_.reset();
   for (auto& w : watchers_) {
     for (const PluginChange& c : w->poll(now_s)) {
       if (c.kind == PluginChange::Kind::Removed) {

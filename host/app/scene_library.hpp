@@ -9,6 +9,7 @@
 #pragma once
 
 #include "app/scene_slot.hpp"
+#include "app/vet_queue.hpp"
 #include "render/scene_vetting.hpp"
 #include "plugin/plugin_policy.hpp"
 #include "plugin/plugin_watcher.hpp"
@@ -45,14 +46,24 @@ void log_scene_event(const SceneEvent& event);
 class SceneLibrary {
  public:
   // Loads the folders (an event per file goes to `events`) and starts watching them.
-  // Each scene is vetted (scene_vetting.hpp) before it is added, once per file content; the
-  // test renders run in parallel.
+  // Each scene is vetted (scene_vetting.hpp) once per file content before anything renders it;
+  // the test renders run in parallel. Without `vet_in_background` the constructor waits for them
+  // and leaves out the scenes that fail (Skipped events). With it (the explorer's window) it
+  // returns at once: the scenes not vetted before are slots that are `preparing` until poll()
+  // takes their results in (a scene that fails stays as a `refused` slot, its error said by a
+  // Skipped event), and prioritize() says which one the user waits for.
   SceneLibrary(std::vector<std::filesystem::path> folders, const PluginPolicy& policy,
                const RenderSettings& settings, RenderWorker& worker,
-               std::vector<SceneEvent>* events);
+               std::vector<SceneEvent>* events, bool vet_in_background = false);
 
   std::vector<SceneSlot>& slots() { return slots_; }
+  const std::vector<SceneSlot>& slots() const { return slots_; }
   int find(const std::string& id) const;  // slot index or -1
+
+  // The slot's test render first, when it is still waiting for one.
+  void prioritize(int index);
+  // Slots still waiting for their test render.
+  int preparing() const;
 
   // Applies the folder changes that became stable by now_s; returns what happened, in order.
   std::vector<SceneEvent> poll(double now_s, const RenderSettings& settings);
@@ -69,9 +80,13 @@ class SceneLibrary {
 
  private:
   SceneEvent add_or_replace(const std::filesystem::path& file, const RenderSettings& settings);
+  // Takes in the background test renders that finished; returns a Skipped event per failure.
+  std::vector<SceneEvent> take_vet_results();
 
   PluginPolicy policy_;
+  RenderSettings vet_settings_;  // the settings the background test renders run with
   VettedScenes vetted_;
+  std::unique_ptr<VetQueue> vet_queue_;  // while a background vetting is under way
   RenderWorker& worker_;
   std::vector<SceneSlot> slots_;
   std::vector<SceneEvent> failed_files_;

@@ -16,6 +16,13 @@ struct SceneSlot {
   SceneState state;
   std::string error;     // the last problem (a failed reload or update), shown in the overlay
   bool removed = false;  // its file left the folder; it runs until the user switches away
+  // Its test render (render/scene_vetting.hpp) has not finished yet: nothing renders or probes
+  // it. Only while a library vets in the background (a first start).
+  bool preparing = false;
+  // Its test render failed (`error` says why): nothing renders or probes it until its file
+  // changes and the new one passes.
+  bool refused = false;
+  bool usable() const { return !preparing && !refused; }
 };
 
 // Carries parameter values from `old_info` to `new_info` by key: keys that went are dropped,

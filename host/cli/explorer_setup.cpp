@@ -7,7 +7,8 @@
 
 namespace fr {
 
-ExplorerSetup prepare_explorer(ParsedOptions options, bool settings_problems_are_errors) {
+ExplorerSetup prepare_explorer(ParsedOptions options, bool settings_problems_are_errors,
+                               bool vet_in_background) {
   ExplorerSetup x;
   std::vector<SettingsProblem> problems;
   // (nullptr: load_settings throws the first problem as a usage error)
@@ -21,7 +22,7 @@ ExplorerSetup prepare_explorer(ParsedOptions options, bool settings_problems_are
   if (folders.empty())
     throw std::runtime_error("no plugin folder found (build the plugins, or pass --plugins DIR)");
   // The scene asked for, checked against the plugins' descriptors (the scan cache: no kernel
-  // built) before the library vets every scene's kernel, which on a first start can take minutes.
+  // built) before the library vets every scene's kernel, which on a first start takes a while.
   const std::optional<Preset> preset = preset_option(options, folders);
   if (preset) {
     apply_preset_settings(options, preset, x.settings);
@@ -45,7 +46,7 @@ ExplorerSetup prepare_explorer(ParsedOptions options, bool settings_problems_are
   x.worker = std::make_unique<RenderWorker>(device, explorer_worker_limits(x.settings.plugins));
   std::vector<SceneEvent> events;
   x.library = std::make_unique<SceneLibrary>(folders, x.settings.plugins, x.settings.render,
-                                             *x.worker, &events);
+                                             *x.worker, &events, vet_in_background);
   // The scenes found at start are listed at debug level (-v): the overlay lists them, and the
   // terminal says what fails and, later, what changes.
   for (const SceneEvent& e : events) {

@@ -25,6 +25,9 @@ struct ExplorerSetup {
 // A problem in the settings file or a --set (an unknown key, a bad value) is said as a warning,
 // and the explorer opens with the rest; with `settings_problems_are_errors` (a measurement, as
 // `bench --explore`) it is a usage error, as it is for `render` and `bench`.
-ExplorerSetup prepare_explorer(ParsedOptions options, bool settings_problems_are_errors = false);
+// With `vet_in_background` (the window, which shows what is being prepared) the scenes not
+// vetted before are vetted while it runs (app/scene_library.hpp); otherwise before it returns.
+ExplorerSetup prepare_explorer(ParsedOptions options, bool settings_problems_are_errors = false,
+                               bool vet_in_background = false);
 
 }  // namespace fr

@@ -10,6 +10,7 @@
 #include "plugin/plugin_files.hpp"
 #include "plugin/scan_cache.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -27,7 +28,8 @@ std::filesystem::path fractalis_executable() {
 }
 
 VetResult vet_scene(const std::filesystem::path& file, const RenderSettings& settings,
-                    const std::string& device, const PluginPolicy& policy) {
+                    const std::string& device, const PluginPolicy& policy,
+                    const std::atomic<bool>* cancel) {
   const double timeout_s = policy.vet_timeout_s;
   VetResult result;
   std::vector<std::string> args = {"vet-scene",
@@ -71,7 +73,14 @@ VetResult vet_scene(const std::filesystem::path& file, const RenderSettings& set
                         std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                             std::chrono::duration<double>(timeout_s));
   bool timed_out = false;
+  bool cancelled = false;
+  // (Waits of at most 100 ms, so that a cancel is seen.)
+  constexpr double kCancelCheckMs = 100;
   for (;;) {
+    if (cancel && cancel->load()) {
+      cancelled = true;
+      break;
+    }
     const double left_ms =
         std::chrono::duration<double, std::milli>(deadline - std::chrono::steady_clock::now())
             .count();
@@ -82,16 +91,23 @@ VetResult vet_scene(const std::filesystem::path& file, const RenderSettings& set
     char buffer[1024];
     size_t got = 0;
     const ChannelStatus s =
-        said_pipe.ours.read_some(buffer, sizeof buffer, static_cast<int>(std::ceil(left_ms)), &got);
+        said_pipe.ours.read_some(buffer, sizeof buffer,
+                                 static_cast<int>(std::ceil(std::min(left_ms, kCancelCheckMs))),
+                                 &got);
     if (s == ChannelStatus::TimedOut) continue;
     if (s != ChannelStatus::Ok) break;
     if (said.size() < 4096) said.append(buffer, got);
   }
   said_pipe.ours.close();
-  if (timed_out)
+  if (timed_out || cancelled)
     child->kill();
   else
     child->wait(-1);
+  if (cancelled) {
+    result.cancelled = true;
+    result.error = "the test render was cancelled";
+    return result;
+  }
   if (timed_out) {
     result.timed_out = true;
     std::ostringstream why;
@@ -170,7 +186,11 @@ VetResult vet_scene_once(const std::filesystem::path& file, const RenderSettings
                          const std::string& device, const PluginPolicy& policy) {
   VettedScenes vetted;
   const uint64_t hash = VettedScenes::content_hash(file);
-  if (vetted.contains(hash, settings)) return {true, false, ""};
+  if (vetted.contains(hash, settings)) {
+    VetResult known;
+    known.ok = true;
+    return known;
+  }
   VetResult vet = vet_scene(file, settings, device, policy);
   if (vet.ok) vetted.insert(hash, settings);
   return vet;

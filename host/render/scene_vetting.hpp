@@ -10,6 +10,7 @@
 #include "plugin/plugin_policy.hpp"
 #include "render/render_settings.hpp"
 
+#include <atomic>
 #include <cstdint>
 #include <filesystem>
 #include <set>
@@ -21,15 +22,19 @@ namespace fr {
 struct VetResult {
   bool ok = false;
   bool timed_out = false;  // the test render did not finish within the limit
+  bool cancelled = false;  // *cancel was set: the child was ended, nothing is known
   std::string error;       // why not: the child's error, "crashed (SIGSEGV)", or the time limit
 };
 
 // Renders `file`'s scene at 8x8 with `settings`' lanes and precision on the device `device`
 // (a selector as for --device; "" for the default) in a `fractalis vet-scene` process, within
 // policy.vet_timeout_s; the kernel compiles and runs in that process's render worker, under
-// policy's build and memory limits.
+// policy's build and memory limits. Setting *cancel (when given) from another thread ends the
+// child within about 0.1 s (a result with `cancelled`), so a program that quits does not wait
+// for test renders it no longer needs.
 VetResult vet_scene(const std::filesystem::path& file, const RenderSettings& settings,
-                    const std::string& device, const PluginPolicy& policy);
+                    const std::string& device, const PluginPolicy& policy,
+                    const std::atomic<bool>* cancel = nullptr);
 
 // Scenes already vetted, by the content of their file and the kernel shape: a file that comes
 // back with the same bytes (an undo, a rebuild that changed nothing, the next start of the

@@ -21,6 +21,18 @@ const char* const kSavedFileHeader =
     "Fractalis settings, written by the explorer's \"Save settings\". config/default.toml has "
     "the defaults.";
 
+// Text that wraps at a fixed width (in lines of text, so it scales with the font) rather than at
+// the panel's: the panel sizes itself to its widest row, so text wrapped at the panel's width
+// would keep a panel that one long message widened that wide after the message went.
+void wrapped_text(const ImVec4* color, const std::string& text) {
+  constexpr float kWrapEms = 34;
+  ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + kWrapEms * ImGui::GetFontSize());
+  if (color) ImGui::PushStyleColor(ImGuiCol_Text, *color);
+  ImGui::TextUnformatted(text.c_str());
+  if (color) ImGui::PopStyleColor();
+  ImGui::PopTextWrapPos();
+}
+
 // One widget per parameter, by type; true when the value changed.
 bool edit_param(const ParamInfo& p, fr_value& v) {
   const char* label = p.name.c_str();
@@ -183,13 +195,19 @@ void draw_scene(Explorer& explorer, const OverlayState& overlay,
   auto& slots = explorer.library().slots();
   if (ImGui::BeginCombo("Scene", explorer.current().scene->info.name.c_str())) {
     for (int i = 0; i < static_cast<int>(slots.size()); ++i) {
-      std::string label = slots[i].scene->info.name + (slots[i].removed ? " (removed)" : "");
+      std::string label = slots[i].scene->info.name + (slots[i].removed     ? " (removed)"
+                                                       : slots[i].preparing ? " (preparing)"
+                                                       : slots[i].refused   ? " (failed)"
+                                                                            : "");
       if (ImGui::Selectable(label.c_str(), i == explorer.current_index())) explorer.select_scene(i);
     }
     ImGui::EndCombo();
   }
   SceneSlot& slot = explorer.current();
-  if (!slot.error.empty()) ImGui::TextColored(ImVec4(1, 0.45f, 0.35f, 1), "%s", slot.error.c_str());
+  if (!slot.error.empty()) {
+    const ImVec4 red(1, 0.45f, 0.35f, 1);
+    wrapped_text(&red, slot.error);
+  }
   const SceneInfo& info = slot.scene->info;
   std::map<std::string, std::vector<int>> groups;
   for (int i = 0; i < static_cast<int>(info.params.size()); ++i)
@@ -329,9 +347,41 @@ OverlayLayout measure_layout() {
   return l;
 }
 
+// While the current scene waits for its test render (a first start) or was refused by it: a
+// notice in the middle of the window, overlay shown or not, so the window is never just black.
+void draw_scene_notice(Explorer& explorer) {
+  const SceneSlot& slot = explorer.current();
+  if (slot.usable()) return;
+  SceneLibrary& library = explorer.library();
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(display.x / 2, display.y / 2), ImGuiCond_Always,
+                          ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowBgAlpha(0.8f);
+  ImGui::Begin("###scene_notice", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                   ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+                   ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
+  const std::string& name = slot.scene->info.name.empty() ? slot.scene->info.id
+                                                          : slot.scene->info.name;
+  ImGui::TextUnformatted(name.c_str());
+  if (slot.preparing) {
+    const int total = static_cast<int>(library.slots().size());
+    const std::string line =
+        "preparing: a test render of its kernel in a child process (only once, on a first "
+        "start). Scenes ready: " +
+        std::to_string(total - library.preparing()) + " of " + std::to_string(total) + ".";
+    wrapped_text(nullptr, line);
+  } else {
+    const ImVec4 red(1, 0.45f, 0.35f, 1);
+    wrapped_text(&red, "failed its test render: " + slot.error);
+  }
+  ImGui::End();
+}
+
 }  // namespace
 
 void draw_overlay(Explorer& explorer, OverlayState& overlay) {
+  draw_scene_notice(explorer);
   if (!overlay.visible) return;
   // The panel takes the width its widest row needs (so no label is cut; the window layer scales
   // text and spacing with the window, ui/window.hpp's overlay_scale) and at most the window's
@@ -344,10 +394,11 @@ void draw_overlay(Explorer& explorer, OverlayState& overlay) {
   const std::string title =
       "Fractalis (" + overlay.keys.label(Action::ToggleOverlay) + " hides)###main";
   ImGui::Begin(title.c_str(), nullptr, ImGuiWindowFlags_AlwaysAutoResize);
-  if (!overlay.edit_status.empty())
-    ImGui::TextColored(
-        overlay.edit_failed ? ImVec4(1, 0.45f, 0.35f, 1) : ImVec4(0.6f, 0.9f, 0.6f, 1), "%s",
-        overlay.edit_status.c_str());
+  if (!overlay.edit_status.empty()) {
+    const ImVec4 color =
+        overlay.edit_failed ? ImVec4(1, 0.45f, 0.35f, 1) : ImVec4(0.6f, 0.9f, 0.6f, 1);
+    wrapped_text(&color, overlay.edit_status);
+  }
   draw_statistics(explorer, overlay);
   std::vector<DrawnControl> param_controls;
   draw_scene(explorer, overlay, &param_controls);
@@ -356,7 +407,7 @@ void draw_overlay(Explorer& explorer, OverlayState& overlay) {
   draw_camera_path(explorer, overlay);
   draw_screenshot(overlay);
   // The same messages the terminal shows (io/log.hpp), newest last.
-  for (const std::string& m : recent_log_messages(8)) ImGui::TextWrapped("%s", m.c_str());
+  for (const std::string& m : recent_log_messages(8)) wrapped_text(nullptr, m);
   overlay.layout = measure_layout();
   overlay.layout.param_controls = std::move(param_controls);
   ImGui::End();

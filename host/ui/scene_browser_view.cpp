@@ -45,6 +45,12 @@ void draw_scene_browser(SceneBrowser& browser, Explorer& explorer, Window& windo
   ImGui::TextDisabled("%zu of %zu shown, %d failed%s  |  arrows and Enter open, Esc closes",
                       browser.shown().size(), browser.entries().size(), failed,
                       browser.pending() ? ", pictures on the way" : "");
+  if (browser.preparing_scenes() > 0)
+    ImGui::TextColored(ImVec4(0.6f, 0.8f, 1, 1),
+                       "preparing scenes: %d of %d ready (a test render of each, on the first "
+                       "start only)",
+                       browser.library_scenes() - browser.preparing_scenes(),
+                       browser.library_scenes());
   for (const std::string& problem : browser.cache().problems())
     ImGui::TextColored(ImVec4(1, 0.6f, 0.4f, 1), "%s", problem.c_str());
   if (!view.message.empty()) ImGui::TextColored(ImVec4(1, 0.45f, 0.45f, 1), "%s", view.message.c_str());
@@ -84,7 +90,7 @@ void draw_scene_browser(SceneBrowser& browser, Explorer& explorer, Window& windo
     if (!texture)
       draw->AddText(ImVec2(at.x + 6 * scale, at.y + 6 * scale),
                     why.empty() ? IM_COL32(150, 150, 150, 255) : IM_COL32(255, 110, 110, 255),
-                    why.empty() ? "rendering..." : "failed");
+                    !why.empty() ? "failed" : entry.preparing ? "preparing..." : "rendering...");
     if (selected || ImGui::IsItemHovered())
       draw->AddRect(ImVec2(at.x - 2, at.y - 2), ImVec2(end.x + 2, end.y + 2),
                     selected ? IM_COL32(255, 200, 60, 255) : IM_COL32(160, 160, 160, 255), 0,
