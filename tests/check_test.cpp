@@ -58,6 +58,10 @@ TEST(Check, EnoughInTreeScenes) {
 // Every in-tree scene passes every check. One test per scene, so that CTest's shards of this
 // program (tests/CMakeLists.txt) run them side by side: each check is mostly one process
 // compiling kernels on one core.
+// The over-estimate checks WARN at any measurable share, and some in-tree DEs are estimates that
+// run long at a few points (the Mandelbulb's near thin features, the Kleinian's): those may
+// WARN, never FAIL. A DE that is a true lower bound by construction (the Menger sponge's exact
+// distance; folding IFS, whose folds and scalings cannot lengthen a distance) passes them.
 class EveryInTreeScene : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(EveryInTreeScene, PassesEveryCheck) {
@@ -65,9 +69,18 @@ TEST_P(EveryInTreeScene, PassesEveryCheck) {
   const CheckRun r = run_check(std::filesystem::path(SCENE_PLUGIN_DIR) / (scene + PLUGIN_SUFFIX));
   EXPECT_EQ(r.exit_code, 0) << r.out;
   for (const char* check : {"descriptor", "de-compiles", "de-returns", "de-finite", "de-lipschitz",
-                            "de-overestimate", "de-near-surface", "de-bounded", "lanes-agree",
-                            "update", "create-destroy", "render", "render-careful", "unload"})
+                            "de-bounded", "lanes-agree", "update", "create-destroy", "render",
+                            "unload"})
     EXPECT_EQ(status_of(r.out, check), "PASS") << check << "\n" << r.out;
+  const bool lower_bound = scene == "menger" || scene == "sierpinski" ||
+                           scene.rfind("kifs_", 0) == 0;
+  for (const char* check : {"de-overestimate", "de-near-surface", "render-careful"}) {
+    const std::string status = status_of(r.out, check);
+    if (lower_bound)
+      EXPECT_EQ(status, "PASS") << check << "\n" << r.out;
+    else
+      EXPECT_TRUE(status == "PASS" || status == "WARN") << check << "\n" << r.out;
+  }
   const auto json = nlohmann::json::parse(r.json);
   EXPECT_EQ(json["result"], "pass") << r.json;
   EXPECT_EQ(json["scene"], scene);
@@ -117,10 +130,9 @@ TEST(Check, OverEstimatingDeFails) {
 // by 3 (tests/CMakeLists.txt generates them from the scenes' own sources), fail de-near-surface:
 // near the surface each steps past it. Over the Mandelbox's bounding sphere its DE
 // under-estimates several-fold, which is why a check that samples only there let 3x pass. The
-// Mandelbox times 1.5 is not a failure, and the check says why: near its surface the Mandelbox's
-// DE is at most 0.82 of the distance (typically a third), so 1.5x of it still stops short of the
-// surface but at a fraction of a percent of the points. The unscaled scenes pass
-// (EveryInTreeScenePasses).
+// Mandelbox times 1.5 is a warning, not a failure: near its surface the Mandelbox's DE is at most
+// 0.82 of the distance (typically a third), so 1.5x of it still stops short of the surface but
+// at a fraction of a percent of the points. The unscaled scenes pass (EveryInTreeScene).
 TEST(Check, DeThatOverestimatesNearTheSurfaceFails) {
   for (const auto& [scene, tag] :
        std::vector<std::pair<std::string, std::string>>{{"cantor_dust", "1_5"},
@@ -135,9 +147,13 @@ TEST(Check, DeThatOverestimatesNearTheSurfaceFails) {
     EXPECT_EQ(status_of(r.out, "de-near-surface"), "FAIL") << r.out;
     EXPECT_NE(r.out.find("(the DE steps past the surface)"), std::string::npos) << r.out;
   }
+  // Times 1.5 the Mandelbox oversteps at a fraction of a percent of the points: a WARN naming
+  // the share and the worst point, not a failure (exit 0).
   const CheckRun box = run_check(std::filesystem::path(OVERESTIMATE_PLUGIN_DIR) /
                                  ("overestimate_mandelbox_x1_5" PLUGIN_SUFFIX));
-  EXPECT_EQ(status_of(box.out, "de-near-surface"), "PASS") << box.out;
+  EXPECT_EQ(box.exit_code, 0) << box.out;
+  EXPECT_EQ(status_of(box.out, "de-near-surface"), "WARN") << box.out;
+  EXPECT_NE(box.out.find("; worst: DE "), std::string::npos) << box.out;
 }
 
 // A material function is checked where the render saw surface: the material ball's defaults lie

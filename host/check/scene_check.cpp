@@ -311,11 +311,14 @@ class Checker {
         detail += "; worst: DE " + fmt(found.worst_de) + " at " + fmt(found.worst_at) +
                   ", surface at " + fmt(found.worst_surface) + " (" + fmt(found.worst_surface_at) +
                   "), " + fmt(found.worst_ratio) + "x too far";
-      if (percent > 5) detail += " (the DE over-estimates: rays pass through surface)";
+      // Any point is a finding (a WARN). The in-tree scenes show none but the Kleinian's 0.39%
+      // (its DE is an estimate; 1.2x at worst); a Menger sponge 1.25x too long shows several
+      // percent. (docs/sdk_guide.md, "What check measures".)
+      if (percent > 1) detail += " (the DE over-estimates: rays pass through surface)";
       add("de-overestimate",
-          percent <= 1   ? CheckStatus::Pass
-          : percent <= 5 ? CheckStatus::Warn
-                         : CheckStatus::Fail,
+          found.points_over == 0 ? CheckStatus::Pass
+          : percent <= 1         ? CheckStatus::Warn
+                                 : CheckStatus::Fail,
           detail);
     }
 
@@ -339,15 +342,16 @@ class Checker {
                   fmt(found.worst_t) + " from surface (" + fmt(found.worst_ratio) + "x)";
       if (found.surface_points == 0)
         detail = "no surface met by " + std::to_string(o.rays) + " rays across the bounding sphere";
-      // Escape-time DEs (the Mandelbulb's) run long at about 1% of these points, near thin
-      // features, without a visible error; a DE that steps past the surface everywhere does so
-      // at tens of percent (a KIFS or the Cantor dust times 1.5), and the Mandelbox's DE, which
-      // near its surface is at most 0.82 and typically a third of the distance, times 3 at 4.7%.
-      if (percent > 3) detail += " (the DE steps past the surface)";
+      // Any point is a finding (a WARN): escape-time DEs (the Mandelbulb's) run long at up to
+      // 1.2% of these points, near thin features, which the picture rarely shows but a user
+      // zooming there may see; a DE that steps past the surface everywhere does so at tens of
+      // percent (a KIFS or the Cantor dust times 1.5), and the Mandelbox's DE, which near its
+      // surface is at most 0.82 and typically a third of the distance, times 3 at about 4%.
+      if (percent > 2) detail += " (the DE steps past the surface)";
       add("de-near-surface",
-          percent <= 2   ? CheckStatus::Pass
-          : percent <= 3 ? CheckStatus::Warn
-                         : CheckStatus::Fail,
+          found.points_over == 0 ? CheckStatus::Pass
+          : percent <= 2         ? CheckStatus::Warn
+                                 : CheckStatus::Fail,
           detail);
     }
 
@@ -642,34 +646,86 @@ class Checker {
       add("render-careful", CheckStatus::Fail, e.what());
       return;
     }
-    size_t hits = 0, passed = 0, worst_at = 0;
-    double worst = 0;
+    // The rays the full steps carried past the careful hit: beyond it by more than 2% of its
+    // depth, or not hit at all (a normal march that ran out of steps is the render check's
+    // finding, not this one's).
+    std::vector<size_t> past;
+    std::vector<double> beyond_of;
+    size_t hits = 0;
     for (size_t i = 0; i < quarter.ray_status.size(); ++i) {
       if (quarter.ray_status[i] != uint8_t(RayStatus::Hit)) continue;
       ++hits;
       const double t = quarter.depth[i];
-      // Beyond the careful hit by more than 2% of its depth, or not hit at all (a normal
-      // march that ran out of steps is the render check's finding, not this one's).
       const bool missed = normal.ray_status[i] == uint8_t(RayStatus::Miss);
       const double beyond = missed ? INFINITY : (double(normal.depth[i]) - t) / t;
       if (normal.ray_status[i] == uint8_t(RayStatus::OutOfSteps) || !(beyond > 0.02)) continue;
-      ++passed;
-      if (beyond > worst) worst = beyond, worst_at = i;
+      past.push_back(i);
+      beyond_of.push_back(beyond);
     }
-    const double percent = 100.0 * double(passed) / double(std::max<size_t>(hits, 1));
+    // Which of them went through solid matter, and which only passed an edge: a sphere tracer
+    // with an exact DE may step past a ray's closest approach to an edge that the careful march
+    // caught within its hit threshold (3.6% of the in-tree Sierpinski tetrahedron's hits), but it
+    // never enters the solid. So: is the ray still at or in the surface 4 and 8 hit thresholds
+    // beyond the careful hit? Entering a solid it is; leaving an edge's neighbourhood it is not.
+    const CameraRays camera = make_camera_rays(state.camera, quarter.width_px, quarter.height_px,
+                                               plain.mirror_vertical);
+    std::vector<DePoint> beyond_points;
+    std::vector<double> threshold_of;
+    for (size_t i : past) {
+      const int x = int(i % size_t(quarter.width_px)), y = int(i / size_t(quarter.width_px));
+      const glm::dvec3 dir = camera_ray_dir(camera, x, y);
+      const double t = quarter.depth[i];
+      const double h = std::max(double(plain.hit_threshold_k) * camera.pixel_angle_rad * t,
+                                double(plain.hit_threshold_abs));
+      threshold_of.push_back(h);
+      for (double k : {4.0, 8.0}) {
+        const glm::dvec3 q = camera.eye + (t + k * h) * dir;
+        beyond_points.push_back({float(q.x), float(q.y), float(q.z)});
+      }
+    }
+    std::vector<float> beyond_de;
+    try {
+      if (!beyond_points.empty())
+        beyond_de = worker_.probe_de(scene_->info, state.params, beyond_points, 16,
+                                     worker_.device().has_fp64 ? Precision::Double
+                                                               : Precision::Float);
+    } catch (const std::exception& e) {
+      add("render-careful", CheckStatus::Fail, e.what());
+      return;
+    }
+    size_t through = 0, edges = 0, worst_at = 0;
+    double worst = 0;
+    for (size_t n = 0; n < past.size(); ++n) {
+      const double h = threshold_of[n];
+      const bool solid = beyond_de[2 * n] < 0.5 * h && beyond_de[2 * n + 1] < 0.5 * h;
+      if (!solid) {
+        ++edges;
+        continue;
+      }
+      ++through;
+      if (beyond_of[n] > worst || through == 1) worst = beyond_of[n], worst_at = past[n];
+    }
+    const double percent = 100.0 * double(through) / double(std::max<size_t>(hits, 1));
     std::string detail = fmt(percent) + "% of " + std::to_string(hits) +
-                         " rays that hit with quarter steps go through that surface at full steps";
-    if (passed > 0) {
+                         " rays that hit solid surface with quarter steps go through it at full "
+                         "steps";
+    if (through > 0) {
       const int x = int(worst_at % size_t(quarter.width_px)),
                 y = int(worst_at / size_t(quarter.width_px));
       detail += "; worst at pixel (" + std::to_string(x) + ", " + std::to_string(y) +
                 "): " + (std::isinf(worst) ? std::string("missed") : fmt(100 * worst) + "% deeper");
     }
+    if (edges > 0)
+      detail += " (" + std::to_string(edges) +
+                " more passed an edge the careful march touched, as exact DEs do too)";
+    // Any ray through solid surface is a finding (a WARN); of the in-tree scenes only the
+    // Kleinian (0.43%) and the pseudo-Kleinian (0.02%) show any, and a Menger sponge 1.5x too
+    // long shows 1.1%.
     add("render-careful",
-        percent <= 10   ? CheckStatus::Pass
-        : percent <= 25 ? CheckStatus::Warn
+        through == 0    ? CheckStatus::Pass
+        : percent <= 1 ? CheckStatus::Warn
                         : CheckStatus::Fail,
-        detail + (percent > 25 ? " (the DE over-estimates)" : ""));
+        detail + (percent > 1 ? " (the DE over-estimates)" : ""));
   }
 
   void check_unload() {
