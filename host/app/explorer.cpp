@@ -71,6 +71,9 @@ void Explorer::select_scene(int index) {
   }
   changed_ = true;
   scene_changed_ = true;
+  // Edit mode's quick frames and their warm-up were the scene before's.
+  quick_frame_ = warming_ = false;
+  warmup_wanted_.reset();
   library_.prioritize(current_);
 }
 
@@ -163,6 +166,16 @@ const FrameView* Explorer::render(int window_width_px, int window_height_px) {
     waiting_for_scene_ = false;
     changed_ = scene_changed_ = true;
   }
+  // Edit mode's warm-up of the optimized kernels (kernel_warmup.hpp): started when its thread is
+  // free; once done, the next frame is the optimized build's, found in the compiler's cache.
+  if (warmup_wanted_ && warmup_->done()) {
+    warmup_->start(std::move(*warmup_wanted_));
+    warmup_wanted_.reset();
+  } else if (warming_ && !warmup_wanted_ && warmup_->done()) {
+    warming_ = false;
+    quick_frame_ = false;
+    changed_ = true;
+  }
   if (pending_focus_) {
     const auto [x, y] = *pending_focus_;
     pending_focus_.reset();
@@ -183,7 +196,8 @@ const FrameView* Explorer::render(int window_width_px, int window_height_px) {
   }
   // Temporal reuse (app/temporal_reuse.hpp) while only the camera moves; a frame after anything
   // else changed is scaled, as with reuse off, and keeps nothing of the frames before it.
-  const bool temporal = settings_.explorer.temporal && !quick_frame_;
+  const bool temporal_next = settings_.explorer.temporal;  // (once the frames are not quick)
+  const bool temporal = temporal_next && !quick_frame_;
   if (scene_changed_) reuse_.reset();
   // With the path integrator chosen, a parked view accumulates its samples; flying stays fast.
   const bool path = settings_.render.integrator == Integrator::Path;
@@ -375,9 +389,21 @@ const FrameView* Explorer::render(int window_width_px, int window_height_px) {
   stats_.frame_ms = frame_ms;
   if (quick) {
     // Its time is a build's and an unoptimized kernel's: no measure of the frames to come, which
-    // start again with the optimized build.
-    quick_frame_ = false;
-    changed_ = true;
+    // start again with the optimized build. That build, and the probe's, happen in the
+    // background; until they are done, frames stay quick ones.
+    ++quick_frames_rendered_;
+    if (!warming_) {
+      RenderSettings next = settings_.render;
+      next.integrator = Integrator::Fast;
+      next.denoise = false;
+      next.count_evaluations = count_evaluations_;
+      if (!warmup_)
+        warmup_ = std::make_unique<KernelWarmup>(worker_.device(), worker_.limits());
+      warmup_wanted_ = WarmupJob{slot.scene, slot.state, one_pixel_of(next, window_w, window_h),
+                                 temporal_next ? Readback::Everything : Readback::DisplayAndSteps,
+                                 to_float3(slot.state.camera.eye)};
+      warming_ = true;
+    }
   } else {
     frames_.report(stats_.frame_ms);
   }

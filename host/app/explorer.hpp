@@ -8,6 +8,7 @@
 #include "app/input.hpp"
 #include "app/path_recorder.hpp"
 #include "app/sample_bands.hpp"
+#include "app/kernel_warmup.hpp"
 #include "app/scene_library.hpp"
 #include "app/temporal_reuse.hpp"
 #include "render/renderer.hpp"
@@ -16,6 +17,7 @@
 
 #include <chrono>
 #include <deque>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -104,14 +106,20 @@ class Explorer {
   // precision the last frame used and without the cone pre-pass (both only ever make a frame
   // faster, at the cost of another kernel build), so that it is on screen sooner; the frames
   // after it are the optimized build's.
+  // After the quick frame, frames stay quick builds while the optimized kernels (and the probe's)
+  // are built in the background (app/kernel_warmup.hpp): the window answers meanwhile.
   void scene_code_changed(bool quick_first_frame = false) {
     failed_state_.reset();
     changed_ = true;
     scene_changed_ = true;
     quick_frame_ = quick_first_frame;
+    warming_ = false;  // a warm-up under way is for the code before
+    warmup_wanted_.reset();
   }
   // Frames rendered, and render-worker failures (a crash, a hang, a limit), since the start.
   uint64_t frames_rendered() const { return frames_rendered_; }
+  // Of those, the frames of optimized builds (not edit mode's quick ones).
+  uint64_t optimized_frames_rendered() const { return frames_rendered_ - quick_frames_rendered_; }
   int worker_failures() const { return worker_failures_; }
 
   // The camera path being recorded or played (app/path_recorder.hpp). While it plays, the
@@ -167,6 +175,12 @@ class Explorer {
   std::optional<std::pair<int, int>> pending_focus_;  // a click, focused at the next render
   uint64_t lattice_frames_ = 0;                       // the lattice phase's clock
   bool quick_frame_ = false;  // the next frame is a quick build (scene_code_changed)
+  // The quick frames wait for a warm-up of the optimized kernels: wanted (to start when the
+  // warm-up's thread is free) or under way.
+  bool warming_ = false;
+  std::optional<WarmupJob> warmup_wanted_;
+  std::unique_ptr<KernelWarmup> warmup_;  // made by the first warm-up
+  uint64_t quick_frames_rendered_ = 0;
   bool count_evaluations_ = false;
   uint64_t frames_rendered_ = 0;
   int worker_failures_ = 0;

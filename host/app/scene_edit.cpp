@@ -135,7 +135,8 @@ void SceneEdit::poll(Explorer& explorer, double now_s) {
       slot.error.clear();
       explorer.scene_code_changed();
       say(project_.de_file + " did not work, so the last good one renders on:\n" + why, true);
-    } else if (explorer.frames_rendered() > frames_at_apply_ + 1) {
+    } else if (explorer.optimized_frames_rendered() > optimized_at_apply_ &&
+               explorer.frames_rendered() > frames_at_apply_ + 1) {
       // The quick build's frame and then the optimized build's: kept.
       before_.reset();
       ++opencl_applied_;
@@ -226,6 +227,7 @@ void SceneEdit::apply_opencl(Explorer& explorer) {
   slot.scene = changed;
   slot.error.clear();
   frames_at_apply_ = explorer.frames_rendered();
+  optimized_at_apply_ = explorer.optimized_frames_rendered();
   failures_at_apply_ = explorer.worker_failures();
   shown_ = false;
   explorer.scene_code_changed(/*quick_first_frame=*/true);

@@ -87,6 +87,7 @@ class SceneEdit {
   // The change on trial: the scene before it, and the explorer's counts when it went in.
   std::shared_ptr<const LoadedScene> before_;
   uint64_t frames_at_apply_ = 0;
+  uint64_t optimized_at_apply_ = 0;
   int failures_at_apply_ = 0;
   bool shown_ = false;  // its quick frame rendered
   // The C build in the background.

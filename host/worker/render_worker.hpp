@@ -79,6 +79,7 @@ class RenderWorker {
   RenderWorker& operator=(const RenderWorker&) = delete;
 
   const DeviceInfo& device() const { return device_; }
+  const RenderWorkerLimits& limits() const { return limits_; }
   // The plugin file a scene id came from, for messages ("scene 'x' (plugins/x.so): ...").
   void name_scene_file(const std::string& scene_id, const std::filesystem::path& file);
 
