@@ -163,6 +163,39 @@ TEST_F(ExplorerWindow, OverlayDraws) {
                                with_overlay, &error));
 }
 
+// A long error (a compiler's, in edit mode) wraps in the panel instead of widening it over the
+// window, and once the error is gone the panel goes back to its width. At 640x360 a compile
+// error once stretched it across the whole window, and it stayed that wide after the fix.
+TEST(ExplorerWindowOverlay, ALongErrorWrapsAndThePanelGoesBack) {
+  ASSERT_EQ(why_no_display(), "") << "run under xvfb-run";
+  std::vector<SceneEvent> events;
+  SceneLibrary library({SCENE_PLUGIN_DIR}, PluginPolicy{}, RenderSettings{}, test::worker(),
+                       &events);
+  auto explorer = std::make_unique<Explorer>(Settings{}, test::worker(), library, "mandelbulb");
+  Window small("Fractalis wrap test", 640, 360, false);
+  OverlayState overlay;
+  const auto draw = [&](int frames) {
+    for (int i = 0; i < frames; ++i)  // auto-fit settles over a frame or two
+      small.present(nullptr, [&] { draw_overlay(*explorer, overlay); });
+    return overlay.layout.panel_width_px;
+  };
+  const float plain_px = draw(3);
+  ASSERT_GT(plain_px, 0);
+  std::string error = "my_scene.cl:12:7: error: use of undeclared identifier 'radiuss'";
+  while (error.size() < 1500) error += "; and another long compiler message that goes on";
+  explorer->current().error = error;
+  overlay.edit_status = "my_scene.cl did not work, so the last good one renders on:\n" + error;
+  overlay.edit_failed = true;
+  const float error_px = draw(3);
+  EXPECT_LT(error_px, 0.75f * 640) << "the error widened the panel over the view";
+  EXPECT_GE(overlay.layout.visible_width_px + 1, overlay.layout.content_width_px)
+      << "the error is cut rather than wrapped";
+  explorer->current().error.clear();
+  overlay.edit_status = "applied my_scene.cl";
+  overlay.edit_failed = false;
+  EXPECT_NEAR(draw(3), plain_px, 1.0f) << "the panel kept the error's width";
+}
+
 // The screenshot at a chosen size is the headless render of the current view at that size and
 // the full-quality sample count.
 TEST_F(ExplorerWindow, ScreenshotIsTheHeadlessRender) {

@@ -98,6 +98,7 @@ int command_explore(const std::vector<std::string>& args, std::ostream& out,
   bool mouse_captured = false;
   // When the window first showed anything, and first showed the scene (or the browser).
   double first_present_s = -1, first_frame_s = -1;
+  bool browser_complete = false;
 
   LoopSteps steps;
   steps.now_s = now_s;
@@ -151,6 +152,12 @@ int command_explore(const std::vector<std::string>& args, std::ostream& out,
         spdlog::error("{}", error);
     }
     if (first_present_s < 0) first_present_s = now_s();
+    if (browser.visible() && !browser_complete && browser.pending() == 0 &&
+        browser.preparing_scenes() == 0) {
+      browser_complete = true;
+      spdlog::debug("every scene prepared and every picture of the browser in after {:.1f} s",
+                    now_s());
+    }
     if (shown && first_frame_s < 0) {
       first_frame_s = now_s();
       spdlog::debug("first frame after {:.2f} s", first_frame_s);

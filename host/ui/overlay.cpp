@@ -348,34 +348,36 @@ OverlayLayout measure_layout() {
 }
 
 // While the current scene waits for its test render (a first start) or was refused by it: a
-// notice in the middle of the window, overlay shown or not, so the window is never just black.
+// notice in the middle of the window, on top of everything (the foreground draw list: it takes
+// no input and no focus), overlay shown or not, so the window is never just black.
 void draw_scene_notice(Explorer& explorer) {
   const SceneSlot& slot = explorer.current();
   if (slot.usable()) return;
   SceneLibrary& library = explorer.library();
-  const ImVec2 display = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowPos(ImVec2(display.x / 2, display.y / 2), ImGuiCond_Always,
-                          ImVec2(0.5f, 0.5f));
-  ImGui::SetNextWindowBgAlpha(0.8f);
-  ImGui::Begin("###scene_notice", nullptr,
-               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
-                   ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
-                   ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
-  const std::string& name = slot.scene->info.name.empty() ? slot.scene->info.id
-                                                          : slot.scene->info.name;
-  ImGui::TextUnformatted(name.c_str());
+  const std::string& name =
+      slot.scene->info.name.empty() ? slot.scene->info.id : slot.scene->info.name;
+  std::string text;
   if (slot.preparing) {
     const int total = static_cast<int>(library.slots().size());
-    const std::string line =
-        "preparing: a test render of its kernel in a child process (only once, on a first "
-        "start). Scenes ready: " +
-        std::to_string(total - library.preparing()) + " of " + std::to_string(total) + ".";
-    wrapped_text(nullptr, line);
+    text = "Preparing " + name +
+           ": a test render of its kernel in a child process, once, on a first start.\nScenes "
+           "ready: " +
+           std::to_string(total - library.preparing()) + " of " + std::to_string(total) + ".";
   } else {
-    const ImVec4 red(1, 0.45f, 0.35f, 1);
-    wrapped_text(&red, "failed its test render: " + slot.error);
+    text = name + " failed its test render: " + slot.error;
   }
-  ImGui::End();
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  const float font_px = ImGui::GetFontSize();
+  const float pad = 0.8f * font_px;
+  const float wrap_px = std::min(30 * font_px, std::max(display.x - 4 * pad, 4 * font_px));
+  const ImVec2 size = ImGui::CalcTextSize(text.c_str(), nullptr, false, wrap_px);
+  const ImVec2 at((display.x - size.x) / 2, (display.y - size.y) / 2);
+  ImDrawList* draw = ImGui::GetForegroundDrawList();
+  draw->AddRectFilled(ImVec2(at.x - pad, at.y - pad), ImVec2(at.x + size.x + pad, at.y + size.y + pad),
+                      IM_COL32(20, 20, 26, 230), 0.3f * font_px);
+  draw->AddText(nullptr, 0, at,
+                slot.preparing ? IM_COL32(220, 225, 235, 255) : IM_COL32(255, 115, 90, 255),
+                text.c_str(), nullptr, wrap_px);
 }
 
 }  // namespace
