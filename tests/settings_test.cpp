@@ -165,6 +165,9 @@ SettingValue other_value(const SettingSpec& spec, const SettingValue& now) {
       return std::string("gpu \"quoted\" \\ back");
     case SettingKind::TextList:
       return std::vector<std::string>{"/opt/scenes", "/tmp/with \"quote\""};
+    case SettingKind::Color:
+      // Digits a float keeps only in part, to catch a writer that rounds further.
+      return SettingColor{0.1, 1.0 / 3.0, spec.max / 7.0};
   }
   return now;
 }

@@ -59,6 +59,14 @@ SettingValue node_value(const toml::node& n) {
   if (auto v = n.value_exact<double>()) return *v;
   if (auto v = n.value_exact<std::string>()) return *v;
   if (const auto* arr = n.as_array()) {
+    // Three numbers: a colour. (An empty array stays a list of strings.)
+    if (arr->size() == 3 && std::all_of(arr->begin(), arr->end(), [](const toml::node& item) {
+          return item.is_number();
+        })) {
+      SettingColor c{};
+      for (size_t i = 0; i < 3; ++i) c[i] = *(*arr)[i].value<double>();
+      return c;
+    }
     std::vector<std::string> items;
     for (const auto& item : *arr) {
       if (!item.is_string()) return std::monostate{};

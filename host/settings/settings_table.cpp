@@ -73,6 +73,23 @@ SettingSpec number_setting(const char* key, double lo, double hi, bool lo_open,
   return spec;
 }
 
+// A colour member (std::array<float, 3>), linear RGB, each channel in [0, hi].
+template <auto... Path>
+SettingSpec color_setting(const char* key, double hi, const char* comment) {
+  SettingSpec spec = spec_of(key, SettingKind::Color, comment, 0, hi);
+  spec.single_precision = true;
+  spec.get = [](const Settings& s) -> SettingValue {
+    const auto& c = member<Path...>(s);
+    return SettingColor{c[0], c[1], c[2]};
+  };
+  spec.set = [](Settings& s, const SettingValue& v) {
+    const SettingColor& c = std::get<SettingColor>(v);
+    member<Path...>(s) = {static_cast<float>(c[0]), static_cast<float>(c[1]),
+                          static_cast<float>(c[2])};
+  };
+  return spec;
+}
+
 // An enum member, by the names in its table (io/enum_names.hpp).
 template <auto... Path>
 SettingSpec choice_setting(const char* key, const char* comment) {
@@ -377,6 +394,12 @@ std::vector<SettingSpec> make_table() {
         text.empty() ? "" : std::filesystem::absolute(text).lexically_normal().string());
   };
   t.push_back(environment);
+  t.push_back(color_setting<&S::render, &R::sky_zenith>(
+      "render.sky_zenith", 1e3,
+      "Without a panorama: the sky's colour straight up (the camera's up), linear RGB; it "
+      "blends to\nsky_horizon at the horizon and stays that below it."));
+  t.push_back(color_setting<&S::render, &R::sky_horizon>(
+      "render.sky_horizon", 1e3, "Without a panorama: the sky's colour at and below the horizon."));
   t.push_back(number_setting<&S::render, &R::environment_intensity>(
       "render.environment_intensity", 0, 1e6, false,
       "Multiplies the panorama's radiance (render.environment)."));
@@ -591,6 +614,13 @@ std::string check_setting(const SettingSpec& spec, const SettingValue& value) {
       return std::holds_alternative<std::vector<std::string>>(value)
                  ? ""
                  : "expected an array of strings (folder paths)";
+    case SettingKind::Color: {
+      const auto* c = std::get_if<SettingColor>(&value);
+      const bool ok = c && std::all_of(c->begin(), c->end(), [&](double x) {
+        return std::isfinite(x) && x >= spec.min && x <= spec.max;
+      });
+      return ok ? "" : "expected [r, g, b], each a number in [" + range.str();
+    }
   }
   return "unknown setting kind";
 }
@@ -613,6 +643,11 @@ std::string setting_value_toml(const SettingSpec& spec, const SettingValue& valu
           return number_text(v, spec.single_precision);
         else if constexpr (std::is_same_v<T, std::string>)
           return toml_string(v);
+        else if constexpr (std::is_same_v<T, SettingColor>) {
+          std::string out = "[";
+          for (size_t i = 0; i < 3; ++i) out.append(i ? ", " : "").append(number_text(v[i], true));
+          return out.append("]");
+        }
         else {
           std::string out = "[";
           for (size_t i = 0; i < v.size(); ++i) out += (i ? ", " : "") + toml_string(v[i]);

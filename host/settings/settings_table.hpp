@@ -7,6 +7,7 @@
 
 #include "settings/settings.hpp"
 
+#include <array>
 #include <span>
 #include <string>
 #include <variant>
@@ -20,12 +21,15 @@ enum class SettingKind {
   Number,   // double in a SettingValue
   Choice,   // one of `choices`, by name (a std::string in a SettingValue)
   Text,     // std::string
-  TextList  // std::vector<std::string>
+  TextList,  // std::vector<std::string>
+  Color      // three numbers, each in [min, max] (a SettingColor in a SettingValue)
 };
 
-// monostate: a value of no type a setting takes (a date, a table, an array of numbers).
-using SettingValue =
-    std::variant<std::monostate, bool, long long, double, std::string, std::vector<std::string>>;
+// monostate: a value of no type a setting takes (a date, a table, an array of other than three
+// numbers).
+using SettingColor = std::array<double, 3>;
+using SettingValue = std::variant<std::monostate, bool, long long, double, std::string,
+                                  std::vector<std::string>, SettingColor>;
 
 struct SettingChoice {
   const char* name;   // in files and on the command line

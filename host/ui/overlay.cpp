@@ -131,6 +131,13 @@ bool edit_setting(const SettingSpec& spec, Settings& settings) {
       if (changed) edited = std::string(spec.choices[current].name);
       break;
     }
+    case SettingKind::Color: {
+      const SettingColor c = std::get<SettingColor>(value);
+      float rgb[3] = {static_cast<float>(c[0]), static_cast<float>(c[1]), static_cast<float>(c[2])};
+      changed = ImGui::ColorEdit3(spec.label, rgb, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
+      if (changed) edited = SettingColor{rgb[0], rgb[1], rgb[2]};
+      break;
+    }
     default:
       return false;  // text settings are not in the overlay
   }
