@@ -193,13 +193,73 @@ TEST(Mb2Import, MainLightRelativeToTheCamera) {
                          "main_light_colour ffff 8000 0;\nmain_light_intensity 2;\n"),
                    "x"));
   const toml::array* lights = t["lights"].as_array();
-  ASSERT_TRUE(lights && lights->size() == 1);
+  ASSERT_TRUE(lights && lights->size() == 2) << "the key light, and the fill light off";
   const toml::table& key = *lights->get(0)->as_table();
   const double expected[3] = {0.5, 0.5, -std::sqrt(0.5)};
   for (int i = 0; i < 3; ++i)
     EXPECT_NEAR(key["direction"][i].value<double>().value_or(NAN), expected[i], 1e-12) << i;
   EXPECT_NEAR(key["color"][1].value<double>().value_or(NAN), 0x8000 / 65535.0, 1e-12);
   EXPECT_NEAR(key["intensity"].value<double>().value_or(NAN), 2.6, 1e-12);
+}
+
+// The auxiliary lights: point lights 3 to 6 of the mandelbulber scene (an empty entry keeps its
+// fill light and the lights not enabled), at Mandelbulber2's position and colour, intensity
+// 1.3 * 100 / 24 of its own (its 100 I / (d^2 4 6), the key light's 1.3 for its 1), falling
+// off as 1 / (1 + d^2).
+TEST(Mb2Import, AuxiliaryLightsArePointLights) {
+  // The view 5 long: d0 = 0.05, a = 400.
+  const toml::table t = preset_of(import_fract(
+      parse("[main_parameters]\ncamera 0 -5 0;\ntarget 0 0 0;\naux_light_enabled_2 true;\n"
+            "aux_light_position_2 1 2 -3;\naux_light_intensity_2 2;\n"
+            "aux_light_colour_2 ffff 0 8000;\n"),
+      "x"));
+  const toml::array* lights = t["lights"].as_array();
+  ASSERT_TRUE(lights && lights->size() == 4) << "main, fill, aux 1 (off), aux 2";
+  EXPECT_EQ((*lights->get(1)->as_table())["intensity"].value<double>(), 0.0)
+      << "the fill light off: Mandelbulber2 has none";
+  EXPECT_TRUE(lights->get(2)->as_table()->empty());
+  const toml::table& aux = *lights->get(3)->as_table();
+  const double position[3] = {1, 2, -3};
+  for (int i = 0; i < 3; ++i)
+    EXPECT_EQ(aux["position"][i].value<double>().value_or(NAN), position[i]) << i;
+  const double a = 1 / (0.05 * 0.05);
+  EXPECT_NEAR(aux["attenuation"].value<double>().value_or(NAN), a, 1e-9);
+  EXPECT_NEAR(aux["intensity"].value<double>().value_or(NAN), 1.3 * 100 / 24 * 2 * a, 1e-9);
+  EXPECT_NEAR(aux["color"][2].value<double>().value_or(NAN), 0x8000 / 65535.0, 1e-12);
+  EXPECT_EQ(aux["falloff"].value<double>(), 2.0);
+  // Beyond d0 the light falls off as Mandelbulber2's 100 I / (24 d^2), times the key light's 1.3.
+  for (double d : {0.5, 2.0, 7.0})
+    EXPECT_NEAR(1.3 * 100 / 24 * 2 * a / (1 + a * d * d), 1.3 * 100 * 2 / (24 * d * d),
+                0.01 * 1.3 * 100 * 2 / (24 * d * d))
+        << d;
+  // None enabled: the main light, and the fill light off.
+  const toml::table none = preset_of(import_fract(parse("[main_parameters]\n"), "x"));
+  EXPECT_EQ(none["lights"].as_array()->size(), 2u);
+}
+
+// The background as the sky's gradient (zenith background_color_1, horizon background_color_2,
+// times background_brightness), or background_color_1 alone; depth of field as a thin lens of
+// radius focus fov DOF_radius (1 + aspect) / 2000, the blur Mandelbulber2's post-process gives.
+TEST(Mb2Import, BackgroundAndDepthOfField) {
+  const toml::table t = preset_of(import_fract(
+      parse("[main_parameters]\nbackground_color_1 ffff 0 0;\nbackground_color_2 0 ffff 0;\n"
+            "background_brightness 2;\nDOF_enabled true;\nDOF_focus 4;\nDOF_radius 10;\n"
+            "fov 1;\nimage_width 800;\nimage_height 600;\n"),
+      "x"));
+  const toml::table& settings = *t["settings"].as_table();
+  EXPECT_EQ(settings["render.sky_zenith"][0].value<double>(), 2.0);
+  EXPECT_EQ(settings["render.sky_zenith"][1].value<double>(), 0.0);
+  EXPECT_EQ(settings["render.sky_horizon"][1].value<double>(), 2.0);
+  EXPECT_EQ(settings["render.effects.dof"].value<bool>(), true);
+  EXPECT_EQ(settings["render.focus_distance"].value<double>(), 4.0);
+  EXPECT_NEAR(settings["render.aperture"].value<double>().value_or(NAN),
+              4.0 * 1.0 * 10 * (1 + 800.0 / 600) / 2000, 1e-12);
+  const toml::table one = preset_of(import_fract(
+      parse("[main_parameters]\nbackground_3_colors_enable false;\nbackground_color_1 0 0 ffff;\n"),
+      "x"));
+  EXPECT_EQ(one["settings"]["render.sky_horizon"][2].value<double>(), 1.0);
+  EXPECT_EQ(one["settings"]["render.sky_zenith"][2].value<double>(), 1.0);
+  EXPECT_EQ(one["settings"]["render.effects.dof"].value<bool>(), false);
 }
 
 std::vector<std::string> refusals(const std::string& body) {
@@ -244,8 +304,8 @@ TEST(Mb2Import, RefusesWhatWouldChangeTheShape) {
             0u);
 }
 
-// A preset's [[lights]] replace the scene's first lights (directional), and anything wrong in
-// them is reported with its line, leaving the state as it was.
+// A preset's [[lights]] replace the scene's first lights (directional, or point lights with a
+// position), and anything wrong in them is reported with its line, leaving the state as it was.
 TEST(PresetLights, ReplaceTheFirstLightsOrAreReported) {
   const auto scene =
       test::load_or_fail(std::filesystem::path(SCENE_PLUGIN_DIR) / "mandelbulber" PLUGIN_SUFFIX);
@@ -278,10 +338,29 @@ TEST(PresetLights, ReplaceTheFirstLightsOrAreReported) {
             std::string::npos);
   EXPECT_NE(first("[[lights]]\ncolour = [1, 1, 1]\n").find("unknown light key 'colour'"),
             std::string::npos);
-  EXPECT_NE(first("[[lights]]\n[[lights]]\n[[lights]]\n")
-                .find("3 lights, and scene 'mandelbulber' has 2"),
-            std::string::npos);
+  std::string seven;
+  for (int i = 0; i < 7; ++i) seven += "[[lights]]\n";
+  EXPECT_NE(first(seven).find("7 lights, and scene 'mandelbulber' has 6"), std::string::npos);
   EXPECT_NE(first("[[lights]]\nintensity = -1\n").find("intensity: expected"), std::string::npos);
+  EXPECT_NE(first("[[lights]]\ndirection = [0, 0, -1]\nposition = [1, 1, 1]\n")
+                .find("a direction or a position, not both"),
+            std::string::npos);
+  EXPECT_NE(first("[[lights]]\nposition = [1, 1, 1]\nfalloff = 0\n").find("falloff: expected"),
+            std::string::npos);
+  // With a position, a point light: its attenuation and falloff as given; an empty entry keeps
+  // the scene's light.
+  SceneState lit = make_default_state(scene->info);
+  EXPECT_TRUE(apply_preset(preset("[[lights]]\n[[lights]]\nposition = [1, -2, 3]\n"
+                                  "intensity = 4\nattenuation = 0.5\nfalloff = 1\n"),
+                           scene->info, lit)
+                  .empty());
+  EXPECT_EQ(lit.lights[0].vector[0], make_default_state(scene->info).lights[0].vector[0])
+      << "kept";
+  EXPECT_EQ(lit.lights[1].kind, FR_LIGHT_POINT);
+  EXPECT_EQ(lit.lights[1].vector[1], -2);
+  EXPECT_EQ(lit.lights[1].intensity, 4);
+  EXPECT_EQ(lit.lights[1].attenuation, 0.5);
+  EXPECT_EQ(lit.lights[1].falloff, 1);
 }
 
 // A preset's [settings] are render settings only: one from elsewhere that would turn plugin

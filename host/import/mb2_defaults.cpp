@@ -91,6 +91,7 @@ const Mb2Default kMain[] = {
     {"background_color_2", "ffff ffff ffff"},
     {"background_color_3", "0000 2710 01f4"},
     {"background_3_colors_enable", "true"},
+    {"background_brightness", "1"},
     {"basic_fog_enabled", "false"},
     {"basic_fog_visibility", "20"},
     {"basic_fog_color", "e807 ef12 ffff"},

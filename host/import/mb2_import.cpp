@@ -186,6 +186,10 @@ struct Importer {
   bool flag(const std::string& key) { return fract_bool(f, key, main(key)); }
   std::array<double, 3> vec3(const std::string& key) { return fract_vec3(f, key, main(key)); }
   bool given(const std::string& key) const { return f.main.count(key) != 0; }
+  // The scene's bounding radius: what Mandelbulber2 can see from the camera.
+  double bound_radius() {
+    return std::clamp(length(vec3("camera")) + number("view_distance_max"), 0.1, 1e6);
+  }
 
   void param(const std::string& key, const std::string& toml) { params.emplace_back(key, toml); }
   void setting(const std::string& key, const std::string& toml) {
@@ -453,8 +457,7 @@ void Importer::formulas() {
   // formulas' escape radii: the surface drawn is where the estimate falls below the hit
   // threshold, which reaches past the set by up to a threshold; at a coarse detail level a bound
   // at the set's radius cut transparent002's thick rounded cube into a ball.)
-  const double bound = length(vec3("camera")) + number("view_distance_max");
-  param("bound", number_text(std::clamp(bound, 0.1, 1e6)));
+  param("bound", number_text(bound_radius()));
 }
 
 void Importer::camera() {
@@ -580,7 +583,7 @@ void Importer::look() {
     lights_toml = t.str();
     note(Kind::Approximated,
          "main_light_alpha, main_light_beta, main_light_colour, main_light_intensity",
-         "the scene's key light (its fill light stays)");
+         "the scene's key light");
   }
   const bool ao = flag("ambient_occlusion_enabled");
   setting("render.effects.ao", ao ? "true" : "false");
@@ -589,17 +592,52 @@ void Importer::look() {
                   "ambient_occlusion_fast_tune"});
   const bool glow = flag("glow_enabled");
   setting("render.effects.glow", glow ? "true" : "false");
-  if (glow)
-    note(Kind::Approximated, "glow_enabled", "Fractalis's glow, its own colour and strength");
+  if (glow) {
+    setting("render.glow_color",
+            vec3_text(fract_colour(f, "glow_color_1", main("glow_color_1"))));
+    note(Kind::Approximated, "glow_enabled, glow_color_1",
+         "Fractalis's glow in glow_color_1, its own strength (Mandelbulber2's counts steps)");
+  }
   handled.insert({"glow_intensity", "glow_color_1", "glow_color_2"});
+  // Mandelbulber2's basic fog takes step / visibility of each step's colour: 1 - exp(-t /
+  // visibility) in all, the exponential fog of density R / visibility per bounding radius R.
   const bool fog = flag("basic_fog_enabled");
   setting("render.effects.fog", fog ? "true" : "false");
-  if (fog) note(Kind::Approximated, "basic_fog_enabled", "Fractalis's exponential fog");
+  if (fog) {
+    const double visibility = std::max(number("basic_fog_visibility"), 1e-300);
+    const double density = std::clamp(bound_radius() / visibility, 0.0, 1e9);
+    setting("render.fog_method", "\"exponential\"");
+    setting("render.fog_density", number_text(density));
+    setting("render.fog_color",
+            vec3_text(fract_colour(f, "basic_fog_color", main("basic_fog_color"))));
+    note(Kind::Approximated, "basic_fog_enabled, basic_fog_visibility, basic_fog_color",
+         "exponential fog, 1 - exp(-t / basic_fog_visibility), in basic_fog_color");
+  }
   handled.insert({"basic_fog_visibility", "basic_fog_color"});
-  if (flag("DOF_enabled"))
-    note(Kind::Ignored, "DOF_enabled", "Mandelbulber2's depth of field is a blur after rendering");
+  // Depth of field. Mandelbulber2 blurs after rendering: a pixel at distance z by
+  // |z - focus| / z * DOF_radius * (width + height) / 2000 pixels. A thin lens of radius A focused
+  // at f blurs by A |z - f| / (f z) radians, A |z - f| / (f z) * height / fov pixels (fov: the
+  // image plane's height at unit distance); the two agree for A = f fov DOF_radius (1 + aspect)
+  // / 2000. (The lens's focus is a plane across the view, Mandelbulber2's a distance.)
+  const bool dof = flag("DOF_enabled");
+  setting("render.effects.dof", dof ? "true" : "false");
+  if (dof) {
+    const double focus = number("DOF_focus"), radius = number("DOF_radius");
+    const auto w = integer("image_width"), h = integer("image_height");
+    const double aspect =
+        static_cast<double>(std::max(w, 1LL)) / static_cast<double>(std::max(h, 1LL));
+    const double f = std::clamp(focus, 1e-6, 1000.0);
+    const double aperture =
+        std::clamp(f * std::clamp(number("fov"), 0.0, 100.0) * std::max(radius, 0.0) *
+                       (1 + aspect) / 2000,
+                   0.0, 10.0);
+    setting("render.focus_distance", number_text(f));
+    setting("render.aperture", number_text(aperture));
+    note(Kind::Approximated, "DOF_enabled, DOF_focus, DOF_radius",
+         "a thin lens focused at " + number_text(f) + " with the blur Mandelbulber2's gives: "
+         "render.aperture = " + number_text(aperture) + " (it needs samples: --samples 64)");
+  }
   handled.insert({"DOF_focus", "DOF_radius"});
-  setting("render.effects.dof", "false");
   const bool reflections = flag("raytraced_reflections");
   setting("render.effects.reflections", reflections ? "true" : "false");
   if (reflections) {
@@ -608,18 +646,69 @@ void Importer::look() {
          "mirror bounces with reflectivity mat1_reflectance");
   }
   setting("render.reflectivity", number_text(std::clamp(number("mat1_reflectance"), 0.0, 1.0)));
+  // The auxiliary lights, as the mandelbulber scene's point lights 3 to 6 (its first two are the
+  // key light, above, and a fill light, turned off; an empty [[lights]] entry keeps a light that
+  // is not enabled off). Mandelbulber2 lights a
+  // surface d away with 100 intensity / (d^2 4 6) (its four lights, and a 6 kept "for backward
+  // compatibility"), its main light with 1 where the key light here has 1.3. Here k / (1 + a d^2)
+  // with a = 1 / d0^2 and k = 1.3 (100 / 24) intensity a: the same beyond d0, a hundredth of the
+  // view's distance (so that a close-up's lights fall off as its own), capped within it.
+  const auto eye = vec3("camera"), target = vec3("target");
+  const double view_distance =
+      length({target[0] - eye[0], target[1] - eye[1], target[2] - eye[2]});
+  int last_aux = 0;
+  std::string aux_toml[4];
   for (int i = 1; i <= 4; ++i) {
     const std::string k = std::to_string(i);
-    if (flag("aux_light_enabled_" + k))
-      note(Kind::Ignored, "aux_light_enabled_" + k, "auxiliary lights are not imported");
     handled.insert(
         {"aux_light_position_" + k, "aux_light_colour_" + k, "aux_light_intensity_" + k});
+    if (!flag("aux_light_enabled_" + k)) continue;
+    const auto position = vec3("aux_light_position_" + k);
+    const auto colour =
+        fract_colour(f, "aux_light_colour_" + k, main("aux_light_colour_" + k));
+    const double mb2 = 1.3 * 100 / 24 * std::max(number("aux_light_intensity_" + k), 0.0);
+    const double d0 = std::max(0.01 * view_distance, 1e-12);
+    const double attenuation = 1 / (d0 * d0);
+    const double intensity = std::min(mb2 * attenuation, 1e30);
+    std::ostringstream t;
+    t << "position = " << vec3_text(position) << "\ncolor = " << vec3_text(colour)
+      << "\nintensity = " << number_text(intensity)
+      << "\nattenuation = " << number_text(attenuation) << "\nfalloff = 2\n";
+    aux_toml[i - 1] = t.str();
+    last_aux = i;
+    note(Kind::Approximated, "aux_light_enabled_" + k,
+         "a point light at " + vec3_text(position) + ", falling off as 1 / d^2 beyond " +
+             number_text(d0));
   }
-  for (const char* key : {"background_color_1", "background_color_2", "background_color_3",
-                          "background_3_colors_enable", "brightness", "contrast", "gamma"})
-    if (given(key)) note(Kind::Ignored, key, "Fractalis's own sky and tone mapping");
-  handled.insert({"background_color_1", "background_color_2", "background_color_3",
-                  "background_3_colors_enable", "brightness", "contrast", "gamma"});
+  // The scene's fill light off: Mandelbulber2 has none.
+  lights_toml += "[[lights]]\nintensity = 0\n";
+  for (int i = 1; i <= last_aux; ++i) lights_toml += "[[lights]]\n" + aux_toml[i - 1];
+  handled.insert({"aux_light_visibility", "aux_light_visibility_size"});
+  // The background: Mandelbulber2's gradient runs along the world's z, from background_color_3
+  // straight down through _2 at the horizon to _1 straight up (or is _1 alone); Fractalis's sky
+  // runs from horizon to zenith about the camera's up and keeps the horizon's colour below it.
+  {
+    const bool three = flag("background_3_colors_enable");
+    const auto top = fract_colour(f, "background_color_1", main("background_color_1"));
+    const auto middle =
+        three ? fract_colour(f, "background_color_2", main("background_color_2")) : top;
+    const double brightness = std::clamp(number("background_brightness"), 0.0, 1e3);
+    auto rgb = [&](const std::array<double, 3>& c) {
+      return vec3_text({std::min(c[0] * brightness, 1e3), std::min(c[1] * brightness, 1e3),
+                        std::min(c[2] * brightness, 1e3)});
+    };
+    setting("render.sky_zenith", rgb(top));
+    setting("render.sky_horizon", rgb(middle));
+    note(Kind::Approximated, "background_color_1, background_color_2, background_color_3",
+         three ? "the sky from background_color_2 at the horizon to background_color_1 at the "
+                 "zenith, about the camera's up (background_color_3, below, is not used)"
+               : "a sky of background_color_1");
+    handled.insert({"background_color_1", "background_color_2", "background_color_3",
+                    "background_3_colors_enable", "background_brightness"});
+  }
+  for (const char* key : {"brightness", "contrast", "gamma"})
+    if (given(key)) note(Kind::Ignored, key, "Fractalis's own tone mapping");
+  handled.insert({"brightness", "contrast", "gamma"});
 }
 
 void Importer::unhandled_keys() {

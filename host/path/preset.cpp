@@ -45,7 +45,9 @@ std::optional<toml::table> parse(const std::string& text, const std::filesystem:
 
 const char* const kTopKeys[] = {"scene", "name", "description", "params", "camera", "settings",
                                 "lights"};
-const char* const kLightKeys[] = {"direction", "color", "intensity"};
+const char* const kLightKeys[] = {"direction", "position", "color", "intensity", "attenuation",
+                                  "falloff"};
+const char* const kLightKeysText = "direction or position, color, intensity, attenuation, falloff";
 const char* const kCameraKeys[] = {"eye", "target", "up", "fov_deg"};
 
 }  // namespace
@@ -133,9 +135,14 @@ std::vector<std::pair<std::string, std::string>> preset_settings(const Preset& p
       s << *d;
       text = s.str();
     } else if (auto str = value.value_exact<std::string>()) text = *str;
-    else {
+    else if (const auto v = toml_vec3(value)) {  // a colour
+      std::ostringstream s;
+      s.precision(17);
+      s << "[" << v->x << ", " << v->y << ", " << v->z << "]";
+      text = s.str();
+    } else {
       problems->push_back(where(preset.file, toml_line(value)) + std::string(key.str()) +
-                          ": expected a number, a boolean or a string");
+                          ": expected a number, a boolean, a string or [r, g, b]");
       continue;
     }
     out.emplace_back(std::string(key.str()), text);
@@ -258,10 +265,10 @@ std::vector<std::string> apply_preset(const Preset& preset, const SceneInfo& sce
     }
   }
   if (const toml::node* n = root->get("lights")) {
-    // [[lights]]: directional lights in place of the scene's first ones, in order.
+    // [[lights]]: lights in place of the scene's first ones, in order.
     const toml::array* lights = n->as_array();
     if (!lights || !lights->is_array_of_tables()) {
-      problem(toml_line(*n), "[[lights]] must be tables (direction, color, intensity)");
+      problem(toml_line(*n), std::string("[[lights]] must be tables (") + kLightKeysText + ")");
     } else if (lights->size() > next.lights.size()) {
       problem(toml_line(*n), std::to_string(lights->size()) + " lights, and scene '" + scene.id +
                                  "' has " + std::to_string(next.lights.size()));
@@ -269,28 +276,49 @@ std::vector<std::string> apply_preset(const Preset& preset, const SceneInfo& sce
       for (size_t i = 0; i < lights->size(); ++i) {
         const toml::table& t = *lights->get(i)->as_table();
         fr_light light = next.lights[i];
-        light.kind = FR_LIGHT_DIRECTIONAL;
+        if (t.contains("direction") && t.contains("position")) {
+          problem(toml_line(t), "a light has a direction or a position, not both");
+          continue;
+        }
+        // Which kind: what the entry gives, else the scene's light's.
+        if (t.contains("direction")) {
+          light.kind = FR_LIGHT_DIRECTIONAL;
+          light.attenuation = 0;
+        } else if (t.contains("position")) {
+          light.kind = FR_LIGHT_POINT;
+        } else if (t.contains("attenuation") || t.contains("falloff")) {
+          if (light.kind != FR_LIGHT_POINT)
+            problem(toml_line(t), "attenuation and falloff are a point light's (give its position)");
+        }
         for (const auto& [key, value] : t) {
           const std::string k(key.str());
           if (std::find(std::begin(kLightKeys), std::end(kLightKeys), k) == std::end(kLightKeys)) {
-            problem(toml_line(value), "unknown light key '" + echo(k) +
-                                          "' (direction, color, intensity)");
+            problem(toml_line(value),
+                    "unknown light key '" + echo(k) + "' (" + kLightKeysText + ")");
             continue;
           }
-          if (k == "intensity") {
+          if (k == "intensity" || k == "attenuation" || k == "falloff") {
+            const bool falloff = k == "falloff";  // (e > 0, as the ABI has it)
             const auto v = toml_number(value);
-            if (v && *v >= 0 && *v <= 1e6)
-              light.intensity = *v;
-            else
-              problem(toml_line(value), "intensity: expected a number from 0 to 1e6");
+            // (Intensity and attenuation as a close-up's lights need them: its light falls off
+            // over distances of 1e-6 and less. The kernel holds them as floats.)
+            if (!v || !(falloff ? *v > 0 && *v <= 4 : *v >= 0 && *v <= 1e30)) {
+              problem(toml_line(value), k + (falloff ? ": expected a number above 0, at most 4"
+                                                     : ": expected a number from 0 to 1e30"));
+              continue;
+            }
+            (k == "intensity" ? light.intensity : k == "attenuation" ? light.attenuation
+                                                                     : light.falloff) = *v;
             continue;
           }
           const auto v = toml_vec3(value);
-          const bool ok = v && (k == "color" ? v->x >= 0 && v->y >= 0 && v->z >= 0
-                                             : v->x != 0 || v->y != 0 || v->z != 0);
+          const bool ok = v && (k == "color"      ? v->x >= 0 && v->y >= 0 && v->z >= 0
+                                : k == "position" ? true
+                                                  : v->x != 0 || v->y != 0 || v->z != 0);
           if (!ok) {
-            problem(toml_line(value), k + (k == "color" ? ": expected [r, g, b], none below 0"
-                                                        : ": expected [x, y, z], not zero"));
+            problem(toml_line(value), k + (k == "color"      ? ": expected [r, g, b], none below 0"
+                                           : k == "position" ? ": expected [x, y, z]"
+                                                             : ": expected [x, y, z], not zero"));
             continue;
           }
           store_dvec3(k == "color" ? light.color : light.vector, *v);

@@ -9,10 +9,11 @@
 //   [camera]                            # optional; any of eye, target, up, fov_deg
 //   eye = [9.0, 6.0, 10.0]
 //   target = [0.0, 0.0, 0.0]
-//   [[lights]]                          # optional; directional lights in place of the scene's
-//   direction = [0.3, -0.8, -0.5]       # first ones: the way the light travels, its colour
-//   color = [1.0, 0.9, 0.8]             # (linear RGB) and intensity
-//   intensity = 1.3
+//   [[lights]]                          # optional; lights in place of the scene's first ones,
+//   direction = [0.3, -0.8, -0.5]       # in order: a directional light (the way it travels), or
+//   color = [1.0, 0.9, 0.8]             # with `position` a point light (and its attenuation a
+//   intensity = 1.3                     # and falloff e: intensity / (1 + a d^e)); colour in
+//                                       # linear RGB; an empty [[lights]] keeps the scene's
 //   [settings]                          # optional; render.* settings as --set takes them
 //   "render.hit_threshold_k" = 2.0      # (an imported file's quality and effects)
 //

@@ -138,6 +138,9 @@ fr_frame_constants make_frame_constants(const CameraRays& rays, const SceneState
   int count = 0;
   for (const fr_light& l : state.lights) {
     if (count == FR_MAX_LIGHTS) break;
+    // A light of no intensity lights nothing: left out, its shadow rays are never marched (an
+    // imported scene's unused auxiliary lights, a light the user turned down).
+    if (!(l.intensity > 0) || (l.color[0] <= 0 && l.color[1] <= 0 && l.color[2] <= 0)) continue;
     const glm::dvec3 color = to_dvec3(l.color) * l.intensity;
     const bool point = l.kind == FR_LIGHT_POINT;
     put(fc.light_vector[count], to_dvec3(l.vector));
@@ -148,7 +151,7 @@ fr_frame_constants make_frame_constants(const CameraRays& rays, const SceneState
     fc.light_radius[count] = static_cast<float>(l.radius);
     ++count;
   }
-  if (count == 0) {
+  if (state.lights.empty()) {
     put(fc.light_vector[0], -rays.forward - rays.up + 0.5 * rays.right);
     put(fc.light_color[0], glm::dvec3(1.2));
     fc.light_kind[0] = FR_KERNEL_LIGHT_DIRECTIONAL;

@@ -453,6 +453,13 @@ std::vector<SettingSpec> make_table() {
                              "Fog: \"exponential\" (1 - exp(-density t)) or \"power\" (fog_scale * "
                              "t^0.75)."),
                          "Fog curve"));
+  t.push_back(number_setting<&S::render, &R::fog_density>(
+      "render.fog_density", 0, 1e9, false,
+      "The exponential fog's density per bounding radius (1 - exp(-density t / R))."));
+  t.push_back(color_setting<&S::render, &R::fog_color>("render.fog_color", 1e3,
+                                                       "The fog's colour, linear RGB."));
+  t.push_back(color_setting<&S::render, &R::glow_color>(
+      "render.glow_color", 1e3, "The glow's colour around the surface, linear RGB."));
 
   t.push_back(in_overlay(effect_setting<FR_FEATURE_SHADOWS>("render.effects.shadows"), "Shadows"));
   t.push_back(in_overlay(effect_setting<FR_FEATURE_AO>("render.effects.ao"), "Ambient occlusion"));

@@ -315,7 +315,13 @@ enum { P_BOUND = 9 * 6 + 9 };
 static const fr_camera camera = FR_CAMERA(3.0, -6.0, 2.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 50.0);
 static const fr_light key = FR_DIRECTIONAL_LIGHT(-0.45, 0.35, -0.85, 1.0, 0.95, 0.88, 1.3);
 static const fr_light fill = FR_DIRECTIONAL_LIGHT(0.6, 0.5, -0.2, 0.4, 0.5, 0.7, 0.3);
-static const fr_light* const lights[] = {&key, &fill};
+/* Mandelbulber2's four auxiliary lights, off (intensity 0: the host marches no shadow rays for
+ * them) until an imported preset's [[lights]] place and light them. */
+static const fr_light aux1 = FR_POINT_LIGHT(3.0, -3.0, 3.0, 1.0, 1.0, 1.0, 0.0, 1.0, 2.0);
+static const fr_light aux2 = FR_POINT_LIGHT(-3.0, -3.0, 0.0, 1.0, 1.0, 1.0, 0.0, 1.0, 2.0);
+static const fr_light aux3 = FR_POINT_LIGHT(-3.0, 3.0, -1.0, 1.0, 1.0, 1.0, 0.0, 1.0, 2.0);
+static const fr_light aux4 = FR_POINT_LIGHT(0.0, -1.0, -3.0, 1.0, 1.0, 1.0, 0.0, 1.0, 2.0);
+static const fr_light* const lights[] = {&key, &fill, &aux1, &aux2, &aux3, &aux4};
 
 static fr_result update(void* instance, const fr_host* host, fr_frame_state* state) {
   (void)instance;
