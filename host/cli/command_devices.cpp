@@ -1,5 +1,7 @@
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
+#include "render/cl_runtime.hpp"
+#include "render/dd_selftest.hpp"
 #include "render/device.hpp"
 
 #include <spdlog/spdlog.h>
@@ -15,7 +17,9 @@ int command_devices(const std::vector<std::string>& args, std::ostream& out,
   auto options = parse_options("devices", args, specs);
   if (options.has("help")) {
     out << "usage: fractalis devices\n\nLists OpenCL platforms and devices with the selector "
-           "--device takes.\n\n"
+           "--device takes,\nand for each with double precision whether double-double "
+           "arithmetic (deep zoom)\nkeeps its error terms there (a self-test of its sums and "
+           "products).\n\n"
         << format_options(specs);
     return 0;
   }
@@ -37,6 +41,17 @@ int command_devices(const std::vector<std::string>& args, std::ostream& out,
         << "       " << d.version << ", driver " << d.driver_version << ", " << d.compute_units
         << " compute units, " << (d.global_mem_bytes >> 20) << " MiB, double "
         << (d.has_fp64 ? "yes" : "no") << ", lanes " << preferred_lanes(d) << "\n";
+    // Whether double-double (deep zoom) keeps its error terms here (render/dd_selftest.hpp).
+    if (d.has_fp64) {
+      try {
+        ClRuntime runtime(d);
+        const DdSelftest test = dd_selftest(runtime);
+        out << "       double-double: " << (test.exact ? "exact" : "NOT exact: " + test.failed)
+            << " (" << test.cases << " sums and products checked)\n";
+      } catch (const std::exception& e) {
+        out << "       double-double: not checked: " << e.what() << "\n";
+      }
+    }
   }
   return 0;
 }

@@ -1,0 +1,76 @@
+/* fr/mandelbox_dd.cl — Tom Lowe's Mandelbox (fr/mandelbox.cl) at a point given in double-double
+ * (fr/dd.cl), for views past what double resolves.
+ *
+ * The same iteration, z <- scale * fold(z) + p with dr <- dr * |scale| * (sphere fold's factor)
+ * + 1, and the estimate |z| / |dr|. Only its first iterations need the pairs: a rounding of z at
+ * an iteration where the running derivative is dr moves the estimate's point by that rounding over
+ * dr (the folds and the scaling carry a change of z as they carry a change of p, times dr), so once
+ * dr * pixel exceeds 1000 ulps of max(|z|, |p|) double's roundings cost less than a thousandth of
+ * a pixel and the rest runs in double. The Mandelbox's dr never shrinks (the sphere fold's factor
+ * is at least 1, |scale| > 1), so a lane switches once; the loop keeps the pairs until every lane
+ * of the work-item may switch. `pixel` is the size the estimate must resolve (a pixel's footprint
+ * at the point; 0 keeps every iteration in pairs). */
+#include "fr/dd.cl"
+#include "fr/folds.cl"
+
+/* 2 clamp(x, -limit, limit) - x, exactly: 2 limit - x above the limit, -2 limit - x below it. */
+inline dd_t dd_fold_box1(dd_t x, real_t limit) {
+  const dd_t above = dd_add_d(dd_neg(x), 2 * limit);
+  const dd_t below = dd_add_d(dd_neg(x), -2 * limit);
+  return dd_select(dd_gt_d(x, limit), above, dd_select(dd_lt_d(x, -limit), below, x));
+}
+
+real_t de_mandelbox_dd(dd3_t p, int iterations, scalar_t scale, scalar_t min_radius,
+                       scalar_t fixed_radius, scalar_t fold_limit, real_t pixel) {
+  const real_t limit = to_real(fold_limit);
+  const real_t min2 = to_real(min_radius * min_radius);
+  const real_t fixed2 = to_real(fixed_radius * fixed_radius);
+  const real_t bailout2 = to_real(1e8);
+  const real_t p_size = sqrt(dd_to_real(dd3_length2(p)));
+  /* 1000 ulps of double, relative */
+  const real_t switch_ulps = to_real(1000 * DBL_EPSILON);
+  dd3_t z = p;
+  real_t dr = to_real(1);
+  dd_t r2 = dd3_length2(z);
+  int i = 0;
+  for (; i < iterations; ++i) {
+    const real_t size = fmax(sqrt(fmax(r2.hi, (real_t)0)), p_size);
+    const mask_t needs_pairs = dr * pixel <= switch_ulps * size;
+    const mask_t live = r2.hi < bailout2;
+    if (!any_lane(live)) break;
+    if (!any_lane(live & needs_pairs)) break; /* the rest in double, below */
+    dd3_t folded = dd3_make(dd_fold_box1(z.x, limit), dd_fold_box1(z.y, limit),
+                            dd_fold_box1(z.z, limit));
+    const dd_t f2 = dd3_length2(folded);
+    /* The sphere fold: times fixed2 / min2 inside min_radius, fixed2 / r2 between the radii. */
+    const mask_t inner = dd_lt_d(f2, min2);
+    const mask_t shell = !inner & dd_lt_d(f2, fixed2);
+    const dd_t safe_r2 = dd_select(shell, f2, dd_from(to_real(1)));
+    const dd_t factor = dd_select(
+        inner, dd_from(fixed2 / min2),
+        dd_select(shell, dd_div(dd_from(fixed2), safe_r2), dd_from(to_real(1))));
+    folded = dd3_scale(folded, factor);
+    const dd3_t next = dd3_add(dd3_scale_d(folded, to_real(scale)), p);
+    const real_t next_dr = dr * factor.hi * to_real(fabs(scale)) + to_real(1);
+    z = dd3_select(live, next, z);
+    dr = lane_select(live, next_dr, dr);
+    r2 = dd_select(live, dd3_length2(z), r2);
+  }
+  /* The rest in double: p rounded to double costs at most an ulp of |p| over dr (as above). */
+  vec3_t zd = dd3_to_v3(z);
+  const vec3_t pd = dd3_to_v3(p);
+  real_t r2d = v3_length2(zd);
+  for (; i < iterations; ++i) {
+    const mask_t live = r2d < bailout2;
+    if (!any_lane(live)) break;
+    vec3_t folded = p_fold_box(zd, limit);
+    real_t factor = to_real(1);
+    folded = p_fold_sphere(folded, to_real(min_radius), to_real(fixed_radius), &factor);
+    const vec3_t next = v3_add(v3_scale(folded, to_real(scale)), pd);
+    const real_t next_dr = dr * factor * to_real(fabs(scale)) + to_real(1);
+    zd = v3_select(live, next, zd);
+    dr = lane_select(live, next_dr, dr);
+    r2d = lane_select(live, v3_length2(zd), r2d);
+  }
+  return sqrt(r2d) / fabs(dr);
+}

@@ -1,0 +1,304 @@
+// Double-double arithmetic on the device (kernels/de/dd.cl) and the Mandelbox in it
+// (kernels/de/mandelbox_dd.cl), against a host reference in __float128 (113 bits) that shares no
+// code with the kernels: the self-test passes here and fails for a fast-math build; each
+// operation's relative error is within a few 2^-106; and at points 1e-22 from the Mandelbox's
+// surface, where double cannot even hold the point, the pair DE agrees with the reference within
+// a thousandth of such a pixel while double cannot tell the points apart (why pairs are needed).
+#include "render/dd_selftest.hpp"
+#include "render/kernel_sources.hpp"
+#include "test_support.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace fr {
+namespace {
+
+using quad = __float128;
+
+quad quad_abs(quad x) {
+  return x < 0 ? -x : x;
+}
+
+// sqrt in __float128 without libquadmath: Newton from the double root (each step doubles the
+// correct bits: 53 -> 106 -> 113).
+quad quad_sqrt(quad x) {
+  if (!(x > 0)) return 0;
+  quad r = std::sqrt(static_cast<double>(x));
+  for (int i = 0; i < 3; ++i) r = (r + x / r) / 2;
+  return r;
+}
+
+// A double-double's two doubles for a __float128: hi the nearest double, lo the rest rounded.
+void split(quad x, double* hi, double* lo) {
+  *hi = static_cast<double>(x);
+  *lo = static_cast<double>(x - static_cast<quad>(*hi));
+}
+
+// A program of the library's files for a kernel written here: the files' "#include "fr/..."
+// lines dropped (the files are given in dependency order instead).
+std::string program(int lanes, const std::vector<std::string>& library, const std::string& kernel) {
+  std::ostringstream source;
+  source << "#define FR_LANES " << lanes << "\n#define FR_DOUBLE 1\n"
+         << kernel_source("prelude.cl") << "\n";
+  for (const std::string& file : library) {
+    std::istringstream lines{std::string(kernel_source(file))};
+    for (std::string line; std::getline(lines, line);)
+      if (line.rfind("#include \"fr/", 0) != 0) source << line << "\n";
+  }
+  source << "#if FR_LANES == 1\n#define LOAD(i, p) (p)[i]\n#define STORE(v, i, p) (p)[i] = (v)\n"
+            "#else\n#define LOAD(i, p) FR_CAT(vload, FR_LANES)(i, p)\n"
+            "#define STORE(v, i, p) FR_CAT(vstore, FR_LANES)(v, i, p)\n#endif\n"
+         << kernel;
+  return source.str();
+}
+
+// Runs kernel `name` over `count` values (a multiple of `lanes`, one LOAD a work-item): its
+// arguments are `inputs` (arrays of `count` doubles each), then `out` (`outputs` x `count`
+// doubles), then `scalars` (doubles), in that order.
+std::vector<double> run(ClRuntime& runtime, const std::string& source, const char* name,
+                        int lanes, const std::vector<std::vector<double>>& inputs,
+                        const std::vector<double>& scalars, size_t outputs = 1) {
+  const size_t count = inputs.front().size();
+  cl_kernel kernel = runtime.kernel(runtime.program(source, "-cl-std=CL1.2 -w", name), name);
+  std::vector<ClBufferHandle> buffers;
+  cl_uint arg = 0;
+  cl_int err = CL_SUCCESS;
+  for (const auto& in : inputs) {
+    buffers.emplace_back(clCreateBuffer(runtime.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
+                                        count * sizeof(double), const_cast<double*>(in.data()),
+                                        &err));
+    cl_check(err, "clCreateBuffer", name);
+    const cl_mem m = buffers.back().get();
+    cl_check(clSetKernelArg(kernel, arg++, sizeof m, &m), "clSetKernelArg");
+  }
+  ClBufferHandle out(clCreateBuffer(runtime.context(), CL_MEM_WRITE_ONLY,
+                                    outputs * count * sizeof(double), nullptr, &err));
+  cl_check(err, "clCreateBuffer", name);
+  const cl_mem out_mem = out.get();
+  cl_check(clSetKernelArg(kernel, arg++, sizeof out_mem, &out_mem), "clSetKernelArg");
+  for (double s : scalars) cl_check(clSetKernelArg(kernel, arg++, sizeof s, &s), "clSetKernelArg");
+  const size_t global = count / static_cast<size_t>(lanes);
+  cl_check(clEnqueueNDRangeKernel(runtime.queue(), kernel, 1, nullptr, &global, nullptr, 0,
+                                  nullptr, nullptr),
+           "clEnqueueNDRangeKernel", name);
+  std::vector<double> result(outputs * count);
+  cl_check(clEnqueueReadBuffer(runtime.queue(), out_mem, CL_TRUE, 0, result.size() * sizeof(double),
+                               result.data(), 0, nullptr, nullptr),
+           "clEnqueueReadBuffer", name);
+  return result;
+}
+
+bool has_fp64() {
+  return test::runtime().device().has_fp64;
+}
+
+TEST(DoubleDouble, SelfTestPassesHereAndFailsForAFastMathBuild) {
+  if (!has_fp64()) GTEST_SKIP() << "the device has no double precision";
+  const DdSelftest plain = dd_selftest(test::runtime());
+  EXPECT_TRUE(plain.exact) << plain.failed;
+  EXPECT_GE(plain.cases, 100);
+  // The mutation the self-test exists for: fast math lets the compiler reassociate TwoSum's
+  // (a - (s - v)) to 0.
+  const DdSelftest fast = dd_selftest(test::runtime(), "-cl-std=CL1.2 -cl-fast-relaxed-math -w");
+  EXPECT_FALSE(fast.exact) << "a fast-math build kept every error term";
+  EXPECT_NE(fast.failed.find("not exact"), std::string::npos) << fast.failed;
+}
+
+// Each operation on pairs against __float128, over values of many magnitudes and both signs: the
+// relative error within 8 x 2^-106 (QD's bounds are 2 to 4 ulps of the pair), at 1 and 16 lanes.
+TEST(DoubleDouble, OperationsAgreeWithFloat128) {
+  if (!has_fp64()) GTEST_SKIP() << "the device has no double precision";
+  const std::string kernel = R"(
+__kernel void ops(__global const double* ahi, __global const double* alo,
+                  __global const double* bhi, __global const double* blo, __global double* out,
+                  double op) {
+  const int i = get_global_id(0);
+  const dd_t a = dd_make(LOAD(i, ahi), LOAD(i, alo)), b = dd_make(LOAD(i, bhi), LOAD(i, blo));
+  dd_t r;
+  if (op == 0) r = dd_add(a, b);
+  else if (op == 1) r = dd_mul(a, b);
+  else if (op == 2) r = dd_div(a, b);
+  else r = dd_sqrt(dd_abs(a));
+  /* hi in the first half of out, lo in the second */
+  STORE(r.hi, i, out);
+  STORE(r.lo, i, out + get_global_size(0) * FR_LANES);
+}
+)";
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  std::uniform_int_distribution<int> exponent(-40, 40);
+  const int n = 512;
+  std::vector<quad> a(n), b(n);
+  std::vector<double> ahi(n), alo(n), bhi(n), blo(n);
+  for (int i = 0; i < n; ++i) {
+    a[i] = static_cast<quad>(std::ldexp(unit(random), exponent(random))) +
+           static_cast<quad>(std::ldexp(unit(random), exponent(random) - 60));
+    b[i] = static_cast<quad>(std::ldexp(unit(random), exponent(random))) +
+           static_cast<quad>(std::ldexp(unit(random), exponent(random) - 60));
+    if (b[i] == 0) b[i] = 1;
+    split(a[i], &ahi[i], &alo[i]);
+    split(b[i], &bhi[i], &blo[i]);
+    a[i] = static_cast<quad>(ahi[i]) + alo[i];  // exactly the pair the device gets
+    b[i] = static_cast<quad>(bhi[i]) + blo[i];
+  }
+  for (int lanes : {1, 16}) {
+    const std::string source = program(lanes, {"de/dd.cl"}, kernel);
+    for (int op = 0; op < 4; ++op) {
+      SCOPED_TRACE("lanes " + std::to_string(lanes) + ", op " + std::to_string(op));
+      const auto out =
+          run(test::runtime(), source, "ops", lanes, {ahi, alo, bhi, blo}, {double(op)}, 2);
+      double worst = 0;
+      for (int i = 0; i < n; ++i) {
+        const quad expected = op == 0   ? a[i] + b[i]
+                              : op == 1 ? a[i] * b[i]
+                              : op == 2 ? a[i] / b[i]
+                                        : quad_sqrt(quad_abs(a[i]));
+        const quad got = static_cast<quad>(out[i]) + out[n + i];
+        // (A sum that cancels is exact to the pair's absolute precision, not its relative one.)
+        const quad scale = op == 0 ? quad_abs(a[i]) + quad_abs(b[i]) : quad_abs(expected);
+        if (scale == 0) continue;
+        worst = std::max(worst, static_cast<double>(quad_abs(got - expected) / scale));
+      }
+      EXPECT_LE(worst, 8 * std::ldexp(1.0, -106));
+    }
+  }
+}
+
+// The Mandelbox (scale 2, min radius 0.5, fixed radius 1, fold 1, 90 iterations) in __float128.
+// (Its estimate resolves about 1 / dr: 2^-n after n iterations, so a view 1e-22 across needs
+// some 75; 60 stall near 1e-19.)
+struct BoxReference {
+  int iterations = 90;
+  double scale = 2, min_radius = 0.5, fixed_radius = 1, fold = 1;
+  quad de(const quad p[3]) const {
+    quad z[3] = {p[0], p[1], p[2]};
+    quad dr = 1;
+    quad r2 = z[0] * z[0] + z[1] * z[1] + z[2] * z[2];
+    const quad min2 = static_cast<quad>(min_radius) * min_radius,
+               fixed2 = static_cast<quad>(fixed_radius) * fixed_radius;
+    for (int i = 0; i < iterations && r2 < 1e8; ++i) {
+      for (quad& c : z) {
+        if (c > fold) c = 2 * static_cast<quad>(fold) - c;
+        else if (c < -fold) c = -2 * static_cast<quad>(fold) - c;
+      }
+      const quad f2 = z[0] * z[0] + z[1] * z[1] + z[2] * z[2];
+      const quad factor = f2 < min2 ? fixed2 / min2 : f2 < fixed2 ? fixed2 / f2 : quad(1);
+      for (int c = 0; c < 3; ++c) z[c] = z[c] * factor * scale + p[c];
+      dr = dr * factor * (scale < 0 ? -scale : scale) + 1;
+      r2 = z[0] * z[0] + z[1] * z[1] + z[2] * z[2];
+    }
+    return quad_sqrt(r2) / quad_abs(dr);
+  }
+};
+
+TEST(DoubleDouble, MandelboxAtPointsNearTheSurfaceAgreesWithFloat128) {
+  if (!has_fp64()) GTEST_SKIP() << "the device has no double precision";
+  const BoxReference box;
+  // Surface points: sphere tracing in __float128 from outside towards the box, along rays of
+  // several directions, until the estimate is below 1e-24.
+  std::vector<quad> px, py, pz;
+  const double directions[][3] = {{-0.6, -0.5, -0.62}, {-0.3, -0.9, -0.3}, {-0.8, -0.1, -0.58},
+                                  {-0.45, -0.7, -0.55}};
+  const double start[3] = {5, 4, 5};
+  for (const auto& d : directions) {
+    const quad length = quad_sqrt(quad(d[0]) * d[0] + quad(d[1]) * d[1] + quad(d[2]) * d[2]);
+    const quad dir[3] = {d[0] / length, d[1] / length, d[2] / length};
+    quad t = 0, de = 1;
+    quad p[3];
+    int steps = 0;
+    for (; steps < 5000 && de > 1e-24; ++steps) {
+      for (int c = 0; c < 3; ++c) p[c] = start[c] + t * dir[c];
+      de = box.de(p);
+      t += de;
+      if (t > 30) break;
+    }
+    ASSERT_LT(t, 30) << "the ray missed the box";
+    ASSERT_LE(de, 1e-24) << "the tracing stalled at " << static_cast<double>(de) << " after "
+                         << steps << " steps";
+    // Points 1e-22 to 1e-21 back along the ray, outside the surface by about that.
+    for (int k = 1; k <= 16; ++k) {
+      const quad back = t - quad(k) * 1e-22;
+      px.push_back(start[0] + back * dir[0]);
+      py.push_back(start[1] + back * dir[1]);
+      pz.push_back(start[2] + back * dir[2]);
+    }
+  }
+  const size_t n = px.size();  // 64: a multiple of 16
+  std::vector<double> xhi(n), xlo(n), yhi(n), ylo(n), zhi(n), zlo(n);
+  std::vector<quad> reference(n);
+  for (size_t i = 0; i < n; ++i) {
+    split(px[i], &xhi[i], &xlo[i]);
+    split(py[i], &yhi[i], &ylo[i]);
+    split(pz[i], &zhi[i], &zlo[i]);
+    const quad p[3] = {quad(xhi[i]) + xlo[i], quad(yhi[i]) + ylo[i], quad(zhi[i]) + zlo[i]};
+    reference[i] = box.de(p);
+    ASSERT_TRUE(reference[i] > 0 && reference[i] < 1e-20)
+        << "a point " << i << " at " << static_cast<double>(reference[i]) << " from the surface";
+  }
+  const std::string kernel = R"(
+__kernel void box_dd(__global const double* xhi, __global const double* xlo,
+                     __global const double* yhi, __global const double* ylo,
+                     __global const double* zhi, __global const double* zlo, __global double* out,
+                     double iterations, double pixel) {
+  const int i = get_global_id(0);
+  const dd3_t p = dd3_make(dd_make(LOAD(i, xhi), LOAD(i, xlo)), dd_make(LOAD(i, yhi), LOAD(i, ylo)),
+                           dd_make(LOAD(i, zhi), LOAD(i, zlo)));
+  STORE(de_mandelbox_dd(p, (int)iterations, 2.0, 0.5, 1.0, 1.0, (real_t)pixel), i, out);
+}
+__kernel void box_double(__global const double* xhi, __global const double* xlo,
+                         __global const double* yhi, __global const double* ylo,
+                         __global const double* zhi, __global const double* zlo,
+                         __global double* out, double iterations, double pixel) {
+  const int i = get_global_id(0);
+  real_t trap;
+  STORE(de_mandelbox(v3(LOAD(i, xhi), LOAD(i, yhi), LOAD(i, zhi)), (int)iterations, 2.0, 0.5, 1.0,
+                     1.0, &trap), i, out);
+}
+)";
+  const std::vector<std::string> library = {"de/operators.cl", "de/folds.cl", "de/mandelbox.cl",
+                                            "de/dd.cl", "de/mandelbox_dd.cl"};
+  for (int lanes : {1, 16}) {
+    const std::string source = program(lanes, library, kernel);
+    // pixel 1e-22: the switch to double comes once dr reaches about 1e9; pixel 0: pairs throughout.
+    for (double pixel : {1e-22, 0.0}) {
+      SCOPED_TRACE("lanes " + std::to_string(lanes) + ", pixel " + std::to_string(pixel));
+      const auto got = run(test::runtime(), source, "box_dd", lanes,
+                           {xhi, xlo, yhi, ylo, zhi, zlo}, {double(box.iterations), pixel});
+      double worst = 0;
+      for (size_t i = 0; i < n; ++i)
+        worst = std::max(worst, static_cast<double>(quad_abs(quad(got[i]) - reference[i])));
+      // Switching to double where it suffices costs at most a thousandth of the pixel; in pairs
+      // throughout, the error is the pairs' own (about 2^-104 of |p| through the folds).
+      EXPECT_LE(worst, pixel > 0 ? 1e-3 * pixel : 1e-28);
+    }
+    // In double the 16 points of a ray, 1e-22 apart, round to one or two points (an ulp there is
+    // about 2e-16): double gives at most two answers where the estimate takes 16 values that
+    // differ by more than the pairs' error, so a depth map there is flat noise.
+    const auto plain = run(test::runtime(), source, "box_double", lanes,
+                           {xhi, xlo, yhi, ylo, zhi, zlo}, {double(box.iterations), 0.0});
+    for (size_t ray = 0; ray < n / 16; ++ray) {
+      std::vector<double> answers;
+      quad lowest = reference[16 * ray], highest = lowest;
+      for (size_t k = 0; k < 16; ++k) {
+        const size_t i = 16 * ray + k;
+        if (std::find(answers.begin(), answers.end(), plain[i]) == answers.end())
+          answers.push_back(plain[i]);
+        lowest = std::min(lowest, reference[i]);
+        highest = std::max(highest, reference[i]);
+      }
+      EXPECT_LE(answers.size(), 2u) << "ray " << ray << ": double told the points apart";
+      EXPECT_GT(static_cast<double>(highest - lowest), 1e-25)
+          << "ray " << ray << ": the estimate does not change over 1.6e-21";
+    }
+  }
+}
+
+}  // namespace
+}  // namespace fr
