@@ -198,16 +198,46 @@ struct BoxReference {
   }
 };
 
-TEST(DoubleDouble, MandelboxAtPointsNearTheSurfaceAgreesWithFloat128) {
-  if (!has_fp64()) GTEST_SKIP() << "the device has no double precision";
-  const BoxReference box;
-  // Surface points: sphere tracing in __float128 from outside towards the box, along rays of
-  // several directions, until the estimate is below 1e-24.
-  std::vector<quad> px, py, pz;
-  const double directions[][3] = {{-0.6, -0.5, -0.62}, {-0.3, -0.9, -0.3}, {-0.8, -0.1, -0.58},
-                                  {-0.45, -0.7, -0.55}};
-  const double start[3] = {5, 4, 5};
-  for (const auto& d : directions) {
+// The Menger sponge (scale 3, offset (1, 1, 1), no rotation) in __float128: the level-n
+// sponge's box distance over 3^n (exact outside the sponge).
+struct SpongeReference {
+  int iterations = 50;
+  quad de(const quad p[3]) const {
+    quad z[3] = {quad_abs(p[0]), quad_abs(p[1]), quad_abs(p[2])};
+    quad scale_n = 1;
+    for (int i = 0; i < iterations; ++i) {
+      for (quad& c : z) c = quad_abs(c);
+      if (z[0] < z[1]) std::swap(z[0], z[1]);
+      if (z[0] < z[2]) std::swap(z[0], z[2]);
+      if (z[1] < z[2]) std::swap(z[1], z[2]);
+      z[0] = 3 * z[0] - 2;
+      z[1] = 3 * z[1] - 2;
+      z[2] = 3 * z[2];
+      if (z[2] > 1) z[2] -= 2;
+      scale_n *= 3;
+    }
+    quad outside2 = 0, inside = -1e30;
+    for (const quad c : z) {
+      const quad q = quad_abs(c) - 1;
+      if (q > 0) outside2 += q * q;
+      if (q > inside) inside = q;
+    }
+    return (quad_sqrt(outside2) + (inside < 0 ? inside : quad(0))) / scale_n;
+  }
+};
+
+// Test points 1e-22 to 1.6e-21 outside a shape's surface, 16 along each of four rays: sphere
+// tracing in __float128 from `start` until the reference estimate is below 1e-24, then back.
+struct DeepPoints {
+  std::vector<double> xhi, xlo, yhi, ylo, zhi, zlo;  // as the device gets them
+  std::vector<quad> reference;                       // the reference estimate there
+};
+
+template <class Reference>
+DeepPoints deep_points(const Reference& shape, const double start[3], const double aims[4][3]) {
+  DeepPoints out;
+  for (int ray = 0; ray < 4; ++ray) {
+    const double d[3] = {aims[ray][0] - start[0], aims[ray][1] - start[1], aims[ray][2] - start[2]};
     const quad length = quad_sqrt(quad(d[0]) * d[0] + quad(d[1]) * d[1] + quad(d[2]) * d[2]);
     const quad dir[3] = {d[0] / length, d[1] / length, d[2] / length};
     quad t = 0, de = 1;
@@ -215,89 +245,116 @@ TEST(DoubleDouble, MandelboxAtPointsNearTheSurfaceAgreesWithFloat128) {
     int steps = 0;
     for (; steps < 5000 && de > 1e-24; ++steps) {
       for (int c = 0; c < 3; ++c) p[c] = start[c] + t * dir[c];
-      de = box.de(p);
+      de = shape.de(p);
       t += de;
       if (t > 30) break;
     }
-    ASSERT_LT(t, 30) << "the ray missed the box";
-    ASSERT_LE(de, 1e-24) << "the tracing stalled at " << static_cast<double>(de) << " after "
+    EXPECT_LT(t, 30) << "the ray missed";
+    EXPECT_LE(de, 1e-24) << "the tracing stalled at " << static_cast<double>(de) << " after "
                          << steps << " steps";
-    // Points 1e-22 to 1e-21 back along the ray, outside the surface by about that.
     for (int k = 1; k <= 16; ++k) {
       const quad back = t - quad(k) * 1e-22;
-      px.push_back(start[0] + back * dir[0]);
-      py.push_back(start[1] + back * dir[1]);
-      pz.push_back(start[2] + back * dir[2]);
+      double v[6];
+      for (int c = 0; c < 3; ++c) split(start[c] + back * dir[c], &v[2 * c], &v[2 * c + 1]);
+      out.xhi.push_back(v[0]);
+      out.xlo.push_back(v[1]);
+      out.yhi.push_back(v[2]);
+      out.ylo.push_back(v[3]);
+      out.zhi.push_back(v[4]);
+      out.zlo.push_back(v[5]);
+      const quad q[3] = {quad(v[0]) + v[1], quad(v[2]) + v[3], quad(v[4]) + v[5]};
+      out.reference.push_back(shape.de(q));
+      EXPECT_TRUE(out.reference.back() >= 0 && out.reference.back() < 1e-20)
+          << "a point " << static_cast<double>(out.reference.back()) << " from the surface";
     }
   }
-  const size_t n = px.size();  // 64: a multiple of 16
-  std::vector<double> xhi(n), xlo(n), yhi(n), ylo(n), zhi(n), zlo(n);
-  std::vector<quad> reference(n);
-  for (size_t i = 0; i < n; ++i) {
-    split(px[i], &xhi[i], &xlo[i]);
-    split(py[i], &yhi[i], &ylo[i]);
-    split(pz[i], &zhi[i], &zlo[i]);
-    const quad p[3] = {quad(xhi[i]) + xlo[i], quad(yhi[i]) + ylo[i], quad(zhi[i]) + zlo[i]};
-    reference[i] = box.de(p);
-    ASSERT_TRUE(reference[i] > 0 && reference[i] < 1e-20)
-        << "a point " << i << " at " << static_cast<double>(reference[i]) << " from the surface";
-  }
-  const std::string kernel = R"(
-__kernel void box_dd(__global const double* xhi, __global const double* xlo,
-                     __global const double* yhi, __global const double* ylo,
-                     __global const double* zhi, __global const double* zlo, __global double* out,
-                     double iterations, double pixel) {
-  const int i = get_global_id(0);
-  const dd3_t p = dd3_make(dd_make(LOAD(i, xhi), LOAD(i, xlo)), dd_make(LOAD(i, yhi), LOAD(i, ylo)),
-                           dd_make(LOAD(i, zhi), LOAD(i, zlo)));
-  STORE(de_mandelbox_dd(p, (int)iterations, 2.0, 0.5, 1.0, 1.0, (real_t)pixel), i, out);
+  return out;
 }
-__kernel void box_double(__global const double* xhi, __global const double* xlo,
-                         __global const double* yhi, __global const double* ylo,
-                         __global const double* zhi, __global const double* zlo,
-                         __global double* out, double iterations, double pixel) {
-  const int i = get_global_id(0);
-  real_t trap;
-  STORE(de_mandelbox(v3(LOAD(i, xhi), LOAD(i, yhi), LOAD(i, zhi)), (int)iterations, 2.0, 0.5, 1.0,
-                     1.0, &trap), i, out);
-}
-)";
-  const std::vector<std::string> library = {"de/operators.cl", "de/folds.cl", "de/mandelbox.cl",
-                                            "de/dd.cl", "de/mandelbox_dd.cl"};
+
+// The pair DE (kernel `pairs`) against the reference at the deep points, switching to double at
+// a pixel of 1e-22 (within a thousandth of it) and in pairs throughout (within 1e-28); the double
+// DE (kernel `doubles`) at the rounded points, which cannot tell a ray's 16 points apart.
+void check_deep(const DeepPoints& points, const std::vector<std::string>& library,
+                const std::string& kernels, double iterations) {
+  const size_t n = points.reference.size();  // 64: a multiple of 16
+  const std::vector<std::vector<double>> in = {points.xhi, points.xlo, points.yhi,
+                                               points.ylo, points.zhi, points.zlo};
   for (int lanes : {1, 16}) {
-    const std::string source = program(lanes, library, kernel);
-    // pixel 1e-22: the switch to double comes once dr reaches about 1e9; pixel 0: pairs throughout.
+    const std::string source = program(lanes, library, kernels);
     for (double pixel : {1e-22, 0.0}) {
       SCOPED_TRACE("lanes " + std::to_string(lanes) + ", pixel " + std::to_string(pixel));
-      const auto got = run(test::runtime(), source, "box_dd", lanes,
-                           {xhi, xlo, yhi, ylo, zhi, zlo}, {double(box.iterations), pixel});
+      const auto got = run(test::runtime(), source, "pairs", lanes, in, {iterations, pixel});
       double worst = 0;
       for (size_t i = 0; i < n; ++i)
-        worst = std::max(worst, static_cast<double>(quad_abs(quad(got[i]) - reference[i])));
-      // Switching to double where it suffices costs at most a thousandth of the pixel; in pairs
-      // throughout, the error is the pairs' own (about 2^-104 of |p| through the folds).
+        worst = std::max(worst, static_cast<double>(quad_abs(quad(got[i]) - points.reference[i])));
       EXPECT_LE(worst, pixel > 0 ? 1e-3 * pixel : 1e-28);
     }
-    // In double the 16 points of a ray, 1e-22 apart, round to one or two points (an ulp there is
-    // about 2e-16): double gives at most two answers where the estimate takes 16 values that
-    // differ by more than the pairs' error, so a depth map there is flat noise.
-    const auto plain = run(test::runtime(), source, "box_double", lanes,
-                           {xhi, xlo, yhi, ylo, zhi, zlo}, {double(box.iterations), 0.0});
+    // The 16 points of a ray, 1e-22 apart, round to one or two doubles (an ulp there is about
+    // 2e-16): at most two answers where the estimate takes 16 values that differ by more than
+    // the pairs' error, so a depth map there is flat noise.
+    const auto plain = run(test::runtime(), source, "doubles", lanes, in, {iterations, 0.0});
     for (size_t ray = 0; ray < n / 16; ++ray) {
       std::vector<double> answers;
-      quad lowest = reference[16 * ray], highest = lowest;
+      quad lowest = points.reference[16 * ray], highest = lowest;
       for (size_t k = 0; k < 16; ++k) {
         const size_t i = 16 * ray + k;
         if (std::find(answers.begin(), answers.end(), plain[i]) == answers.end())
           answers.push_back(plain[i]);
-        lowest = std::min(lowest, reference[i]);
-        highest = std::max(highest, reference[i]);
+        lowest = std::min(lowest, points.reference[i]);
+        highest = std::max(highest, points.reference[i]);
       }
       EXPECT_LE(answers.size(), 2u) << "ray " << ray << ": double told the points apart";
       EXPECT_GT(static_cast<double>(highest - lowest), 1e-25)
           << "ray " << ray << ": the estimate does not change over 1.6e-21";
     }
   }
+}
+
+// The kernels' arguments: the six arrays of pairs, the output, iterations and pixel.
+const char* const kDeepArguments =
+    "__global const double* xhi, __global const double* xlo, __global const double* yhi, "
+    "__global const double* ylo, __global const double* zhi, __global const double* zlo, "
+    "__global double* out, double iterations, double pixel";
+const char* const kDeepPoint =
+    "  const int i = get_global_id(0);\n"
+    "  const dd3_t p = dd3_make(dd_make(LOAD(i, xhi), LOAD(i, xlo)), dd_make(LOAD(i, yhi), "
+    "LOAD(i, ylo)), dd_make(LOAD(i, zhi), LOAD(i, zlo)));\n"
+    "  const vec3_t rounded = v3(LOAD(i, xhi), LOAD(i, yhi), LOAD(i, zhi));\n"
+    "  real_t trap;\n";
+
+TEST(DoubleDouble, MandelboxAtPointsNearTheSurfaceAgreesWithFloat128) {
+  if (!has_fp64()) GTEST_SKIP() << "the device has no double precision";
+  const BoxReference box;
+  const double start[3] = {5, 4, 5};
+  const double aims[4][3] = {{2, 1.5, 1.9}, {3.5, -0.5, 3.5}, {1, 3.6, 2.1}, {2.75, 0.5, 2.25}};
+  const DeepPoints points = deep_points(box, start, aims);
+  if (HasFailure()) return;
+  const std::string kernels =
+      std::string("__kernel void pairs(") + kDeepArguments + ") {\n" + kDeepPoint +
+      "  STORE(de_mandelbox_dd(p, (int)iterations, 2.0, 0.5, 1.0, 1.0, (real_t)pixel), i, out);\n"
+      "}\n__kernel void doubles(" + kDeepArguments + ") {\n" + kDeepPoint +
+      "  STORE(de_mandelbox(rounded, (int)iterations, 2.0, 0.5, 1.0, 1.0, &trap), i, out);\n}\n";
+  check_deep(points,
+             {"de/operators.cl", "de/folds.cl", "de/mandelbox.cl", "de/dd.cl", "de/mandelbox_dd.cl"},
+             kernels, box.iterations);
+}
+
+TEST(DoubleDouble, MengerAtPointsNearTheSurfaceAgreesWithFloat128) {
+  if (!has_fp64()) GTEST_SKIP() << "the device has no double precision";
+  const SpongeReference sponge;
+  const double start[3] = {1.6, 1.5, 1.7};
+  const double aims[4][3] = {{0.3, 0.2, 0.1}, {0.1, -0.2, 0.3}, {-0.2, 0.1, 0.25}, {0.25, 0.3, -0.1}};
+  const DeepPoints points = deep_points(sponge, start, aims);
+  if (HasFailure()) return;
+  const std::string kernels =
+      std::string("__kernel void pairs(") + kDeepArguments + ") {\n" + kDeepPoint +
+      "  STORE(de_menger_dd(p, (int)iterations, 3.0, v3s(1, 1, 1), 0.0, (real_t)pixel), i, out);\n"
+      "}\n__kernel void doubles(" + kDeepArguments + ") {\n" + kDeepPoint +
+      "  STORE(de_menger(rounded, (int)iterations, 3.0, v3s(1, 1, 1), 0.0, &trap), i, out);\n}\n";
+  check_deep(points,
+             {"de/primitives.cl", "de/operators.cl", "de/folds.cl", "de/menger.cl", "de/dd.cl",
+              "de/menger_dd.cl"},
+             kernels, sponge.iterations);
 }
 
 }  // namespace
