@@ -9,18 +9,25 @@
 #include "fr/operators.cl"
 #include "fr/folds.cl"
 
+/* One iteration: the fold, the rotation about x, the scaling about the corner, the middle layer
+ * shifted back. (fr/menger_dd.cl runs it after its iterations in pairs.) */
+inline vec3_t menger_step(vec3_t z, scalar_t scale, vec3_t offset, scalar_t rotation) {
+  const real_t step = to_real(scale - 1);
+  z = p_fold_menger(z);
+  if (rotation != 0) z = p_rotate_x(z, rotation);
+  z.x = to_real(scale) * z.x - offset.x * step;
+  z.y = to_real(scale) * z.y - offset.y * step;
+  z.z = to_real(scale) * z.z;
+  z.z = lane_select(z.z > to_real(0.5) * offset.z * step, z.z - offset.z * step, z.z);
+  return z;
+}
+
 real_t de_menger(vec3_t p, int iterations, scalar_t scale, vec3_t offset, scalar_t rotation,
                  real_t* trap) {
   vec3_t z = p;
   real_t orbit_min = v3_length2(z);
-  const real_t step = to_real(scale - 1);
   for (int i = 0; i < iterations; ++i) {
-    z = p_fold_menger(z);
-    if (rotation != 0) z = p_rotate_x(z, rotation);
-    z.x = to_real(scale) * z.x - offset.x * step;
-    z.y = to_real(scale) * z.y - offset.y * step;
-    z.z = to_real(scale) * z.z;
-    z.z = lane_select(z.z > to_real(0.5) * offset.z * step, z.z - offset.z * step, z.z);
+    z = menger_step(z, scale, offset, rotation);
     orbit_min = fmin(orbit_min, v3_length2(z));
   }
   *trap = orbit_min;

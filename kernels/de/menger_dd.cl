@@ -11,6 +11,7 @@
 #include "fr/primitives.cl"
 #include "fr/operators.cl"
 #include "fr/folds.cl"
+#include "fr/menger.cl"
 
 /* The pair with the larger value first. */
 inline void dd_order(dd_t* a, dd_t* b) {
@@ -50,13 +51,6 @@ real_t de_menger_dd(dd3_t p, int iterations, scalar_t scale, vec3_t offset, scal
   }
   /* The rest in double, as fr/menger.cl's loop. */
   vec3_t zd = dd3_to_v3(z);
-  for (; i < iterations; ++i) {
-    zd = p_fold_menger(zd);
-    if (rotation != 0) zd = p_rotate_x(zd, rotation);
-    zd.x = to_real(scale) * zd.x - offset.x * step;
-    zd.y = to_real(scale) * zd.y - offset.y * step;
-    zd.z = to_real(scale) * zd.z;
-    zd.z = lane_select(zd.z > to_real(0.5) * offset.z * step, zd.z - offset.z * step, zd.z);
-  }
+  for (; i < iterations; ++i) zd = menger_step(zd, scale, offset, rotation);
   return sd_box(zd, v3s(1, 1, 1)) * to_real(pown_scalar(1 / scale, iterations));
 }
