@@ -648,11 +648,11 @@ void Importer::look() {
   setting("render.reflectivity", number_text(std::clamp(number("mat1_reflectance"), 0.0, 1.0)));
   // The auxiliary lights, as the mandelbulber scene's point lights 3 to 6 (its first two are the
   // key light, above, and a fill light, turned off; an empty [[lights]] entry keeps a light that
-  // is not enabled off). Mandelbulber2 lights a
-  // surface d away with 100 intensity / (d^2 4 6) (its four lights, and a 6 kept "for backward
-  // compatibility"), its main light with 1 where the key light here has 1.3. Here k / (1 + a d^2)
-  // with a = 1 / d0^2 and k = 1.3 (100 / 24) intensity a: the same beyond d0, a hundredth of the
-  // view's distance (so that a close-up's lights fall off as its own), capped within it.
+  // is not enabled off). Mandelbulber2 lights a surface d away with 100 intensity / (d^2 4 6)
+  // (its four lights, and a 6 kept "for backward compatibility"), its main light with 1 where the
+  // key light here has 1.3. Here k / (1 + a d^2) with a = 1 / d0^2 and k = 1.3 (100 / 24)
+  // intensity a: the same beyond d0, a hundredth of the view's distance (so that a close-up's
+  // lights fall off as its own), capped within it.
   const auto eye = vec3("camera"), target = vec3("target");
   const double view_distance =
       length({target[0] - eye[0], target[1] - eye[1], target[2] - eye[2]});

@@ -140,7 +140,7 @@ fr_frame_constants make_frame_constants(const CameraRays& rays, const SceneState
     if (count == FR_MAX_LIGHTS) break;
     // A light of no intensity lights nothing: left out, its shadow rays are never marched (an
     // imported scene's unused auxiliary lights, a light the user turned down).
-    if (!(l.intensity > 0) || (l.color[0] <= 0 && l.color[1] <= 0 && l.color[2] <= 0)) continue;
+    if (l.intensity == 0 || (l.color[0] == 0 && l.color[1] == 0 && l.color[2] == 0)) continue;
     const glm::dvec3 color = to_dvec3(l.color) * l.intensity;
     const bool point = l.kind == FR_LIGHT_POINT;
     put(fc.light_vector[count], to_dvec3(l.vector));
