@@ -52,6 +52,9 @@ TEST(DdText, PrintsThirtyFourDigits) {
   EXPECT_EQ(format_double_double({0.0, 0.0}), "0");
   EXPECT_EQ(format_double_double({0x1.79ca10c924223p-67, 0x1.75447a5d8e536p-121}, 20), "1e-20");
   EXPECT_EQ(format_double_double({1e25, 0.0}, 5), "1e25");
+  EXPECT_EQ(format_double_double({-INFINITY, 0.0}), "-inf");
+  EXPECT_EQ(format_double_double({NAN, 0.0}), "nan");
+  EXPECT_FALSE(parse_double_double(format_double_double({INFINITY, 0.0})));
 }
 
 TEST(DdText, RefusesWhatIsNotANumberOrDoesNotFit) {

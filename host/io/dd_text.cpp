@@ -93,6 +93,9 @@ std::optional<DoubleDouble> parse_double_double(std::string_view text, int* sign
 
 std::string format_double_double(DoubleDouble value, int digits) {
   digits = std::clamp(digits, 1, 34);
+  // (Not a number parse_double_double gives, but never an undefined cast of it below.)
+  if (std::isnan(value.hi) || std::isnan(value.lo)) return "nan";
+  if (std::isinf(value.hi)) return value.hi < 0 ? "-inf" : "inf";
   quad v = static_cast<quad>(value.hi) + value.lo;
   std::string sign;
   if (v < 0 || (v == 0 && std::signbit(value.hi))) {

@@ -29,7 +29,8 @@ std::optional<DoubleDouble> parse_double_double(std::string_view text,
                                                 int* significant_digits = nullptr);
 
 // The pair's value with `digits` significant digits (1 to 34), in exponent form when it is
-// below 1e-4 or at least 1e21, as "-1.2345e-21"; trailing zeros of the mantissa dropped.
+// below 1e-4 or at least 1e21, as "-1.2345e-21"; trailing zeros of the mantissa dropped. A pair
+// that is not finite prints as "nan", "inf" or "-inf" (and does not parse back).
 std::string format_double_double(DoubleDouble value, int digits = 34);
 
 }  // namespace fr
