@@ -60,10 +60,12 @@ __kernel void fr_cone(__constant const fr_frame_constants* fc,
    * smaller than any where the ray is inside them). Before that, every block ray is outside the
    * bounds, where there is no surface. */
   const scalar_t radius = fc->bounding_radius;
+  const vec3_t centre = bounding_centre(fc);
+  const vec3_t origin = v3_sub(ray.origin, centre);
   const real_t grown =
-      (real_t)radius + spread_origin + spread_dir * (v3_length(ray.origin) + (real_t)(3 * radius));
-  const real_t b = v3_dot(ray.origin, ray.dir);
-  const real_t disc = b * b - (v3_length2(ray.origin) - grown * grown);
+      (real_t)radius + spread_origin + spread_dir * (v3_length(origin) + (real_t)(3 * radius));
+  const real_t b = v3_dot(origin, ray.dir);
+  const real_t disc = b * b - (v3_length2(origin) - grown * grown);
   const real_t root = sqrt(fmax(disc, (real_t)0));
   real_t t = fmax(-b - root, (real_t)0);
   const real_t t_exit = -b + root;
@@ -75,7 +77,7 @@ __kernel void fr_cone(__constant const fr_frame_constants* fc,
     const vec3_t p = v3_mad(ray.origin, ray.dir, t);
     /* Outside the bounds the distance to them is exact, and the DE may over-estimate there
      * (march.cl never evaluates it outside). */
-    const real_t outside = v3_length(p) - (real_t)radius;
+    const real_t outside = v3_length(v3_sub(p, centre)) - (real_t)radius;
     const real_t dist = lane_select(outside > (real_t)0, outside,
                                     scene_de(p, params) * (real_t)fc->step_scale);
     FR_COUNT(FR_COUNT_CONE, active, 1);

@@ -157,6 +157,10 @@ typedef struct fr_frame_constants {
   int env_height;
   float env_intensity;
   float hit_threshold_abs; /* > 0: epsilon is this, in world units, instead of the clarity term */
+  /* The centre of the bounding sphere (hi, and what float rounding lost): the origin, except in a
+   * double-double kernel, whose coordinates are relative to the eye (dd_relative.cl): -eye. */
+  float bounding_centre[4];
+  float bounding_centre_lo[4];
 } fr_frame_constants;
 
 #endif /* FR_FRAME_CONSTANTS_H */

@@ -20,11 +20,14 @@ typedef struct march_result_t {
 #define FR_RAY_OUT_OF_STEPS 2
 #define FR_RAY_INSIDE 3
 
-/* Entry and exit distances of the ray through the sphere |p| = radius; false where the ray
- * misses it or it lies behind the origin. */
-inline mask_t intersect_bounds(ray_t ray, scalar_t radius, real_t* t_enter, real_t* t_exit) {
-  real_t b = v3_dot(ray.origin, ray.dir);
-  real_t c = v3_length2(ray.origin) - (real_t)(radius * radius);
+/* Entry and exit distances of the ray through the scene's bounding sphere (|p - centre| =
+ * radius); false where the ray misses it or it lies behind the origin. */
+inline mask_t intersect_bounds(ray_t ray, __constant const fr_frame_constants* fc,
+                               real_t* t_enter, real_t* t_exit) {
+  const scalar_t radius = fc->bounding_radius;
+  const vec3_t origin = v3_sub(ray.origin, bounding_centre(fc));
+  real_t b = v3_dot(origin, ray.dir);
+  real_t c = v3_length2(origin) - (real_t)(radius * radius);
   real_t disc = b * b - c;
   real_t root = sqrt(fmax(disc, (real_t)0));
   *t_enter = fmax(-b - root, (real_t)0);
@@ -72,7 +75,7 @@ march_result_t march(ray_t ray, real_t path_t, real_t t_min, real_t t_max, int m
                      real_t de_sign, __constant const fr_frame_constants* fc,
                      __constant const scene_params_t* params FR_COUNTS_PARAM) {
   real_t t, t_exit;
-  mask_t active = intersect_bounds(ray, fc->bounding_radius, &t, &t_exit);
+  mask_t active = intersect_bounds(ray, fc, &t, &t_exit);
   t_exit = fmin(t_exit, t_max);
   t = fmax(t, t_min);
   active &= t < t_exit;

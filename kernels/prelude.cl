@@ -26,6 +26,13 @@ typedef float scalar_t;
 #define FR_SCALAR_MAX FLT_MAX
 #define FR_SCALAR_MIN FLT_MIN
 #endif
+/* How finely the estimate tells positions apart, relative to |p|: a scalar's ulp, or a pair's
+ * (2^-104) in a double-double kernel (FR_DD: render.precision "dd", dd_relative.cl). */
+#if FR_DD
+#define FR_POSITION_EPSILON 4.930380657631324e-32
+#else
+#define FR_POSITION_EPSILON FR_SCALAR_EPSILON
+#endif
 
 #define FR_CAT_(a, b) a##b
 #define FR_CAT(a, b) FR_CAT_(a, b)

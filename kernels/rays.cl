@@ -41,6 +41,11 @@ ray_t camera_ray(__constant const fr_frame_constants* fc, real_t px, real_t py, 
   return ray;
 }
 
+/* The bounding sphere's centre: the origin, or -eye in a double-double kernel. */
+inline vec3_t bounding_centre(__constant const fr_frame_constants* fc) {
+  return v3_hi_lo(fc->bounding_centre, fc->bounding_centre_lo);
+}
+
 /* Hit threshold at path length t from the eye: the clarity function k * t * pixel angle, never
  * below a few ulp of max(|p|, bounding radius): positions near the scene are only that precise,
  * and without the floor a ray next to a singular point (the Mandelbulb's centre, |p| -> 0,
@@ -48,8 +53,10 @@ ray_t camera_ray(__constant const fr_frame_constants* fc, real_t px, real_t py, 
 inline real_t hit_threshold(__constant const fr_frame_constants* fc, real_t t, vec3_t p) {
   real_t clarity = fc->hit_threshold_abs > 0 ? (real_t)fc->hit_threshold_abs
                                              : (real_t)(fc->hit_threshold_k * fc->pixel_angle_rad) * t;
-  real_t ulp_floor =
-      (real_t)(4 * FR_SCALAR_EPSILON) * fmax(v3_length(p), (real_t)fc->bounding_radius);
+  /* (|p| in world coordinates: a double-double kernel's p is relative to the eye, and its
+   * positions are pairs, FR_POSITION_EPSILON.) */
+  real_t ulp_floor = (real_t)(4 * FR_POSITION_EPSILON) *
+                     fmax(v3_length(v3_sub(p, bounding_centre(fc))), (real_t)fc->bounding_radius);
   return fmax(clarity, ulp_floor);
 }
 

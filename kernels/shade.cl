@@ -14,7 +14,12 @@
 
 /* The surface at p: the scene's surface source, or the default material (the settings'). */
 #if FR_HAS_SURFACE
+#if FR_DD
+/* Points are relative to the eye (dd_relative.cl); the surface takes world coordinates. */
+#define surface_at(p) scene_surface(fr_world_point((p), params), params)
+#else
 #define surface_at(p) scene_surface(p, params)
+#endif
 #else
 inline surface_t default_surface(__constant const fr_frame_constants* fc) {
   surface_t s;

@@ -22,7 +22,7 @@ void shadow_factors(vec3_t p, vec3_t n, real_t h, const light_sample_t* lights,
   for (int l = 0; l < light_count; ++l) {
     ray.dir = lights[l].to_light;
     real_t t_enter;
-    intersect_bounds(ray, fc->bounding_radius, &t_enter, &t_exit[l]);
+    intersect_bounds(ray, fc, &t_enter, &t_exit[l]);
     t_exit[l] = fmin(t_exit[l], lights[l].distance);
     shadow[l] = (real_t)1;
   }

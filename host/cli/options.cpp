@@ -3,6 +3,7 @@
 #include "io/atomic_file.hpp"
 #include "io/echo.hpp"
 
+#include <algorithm>
 #include <filesystem>
 
 #include <cerrno>
@@ -115,6 +116,26 @@ std::array<double, 3> parse_vec3(const std::string& what, const std::string& tex
     if ((i < 2) != (comma != std::string::npos))
       throw UsageError(what + ": '" + echo(text) + "' is not three comma-separated numbers x,y,z");
     v[i] = parse_finite(what, text.substr(start, i < 2 ? comma - start : std::string::npos));
+    start = comma + 1;
+  }
+  return v;
+}
+
+std::array<DoubleDouble, 3> parse_vec3_pairs(const std::string& what, const std::string& text,
+                                             int* most_digits) {
+  const std::array<double, 3> rounded = parse_vec3(what, text);  // its errors, its rules
+  std::array<DoubleDouble, 3> v{};
+  size_t start = 0;
+  if (most_digits) *most_digits = 0;
+  for (int i = 0; i < 3; ++i) {
+    const size_t comma = text.find(',', start);
+    std::string part = text.substr(start, i < 2 ? comma - start : std::string::npos);
+    part.erase(0, part.find_first_not_of(" \t"));
+    part.erase(part.find_last_not_of(" \t") + 1);
+    int digits = 0;
+    // What parse_vec3 takes and a pair cannot hold (a value below 1e-290) keeps its double.
+    v[i] = parse_double_double(part, &digits).value_or(DoubleDouble{rounded[i], 0});
+    if (most_digits) *most_digits = std::max(*most_digits, digits);
     start = comma + 1;
   }
   return v;

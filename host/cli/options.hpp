@@ -3,6 +3,8 @@
 // and the value, and what was expected; the CLI prints it on one line and exits with code 2.
 #pragma once
 
+#include "io/dd_text.hpp"
+
 #include <array>
 #include <map>
 #include <optional>
@@ -43,6 +45,10 @@ std::string format_options(const std::vector<OptionSpec>& specs);
 std::array<int, 2> parse_size(const std::string& what, const std::string& text,
                               int max_side = 16384);
 std::array<double, 3> parse_vec3(const std::string& what, const std::string& text);  // "x,y,z"
+// "x,y,z" to double-double (io/dd_text.hpp): each number's nearest pair, for a deep view's eye
+// and target. *most_digits, when given, receives the most significant digits a number had.
+std::array<DoubleDouble, 3> parse_vec3_pairs(const std::string& what, const std::string& text,
+                                             int* most_digits = nullptr);
 double parse_finite(const std::string& what, const std::string& text);
 long long parse_integer(const std::string& what, const std::string& text, long long lo,
                         long long hi);

@@ -366,21 +366,32 @@ void apply_scene_overrides(const SceneInfo& info, const ParsedOptions& options, 
           parse_param_value(info.params[index], assignment, assignment.substr(eq + 1));
     }
   }
-  if (auto eye = options.get("eye")) {
-    auto v = parse_vec3("--eye", *eye);
-    std::copy(v.begin(), v.end(), state.camera.eye);
-  }
-  if (auto target = options.get("target")) {
-    auto v = parse_vec3("--target", *target);
-    std::copy(v.begin(), v.end(), state.camera.target);
-  }
+  // The eye and target keep every digit a double-double holds (deep views, docs/deep_zoom.md).
+  const auto set_pairs = [&](const char* option, double hi[3], double lo[3]) {
+    const auto text = options.get(option);
+    if (!text) return;
+    const std::string what = std::string("--") + option;
+    int digits = 0;
+    const std::array<DoubleDouble, 3> v = parse_vec3_pairs(what, *text, &digits);
+    for (int i = 0; i < 3; ++i) {
+      hi[i] = v[i].hi;
+      lo[i] = v[i].lo;
+    }
+    if (digits > kPairDigits)
+      spdlog::warn("{}: a number with {} significant digits; a double-double keeps about 32, and "
+                   "the rest is dropped",
+                   what, digits);
+  };
+  set_pairs("eye", state.camera.eye, state.camera_lo.eye);
+  set_pairs("target", state.camera.target, state.camera_lo.target);
   if (auto up = options.get("up")) {
     auto v = parse_vec3("--up", *up);
     if (v[0] == 0 && v[1] == 0 && v[2] == 0) throw UsageError("--up: 0,0,0 has no direction");
     std::copy(v.begin(), v.end(), state.camera.up);
   }
   if (auto fov = options.get("fov")) state.camera.fov_deg = parse_finite("--fov", *fov);
-  if (auto problem = check_camera(state.camera)) throw UsageError("camera: " + *problem);
+  if (auto problem = check_camera(state.camera, state.camera_lo))
+    throw UsageError("camera: " + *problem);
 }
 
 RenderSettings render_settings_from(const Settings& settings, const ParsedOptions& options,

@@ -14,6 +14,9 @@
 
 namespace fr {
 
+// Significant digits a pair's text carries (format_double_double's most; a pair holds about 32).
+constexpr int kPairDigits = 34;
+
 struct DoubleDouble {
   double hi = 0;  // the nearest double
   double lo = 0;  // the rest, rounded to a double: |lo| <= ulp(hi) / 2

@@ -36,7 +36,8 @@ void forward_messages(const std::string& id, const std::vector<PluginMessage>& m
 
 // Why the state an update left cannot be rendered, or "".
 std::string check_updated_state(const SceneState& s) {
-  if (auto problem = check_camera(s.camera)) return "update left an invalid camera: " + *problem;
+  if (auto problem = check_camera(s.camera, s.camera_lo))
+    return "update left an invalid camera: " + *problem;
   for (size_t i = 0; i < s.lights.size(); ++i)
     if (auto problem = check_light(s.lights[i]))
       return "update left light " + std::to_string(i) + " invalid: it " + *problem;

@@ -158,6 +158,8 @@ void write_scene_state(WireWriter& w, const SceneState& state) {
   w.u64(state.frame_index);
   w.f64(state.bounding_radius);
   write_camera(w, state.camera);
+  for (double x : state.camera_lo.eye) w.f64(x);
+  for (double x : state.camera_lo.target) w.f64(x);
   w.u32(static_cast<uint32_t>(state.params.size()));
   for (const fr_value& v : state.params) write_value(w, v);
   w.u32(static_cast<uint32_t>(state.lights.size()));
@@ -171,6 +173,8 @@ bool read_scene_state(WireReader& r, size_t param_count, size_t light_count, Sce
   s.frame_index = r.u64();
   s.bounding_radius = r.f64();
   s.camera = read_camera(r);
+  for (double& x : s.camera_lo.eye) x = r.f64();
+  for (double& x : s.camera_lo.target) x = r.f64();
   if (r.u32() != param_count || r.failed()) return false;
   for (size_t i = 0; i < param_count; ++i) s.params.push_back(read_value(r));
   if (r.u32() != light_count || r.failed()) return false;

@@ -57,11 +57,14 @@ std::vector<float> run_probe(ClRuntime& runtime, const AssembledKernel& k, const
 std::vector<float> probe_de(ClRuntime& runtime, const SceneInfo& info,
                             const std::vector<fr_value>& params,
                             const std::vector<std::array<float, 3>>& points, int lanes,
-                            Precision precision) {
+                            Precision precision, const PairOrigin* origin) {
   if (points.empty()) return {};
   lanes = resolve_lanes(lanes, &runtime.device());
   const AssembledKernel k = assemble_probe_kernel(info, params, KernelConfig{lanes, precision});
-  const std::vector<uint8_t> packed = pack_scene_params(info, params);
+  const PairOrigin world_origin{};
+  if (precision == Precision::DoubleDouble && !origin) origin = &world_origin;
+  const std::vector<uint8_t> packed =
+      pack_scene_params(info, params, precision == Precision::DoubleDouble ? origin : nullptr);
   return run_probe(runtime, k, "fr_probe_de",
                    {{packed.data(), packed.size(), "probe parameters"},
                     {points.data(), points.size() * sizeof(points[0]), "probe points"}},

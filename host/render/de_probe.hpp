@@ -3,6 +3,7 @@
 #pragma once
 
 #include "render/cl_runtime.hpp"
+#include "render/kernel_assembly.hpp"  // PairOrigin
 #include "render/render_settings.hpp"
 #include "scene/scene_data.hpp"
 
@@ -14,11 +15,14 @@
 namespace fr {
 
 // DE values at `points` (world space) with parameter values `params`. lanes 0 picks the
-// device's width. Throws KernelBuildError or ClError like the renderer.
+// device's width. Throws KernelBuildError or ClError like the renderer. In double-double the
+// points are relative to `origin` (the world's origin when null; kernels/dd_relative.cl), and
+// the estimate runs every iteration in pairs.
 std::vector<float> probe_de(ClRuntime& runtime, const SceneInfo& info,
                             const std::vector<fr_value>& params,
                             const std::vector<std::array<float, 3>>& points, int lanes = 0,
-                            Precision precision = Precision::Float);
+                            Precision precision = Precision::Float,
+                            const PairOrigin* origin = nullptr);
 
 // What a material function (scene_material) returns at `points`, before the renderer clamps it:
 // kMaterialFloats floats a point, in material_t's order (kernels/prelude.cl, material_probe.cl),

@@ -19,7 +19,7 @@ static_assert(FR_KERNEL_LIGHT_DIRECTIONAL == FR_LIGHT_DIRECTIONAL &&
 
 // The kernels read this struct with OpenCL C's layout rules; with only 4-byte fields both sides
 // agree, and these checks keep it so.
-static_assert(sizeof(fr_frame_constants) == 1028, "fr_frame_constants layout changed");
+static_assert(sizeof(fr_frame_constants) == 1060, "fr_frame_constants layout changed");
 static_assert(offsetof(fr_frame_constants, first_pixel_dir) == 0);
 static_assert(offsetof(fr_frame_constants, light_vector) == 96);
 static_assert(offsetof(fr_frame_constants, light_kind) == 352);
@@ -40,6 +40,8 @@ static_assert(offsetof(fr_frame_constants, aperture_blades) == 960);
 static_assert(offsetof(fr_frame_constants, env_axes) == 964);
 static_assert(offsetof(fr_frame_constants, env_intensity) == 1020);
 static_assert(offsetof(fr_frame_constants, hit_threshold_abs) == 1024);
+static_assert(offsetof(fr_frame_constants, bounding_centre) == 1028);
+static_assert(offsetof(fr_frame_constants, bounding_centre_lo) == 1044);
 namespace {
 void put(float out[4], glm::dvec3 v) {
   out[0] = static_cast<float>(v.x);
@@ -70,9 +72,10 @@ void put_hi_lo(float hi[4], float lo[4], glm::dvec3 v) {
 // view (which the camera's image plane, render/camera.hpp, keeps the same for every pixel). 0
 // (start at the eye) when the eye is within the bounds, or when a thin lens moves ray origins off
 // the eye.
-double start_scale(const CameraRays& rays, double bounding_radius, float aperture_radius) {
+double start_scale(const CameraRays& rays, glm::dvec3 bounding_centre, double bounding_radius,
+                   float aperture_radius) {
   if (aperture_radius > 0) return 0;
-  const double ahead = glm::dot(-rays.eye, rays.forward) - 1.001 * bounding_radius;
+  const double ahead = glm::dot(bounding_centre - rays.eye, rays.forward) - 1.001 * bounding_radius;
   const double along = glm::dot(rays.first_pixel_dir, rays.forward);
   if (ahead <= 0 || along <= 0) return 0;
   return ahead / along;
@@ -87,12 +90,14 @@ std::array<double, 2> sample_jitter(int i) {
 }
 
 fr_frame_constants make_frame_constants(const CameraRays& rays, const SceneState& state,
-                                        const RenderSettings& s, int sample_index) {
+                                        const RenderSettings& s, int sample_index,
+                                        glm::dvec3 bounding_centre) {
   fr_frame_constants fc{};
+  put_hi_lo(fc.bounding_centre, fc.bounding_centre_lo, bounding_centre);
   put_hi_lo(fc.first_pixel_dir, fc.first_pixel_dir_lo, rays.first_pixel_dir);
   put_hi_lo(fc.pixel_step_x, fc.pixel_step_x_lo, rays.pixel_step_x);
   put_hi_lo(fc.pixel_step_y, fc.pixel_step_y_lo, rays.pixel_step_y);
-  const double scale = start_scale(rays, state.bounding_radius, s.aperture_radius);
+  const double scale = start_scale(rays, bounding_centre, state.bounding_radius, s.aperture_radius);
   const glm::dvec3 centre_dir = rays.first_pixel_dir +
                                 rays.pixel_step_x * (0.5 * (rays.width_px - 1)) +
                                 rays.pixel_step_y * (0.5 * (rays.height_px - 1));

@@ -16,9 +16,11 @@ namespace fr {
 // centres, later ones through jittered sub-pixel positions, mixed in with weight 1/(index + 1).
 // `rays` is the whole image's camera (settings.window says which of its pixels this image has):
 // the kernel computes a window's rays from the whole image's pixel grid, so that they are the
-// whole image's bit for bit.
+// whole image's bit for bit. The scene's bounding sphere is centred at `bounding_centre`: the
+// origin, except for a double-double frame's eye-relative coordinates (render/eye_relative.hpp).
 fr_frame_constants make_frame_constants(const CameraRays& rays, const SceneState& state,
-                                        const RenderSettings& settings, int sample_index);
+                                        const RenderSettings& settings, int sample_index,
+                                        glm::dvec3 bounding_centre = glm::dvec3(0.0));
 
 // Sub-pixel offset of a sample, in (-0.5, 0.5)^2: (0, 0) for sample 0, then the R2 sequence
 // (Roberts' additive recurrence), which covers the pixel evenly for any sample count.

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <initializer_list>
+#include <cstring>
 #include <set>
 #include <sstream>
 
@@ -135,6 +136,11 @@ std::string literal(double v, Precision p) {
   return "((scalar_t)" + text + (p == Precision::Float ? "f" : "") + ")";
 }
 
+// Double and double-double kernels compute in double (scalar_t); a float kernel in float.
+bool computes_in_double(Precision p) {
+  return p == Precision::Double || p == Precision::DoubleDouble;
+}
+
 void append_params(std::ostringstream& out, const SceneInfo& info,
                    const std::vector<fr_value>& values, Precision precision) {
   // A number travels as three floats, its value rounded to float and the rest in two more
@@ -143,7 +149,7 @@ void append_params(std::ostringstream& out, const SceneInfo& info,
   // kernel reads key alone. (mid + lo is exact in double, and so is adding it to key.)
   const auto number = [&](const std::string& key, const char* index) {
     const std::string hi = "(scalar_t)params->" + key + index;
-    if (precision != Precision::Double) return "(" + hi + ")";
+    if (!computes_in_double(precision)) return "(" + hi + ")";
     return "(" + hi + " + ((scalar_t)params->" + key + "__mid" + index + " + (scalar_t)params->" +
            key + "__lo" + index + "))";
   };
@@ -168,6 +174,13 @@ void append_params(std::ostringstream& out, const SceneInfo& info,
             << "__lo[3];\n";
         break;
     }
+  }
+  if (precision == Precision::DoubleDouble) {
+    // The frame's origin (pack_scene_params, PairOrigin): dd_relative.cl reads it.
+    out << "  uint fr_eye_bits[12]; /* x.hi, x.lo, y.hi, ...: each double as (low word, high word) "
+           "*/\n  float fr_resolution_rad; /* the estimate's resolution over the distance from "
+           "the eye */\n";
+    ++runtime_count;
   }
   if (runtime_count == 0) out << "  int unused; /* OpenCL C has no empty structs */\n";
   out << "} scene_params_t;\n";
@@ -220,7 +233,8 @@ void append_scene_prefix(std::ostringstream& out, const SceneInfo& info,
   out << "/* Fractalis " << kind << " kernel for scene '" << info.id
       << "'. Generated; see kernels/. */\n";
   out << "#define FR_LANES " << config.lanes << "\n";
-  out << "#define FR_DOUBLE " << (config.precision == Precision::Double ? 1 : 0) << "\n";
+  out << "#define FR_DOUBLE " << (computes_in_double(config.precision) ? 1 : 0) << "\n";
+  out << "#define FR_DD " << (config.precision == Precision::DoubleDouble ? 1 : 0) << "\n";
   define_choice(out, "FR_SHADING", config.shading);
   define_choice(out, "FR_NORMALS", config.normals);
   define_choice(out, "FR_AO", config.ao_method);
@@ -256,6 +270,10 @@ void append_scene_prefix(std::ostringstream& out, const SceneInfo& info,
     append_with_includes(out, info.id, info.surface_source_name, info.surface_source, included);
   if (!scene_macros.empty()) out << "/* The scene's macros end with its code. */\n";
   for (const auto& m : scene_macros) out << "#pragma pop_macro(\"" << m << "\")\n";
+  // A double-double kernel: every stage's scene_de becomes the scene's pair estimate at the eye
+  // plus the stage's point, which is relative to the eye.
+  if (config.precision == Precision::DoubleDouble)
+    append_file(out, "dd_relative.cl", kernel_source("dd_relative.cl"));
 }
 
 AssembledKernel finish(std::ostringstream& out, const SceneInfo& info, const KernelConfig& config,
@@ -272,12 +290,15 @@ AssembledKernel finish(std::ostringstream& out, const SceneInfo& info, const Ker
   // passed in memory there), and nothing of them reaches anyone who could act on it; errors,
   // with the build log, still do.
   k.build_options = "-cl-std=CL1.2 -cl-mad-enable -w";
-  if (config.fast_math) k.build_options += " -cl-fast-relaxed-math";
+  // Double-double's error terms need every rounding as written: no contraction, no fast math
+  // (on PoCL either zeroes them; the self-test, render/dd_selftest.hpp, shows it).
+  if (config.precision == Precision::DoubleDouble) k.build_options = "-cl-std=CL1.2 -w";
+  else if (config.fast_math) k.build_options += " -cl-fast-relaxed-math";
   if (config.quick_build) k.build_options += " -cl-opt-disable";
   k.description = "scene '" + info.id + "' " + kind + " kernel (" +
                   (config.integrator == Integrator::Path ? "path tracing, " : "") + "lanes " +
                   std::to_string(config.lanes) + ", " +
-                  (config.precision == Precision::Double ? "double" : "float") +
+                  enum_row(config.precision).label +
                   ", stages: " + stage_names(config.stages) +
                   ((config.stages & kStageCone) ? ", cone pre-pass" : "") +
                   ((config.stages & kStageEnvironment) ? ", environment image" : "") +
@@ -308,7 +329,7 @@ fr_features enabled_stages(const SceneInfo& info, fr_features disabled_by_user) 
 KernelConfig make_kernel_config(const SceneInfo& info, const RenderSettings& s, int lanes) {
   KernelConfig c;
   c.lanes = lanes;
-  c.precision = s.precision == Precision::Double ? Precision::Double : Precision::Float;
+  c.precision = s.precision == Precision::Auto ? Precision::Float : s.precision;
   c.stages = enabled_stages(info, s.disabled_stages);
   if (s.aperture_radius > 0 && !(s.disabled_stages & kStageDepthOfField))
     c.stages |= kStageDepthOfField;
@@ -396,7 +417,12 @@ AssembledKernel assemble_material_probe_kernel(const SceneInfo& info,
                         {"material.cl", "material_probe.cl"});
 }
 
-std::vector<uint8_t> pack_scene_params(const SceneInfo& info, const std::vector<fr_value>& values) {
+bool has_pair_estimate(const SceneInfo& info) {
+  return source_defines_function(info.de_source, "scene_de_dd");
+}
+
+std::vector<uint8_t> pack_scene_params(const SceneInfo& info, const std::vector<fr_value>& values,
+                                       const PairOrigin* origin) {
   std::vector<uint8_t> bytes;
   auto push = [&](const void* p) {
     const auto* b = static_cast<const uint8_t*>(p);
@@ -423,6 +449,17 @@ std::vector<uint8_t> pack_scene_params(const SceneInfo& info, const std::vector<
       for (int c = 0; c < p.component_count(); ++c) push(&mid[c]);
       for (int c = 0; c < p.component_count(); ++c) push(&lo[c]);
     }
+  }
+  if (origin) {
+    for (int a = 0; a < 3; ++a)
+      for (double part : {origin->eye[a].hi, origin->eye[a].lo}) {
+        uint64_t bits = 0;
+        std::memcpy(&bits, &part, sizeof bits);
+        const uint32_t low = static_cast<uint32_t>(bits), high = static_cast<uint32_t>(bits >> 32);
+        push(&low);
+        push(&high);
+      }
+    push(&origin->resolution_rad);
   }
   if (bytes.empty()) bytes.assign(4, 0);
   return bytes;

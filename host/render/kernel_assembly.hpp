@@ -8,6 +8,7 @@
 // compiler messages point into the scene's own source.
 #pragma once
 
+#include "io/dd_text.hpp"  // DoubleDouble
 #include "render/render_settings.hpp"
 #include "scene/scene_data.hpp"
 
@@ -89,8 +90,25 @@ AssembledKernel assemble_material_probe_kernel(const SceneInfo& info,
 // Whether the scene's surface source defines a material function (path tracing's materials).
 bool has_material_function(const SceneInfo& info);
 
+// Whether the scene's DE source defines a pair estimate, which double-double kernels need:
+//   real_t scene_de_dd(dd3_t p, __constant const scene_params_t* params, real_t resolution)
+// (fr/dd.cl's types; `resolution` is the distance the estimate must resolve at p, so that it
+// may finish in double once its roundings cost less; docs/deep_zoom.md).
+bool has_pair_estimate(const SceneInfo& info);
+
+// Where a double-double kernel's coordinates start (kernels/dd_relative.cl): its stages work in
+// double relative to `eye`, and the scene's estimate gets eye + p as pairs, to be resolved to
+// resolution_rad times the distance from the eye (a pixel's footprint there, or the hit
+// threshold's when finer).
+struct PairOrigin {
+  DoubleDouble eye[3];
+  float resolution_rad = 0;
+};
+
 // The kernel-side parameter block: runtime (non-specialised) parameters in table order, each
-// float/int/bool as 4 bytes and each vec3/color as float[3]; at least 4 bytes.
-std::vector<uint8_t> pack_scene_params(const SceneInfo& info, const std::vector<fr_value>& values);
+// float/int/bool as 4 bytes and each vec3/color as float[3]; at least 4 bytes. A double-double
+// kernel's block ends with its origin, which must then be given.
+std::vector<uint8_t> pack_scene_params(const SceneInfo& info, const std::vector<fr_value>& values,
+                                       const PairOrigin* origin = nullptr);
 
 }  // namespace fr

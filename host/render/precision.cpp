@@ -1,12 +1,15 @@
 #include "render/precision.hpp"
 
 #include "render/de_probe.hpp"
+#include "render/eye_relative.hpp"
+#include "render/kernel_assembly.hpp"
 
 #include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <stdexcept>
 
 namespace fr {
 
@@ -18,7 +21,11 @@ Precision resolve_precision(ClRuntime& runtime, const SceneInfo& info, const Sce
                             const RenderSettings& settings) {
   if (settings.precision != Precision::Auto) return settings.precision;
   if (!runtime.device().has_fp64) return Precision::Float;
-  const CameraRays rays = make_camera_rays(state.camera, settings.width_px, settings.height_px);
+  const std::array<double, 3> view = view_vector(state.camera, state.camera_lo);
+  fr_camera relative = state.camera;
+  for (int i = 0; i < 3; ++i) relative.target[i] = relative.eye[i] + view[i];
+  if (check_camera(relative)) relative = state.camera;  // (eye and target one double apart)
+  const CameraRays rays = make_camera_rays(relative, settings.width_px, settings.height_px);
   const std::array<float, 3> eye{static_cast<float>(rays.eye.x), static_cast<float>(rays.eye.y),
                                  static_cast<float>(rays.eye.z)};
   const float de = probe_de(runtime, info, state.params, {eye}, 1, Precision::Double)[0];
@@ -29,8 +36,39 @@ Precision resolve_precision(ClRuntime& runtime, const SceneInfo& info, const Sce
   const double distance = std::isfinite(de) ? std::abs(double(de)) : 0.0;
   const double position_scale = state.bounding_radius;
   const double footprint = distance * rays.pixel_angle_rad;
-  return footprint < kFloatFootprintUlps * float_resolution(position_scale) ? Precision::Double
-                                                                            : Precision::Float;
+  if (footprint >= kFloatFootprintUlps * float_resolution(position_scale)) return Precision::Float;
+  if (!has_pair_estimate(info) || settings.integrator == Integrator::Path || settings.fast_math)
+    return Precision::Double;
+  // Past float: ask again in pairs, at the eye itself (the probe above saw it rounded to float,
+  // and a double estimate there is only as good as double's resolution).
+  PairOrigin origin;
+  const std::array<DoubleDouble, 3> eye_pair = eye_pairs(state.camera, state.camera_lo);
+  std::copy(eye_pair.begin(), eye_pair.end(), origin.eye);
+  const float pair_de =
+      probe_de(runtime, info, state.params, {{0, 0, 0}}, 1, Precision::DoubleDouble, &origin)[0];
+  const double pair_distance = std::isfinite(pair_de) ? std::abs(double(pair_de)) : 0.0;
+  return pair_distance * rays.pixel_angle_rad < kDoubleFootprintUlps * double_resolution(position_scale)
+             ? Precision::DoubleDouble
+             : Precision::Double;
+}
+
+double double_resolution(double position_scale) {
+  return std::abs(position_scale) * DBL_EPSILON;
+}
+
+void check_pair_frame(const SceneInfo& info, const RenderSettings& settings) {
+  if (!has_pair_estimate(info))
+    throw std::invalid_argument(
+        "render.precision dd: scene '" + info.id +
+        "' has no pair estimate (a scene_de_dd in its DE source; docs/deep_zoom.md): the "
+        "Mandelbox and Menger scenes have one");
+  if (settings.integrator == Integrator::Path)
+    throw std::invalid_argument(
+        "render.precision dd: the path tracer does not work in pairs yet; render with "
+        "render.integrator = \"fast\"");
+  if (settings.fast_math)
+    throw std::invalid_argument(
+        "render.precision dd: render.fast_math would drop the pairs' error terms; turn it off");
 }
 
 size_t pixels_below_float_resolution(const std::vector<float>& depth, const CameraRays& rays) {

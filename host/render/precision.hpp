@@ -19,15 +19,25 @@ namespace fr {
 
 // Footprints smaller than this many float ulps of the surface position need double.
 constexpr double kFloatFootprintUlps = 16;
+// And smaller than this many double ulps, double-double.
+constexpr double kDoubleFootprintUlps = 16;
 
 // Float's resolution at world position scale |p|: one ulp, 2^-23 |p|.
 double float_resolution(double position_scale);
+// Double's: 2^-52 |p|.
+double double_resolution(double position_scale);
 
-// The precision a frame of this view should use. Float and Double are returned as they are; Auto
-// probes the DE at the eye (on the device) and returns Double when the footprint estimate is
-// under kFloatFootprintUlps ulps and the device has doubles, else Float.
+// The precision a frame of this view should use. Float, Double and DoubleDouble are returned as
+// they are; Auto probes the DE at the eye (on the device) and returns Float when the footprint
+// estimate is at least kFloatFootprintUlps float ulps (or the device has no doubles), else
+// DoubleDouble when it is under kDoubleFootprintUlps double ulps at the eye (probed again in
+// pairs) and the scene has a pair estimate, else Double.
 Precision resolve_precision(ClRuntime& runtime, const SceneInfo& info, const SceneState& state,
                             const RenderSettings& settings);
+
+// Throws std::invalid_argument, saying why, when this scene cannot render a double-double frame
+// with these settings: it has no pair estimate, or the path tracer or fast math is asked for.
+void check_pair_frame(const SceneInfo& info, const RenderSettings& settings);
 
 // After a render: how many hit pixels (depth finite) have a footprint under
 // kFloatFootprintUlps ulps of their hit position, i.e. were below float's resolution.

@@ -15,12 +15,16 @@
 namespace fr {
 
 // Auto: float, unless the pixel footprint at the surface comes near float's resolution there
-// (resolve_precision in render/precision.hpp), then double.
-enum class Precision { Float, Double, Auto };
+// (resolve_precision in render/precision.hpp), then double, and past double's, double-double
+// (where the scene has a pair estimate). DoubleDouble ("dd"): the kernel works in coordinates
+// relative to the eye, in double, and the scene's estimate gets its point as a double-double
+// (docs/deep_zoom.md). The numbers travel between processes: keep them.
+enum class Precision { Float = 0, Double = 1, Auto = 2, DoubleDouble = 3 };
 inline constexpr EnumName<Precision> kPrecisionNames[] = {
     {Precision::Auto, "auto", "auto", nullptr},
     {Precision::Float, "float", "float", nullptr},
     {Precision::Double, "double", "double", nullptr},
+    {Precision::DoubleDouble, "dd", "double-double", nullptr},
 };
 constexpr std::span<const EnumName<Precision>> enum_names(Precision) {
   return kPrecisionNames;

@@ -3,6 +3,7 @@
 #include "render/environment_map.hpp"
 
 #include "render/camera.hpp"
+#include "render/eye_relative.hpp"
 #include "render/frame_constants.hpp"
 #include "render/kernel_assembly.hpp"
 #include "render/kernel_sources.hpp"
@@ -14,6 +15,7 @@ extern "C" {
 
 #include <algorithm>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 
 namespace fr {
@@ -84,8 +86,13 @@ FrameImage Renderer::render(const SceneInfo& info, const SceneState& state,
 void Renderer::render_sample(const SceneInfo& info, const SceneState& state,
                              const RenderSettings& requested, int sample_index, Readback outputs,
                              RowBand rows) {
-  if (requested.precision == Precision::Double && !runtime_.device().has_fp64)
-    throw std::runtime_error("device " + runtime_.device().name + " has no double precision");
+  if ((requested.precision == Precision::Double ||
+       requested.precision == Precision::DoubleDouble) &&
+      !runtime_.device().has_fp64)
+    throw std::runtime_error("device " + runtime_.device().name + " has no double precision" +
+                             (requested.precision == Precision::DoubleDouble
+                                  ? ", which double-double (render.precision dd) is made of"
+                                  : ""));
   const int w = requested.width_px, h = requested.height_px;
   if (rows.rows_px == 0) rows = RowBand{0, h};
   const int end_row = rows.first_row_px + rows.rows_px;
@@ -115,8 +122,20 @@ void Renderer::render_sample(const SceneInfo& info, const SceneState& state,
   last_lanes_ = lanes;
   cl_command_queue q = runtime_.queue();
 
-  fr_frame_constants fc =
-      make_frame_constants(whole_image_rays(state.camera, settings), state, settings, sample_index);
+  // Double-double: the scene seen from its eye (render/eye_relative.hpp).
+  const bool pairs = settings.precision == Precision::DoubleDouble;
+  if (pairs) check_pair_frame(info, settings);
+  else if (check_camera(state.camera) && !check_camera(state.camera, state.camera_lo))
+    throw std::invalid_argument(
+        "camera: the eye and target lie closer than double tells apart; only render.precision "
+        "dd renders such a view" +
+        std::string(has_pair_estimate(info) ? "" : ", and scene '" + info.id + "' has no pair estimate"));
+  const std::optional<EyeRelativeView> relative =
+      pairs ? std::optional(eye_relative_view(state, 0)) : std::nullopt;
+  const SceneState& drawn = relative ? relative->state : state;
+  const CameraRays rays = whole_image_rays(drawn.camera, settings);
+  fr_frame_constants fc = make_frame_constants(rays, drawn, settings, sample_index,
+                                               relative ? relative->bounding_centre : glm::dvec3(0));
   const cl_mem environment = environment_memory(settings);
   fc.env_width = environment_width_px_;
   fc.env_height = environment_height_px_;
@@ -124,7 +143,14 @@ void Renderer::render_sample(const SceneInfo& info, const SceneState& state,
   cl_check(
       clEnqueueWriteBuffer(q, constants_.get(), CL_FALSE, 0, sizeof fc, &fc, 0, nullptr, nullptr),
       "clEnqueueWriteBuffer", "uploading frame constants");
-  const std::vector<uint8_t> params = pack_scene_params(info, state.params);
+  std::optional<PairOrigin> origin;
+  if (relative) {
+    origin = relative->origin;
+    origin->resolution_rad =
+        static_cast<float>(rays.pixel_angle_rad * std::min(1.0, double(settings.hit_threshold_k)));
+  }
+  const std::vector<uint8_t> params =
+      pack_scene_params(info, state.params, origin ? &*origin : nullptr);
   if (params.size() != params_bytes_) {
     params_ = make_buffer(runtime_.context(), CL_MEM_READ_ONLY, params.size(), "scene parameters");
     params_bytes_ = params.size();
@@ -240,6 +266,7 @@ Precision Renderer::prepare(const SceneInfo& info, const SceneState& state,
                             const RenderSettings& requested) {
   RenderSettings settings = requested;
   settings.precision = resolve_precision(runtime_, info, state, requested);
+  if (settings.precision == Precision::DoubleDouble) check_pair_frame(info, settings);
   std::string description;
   render_program(info, state, settings, lanes_for(settings), &description);
   post_kernel();

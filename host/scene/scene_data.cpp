@@ -73,6 +73,32 @@ std::optional<std::string> check_camera(const fr_camera& c) {
   return std::nullopt;
 }
 
+std::array<double, 3> view_vector(const fr_camera& c, const CameraLow& low) {
+  std::array<double, 3> v{};
+  for (int i = 0; i < 3; ++i) {
+    // Knuth's TwoSum: s + e is target.hi - eye.hi exactly; the low parts are far smaller.
+    const double a = c.target[i], b = -c.eye[i];
+    const double s = a + b, bb = s - a;
+    const double e = (a - (s - bb)) + (b - bb);
+    v[i] = s + (e + (low.target[i] - low.eye[i]));
+  }
+  return v;
+}
+
+std::optional<std::string> check_camera(const fr_camera& c, const CameraLow& low) {
+  for (int i = 0; i < 3; ++i)
+    if (!std::isfinite(low.eye[i]) || !std::isfinite(low.target[i]))
+      return "camera has a non-finite coordinate";
+  fr_camera relative = c;
+  const std::array<double, 3> v = view_vector(c, low);
+  for (int i = 0; i < 3; ++i) {
+    relative.eye[i] = 0;
+    relative.target[i] = v[i];
+  }
+  if (auto problem = check_camera(c); problem && *problem != "target equals eye") return problem;
+  return check_camera(relative);
+}
+
 glm::dvec3 effective_up(const fr_camera& c) {
   const glm::dvec3 t = glm::normalize(to_dvec3(c.target) - to_dvec3(c.eye));
   const glm::dvec3 up = to_dvec3(c.up);

@@ -9,6 +9,7 @@
 
 #include <fractalis/fractalis.h>
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -51,6 +52,25 @@ std::vector<std::string> scene_tags(const SceneInfo& info);
 // camera when it loads, and on the camera the command line sets.
 std::optional<std::string> check_camera(const fr_camera& camera);
 
+// The camera's eye and target past double (render.precision "dd", docs/deep_zoom.md): what each
+// coordinate lacks of the value given, so that eye[i] + eye_lo[i] is the pair (a double-double,
+// |lo| at most half an ulp of the double). Zero unless something deeper than double set them: an
+// --eye or --target with more digits, a preset or a camera path that has them. The ABI's camera
+// (what a scene's callbacks see) stays double; a scene that moves it leaves these as they were,
+// which moves the pair by at most half an ulp of the new double.
+struct CameraLow {
+  double eye[3] = {0, 0, 0};
+  double target[3] = {0, 0, 0};
+  bool operator==(const CameraLow&) const = default;
+};
+
+// check_camera for the pairs: the target may equal the eye in double and still lie apart.
+std::optional<std::string> check_camera(const fr_camera& camera, const CameraLow& low);
+
+// target - eye from the pairs, each coordinate rounded once to double: the view's direction and
+// length when eye and target are closer than double can tell apart.
+std::array<double, 3> view_vector(const fr_camera& camera, const CameraLow& low);
+
 struct SceneInfo {
   std::string id;
   std::string name;
@@ -78,6 +98,7 @@ struct SceneInfo {
 struct SceneState {
   std::vector<fr_value> params;  // one per SceneInfo::params, same order
   fr_camera camera{};
+  CameraLow camera_lo;  // the eye's and target's digits past double (zero for most views)
   std::vector<fr_light> lights;
   double time_s = 0;
   double dt_s = 0;

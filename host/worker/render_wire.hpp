@@ -20,7 +20,14 @@ namespace fr {
 
 // Bumped whenever a message's layout changes; fractalis passes it to the worker, which refuses to
 // talk to another version.
-constexpr uint32_t kRenderWireVersion = 4;
+constexpr uint32_t kRenderWireVersion = 5;
+
+// Whether a precision sent back by the worker is one a frame ran in (never Auto).
+constexpr bool resolved_precision(uint32_t p) {
+  return p == static_cast<uint32_t>(Precision::Float) ||
+         p == static_cast<uint32_t>(Precision::Double) ||
+         p == static_cast<uint32_t>(Precision::DoubleDouble);
+}
 
 // Kinds share the frame header with the scene host's (scene_wire.hpp), numbered apart from them.
 enum class RenderWireKind : uint32_t {

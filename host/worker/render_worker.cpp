@@ -353,7 +353,7 @@ Precision RenderWorker::prepare(const SceneInfo& info, const SceneState& state,
                                  "preparing", limits_.build_s);
   WireReader r(reply);
   const uint32_t precision = r.u32();
-  if (r.failed() || precision > static_cast<uint32_t>(Precision::Double))  // never Auto
+  if (r.failed() || !resolved_precision(precision))
     fail(info.id, "preparing", "sent a malformed reply", false);
   return static_cast<Precision>(precision);
 }
@@ -419,7 +419,7 @@ FramePassPointers RenderWorker::finish_in_place(const RenderSettings& settings, 
   WireReader r(reply);
   *lanes = r.i32();
   const uint32_t p = r.u32();
-  if (r.failed() || p > static_cast<uint32_t>(Precision::Double))  // never Auto
+  if (r.failed() || !resolved_precision(p))
     fail(last_scene_id_, "reading back a frame", "sent a malformed reply", false);
   *precision = static_cast<Precision>(p);
   return frame_passes_at(process_->frame.data(), n, what, &bytes);

@@ -125,7 +125,8 @@ class Worker {
         const int lanes = r.i32();
         const uint32_t precision = r.u32();
         check(r);
-        if (precision > static_cast<uint32_t>(Precision::Auto)) throw BadRequest("bad precision");
+        if (precision > static_cast<uint32_t>(Precision::DoubleDouble))
+          throw BadRequest("bad precision");
         const std::vector<float> values =
             probe_de(runtime_, info, params, points, lanes, static_cast<Precision>(precision));
         result.u32(static_cast<uint32_t>(values.size()));
