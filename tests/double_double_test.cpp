@@ -6,6 +6,7 @@
 // a thousandth of such a pixel while double cannot tell the points apart (why pairs are needed).
 #include "render/dd_selftest.hpp"
 #include "render/kernel_sources.hpp"
+#include "float128_reference.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>
@@ -19,27 +20,12 @@
 
 namespace fr {
 namespace {
-
-using quad = __float128;
-
-quad quad_abs(quad x) {
-  return x < 0 ? -x : x;
-}
-
-// sqrt in __float128 without libquadmath: Newton from the double root (each step doubles the
-// correct bits: 53 -> 106 -> 113).
-quad quad_sqrt(quad x) {
-  if (!(x > 0)) return 0;
-  quad r = std::sqrt(static_cast<double>(x));
-  for (int i = 0; i < 3; ++i) r = (r + x / r) / 2;
-  return r;
-}
-
-// A double-double's two doubles for a __float128: hi the nearest double, lo the rest rounded.
-void split(quad x, double* hi, double* lo) {
-  *hi = static_cast<double>(x);
-  *lo = static_cast<double>(x - static_cast<quad>(*hi));
-}
+using test::BoxReference;
+using test::quad;
+using test::quad_abs;
+using test::quad_sqrt;
+using test::split;
+using test::SpongeReference;
 
 // A program of the library's files for a kernel written here: the files' "#include "fr/..."
 // lines dropped (the files are given in dependency order instead).
@@ -170,61 +156,6 @@ __kernel void ops(__global const double* ahi, __global const double* alo,
     }
   }
 }
-
-// The Mandelbox (scale 2, min radius 0.5, fixed radius 1, fold 1, 90 iterations) in __float128.
-// (Its estimate resolves about 1 / dr: 2^-n after n iterations, so a view 1e-22 across needs
-// some 75; 60 stall near 1e-19.)
-struct BoxReference {
-  int iterations = 90;
-  double scale = 2, min_radius = 0.5, fixed_radius = 1, fold = 1;
-  quad de(const quad p[3]) const {
-    quad z[3] = {p[0], p[1], p[2]};
-    quad dr = 1;
-    quad r2 = z[0] * z[0] + z[1] * z[1] + z[2] * z[2];
-    const quad min2 = static_cast<quad>(min_radius) * min_radius,
-               fixed2 = static_cast<quad>(fixed_radius) * fixed_radius;
-    for (int i = 0; i < iterations && r2 < 1e8; ++i) {
-      for (quad& c : z) {
-        if (c > fold) c = 2 * static_cast<quad>(fold) - c;
-        else if (c < -fold) c = -2 * static_cast<quad>(fold) - c;
-      }
-      const quad f2 = z[0] * z[0] + z[1] * z[1] + z[2] * z[2];
-      const quad factor = f2 < min2 ? fixed2 / min2 : f2 < fixed2 ? fixed2 / f2 : quad(1);
-      for (int c = 0; c < 3; ++c) z[c] = z[c] * factor * scale + p[c];
-      dr = dr * factor * (scale < 0 ? -scale : scale) + 1;
-      r2 = z[0] * z[0] + z[1] * z[1] + z[2] * z[2];
-    }
-    return quad_sqrt(r2) / quad_abs(dr);
-  }
-};
-
-// The Menger sponge (scale 3, offset (1, 1, 1), no rotation) in __float128: the level-n
-// sponge's box distance over 3^n (exact outside the sponge).
-struct SpongeReference {
-  int iterations = 50;
-  quad de(const quad p[3]) const {
-    quad z[3] = {quad_abs(p[0]), quad_abs(p[1]), quad_abs(p[2])};
-    quad scale_n = 1;
-    for (int i = 0; i < iterations; ++i) {
-      for (quad& c : z) c = quad_abs(c);
-      if (z[0] < z[1]) std::swap(z[0], z[1]);
-      if (z[0] < z[2]) std::swap(z[0], z[2]);
-      if (z[1] < z[2]) std::swap(z[1], z[2]);
-      z[0] = 3 * z[0] - 2;
-      z[1] = 3 * z[1] - 2;
-      z[2] = 3 * z[2];
-      if (z[2] > 1) z[2] -= 2;
-      scale_n *= 3;
-    }
-    quad outside2 = 0, inside = -1e30;
-    for (const quad c : z) {
-      const quad q = quad_abs(c) - 1;
-      if (q > 0) outside2 += q * q;
-      if (q > inside) inside = q;
-    }
-    return (quad_sqrt(outside2) + (inside < 0 ? inside : quad(0))) / scale_n;
-  }
-};
 
 // Test points 1e-22 to 1.6e-21 outside a shape's surface, 16 along each of four rays: sphere
 // tracing in __float128 from `start` until the reference estimate is below 1e-24, then back.

@@ -107,6 +107,15 @@ void Renderer::render_sample(const SceneInfo& info, const SceneState& state,
                            ? resolve_precision(runtime_, info, state, requested)
                            : last_precision_;
   last_precision_ = settings.precision;
+  const bool pairs = settings.precision == Precision::DoubleDouble;
+  if (pairs) check_pair_frame(info, settings);
+  else if (check_camera(state.camera) && !check_camera(state.camera, state.camera_lo))
+    throw std::invalid_argument(
+        "camera: the eye and target lie closer than double tells apart; only render.precision "
+        "dd renders such a view" +
+        std::string(has_pair_estimate(info) ? ""
+                                            : ", and scene '" + info.id +
+                                                  "' has no pair estimate (scene_de_dd)"));
   const int lanes = lanes_for(settings);
   std::string description;
   // The denoiser is guided by the passes.
@@ -123,13 +132,6 @@ void Renderer::render_sample(const SceneInfo& info, const SceneState& state,
   cl_command_queue q = runtime_.queue();
 
   // Double-double: the scene seen from its eye (render/eye_relative.hpp).
-  const bool pairs = settings.precision == Precision::DoubleDouble;
-  if (pairs) check_pair_frame(info, settings);
-  else if (check_camera(state.camera) && !check_camera(state.camera, state.camera_lo))
-    throw std::invalid_argument(
-        "camera: the eye and target lie closer than double tells apart; only render.precision "
-        "dd renders such a view" +
-        std::string(has_pair_estimate(info) ? "" : ", and scene '" + info.id + "' has no pair estimate"));
   const std::optional<EyeRelativeView> relative =
       pairs ? std::optional(eye_relative_view(state, 0)) : std::nullopt;
   const SceneState& drawn = relative ? relative->state : state;

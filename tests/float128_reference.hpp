@@ -1,0 +1,88 @@
+// float128_reference.hpp — shapes' distance estimates in __float128 (113 bits), written apart
+// from the kernels (no shared code), as the reference past double for the deep-zoom tests
+// (double_double_test.cpp, deep_zoom_test.cpp).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace fr::test {
+
+using quad = __float128;
+
+inline quad quad_abs(quad x) {
+  return x < 0 ? -x : x;
+}
+
+// sqrt in __float128 without libquadmath: Newton from the double root (each step doubles the
+// correct bits: 53 -> 106 -> 113).
+inline quad quad_sqrt(quad x) {
+  if (!(x > 0)) return 0;
+  quad r = std::sqrt(static_cast<double>(x));
+  for (int i = 0; i < 3; ++i) r = (r + x / r) / 2;
+  return r;
+}
+
+// A double-double's two doubles for a __float128: hi the nearest double, lo the rest rounded.
+inline void split(quad x, double* hi, double* lo) {
+  *hi = static_cast<double>(x);
+  *lo = static_cast<double>(x - static_cast<quad>(*hi));
+}
+
+// The Mandelbox (scale 2, min radius 0.5, fixed radius 1, fold 1, 90 iterations) in __float128.
+// (Its estimate resolves about 1 / dr: 2^-n after n iterations, so a view 1e-22 across needs
+// some 75; 60 stall near 1e-19.)
+struct BoxReference {
+  int iterations = 90;
+  double scale = 2, min_radius = 0.5, fixed_radius = 1, fold = 1;
+  quad de(const quad p[3]) const {
+    quad z[3] = {p[0], p[1], p[2]};
+    quad dr = 1;
+    quad r2 = z[0] * z[0] + z[1] * z[1] + z[2] * z[2];
+    const quad min2 = static_cast<quad>(min_radius) * min_radius,
+               fixed2 = static_cast<quad>(fixed_radius) * fixed_radius;
+    for (int i = 0; i < iterations && r2 < 1e8; ++i) {
+      for (quad& c : z) {
+        if (c > fold) c = 2 * static_cast<quad>(fold) - c;
+        else if (c < -fold) c = -2 * static_cast<quad>(fold) - c;
+      }
+      const quad f2 = z[0] * z[0] + z[1] * z[1] + z[2] * z[2];
+      const quad factor = f2 < min2 ? fixed2 / min2 : f2 < fixed2 ? fixed2 / f2 : quad(1);
+      for (int c = 0; c < 3; ++c) z[c] = z[c] * factor * scale + p[c];
+      dr = dr * factor * (scale < 0 ? -scale : scale) + 1;
+      r2 = z[0] * z[0] + z[1] * z[1] + z[2] * z[2];
+    }
+    return quad_sqrt(r2) / quad_abs(dr);
+  }
+};
+
+// The Menger sponge (scale 3, offset (1, 1, 1), no rotation) in __float128: the level-n
+// sponge's box distance over 3^n (exact outside the sponge).
+struct SpongeReference {
+  int iterations = 50;
+  quad de(const quad p[3]) const {
+    quad z[3] = {quad_abs(p[0]), quad_abs(p[1]), quad_abs(p[2])};
+    quad scale_n = 1;
+    for (int i = 0; i < iterations; ++i) {
+      for (quad& c : z) c = quad_abs(c);
+      if (z[0] < z[1]) std::swap(z[0], z[1]);
+      if (z[0] < z[2]) std::swap(z[0], z[2]);
+      if (z[1] < z[2]) std::swap(z[1], z[2]);
+      z[0] = 3 * z[0] - 2;
+      z[1] = 3 * z[1] - 2;
+      z[2] = 3 * z[2];
+      if (z[2] > 1) z[2] -= 2;
+      scale_n *= 3;
+    }
+    quad outside2 = 0, inside = -1e30;
+    for (const quad c : z) {
+      const quad q = quad_abs(c) - 1;
+      if (q > 0) outside2 += q * q;
+      if (q > inside) inside = q;
+    }
+    return (quad_sqrt(outside2) + (inside < 0 ? inside : quad(0))) / scale_n;
+  }
+};
+
+}  // namespace fr::test
