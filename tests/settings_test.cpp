@@ -208,7 +208,7 @@ TEST(Settings, EnumNamesComeFromTheirTables) {
   EXPECT_STREQ(enum_name(ShadingModel::OrenNayar), "oren-nayar");
   EXPECT_EQ(enum_from_name<FogMethod>("power"), FogMethod::PowerLaw);
   EXPECT_FALSE(enum_from_name<FogMethod>("Power").has_value());
-  EXPECT_EQ(enum_name_list<Precision>(), "auto, float or double");
+  EXPECT_EQ(enum_name_list<Precision>(), "auto, float, double or dd");
   const SettingSpec* shading = find_setting("render.shading_model");
   ASSERT_NE(shading, nullptr);
   ASSERT_EQ(shading->choices.size(), std::size(kShadingModelNames));

@@ -5,7 +5,10 @@
 #include "image/poster.hpp"
 #include "render/camera.hpp"
 #include "render/device.hpp"
+#include "render/eye_relative.hpp"
+#include "render/kernel_assembly.hpp"
 #include "render/memory_budget.hpp"
+#include "render/precision.hpp"
 #include "scene/vec3.hpp"
 
 #include <spdlog/spdlog.h>
@@ -121,12 +124,39 @@ bool Explorer::update(const InputState& input, double dt_s, double now_s) {
   // changed DE waits for its quick frame: the probe would be a kernel build before it (the last
   // distance serves for a frame), and one that hangs is better found by that frame, which edit
   // mode then undoes before anything probes it again.
+  // Past float, a scene with a pair estimate is probed in pairs at the eye itself (the float
+  // eye of the plain probe is 1e-7 of the scene off it: a deep view's whole world).
+  const bool pairs = has_pair_estimate(slot.scene->info) && stats_.precision != Precision::Float;
   const std::array<float, 3> eye_f = to_float3(slot.state.camera.eye);
+  const bool probe_ok = !took_the_worker_down(slot) && slot.usable();
+  ZoomPoint zoom_point;
+  bool zoom_to_point = false;
   try {
-    if (took_the_worker_down(slot) || !slot.usable())
+    if (!probe_ok) {
       stats_.surface_distance = 0.1;  // (an unvetted DE is never run: it might not return)
-    else if (!quick_frame_)
+    } else if (!quick_frame_ && pairs) {
+      PairOrigin origin;
+      const auto eye = eye_pairs(slot.state.camera, slot.state.camera_lo);
+      std::copy(eye.begin(), eye.end(), origin.eye);
+      stats_.surface_distance = worker_.probe_de(slot.scene->info, slot.state.params, {{0, 0, 0}},
+                                                 1, Precision::DoubleDouble, &origin)[0];
+    } else if (!quick_frame_) {
       stats_.surface_distance = worker_.probe_de(slot.scene->info, slot.state.params, {eye_f})[0];
+    }
+    // A zoom in fly mode goes towards the surface under the pointer (camera_controller.hpp).
+    if (probe_ok && !path_.playing && mode_ == CameraMode::Fly &&
+        zoom_notches(input, dt_s) != 0 && window_width_px_ > 0 && window_height_px_ > 0) {
+      const auto [x, y] = mouse_look_ || !input.pointer
+                              ? std::pair(window_width_px_ / 2, window_height_px_ / 2)
+                              : *input.pointer;
+      if (const auto d = depth_under(x, y, window_width_px_, window_height_px_)) {
+        const CameraRays rays = view_camera_rays(slot.state, window_width_px_, window_height_px_);
+        const glm::dvec3 dir = camera_ray_dir(rays, x, y);
+        store_dvec3(zoom_point.dir, dir);
+        zoom_point.distance = *d;
+        zoom_to_point = true;
+      }
+    }
   } catch (const RenderWorkerFailure& e) {
     worker_failed(slot, e);
     stats_.surface_distance = 0.1;
@@ -134,11 +164,21 @@ bool Explorer::update(const InputState& input, double dt_s, double now_s) {
     slot.error = e.what();
     stats_.surface_distance = 0.1;
   }
+  if (window_width_px_ > 0 && window_height_px_ > 0) {
+    const CameraRays rays = view_camera_rays(slot.state, window_width_px_, window_height_px_);
+    stats_.pixel_footprint = std::abs(stats_.surface_distance) * rays.pixel_angle_rad;
+    // Past double there, and nothing finer to render it in: said in the overlay.
+    stats_.past_resolution =
+        !has_pair_estimate(slot.scene->info) &&
+        stats_.pixel_footprint < kDoubleFootprintUlps * position_epsilon(Precision::Double) *
+                                     std::max(glm::length(rays.eye), slot.state.bounding_radius);
+  }
   const SceneState before = slot.state;
   if (path_.playing)
     advance_playback(path_, slot.scene->info, dt_s, slot.state);
-  else if (update_camera(slot.state.camera, mode_, input, mouse_look_, dt_s,
-                         stats_.surface_distance, controls_)
+  else if (update_camera(slot.state.camera, slot.state.camera_lo, mode_, input, mouse_look_, dt_s,
+                         stats_.surface_distance, controls_,
+                         zoom_to_point ? &zoom_point : nullptr)
                .moved)
     changed_ = true;
   std::string error;
@@ -155,6 +195,8 @@ bool Explorer::update(const InputState& input, double dt_s, double now_s) {
 }
 
 const FrameView* Explorer::render(int window_width_px, int window_height_px) {
+  window_width_px_ = window_width_px;
+  window_height_px_ = window_height_px;
   // A scene still waiting for its test render (or refused by it) is not rendered: its DE might
   // never return. The window shows what is being prepared (ui/overlay.hpp) meanwhile.
   if (!current().usable()) {
@@ -434,7 +476,7 @@ void Explorer::time_band(SampleBands* bands, int rows, bool read_back, double ca
   queued_band_at_ = now;
 }
 
-std::optional<double> Explorer::focus_at(int x, int y, int width_px, int height_px) {
+std::optional<double> Explorer::depth_under(int x, int y, int width_px, int height_px) {
   if (width_px < 1 || height_px < 1 || x < 0 || y < 0 || x >= width_px || y >= height_px)
     return std::nullopt;
   SceneSlot& slot = current();
@@ -456,10 +498,16 @@ std::optional<double> Explorer::focus_at(int x, int y, int width_px, int height_
   // The worker's accumulation now holds this pixel: the view renders again either way.
   changed_ = true;
   if (!std::isfinite(depth)) return std::nullopt;
+  return depth;
+}
+
+std::optional<double> Explorer::focus_at(int x, int y, int width_px, int height_px) {
+  const std::optional<double> depth = depth_under(x, y, width_px, height_px);
+  if (!depth) return std::nullopt;
   // The lens focuses on a plane across the view (kernels/lens.cl): the distance along it.
-  const CameraRays rays = make_camera_rays(slot.state.camera, width_px, height_px);
-  const double along = depth * glm::dot(camera_ray_dir(rays, x, y), rays.forward);
-  settings_.render.focus_distance = static_cast<float>(std::clamp(along, 1e-6, 1000.0));
+  const CameraRays rays = view_camera_rays(current().state, width_px, height_px);
+  const double along = *depth * glm::dot(camera_ray_dir(rays, x, y), rays.forward);
+  settings_.render.focus_distance = static_cast<float>(std::clamp(along, 1e-30, 1000.0));
   mark_changed();
   return settings_.render.focus_distance;
 }

@@ -47,6 +47,11 @@ struct ExplorerStats {
   double out_of_steps_fraction = 0;  // primary rays of the last full frame that ran out of steps
   Precision precision = Precision::Float;  // what the last frame ran in (auto resolved)
   double surface_distance = 0;             // DE at the eye
+  // The depth: a pixel's footprint at the nearest surface (the DE at the eye times the pixel
+  // angle), "pixel 3.2e-21" in the overlay; and whether the view is past what the last frame's
+  // number type resolves there while the scene has no pair estimate (said, never drawn silently).
+  double pixel_footprint = 0;
+  bool past_resolution = false;
   // Where the last full frame's DE evaluations went, while counting is on (samples 0: off).
   EvalCounts eval_counts;
 };
@@ -72,6 +77,10 @@ class Explorer {
   // nothing where the ray meets no surface (the focus stays). A click on the picture does this
   // at the next render(). Throws what the render worker throws.
   std::optional<double> focus_at(int x, int y, int width_px, int height_px);
+  // The distance from the eye to the surface under image pixel (x, y) of a width x height window
+  // along the pixel's ray (traced alone, finer than a frame's rays), or nothing where it meets
+  // none. Throws what the render worker throws.
+  std::optional<double> depth_under(int x, int y, int width_px, int height_px);
 
   // Writes a PNG (or, for a file named *.exr, an OpenEXR file with its passes) of the current
   // view at the given size with full-quality samples, in bands (image/poster.hpp).
@@ -173,6 +182,7 @@ class Explorer {
   std::chrono::steady_clock::time_point queued_band_at_;
   std::vector<float> previous_linear_;  // the path-traced view's mean before its latest sample
   std::optional<std::pair<int, int>> pending_focus_;  // a click, focused at the next render
+  int window_width_px_ = 0, window_height_px_ = 0;    // of the last render(): the zoom's pixels
   uint64_t lattice_frames_ = 0;                       // the lattice phase's clock
   bool quick_frame_ = false;  // the next frame is a quick build (scene_code_changed)
   // The quick frames wait for a warm-up of the optimized kernels: wanted (to start when the

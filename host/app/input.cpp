@@ -22,9 +22,11 @@ void apply_input_event(const KeyBindings& bindings, const InputEvent& e, InputSt
     case InputEvent::Type::MouseMotion:
       s.look_dx += e.dx;
       s.look_dy += e.dy;
+      if (e.pointer) s.pointer = std::make_pair(e.x, e.y);
       return;
     case InputEvent::Type::MouseWheel:
       s.wheel += e.dy;
+      if (e.pointer) s.pointer = std::make_pair(e.x, e.y);
       return;
     case InputEvent::Type::MouseClick:
       s.clicked = std::make_pair(e.x, e.y);

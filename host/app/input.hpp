@@ -19,6 +19,7 @@ struct InputEvent {
   std::string key;            // SDL key name ("W", "Left Shift", "Escape") for key events
   double dx = 0, dy = 0;      // pixels (motion) or notches (wheel)
   int x = 0, y = 0;           // MouseClick: the image pixel under the pointer (0, 0: top left)
+  bool pointer = false;       // MouseWheel, MouseMotion: x and y are the pointer's pixel
   int width = 0, height = 0;  // for WindowResized
 };
 
@@ -31,6 +32,7 @@ struct InputState {
   bool quit = false;
   std::optional<std::pair<int, int>> resized;
   std::optional<std::pair<int, int>> clicked;  // the image pixel clicked since the last frame
+  std::optional<std::pair<int, int>> pointer;  // the image pixel under the pointer, when known
 
   bool is_held(Action a) const { return held.count(a) != 0; }
   bool was_triggered(Action a) const;

@@ -18,6 +18,8 @@ void add_keyframe(PathRecorder& recorder, const SceneInfo& scene, const SceneSta
       recorder.keyframes.empty() ? 0.0 : recorder.keyframes.back().time_s + recorder.spacing_s;
   k.eye = to_dvec3(state.camera.eye);
   k.target = to_dvec3(state.camera.target);
+  k.eye_lo = to_dvec3(state.camera_lo.eye);
+  k.target_lo = to_dvec3(state.camera_lo.target);
   k.up = to_dvec3(state.camera.up);
   k.fov_deg = state.camera.fov_deg;
   k.params = state.params;
@@ -94,6 +96,7 @@ void advance_playback(PathRecorder& recorder, const SceneInfo& scene, double dt_
   const PathSample sample =
       sample_camera_path(*path, scene, path->start_s() + std::min(recorder.play_s, duration_s));
   state.camera = sample.camera;
+  state.camera_lo = sample.camera_lo;
   state.params = sample.params;
   if (recorder.play_s >= duration_s) recorder.playing = false;  // the last keyframe was shown
   recorder.play_s += dt_s;

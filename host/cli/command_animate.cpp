@@ -149,6 +149,7 @@ void render_frame(AnimateJob& job, const ParsedOptions& options, RenderWorker& r
   const double t = job.plan->time_s(i);
   const PathSample sample = sample_camera_path(job.path, info, t);
   p.state.camera = sample.camera;
+  p.state.camera_lo = sample.camera_lo;
   p.state.params = sample.params;
   apply_scene_overrides(info, options, p.state, p.preset);  // they hold for every frame
   p.state.time_s = t;

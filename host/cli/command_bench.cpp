@@ -191,6 +191,7 @@ BenchReport run_bench(BenchJob& job, const ParsedOptions& options) {
       const PathSample sample =
           sample_camera_path(*job.path, p.scene->info, job.path->start_s() + time_s);
       p.state.camera = sample.camera;
+      p.state.camera_lo = sample.camera_lo;
       p.state.params = sample.params;
       apply_scene_overrides(p.scene->info, options, p.state, p.preset);
     }

@@ -12,6 +12,7 @@
 #include "mpi/shared_tasks.hpp"
 #include "platform/files.hpp"
 #include "render/camera.hpp"
+#include "render/kernel_assembly.hpp"
 #include "render/memory_budget.hpp"
 #include "render/precision.hpp"
 #include "render/renderer.hpp"
@@ -32,8 +33,8 @@ namespace {
 
 // How the primary rays ended, and the warnings a user must see: many rays out of steps, a camera
 // inside the solid, surface detail finer than float resolves.
-void report_rays(const FrameImage& image, const fr_camera& camera, const RenderSettings& settings,
-                 std::ostream& out) {
+void report_rays(const FrameImage& image, const SceneInfo& info, const SceneState& state,
+                 const RenderSettings& settings, std::ostream& out) {
   const RayCounts rays = count_rays(image);
   const size_t total = image.ray_status.size();
   auto percent = [&](size_t n) { return 100.0 * double(n) / double(std::max<size_t>(total, 1)); };
@@ -47,14 +48,26 @@ void report_rays(const FrameImage& image, const fr_camera& camera, const RenderS
   if (rays.inside > 0 && rays.inside == total)
     spdlog::warn(
         "the camera is inside the surface: every ray starts inside the solid and is black");
-  if (image.precision == Precision::Float) {
-    const CameraRays camera_rays = make_camera_rays(camera, image.width_px, image.height_px);
-    const size_t fine = pixels_below_float_resolution(image.depth, camera_rays);
-    if (fine > 0)
-      spdlog::warn(
-          "{:.2f}% of surface pixels are finer than float can resolve there; use --precision "
-          "double",
-          percent(fine));
+  const CameraRays camera_rays = view_camera_rays(state, image.width_px, image.height_px);
+  const size_t fine = pixels_below_resolution(image.depth, camera_rays, image.precision);
+  if (fine == 0) return;
+  const std::string share = fmt::format("{:.2f}% of surface pixels are finer than ", percent(fine));
+  switch (image.precision) {
+    case Precision::Float:
+      spdlog::warn("{}float can resolve there; use --precision double (or auto)", share);
+      break;
+    case Precision::Double:
+      if (has_pair_estimate(info))
+        spdlog::warn("{}double can resolve there; use --precision dd (or auto)", share);
+      else
+        spdlog::warn("{}double can resolve there, and scene '{}' has no pair estimate "
+                     "(scene_de_dd): the picture there is not right",
+                     share, info.id);
+      break;
+    default:
+      spdlog::warn("{}double-double resolves (16 of its ulps, 2^-100 of the position): past the "
+                   "deepest view Fractalis renders",
+                   share);
   }
 }
 
@@ -227,7 +240,7 @@ void render_whole(PreparedScene& p, const std::string& out_file, std::ostream& r
          << " on " << p.device.name << " (lanes " << image.lanes << ", "
          << precision_name(image.precision) << "): kernel build " << static_cast<int>(build_ms)
          << " ms, render " << static_cast<int>(render_ms) << " ms; wrote " << out_file << "\n";
-  report_rays(image, p.state.camera, p.render, report);
+  report_rays(image, p.scene->info, p.state, p.render, report);
   if (p.render.count_evaluations) report << format_eval_counts(renderer.eval_counts());
 }
 

@@ -26,6 +26,7 @@ void apply_camera_path(const SceneInfo& info, const std::string& file, const Par
   if (!options.has("time")) state.time_s = path.start_s();
   const PathSample sample = sample_camera_path(path, info, state.time_s);
   state.camera = sample.camera;
+  state.camera_lo = sample.camera_lo;
   state.params = sample.params;
 }
 

@@ -24,13 +24,32 @@ namespace {
 
 const char* const kKeyframeKeys[] = {"time_s", "eye", "target", "up", "fov_deg", "params"};
 
+// target - eye from the pairs (scene_data.hpp's view_vector).
+glm::dvec3 view_of(const Keyframe& k) {
+  fr_camera c{};
+  CameraLow low;
+  store_dvec3(c.eye, k.eye);
+  store_dvec3(c.target, k.target);
+  store_dvec3(low.eye, k.eye_lo);
+  store_dvec3(low.target, k.target_lo);
+  const std::array<double, 3> v = view_vector(c, low);
+  return {v[0], v[1], v[2]};
+}
+
+// a + b as a normalised pair (Knuth's TwoSum): hi the nearest double, lo the rest.
+void two_sum(double a, double b, double* hi, double* lo) {
+  const double s = a + b, bb = s - a;
+  *hi = s;
+  *lo = (a - (s - bb)) + (b - bb);
+}
+
 // The keyframe's orientation: right, up and back (-forward) as the rotation's columns.
 glm::dquat orientation(const Keyframe& k) {
   fr_camera c{};
   store_dvec3(c.eye, k.eye);
   store_dvec3(c.target, k.target);
   store_dvec3(c.up, k.up);
-  const glm::dvec3 forward = glm::normalize(k.target - k.eye);
+  const glm::dvec3 forward = glm::normalize(view_of(k));
   const glm::dvec3 right = glm::normalize(glm::cross(forward, effective_up(c)));
   const glm::dvec3 up = glm::cross(right, forward);
   return glm::quat_cast(glm::dmat3(right, up, -forward));
@@ -121,6 +140,24 @@ std::optional<CameraPath> parse_camera_path(const std::string& text, const std::
       else
         problem(toml_line(*n), where + "'" + name + "': expected [x, y, z] (three finite numbers)");
     };
+    // Positions keep every digit a pair holds (a deep zoom's keyframes).
+    auto need_position = [&](const char* name, glm::dvec3* hi, glm::dvec3* lo) {
+      const toml::node* n = t.get(name);
+      if (!n) {
+        problem(k.line, where + "'" + name + "' is missing");
+        return;
+      }
+      if (auto v = toml_vec3_pairs(*n)) {
+        for (int c = 0; c < 3; ++c) {
+          (*hi)[c] = (*v)[c].hi;
+          (*lo)[c] = (*v)[c].lo;
+        }
+      } else {
+        problem(toml_line(*n), where + "'" + name +
+                                   "': expected [x, y, z] (three finite numbers, or decimal "
+                                   "strings for more digits than a double holds)");
+      }
+    };
     int time_line = k.line;
     if (const toml::node* n = t.get("time_s")) {
       time_line = toml_line(*n);
@@ -131,8 +168,8 @@ std::optional<CameraPath> parse_camera_path(const std::string& text, const std::
     } else {
       problem(k.line, where + "'time_s' is missing");
     }
-    need_vec3("eye", &k.eye, true);
-    need_vec3("target", &k.target, true);
+    need_position("eye", &k.eye, &k.eye_lo);
+    need_position("target", &k.target, &k.target_lo);
     need_vec3("up", &k.up, false);
     if (glm::length(k.up) == 0) problem(k.line, where + "'up' is [0, 0, 0]: it has no direction");
     if (const toml::node* n = t.get("fov_deg")) {
@@ -142,7 +179,8 @@ std::optional<CameraPath> parse_camera_path(const std::string& text, const std::
       else
         k.fov_deg = *v;
     }
-    if (k.eye == k.target) problem(k.line, where + "'target' equals 'eye'");
+    if (k.eye == k.target && k.eye_lo == k.target_lo)
+      problem(k.line, where + "'target' equals 'eye'");
     if (const toml::node* n = t.get("params")) {
       if (const toml::table* params = n->as_table()) {
         for (const auto& [key, value] : *params) {
@@ -201,11 +239,17 @@ std::string format_camera_path(const CameraPath& path, const SceneInfo& scene) {
       fmt::format("# Camera path for scene '{}' (fractalis animate --scene {} --path FILE).\n",
                   scene.id, scene.id);
   auto vec = [](const glm::dvec3& v) { return fmt::format("[{}, {}, {}]", v.x, v.y, v.z); };
+  auto position = [&](const glm::dvec3& hi, const glm::dvec3& lo) {
+    if (lo == glm::dvec3(0.0)) return vec(hi);
+    const double h[3] = {hi.x, hi.y, hi.z}, l[3] = {lo.x, lo.y, lo.z};
+    return toml_vec3_text(h, l);
+  };
   for (size_t k = 0; k < path.keyframes.size(); ++k) {
     const Keyframe& key = path.keyframes[k];
     out +=
         fmt::format("\n[[keyframe]]\ntime_s = {}\neye = {}\ntarget = {}\nup = {}\nfov_deg = {}\n",
-                    key.time_s, vec(key.eye), vec(key.target), vec(key.up), key.fov_deg);
+                    key.time_s, position(key.eye, key.eye_lo),
+                    position(key.target, key.target_lo), vec(key.up), key.fov_deg);
     std::string params;
     for (size_t i = 0; i < scene.params.size() && i < key.params.size(); ++i) {
       const fr_value& v = key.params[i];
@@ -256,7 +300,7 @@ PathSample sample_camera_path(const CameraPath& path, const SceneInfo& scene, do
   if (glm::dot(q1, q2) < 0) q2 = -q2;  // the shorter way round
   const glm::dmat3 r = glm::mat3_cast(glm::normalize(glm::slerp(q1, q2, u)));
   const glm::dvec3 forward = -r[2], up = r[1];
-  const double d1 = glm::length(k1.target - k1.eye), d2 = glm::length(k2.target - k2.eye);
+  const double d1 = glm::length(view_of(k1)), d2 = glm::length(view_of(k2));
   const glm::dvec3 target = u == 0   ? k1.target
                             : u == 1 ? k2.target
                                      : eye + forward * ((1 - u) * d1 + u * d2);
@@ -265,6 +309,23 @@ PathSample sample_camera_path(const CameraPath& path, const SceneInfo& scene, do
   s.camera.struct_size = sizeof(fr_camera);
   store_dvec3(s.camera.eye, eye);
   store_dvec3(s.camera.target, target);
+  if (u == 0 || u == 1) {
+    const Keyframe& k = u == 0 ? k1 : k2;
+    store_dvec3(s.camera_lo.eye, k.eye_lo);
+    store_dvec3(s.camera_lo.target, k.target_lo);
+  } else if (k1.target == k2.target && k1.target_lo == k2.target_lo &&
+             std::max(d1, d2) > 2 * std::min(d1, d2)) {
+    // A zoom: towards the common target along the view, the distance in log, the eye in pairs.
+    const double d = std::exp((1 - u) * std::log(d1) + u * std::log(d2));
+    for (int c = 0; c < 3; ++c) {
+      double hi = 0, lo = 0;
+      two_sum(k1.target[c], -forward[c] * d, &hi, &lo);
+      s.camera.eye[c] = hi;
+      s.camera_lo.eye[c] = lo + k1.target_lo[c];
+      s.camera.target[c] = k1.target[c];
+      s.camera_lo.target[c] = k1.target_lo[c];
+    }
+  }
   // At the keyframes themselves, their own up (the quaternion's is the orthogonalised one).
   store_dvec3(s.camera.up, u == 0 ? k1.up : u == 1 ? k2.up : up);
   s.camera.fov_deg = (1 - u) * k1.fov_deg + u * k2.fov_deg;

@@ -20,6 +20,12 @@
 // the seam), the orientation by spherical interpolation of the keyframes'
 // orientation quaternions, the distance to the target, the field of view and the parameters
 // linearly (integer parameters rounded, booleans switching at the next keyframe).
+//
+// A zoom: where two neighbouring keyframes look at the same point (their targets equal, as pairs)
+// from distances that differ by more than a factor of two, the eye between them moves along the
+// interpolated view direction towards that point, the distance interpolated in log (a constant
+// rate of zoom: a path from 1 to 1e-20 spends as long on each factor of ten), and in pairs, so a
+// zoom goes past what double holds (docs/deep_zoom.md).
 #pragma once
 
 #include "scene/scene_data.hpp"
@@ -36,6 +42,9 @@ namespace fr {
 struct Keyframe {
   double time_s = 0;
   glm::dvec3 eye{0.0}, target{0.0}, up{0.0, 1.0, 0.0};
+  // The eye's and target's digits past double (as SceneState::camera_lo): a deep view's keyframe
+  // gives them as decimal strings (toml_values.hpp, toml_vec3_pairs).
+  glm::dvec3 eye_lo{0.0}, target_lo{0.0};
   double fov_deg = 45;
   std::vector<fr_value> params;  // one per SceneInfo::params, resolved as described above
   int line = 0;                  // of its [[keyframe]] header
@@ -72,6 +81,7 @@ std::string format_camera_path(const CameraPath& path, const SceneInfo& scene);
 
 struct PathSample {
   fr_camera camera{};
+  CameraLow camera_lo;  // the digits past double of the eye and target
   std::vector<fr_value> params;
 };
 

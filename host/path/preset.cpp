@@ -252,16 +252,30 @@ std::vector<std::string> apply_preset(const Preset& preset, const SceneInfo& sce
             problem(toml_line(value), "fov_deg: expected a finite number");
           continue;
         }
-        auto v = toml_vec3(value);
-        if (!v) {
-          problem(toml_line(value), k + ": expected [x, y, z] (three finite numbers)");
+        if (k == "up") {
+          if (auto v = toml_vec3(value))
+            store_dvec3(next.camera.up, *v);
+          else
+            problem(toml_line(value), "up: expected [x, y, z] (three finite numbers)");
           continue;
         }
-        store_dvec3(k == "eye" ? next.camera.eye : k == "target" ? next.camera.target
-                                                                  : next.camera.up,
-                    *v);
+        // Positions keep every digit a pair holds (a deep view's, docs/deep_zoom.md).
+        const auto v = toml_vec3_pairs(value);
+        if (!v) {
+          problem(toml_line(value), k +
+                                        ": expected [x, y, z] (three finite numbers, or decimal "
+                                        "strings for more digits than a double holds)");
+          continue;
+        }
+        double* hi = k == "eye" ? next.camera.eye : next.camera.target;
+        double* lo = k == "eye" ? next.camera_lo.eye : next.camera_lo.target;
+        for (int i = 0; i < 3; ++i) {
+          hi[i] = (*v)[i].hi;
+          lo[i] = (*v)[i].lo;
+        }
       }
-      if (auto why = check_camera(next.camera)) problem(toml_line(*n), "camera: " + *why);
+      if (auto why = check_camera(next.camera, next.camera_lo))
+        problem(toml_line(*n), "camera: " + *why);
     }
   }
   if (const toml::node* n = root->get("lights")) {

@@ -7,8 +7,8 @@
 //   [params]                            # values by key, as in a camera path (choices by name)
 //   scale = -1.5
 //   [camera]                            # optional; any of eye, target, up, fov_deg
-//   eye = [9.0, 6.0, 10.0]
-//   target = [0.0, 0.0, 0.0]
+//   eye = [9.0, 6.0, 10.0]              # (or decimal strings, for a deep view's 34 digits:
+//   target = [0.0, 0.0, 0.0]            # ["5.908838584519028311238859964040553", ...])
 //   [[lights]]                          # optional; lights in place of the scene's first ones,
 //   direction = [0.3, -0.8, -0.5]       # in order: a directional light (the way it travels), or
 //   color = [1.0, 0.9, 0.8]             # with `position` a point light (and its attenuation a

@@ -1,6 +1,8 @@
 #include "path/toml_values.hpp"
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <sstream>
 
 namespace fr {
@@ -35,6 +37,50 @@ std::optional<glm::dvec3> toml_vec3(const toml::node& n) {
     v[i] = *c;
   }
   return v;
+}
+
+std::optional<std::array<DoubleDouble, 3>> toml_vec3_pairs(const toml::node& n) {
+  const auto* a = n.as_array();
+  if (!a || a->size() != 3) return std::nullopt;
+  std::array<DoubleDouble, 3> v;
+  for (int i = 0; i < 3; ++i) {
+    const toml::node& c = *a->get(static_cast<size_t>(i));
+    if (const auto text = c.value<std::string>()) {
+      const auto pair = parse_double_double(*text);
+      if (!pair) return std::nullopt;
+      v[i] = *pair;
+    } else if (const auto number = toml_number(c)) {
+      v[i] = DoubleDouble{*number, 0};
+    } else {
+      return std::nullopt;
+    }
+  }
+  return v;
+}
+
+std::string toml_vec3_text(const double hi[3], const double lo[3]) {
+  const bool pairs = lo[0] != 0 || lo[1] != 0 || lo[2] != 0;
+  std::string out = "[";
+  for (int i = 0; i < 3; ++i) {
+    if (i > 0) out += ", ";
+    if (pairs) {
+      out += '"' + format_double_double(DoubleDouble{hi[i], lo[i]}) + '"';
+    } else {
+      // The shortest text that reads back as the same double.
+      char buffer[40];
+      std::snprintf(buffer, sizeof buffer, "%.17g", hi[i]);
+      double back = std::strtod(buffer, nullptr);
+      for (int digits = 1; digits <= 17; ++digits) {
+        std::snprintf(buffer, sizeof buffer, "%.*g", digits, hi[i]);
+        back = std::strtod(buffer, nullptr);
+        if (back == hi[i]) break;
+      }
+      std::string text = buffer;
+      if (text.find_first_of(".en") == std::string::npos) text += ".0";
+      out += text;
+    }
+  }
+  return out + "]";
 }
 
 // The value of parameter `p` in `n`, or why not.

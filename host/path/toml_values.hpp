@@ -3,11 +3,13 @@
 // both). Only path/'s own sources include it: it brings toml++ with it.
 #pragma once
 
+#include "io/dd_text.hpp"
 #include "scene/scene_data.hpp"
 
 #include <toml++/toml.h>
 #include <glm/vec3.hpp>
 
+#include <array>
 #include <optional>
 #include <string>
 
@@ -19,6 +21,13 @@ int toml_line(const toml::node& n);
 std::optional<double> toml_number(const toml::node& n);
 // [x, y, z] of finite numbers, or nullopt.
 std::optional<glm::dvec3> toml_vec3(const toml::node& n);
+// A position with every digit a double-double holds (deep views, docs/deep_zoom.md): [x, y, z]
+// of finite numbers, or of decimal strings ("5.908838584519028311238859964040553") where a
+// number needs more digits than a TOML float (a double) keeps; or nullopt.
+std::optional<std::array<DoubleDouble, 3>> toml_vec3_pairs(const toml::node& n);
+// How a position is written back: plain numbers when the pairs' low parts are zero, else strings
+// of 34 digits.
+std::string toml_vec3_text(const double hi[3], const double lo[3]);
 // The value of parameter `p` in `n` (a bool, a number, [x, y, z], a choice's name), within its
 // range; or nullopt with *why set ("expected a whole number", "outside the range of ...").
 std::optional<fr_value> toml_param_value(const toml::node& n, const ParamInfo& p, std::string* why);

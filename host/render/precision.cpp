@@ -21,11 +21,7 @@ Precision resolve_precision(ClRuntime& runtime, const SceneInfo& info, const Sce
                             const RenderSettings& settings) {
   if (settings.precision != Precision::Auto) return settings.precision;
   if (!runtime.device().has_fp64) return Precision::Float;
-  const std::array<double, 3> view = view_vector(state.camera, state.camera_lo);
-  fr_camera relative = state.camera;
-  for (int i = 0; i < 3; ++i) relative.target[i] = relative.eye[i] + view[i];
-  if (check_camera(relative)) relative = state.camera;  // (eye and target one double apart)
-  const CameraRays rays = make_camera_rays(relative, settings.width_px, settings.height_px);
+  const CameraRays rays = view_camera_rays(state, settings.width_px, settings.height_px);
   const std::array<float, 3> eye{static_cast<float>(rays.eye.x), static_cast<float>(rays.eye.y),
                                  static_cast<float>(rays.eye.z)};
   const float de = probe_de(runtime, info, state.params, {eye}, 1, Precision::Double)[0];
@@ -71,15 +67,40 @@ void check_pair_frame(const SceneInfo& info, const RenderSettings& settings) {
         "render.precision dd: render.fast_math would drop the pairs' error terms; turn it off");
 }
 
-size_t pixels_below_float_resolution(const std::vector<float>& depth, const CameraRays& rays) {
+double position_epsilon(Precision precision) {
+  switch (precision) {
+    case Precision::Float:
+      return FLT_EPSILON;
+    case Precision::DoubleDouble:
+      return 0x1p-104;
+    default:
+      return DBL_EPSILON;
+  }
+}
+
+CameraRays view_camera_rays(const SceneState& state, int width_px, int height_px) {
+  const std::array<double, 3> view = view_vector(state.camera, state.camera_lo);
+  fr_camera relative = state.camera;
+  for (int i = 0; i < 3; ++i) {
+    relative.eye[i] = 0;
+    relative.target[i] = view[i];
+  }
+  CameraRays rays = make_camera_rays(relative, width_px, height_px);
+  const std::array<DoubleDouble, 3> eye = eye_pairs(state.camera, state.camera_lo);
+  rays.eye = glm::dvec3(eye[0].hi, eye[1].hi, eye[2].hi);
+  return rays;
+}
+
+size_t pixels_below_resolution(const std::vector<float>& depth, const CameraRays& rays,
+                               Precision precision) {
   size_t n = 0;
+  const double epsilon = position_epsilon(precision);
   for (int y = 0; y < rays.height_px; ++y)
     for (int x = 0; x < rays.width_px; ++x) {
       const float t = depth[static_cast<size_t>(y) * rays.width_px + x];
       if (!std::isfinite(t)) continue;
       const glm::dvec3 p = rays.eye + camera_ray_dir(rays, x, y) * double(t);
-      n +=
-          double(t) * rays.pixel_angle_rad < kFloatFootprintUlps * float_resolution(glm::length(p));
+      n += double(t) * rays.pixel_angle_rad < kFloatFootprintUlps * epsilon * glm::length(p);
     }
   return n;
 }

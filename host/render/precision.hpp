@@ -17,9 +17,9 @@
 
 namespace fr {
 
-// Footprints smaller than this many float ulps of the surface position need double.
+// Footprints smaller than this many float ulps of the surface position need double (and as many
+// double ulps, double-double).
 constexpr double kFloatFootprintUlps = 16;
-// And smaller than this many double ulps, double-double.
 constexpr double kDoubleFootprintUlps = 16;
 
 // Float's resolution at world position scale |p|: one ulp, 2^-23 |p|.
@@ -39,8 +39,18 @@ Precision resolve_precision(ClRuntime& runtime, const SceneInfo& info, const Sce
 // with these settings: it has no pair estimate, or the path tracer or fast math is asked for.
 void check_pair_frame(const SceneInfo& info, const RenderSettings& settings);
 
+// How finely a precision tells positions apart, relative to |p|: 2^-23, 2^-52, 2^-104 (a pair's;
+// Auto counts as double).
+double position_epsilon(Precision precision);
+
+// The view's rays for a width_px x height_px image: the direction from the camera's pairs (so a
+// view whose eye and target double cannot tell apart still has one), the eye its nearest double.
+CameraRays view_camera_rays(const SceneState& state, int width_px, int height_px);
+
 // After a render: how many hit pixels (depth finite) have a footprint under
-// kFloatFootprintUlps ulps of their hit position, i.e. were below float's resolution.
-size_t pixels_below_float_resolution(const std::vector<float>& depth, const CameraRays& rays);
+// kFloatFootprintUlps ulps (position_epsilon) of their hit position in the precision they were
+// rendered in, i.e. were below what it resolves.
+size_t pixels_below_resolution(const std::vector<float>& depth, const CameraRays& rays,
+                               Precision precision);
 
 }  // namespace fr

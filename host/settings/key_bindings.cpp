@@ -13,6 +13,8 @@ KeyBindings KeyBindings::defaults() {
       {"Space", Action::MoveUp},
       {"Q", Action::MoveDown},
       {"Left Ctrl", Action::MoveDown},
+      {"Z", Action::ZoomIn},
+      {"X", Action::ZoomOut},
       {"Left Shift", Action::SpeedUp},
       {"M", Action::ToggleMouseLook},
       {"O", Action::ToggleCameraMode},

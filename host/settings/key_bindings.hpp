@@ -18,6 +18,8 @@ enum class Action {
   MoveRight,
   MoveUp,
   MoveDown,
+  ZoomIn,            // held: towards the surface under the pointer (deep zoom)
+  ZoomOut,           // held: away from it
   SpeedUp,           // held: faster
   ToggleMouseLook,   // capture or release the pointer
   ToggleCameraMode,  // fly <-> orbit
@@ -40,6 +42,8 @@ inline constexpr EnumName<Action> kActionNames[] = {
     {Action::MoveRight, "move_right", "move right", nullptr},
     {Action::MoveUp, "move_up", "move up", nullptr},
     {Action::MoveDown, "move_down", "move down", nullptr},
+    {Action::ZoomIn, "zoom_in", "zoom in (held)", nullptr},
+    {Action::ZoomOut, "zoom_out", "zoom out (held)", nullptr},
     {Action::SpeedUp, "speed_up", "faster (held)", nullptr},
     {Action::ToggleMouseLook, "mouse_look", "mouse look", nullptr},
     {Action::ToggleCameraMode, "camera_mode", "fly / orbit", nullptr},

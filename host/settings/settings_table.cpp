@@ -227,8 +227,9 @@ std::vector<SettingSpec> make_table() {
       choice_setting<&S::render, &R::precision>(
           "render.precision",
           "Arithmetic precision of the render kernel: \"auto\" (float, or double where the pixel "
-          "footprint at\nthe surface comes near float's resolution), \"float\", or \"double\" (the "
-          "accuracy reference)."),
+          "footprint at\nthe surface comes near float's resolution, or pairs of doubles past "
+          "double's where the scene has\na pair estimate), \"float\", \"double\" (the accuracy "
+          "reference), or \"dd\" (double-double: a deep\nzoom's, docs/deep_zoom.md)."),
       "Precision"));
   t.push_back(choice_setting<&S::render, &R::integrator>(
       "render.integrator",

@@ -175,7 +175,15 @@ void draw_statistics(Explorer& explorer, const OverlayState& overlay) {
       ImGui::Text("path tracing: %d sample%s per pixel%s", st.path_samples,
                   st.path_samples == 1 ? "" : "s", st.path_denoised ? ", denoised" : "");
   }
-  ImGui::Text("%.1f DE steps/pixel, surface %.4g away", st.de_steps_per_pixel, st.surface_distance);
+  // The depth: a pixel's footprint at the nearest surface, and the number type that renders it.
+  ImGui::Text("%.1f DE steps/pixel, surface %.4g away, pixel %.2g", st.de_steps_per_pixel,
+              st.surface_distance, st.pixel_footprint);
+  if (st.past_resolution) {
+    const ImVec4 orange(1, 0.6f, 0.2f, 1);
+    wrapped_text(&orange,
+                 "Past what double resolves here, and this scene has no pair estimate "
+                 "(scene_de_dd): the picture is not right this deep.");
+  }
   // Never silent: rays out of steps and the precision in use, in warning colour when it matters.
   const bool many = 100 * st.out_of_steps_fraction > kOutOfStepsWarnPercent;
   ImGui::TextColored(many ? ImVec4(1, 0.6f, 0.2f, 1) : ImVec4(0.7f, 0.7f, 0.7f, 1),

@@ -79,6 +79,15 @@ void* Window::picture_texture(const std::string& key, int width_px, int height_p
   return picture;
 }
 
+bool Window::image_pixel(int x, int y, int* px, int* py) const {
+  int points_w = 0, points_h = 0;
+  SDL_GetWindowSize(window_, &points_w, &points_h);
+  if (points_w <= 0 || points_h <= 0) return false;
+  *px = static_cast<int>(static_cast<long long>(x) * width_px() / points_w);
+  *py = static_cast<int>(static_cast<long long>(y) * height_px() / points_h);
+  return true;
+}
+
 void Window::set_fullscreen(bool on) {
   SDL_SetWindowFullscreen(window_, on ? SDL_WINDOW_FULLSCREEN_DESKTOP : 0);
   fullscreen_ = on;
@@ -120,24 +129,25 @@ void Window::poll(const KeyBindings& bindings, InputState& input, bool keys_to_o
         ev.type = InputEvent::Type::MouseMotion;
         ev.dx = e.motion.xrel;
         ev.dy = e.motion.yrel;
+        ev.pointer = image_pixel(e.motion.x, e.motion.y, &ev.x, &ev.y);
         break;
-      case SDL_MOUSEWHEEL:
+      case SDL_MOUSEWHEEL: {
         if (overlay_mouse) continue;
         ev.type = InputEvent::Type::MouseWheel;
         ev.dy = e.wheel.y;
+        int x = 0, y = 0;
+        SDL_GetMouseState(&x, &y);
+        ev.pointer = image_pixel(x, y, &ev.x, &ev.y);
         break;
+      }
       case SDL_MOUSEBUTTONDOWN: {
         // A left click on the picture (not the overlay's, not while the mouse looks around):
         // the pixel under it, in the image's pixels (the window's points may differ on a
         // high-density display).
         if (overlay_mouse || SDL_GetRelativeMouseMode() || e.button.button != SDL_BUTTON_LEFT)
           continue;
-        int points_w = 0, points_h = 0;
-        SDL_GetWindowSize(window_, &points_w, &points_h);
-        if (points_w <= 0 || points_h <= 0) continue;
         ev.type = InputEvent::Type::MouseClick;
-        ev.x = static_cast<int>(static_cast<long long>(e.button.x) * width_px() / points_w);
-        ev.y = static_cast<int>(static_cast<long long>(e.button.y) * height_px() / points_h);
+        if (!image_pixel(e.button.x, e.button.y, &ev.x, &ev.y)) continue;
         break;
       }
       default:

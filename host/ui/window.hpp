@@ -65,6 +65,10 @@ class Window {
   }
 
  private:
+  // The image pixel under window point (x, y) (the window's points may differ from its pixels on
+  // a high-density display); false when the window has no size.
+  bool image_pixel(int x, int y, int* px, int* py) const;
+
   SDL_Window* window_ = nullptr;
   SDL_Renderer* renderer_ = nullptr;
   SDL_Texture* texture_ = nullptr;

@@ -41,7 +41,8 @@ enum class RenderWireKind : uint32_t {
                         // reply: i32 lanes, u32 Precision (the pixels are in the shared frame)
   EvalCounts = 106,     // reply: EvalCounts
   Probe = 107,          // u64 key, u32 count, count fr_value, u32 count, count x 3 floats,
-                        // i32 lanes, u32 Precision; reply: u32 count, count floats
+                        // i32 lanes, u32 Precision, 7 f64 (PairOrigin: the eye's pairs,
+                        // the resolution); reply: u32 count, count floats
   Build = 108,          // str source, str options, str description
   Quit = 109,           // exit now
   Reply = 110,          // worker -> fractalis: u32 ReplyStatus, str error, then the call's result

@@ -534,13 +534,22 @@ EvalCounts RenderWorker::eval_counts() {
 std::vector<float> RenderWorker::probe_de(const SceneInfo& info,
                                           const std::vector<fr_value>& params,
                                           const std::vector<std::array<float, 3>>& points,
-                                          int lanes, Precision precision) {
+                                          int lanes, Precision precision,
+                                          const PairOrigin* origin) {
   ensure_started();
-  if (local_) return fr::probe_de(local_->runtime, info, params, points, lanes, precision);
+  if (local_)
+    return fr::probe_de(local_->runtime, info, params, points, lanes, precision, origin);
   const uint64_t key = send_scene(info);
   WireWriter w = probe_request(key, params, points);
   w.i32(lanes);
   w.u32(static_cast<uint32_t>(precision));
+  const PairOrigin none{};
+  const PairOrigin& o = origin ? *origin : none;
+  for (const DoubleDouble& c : o.eye) {
+    w.f64(c.hi);
+    w.f64(c.lo);
+  }
+  w.f64(o.resolution_rad);
   // A changed DE's probe gets 10 s, not a new scene's first-sample limit: a probe is a few
   // points, so an edit that never returns is said within seconds.
   double limit_s = frame_limit_.limit_s(key, static_cast<double>(points.size()));

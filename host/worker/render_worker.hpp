@@ -23,6 +23,7 @@
 #include "plugin/plugin_policy.hpp"
 #include "render/cl_runtime.hpp"
 #include "render/eval_counts.hpp"
+#include "render/kernel_assembly.hpp"
 #include "render/renderer.hpp"
 #include "worker/frame_limit.hpp"
 #include "worker/render_wire.hpp"
@@ -109,7 +110,8 @@ class RenderWorker {
   // As render/de_probe.hpp's probe_de.
   std::vector<float> probe_de(const SceneInfo& info, const std::vector<fr_value>& params,
                               const std::vector<std::array<float, 3>>& points, int lanes = 0,
-                              Precision precision = Precision::Float);
+                              Precision precision = Precision::Float,
+                              const PairOrigin* origin = nullptr);
   // As render/de_probe.hpp's probe_material.
   std::vector<float> probe_material(const SceneInfo& info, const std::vector<fr_value>& params,
                                     const fr_frame_constants& fc,

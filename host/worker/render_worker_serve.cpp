@@ -124,11 +124,17 @@ class Worker {
         const auto& points = q.points;
         const int lanes = r.i32();
         const uint32_t precision = r.u32();
+        PairOrigin origin;
+        for (DoubleDouble& c : origin.eye) {
+          c.hi = r.f64();
+          c.lo = r.f64();
+        }
+        origin.resolution_rad = static_cast<float>(r.f64());
         check(r);
         if (precision > static_cast<uint32_t>(Precision::DoubleDouble))
           throw BadRequest("bad precision");
-        const std::vector<float> values =
-            probe_de(runtime_, info, params, points, lanes, static_cast<Precision>(precision));
+        const std::vector<float> values = probe_de(runtime_, info, params, points, lanes,
+                                                   static_cast<Precision>(precision), &origin);
         result.u32(static_cast<uint32_t>(values.size()));
         result.raw(values.data(), values.size() * sizeof(float));
         return;
