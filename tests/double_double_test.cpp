@@ -99,6 +99,7 @@ TEST(DoubleDouble, SelfTestPassesHereAndFailsForAFastMathBuild) {
 
 // Each operation on pairs against __float128, over values of many magnitudes and both signs: the
 // relative error within 8 x 2^-106 (QD's bounds are 2 to 4 ulps of the pair), at 1 and 16 lanes.
+// (Op 4: a double over a pair, dd_div_d_by, the Mandelbox's sphere fold.)
 TEST(DoubleDouble, OperationsAgreeWithFloat128) {
   if (!has_fp64()) GTEST_SKIP() << "the device has no double precision";
   const std::string kernel = R"(
@@ -111,7 +112,8 @@ __kernel void ops(__global const double* ahi, __global const double* alo,
   if (op == 0) r = dd_add(a, b);
   else if (op == 1) r = dd_mul(a, b);
   else if (op == 2) r = dd_div(a, b);
-  else r = dd_sqrt(dd_abs(a));
+  else if (op == 3) r = dd_sqrt(dd_abs(a));
+  else r = dd_div_d_by(a.hi, b);
   /* hi in the first half of out, lo in the second */
   STORE(r.hi, i, out);
   STORE(r.lo, i, out + get_global_size(0) * FR_LANES);
@@ -136,7 +138,7 @@ __kernel void ops(__global const double* ahi, __global const double* alo,
   }
   for (int lanes : {1, 16}) {
     const std::string source = program(lanes, {"de/dd.cl"}, kernel);
-    for (int op = 0; op < 4; ++op) {
+    for (int op = 0; op < 5; ++op) {
       SCOPED_TRACE("lanes " + std::to_string(lanes) + ", op " + std::to_string(op));
       const auto out =
           run(test::runtime(), source, "ops", lanes, {ahi, alo, bhi, blo}, {double(op)}, 2);
@@ -145,7 +147,8 @@ __kernel void ops(__global const double* ahi, __global const double* alo,
         const quad expected = op == 0   ? a[i] + b[i]
                               : op == 1 ? a[i] * b[i]
                               : op == 2 ? a[i] / b[i]
-                                        : quad_sqrt(quad_abs(a[i]));
+                              : op == 3 ? quad_sqrt(quad_abs(a[i]))
+                                        : static_cast<quad>(ahi[i]) / b[i];
         const quad got = static_cast<quad>(out[i]) + out[n + i];
         // (A sum that cancels is exact to the pair's absolute precision, not its relative one.)
         const quad scale = op == 0 ? quad_abs(a[i]) + quad_abs(b[i]) : quad_abs(expected);

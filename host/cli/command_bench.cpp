@@ -186,6 +186,7 @@ BenchReport run_bench(BenchJob& job, const ParsedOptions& options) {
   PreparedScene& p = job.p;
   RenderWorker& renderer = *p.worker;
   Watchdog watchdog(p.render.watchdog_s, "a frame of scene '" + p.scene->info.id + "'");
+  Precision ran_in = p.render.precision;  // what the last frame ran in (auto resolved)
   auto frame = [&](double time_s) {
     if (job.path) {  // run time t is the path's start + t (clamped to its end)
       const PathSample sample =
@@ -196,7 +197,7 @@ BenchReport run_bench(BenchJob& job, const ParsedOptions& options) {
       apply_scene_overrides(p.scene->info, options, p.state, p.preset);
     }
     update_scene(p, time_s);
-    renderer.render(p.scene->info, p.state, p.render);
+    ran_in = renderer.render(p.scene->info, p.state, p.render).precision;
     watchdog.kick();
   };
   using clock = std::chrono::steady_clock;
@@ -225,6 +226,10 @@ BenchReport run_bench(BenchJob& job, const ParsedOptions& options) {
   }
   p.render.count_evaluations = false;
   report.stats = summarize_frames(all);
+  // Auto says what it chose (for the last frame: a path may change it on the way).
+  report.precision = p.render.precision == Precision::Auto
+                         ? std::string("auto: ") + precision_name(ran_in)
+                         : precision_name(p.render.precision);
   report.lanes = renderer.lanes_for(p.render);
   return report;
 }
@@ -236,7 +241,6 @@ void report_bench(const BenchJob& job, BenchReport& report, std::ostream& out, s
   report.scene_version = p.scene->info.version;
   report.width_px = p.render.width_px;
   report.height_px = p.render.height_px;
-  report.precision = precision_name(p.render.precision);
   report.stages = stage_names(make_kernel_config(p.scene->info, p.render, report.lanes).stages);
   report.integrator = enum_name(p.render.integrator);
   report.samples_per_frame = std::max(1, p.render.samples);

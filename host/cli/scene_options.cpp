@@ -47,9 +47,9 @@ std::vector<OptionSpec> scene_option_specs() {
       {"param", "KEY=VALUE", true, "set a scene parameter (repeatable); vec3 as x,y,z"},
       {"time", "SECONDS", false, "scene time for the update callback (default 0)"},
       {"lanes", "1|4|8|16", false, "rays per work-item (default: 16 on CPUs, 1 on GPUs)"},
-      {"precision", "auto|float|double", false,
+      {"precision", "auto|float|double|dd", false,
        "arithmetic precision of the kernel (default auto: double where float cannot resolve the "
-       "view)"},
+       "view, dd (double-double) where double cannot and the scene has a pair estimate)"},
       {"samples", "N", false, "jittered samples per pixel, accumulated (anti-aliasing; default 1)"},
       {"integrator", "fast|path", false,
        "how light is computed: fast (direct light; default) or path (path tracing, with "

@@ -105,6 +105,15 @@ inline dd_t dd_div(dd_t a, dd_t b) {
   return dd_add_d(dd_quick_two_sum(q1, q2), q3);
 }
 
+/* a / b for a double a: two quotient digits (the second from the remainder a - q1 b, exact to
+ * the pair's precision), which is as accurate as the pair: the first digit is within an ulp, so
+ * the rest is a double's worth below it. b.hi must not be 0. */
+inline dd_t dd_div_d_by(real_t a, dd_t b) {
+  const real_t q1 = a / b.hi;
+  const dd_t r = dd_sub(dd_from(a), dd_mul_d(b, q1));
+  return dd_quick_two_sum(q1, r.hi / b.hi);
+}
+
 /* sqrt(a) for a >= 0 (0 for a <= 0): one Newton step from the double root (Karp and Markstein). */
 inline dd_t dd_sqrt(dd_t a) {
   const mask_t positive = a.hi > (real_t)0;

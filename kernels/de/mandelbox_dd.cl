@@ -31,12 +31,13 @@ real_t de_mandelbox_dd(dd3_t p, int iterations, scalar_t scale, scalar_t min_rad
   const real_t switch_ulps = to_real(1000 * DBL_EPSILON);
   dd3_t z = p;
   real_t dr = to_real(1);
-  dd_t r2 = dd3_length2(z);
+  /* |z|^2 only decides the bailout and the switch: double serves. */
+  real_t r2 = p_size * p_size;
   int i = 0;
   for (; i < iterations; ++i) {
-    const real_t size = fmax(sqrt(fmax(r2.hi, (real_t)0)), p_size);
+    const real_t size = fmax(sqrt(fmax(r2, (real_t)0)), p_size);
     const mask_t needs_pairs = dr * pixel <= switch_ulps * size;
-    const mask_t live = r2.hi < bailout2;
+    const mask_t live = r2 < bailout2;
     if (!any_lane(live)) break;
     if (!any_lane(live & needs_pairs)) break; /* the rest in double, below */
     dd3_t folded = dd3_make(dd_fold_box1(z.x, limit), dd_fold_box1(z.y, limit),
@@ -48,13 +49,13 @@ real_t de_mandelbox_dd(dd3_t p, int iterations, scalar_t scale, scalar_t min_rad
     const dd_t safe_r2 = dd_select(shell, f2, dd_from(to_real(1)));
     const dd_t factor = dd_select(
         inner, dd_from(fixed2 / min2),
-        dd_select(shell, dd_div(dd_from(fixed2), safe_r2), dd_from(to_real(1))));
-    folded = dd3_scale(folded, factor);
-    const dd3_t next = dd3_add(dd3_scale_d(folded, to_real(scale)), p);
+        dd_select(shell, dd_div_d_by(fixed2, safe_r2), dd_from(to_real(1))));
+    /* scale x factor first: one product of pairs a coordinate, not two. */
+    const dd3_t next = dd3_add(dd3_scale(folded, dd_mul_d(factor, to_real(scale))), p);
     const real_t next_dr = dr * factor.hi * to_real(fabs(scale)) + to_real(1);
     z = dd3_select(live, next, z);
     dr = lane_select(live, next_dr, dr);
-    r2 = dd_select(live, dd3_length2(z), r2);
+    r2 = lane_select(live, v3_length2(dd3_to_v3(z)), r2);
   }
   /* The rest in double: p rounded to double costs at most an ulp of |p| over dr (as above). */
   vec3_t zd = dd3_to_v3(z);
