@@ -292,3 +292,52 @@ TEST(CameraPath, ClosedLoopIsSmoothAcrossTheSeam) {
 
 }  // namespace
 }  // namespace fr
+
+namespace fr {
+namespace {
+
+// A deep zoom (docs/deep_zoom.md): two keyframes with one target, 1 and 1e-20 away, written as
+// 34-digit strings. Between them the distance goes in log (1e-10 half-way, 1e-19 at 19 of 20 s),
+// along the view, with the eye in pairs: past double, which could not tell the eye at 1e-19 from
+// the target. The saved path reads back to the same pairs.
+TEST(CameraPath, ADeepZoomIsInLogDistanceAndInPairs) {
+  const SceneInfo info = scene();
+  const std::string text =
+      "[[keyframe]]\ntime_s = 0\neye = [\"1.3\", \"0.2\", 0]\ntarget = [\"0.3\", \"0.2\", 0]\n"
+      "[[keyframe]]\ntime_s = 20\neye = [\"0.30000000000000000001\", \"0.2\", 0]\n"
+      "target = [\"0.3\", \"0.2\", 0]\n";
+  std::vector<PathProblem> problems;
+  const auto path = parse_camera_path(text, "zoom.toml", info, &problems);
+  ASSERT_TRUE(path) << problems.front().to_string();
+  // The target 0.3 as a pair: hi the double nearest 0.3, lo what it lacks.
+  EXPECT_EQ(path->keyframes[0].target.x, 0.3);
+  EXPECT_NEAR(path->keyframes[0].target_lo.x, 1.1102230246251566e-17, 1e-32);
+  for (const auto& [time_s, distance] :
+       std::vector<std::pair<double, double>>{{0, 1}, {5, 1e-5}, {10, 1e-10}, {19, 1e-19}, {20, 1e-20}}) {
+    const PathSample s = sample_camera_path(*path, info, time_s);
+    const std::array<double, 3> view = view_vector(s.camera, s.camera_lo);
+    EXPECT_NEAR(view[0], -distance, 1e-9 * distance) << "at " << time_s << " s";
+    EXPECT_NEAR(view[1], 0, 1e-12 * distance) << "at " << time_s << " s";
+    EXPECT_NEAR(view[2], 0, 1e-12 * distance) << "at " << time_s << " s";
+    EXPECT_EQ(s.camera.target[0], 0.3);
+    EXPECT_EQ(s.camera_lo.target[0], path->keyframes[0].target_lo.x);
+  }
+  // Saved and read back: every pair to its own precision (hi exactly, lo within 2^-104 of hi).
+  const auto back = parse_camera_path(format_camera_path(*path, info), "saved.toml", info, &problems);
+  ASSERT_TRUE(back);
+  for (size_t k = 0; k < 2; ++k) {
+    const Keyframe &a = path->keyframes[k], &b = back->keyframes[k];
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_EQ(a.eye[c], b.eye[c]);
+      EXPECT_NEAR(a.eye_lo[c], b.eye_lo[c], std::ldexp(std::abs(a.eye[c]), -104));
+      EXPECT_EQ(a.target[c], b.target[c]);
+      EXPECT_NEAR(a.target_lo[c], b.target_lo[c], std::ldexp(std::abs(a.target[c]), -104));
+    }
+  }
+  // A string that is not a number is refused with its line.
+  expect_problem("[[keyframe]]\ntime_s = 0\neye = [\"1.3x\", 0, 0]\ntarget = [0, 0, 0]\n", 3,
+                 "decimal strings");
+}
+
+}  // namespace
+}  // namespace fr

@@ -342,3 +342,55 @@ TEST(Reload, ParametersCarryOverByKey) {
 
 }  // namespace
 }  // namespace fr
+
+namespace fr {
+namespace {
+
+// The wheel zooms towards the surface under the pointer, in pairs: 400 notches (a quarter of the
+// way each) from 1 away reach some 1e-50 of it in exact arithmetic, and the camera stops where a
+// pair stops telling points apart (2^-100 of the eye's size), never on or past the point; the
+// view keeps its direction, and the point stays on the pointer's ray.
+TEST(CameraController, WheelZoomsPastDoubleInPairs) {
+  fr_camera c{};
+  c.struct_size = sizeof c;
+  c.eye[0] = 1.3;
+  c.eye[1] = 0.2;
+  c.target[0] = -1.7;  // looking along -x, 3 away
+  c.target[1] = 0.2;
+  c.up[2] = 1;
+  c.fov_deg = 60;
+  CameraLow low;
+  // The surface point 1 along a ray a little off the view: (0.3, 0.2 + 0.01, 0) from the eye's
+  // (1.3, 0.2, 0), unnormalised direction (-1, 0.01, 0).
+  ZoomPoint point;
+  const double length = std::sqrt(1 + 1e-4);
+  point.dir[0] = -1 / length;
+  point.dir[1] = 0.01 / length;
+  point.distance = length;
+  InputState in;
+  in.wheel = 1;
+  CameraControls controls;
+  // How far the eye is from the point (0.3, 0.21, 0) along x, as __float128 sees the pair.
+  const auto offset_x = [&] {
+    return static_cast<double>((__float128)c.eye[0] + low.eye[0] - (__float128)0.3);
+  };
+  const double offset0 = offset_x();  // 1, and what 1.3 and 0.3 lack of their doubles
+  for (int i = 0; i < 400; ++i) {
+    update_camera(c, low, CameraMode::Fly, in, false, 0.016, 1e9, controls, &point);
+    // What the explorer measures next: the distance to the point along the ray.
+    point.distance = offset_x() * length;
+    const double expected = std::pow(0.75, i + 1) * offset0;
+    if (i == 100 || i == 160) {  // 2.4e-13 (double still holds it), 7.7e-21 (past double)
+      EXPECT_NEAR(offset_x(), expected, 1e-9 * expected) << "after " << i + 1 << " notches";
+    }
+  }
+  EXPECT_GT(offset_x(), 0) << "the zoom went onto or past the point";
+  EXPECT_LT(offset_x(), 1e-28) << "the zoom stopped short of a pair's resolution";
+  // The view's direction is what it was (-x), at any depth.
+  const std::array<double, 3> view = view_vector(c, low);
+  EXPECT_NEAR(view[0] / 3, -1, 1e-12);
+  EXPECT_NEAR(view[1], 0, 1e-12);
+}
+
+}  // namespace
+}  // namespace fr
