@@ -179,6 +179,10 @@ void expect_deep_view_right(const Shape& shape, const Scene& s, const quad eye[3
   const RenderSettings pairs = depth_settings(Precision::DoubleDouble);
   const FrameImage image = renderer.render(s.scene->info, s.state, pairs, true);
   EXPECT_EQ(image.precision, Precision::DoubleDouble);
+  // The stability tier's invariants: nothing NaN, every ray's status a documented one.
+  for (float v : image.linear_rgba) ASSERT_FALSE(std::isnan(v)) << "a NaN in the picture";
+  for (float v : image.depth) ASSERT_FALSE(std::isnan(v)) << "a NaN depth";
+  for (uint8_t v : image.ray_status) ASSERT_LE(v, 3) << "an undocumented ray status";
   const DepthComparison got = compare_depths(shape, s, eye, image, pairs);
   // Every pixel looks at the surface 1e-19 away. The two marches take the same steps but for
   // the roundings (the pairs' estimate is within a thousandth of a footprint of the reference's),
@@ -203,15 +207,25 @@ void expect_deep_view_right(const Shape& shape, const Scene& s, const quad eye[3
   EXPECT_LT(bad.share_within(1), 0.5) << "double drew the view as well as pairs did";
 }
 
-// Lowe's Mandelbox (scale 2; 90 iterations resolve 2^-90) seen from 1e-19 above its surface.
-TEST(DeepZoom, MandelboxAt1e19MatchesFloat128Tracer) {
+// Lowe's Mandelbox (scale 2; 90 iterations resolve 2^-90, 8e-28) seen from 1e-19 above its
+// surface; and, for the stability tier, from 1e-18 and 1e-22 (a footprint of 8e-24, 2^-77).
+void expect_mandelbox_right_at(quad distance) {
   if (!test::runtime().device().has_fp64) GTEST_SKIP() << "the device has no double precision";
   Scene s = load_scene("mandelbox", "iterations", 90);
   test::BoxReference box;
   const double start[3] = {7, 6.5, 5}, aim[3] = {2, 1.3, 0.7};
   quad eye[3];
-  place_deep_camera(box, start, aim, 1e-19, s.state, eye);
+  place_deep_camera(box, start, aim, distance, s.state, eye);
   expect_deep_view_right(box, s, eye);
+}
+TEST(DeepZoom, MandelboxAt1e19MatchesFloat128Tracer) {
+  expect_mandelbox_right_at(1e-19);
+}
+TEST(DeepZoom, MandelboxAt1e18MatchesFloat128Tracer) {
+  expect_mandelbox_right_at(1e-18);
+}
+TEST(DeepZoom, MandelboxAt1e22MatchesFloat128Tracer) {
+  expect_mandelbox_right_at(1e-22);
 }
 
 // The Menger sponge (level 50: holes down to 3^-50, 1.4e-24) from 1e-19 above a face.
