@@ -231,6 +231,8 @@ TEST(Check, EveryBrokenFixtureFailsItsCheck) {
       // faults only `check` looks for
       {check_dir / "check_de_nan" PLUGIN_SUFFIX, {"de-finite", "DE is nan"}},
       {check_dir / "check_de_overstep" PLUGIN_SUFFIX, {"de-lipschitz", "the DE oversteps"}},
+      {check_dir / "check_de_pairs_in_double" PLUGIN_SUFFIX,
+       {"de-pairs", "is it computed in pairs?"}},
       {check_dir / "check_surface_outside" PLUGIN_SUFFIX,
        {"de-bounded", "outside the bounding radius 0.8"}},
       {check_dir / "check_nondeterministic" PLUGIN_SUFFIX, {"update", "not deterministic"}},

@@ -14,6 +14,7 @@
 #include "render/scene_vetting.hpp"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -88,6 +89,7 @@ class Checker {
     if (!check_descriptor()) return report_;
     const bool compiles = check_compiles() && check_returns();
     if (compiles) check_de();
+    if (compiles) check_pairs();
     const bool updates = check_update();
     check_create_destroy();
     if (compiles && updates) check_render();
@@ -154,8 +156,10 @@ class Checker {
   bool check_compiles() {
     const SceneInfo& info = scene_->info;
     std::vector<std::string> built, failed;
-    for (Precision precision : {Precision::Float, Precision::Double}) {
-      if (precision == Precision::Double && !worker_.device().has_fp64) continue;
+    for (Precision precision :
+         {Precision::Float, Precision::Double, Precision::DoubleDouble}) {
+      if (precision != Precision::Float && !worker_.device().has_fp64) continue;
+      if (precision == Precision::DoubleDouble && !has_pair_estimate(info)) continue;
       for (int lanes : {1, 16}) {
         const std::string shape =
             std::string(precision_name(precision)) + " x" + std::to_string(lanes);
@@ -215,6 +219,168 @@ class Checker {
     add("de-returns", CheckStatus::Warn,
         "the test render failed for another reason (see the checks below): " + vet.error);
     return true;
+  }
+
+  // A pair estimate (scene_de_dd, render.precision "dd"; docs/deep_zoom.md), where the scene
+  // has one: the same values as the double estimate where double suffices, and past double, at
+  // a point some 1e-20 R from the surface reached by marching in pairs, 1-Lipschitz and telling
+  // points 2e-21 R apart (what a pair estimate secretly in double cannot).
+  void check_pairs() {
+    const SceneInfo& info = scene_->info;
+    if (!has_pair_estimate(info) || !worker_.device().has_fp64) return;
+    const double r = defaults_.bounding_radius;
+    const auto points = ball_points(std::min(options_.de_samples, 4096), r, 5);
+    std::vector<float> doubles, pairs;
+    try {
+      doubles = worker_.probe_de(info, defaults_.params, points, 16, Precision::Double);
+      pairs = worker_.probe_de(info, defaults_.params, points, 16, Precision::DoubleDouble);
+    } catch (const std::exception& e) {
+      add("de-pairs", CheckStatus::Fail, std::string("evaluating the pair estimate failed: ") +
+                                             e.what());
+      return;
+    }
+    double worst = 0;
+    size_t where = 0;
+    for (size_t i = 0; i < points.size(); ++i) {
+      const double scale = std::max(std::abs(double(doubles[i])), 1e-3 * r);
+      const double off = std::abs(double(pairs[i]) - doubles[i]) / scale;
+      if (!(off <= worst)) worst = off, where = i;  // (a NaN is the worst)
+    }
+    if (!(worst <= 1e-5)) {
+      add("de-pairs", CheckStatus::Fail,
+          "the pair estimate is " + fmt(pairs[where]) + " at " + fmt(points[where]) +
+              " where the double one is " + fmt(doubles[where]) +
+              ": scene_de_dd is not the same shape as scene_de");
+      return;
+    }
+    // Past double: march in pairs from points near the surface (the nearest outside it first),
+    // down the double estimate's gradient, the origin moved along as pairs (a probe's points are
+    // floats, relative to it); a ray that misses is left for the next point.
+    std::vector<size_t> starts;
+    for (size_t i = 0; i < points.size(); ++i)
+      if (doubles[i] > 1e-4 * r) starts.push_back(i);
+    std::sort(starts.begin(), starts.end(),
+              [&](size_t a, size_t b) { return doubles[a] < doubles[b]; });
+    if (starts.size() > 8) starts.resize(8);
+    if (starts.empty()) {
+      add("de-pairs", CheckStatus::Warn,
+          "agrees with the double estimate at " + std::to_string(points.size()) +
+              " points (within " + fmt(worst) + " relative); no point outside the surface to "
+              "march from, so its depth is not checked");
+      return;
+    }
+    const double goal = 1e-20 * r;
+    PairOrigin origin;
+    double dir[3] = {1, 0, 0}, de = 0, nearest = INFINITY;
+    int steps = 0;
+    size_t start = starts.front();
+    const auto pair_at = [&](const DePoint& q) {
+      return double(worker_.probe_de(info, defaults_.params, {q}, 1, Precision::DoubleDouble,
+                                     &origin)[0]);
+    };
+    for (size_t candidate : starts) {
+      start = candidate;
+      for (int c = 0; c < 3; ++c) origin.eye[c] = DoubleDouble{points[start][c], 0};
+      const double h = 0.1 * doubles[start];
+      std::vector<DePoint> around;
+      for (int c = 0; c < 3; ++c)
+        for (double sign : {1.0, -1.0}) {
+          DePoint q{0, 0, 0};
+          q[c] = static_cast<float>(sign * h);
+          around.push_back(q);
+        }
+      const auto slope =
+          worker_.probe_de(info, defaults_.params, around, 1, Precision::DoubleDouble, &origin);
+      double length = 0;
+      for (int c = 0; c < 3; ++c) {
+        dir[c] = -(double(slope[2 * c]) - slope[2 * c + 1]);
+        length += dir[c] * dir[c];
+      }
+      length = std::sqrt(length);
+      if (!(length > 0)) continue;
+      for (double& c : dir) c /= length;
+      const double first = pair_at({0, 0, 0});
+      de = first;
+      for (steps = 0; steps < 3000 && de > goal; ++steps) {
+        for (int c = 0; c < 3; ++c) {
+          // origin += dir * de, as a pair (TwoSum, then normalised).
+          DoubleDouble& o = origin.eye[c];
+          const double d = dir[c] * de, sum = o.hi + d, bb = sum - o.hi;
+          const double e = (o.hi - (sum - bb)) + (d - bb) + o.lo;
+          o.hi = sum + e;
+          o.lo = e - (o.hi - sum);
+        }
+        de = pair_at({0, 0, 0});
+        nearest = std::min(nearest, std::abs(de));
+        if (!(de < 4 * first)) break;  // the ray left the surface behind: a miss
+      }
+      if (de <= goal) break;
+    }
+    // Stuck at double's resolution (some ulps of the position): an estimate in double.
+    const double position = std::max({std::abs(origin.eye[0].hi), std::abs(origin.eye[1].hi),
+                                      std::abs(origin.eye[2].hi), r});
+    if (!(de <= goal) && nearest < 1e3 * DBL_EPSILON * position) {
+      add("de-pairs", CheckStatus::Fail,
+          "marching in pairs from " + std::to_string(starts.size()) +
+              " points near the surface came no nearer than " + fmt(nearest) +
+              ", some ulps of double at the position: the estimate does not resolve past double "
+              "(is it computed in pairs?)");
+      return;
+    }
+    if (!(de <= goal)) {
+      // An estimate that stops shrinking has reached what its iterations resolve (the
+      // Mandelbox's 14 resolve some 1e-4): nothing past double to check at these parameters.
+      add("de-pairs", CheckStatus::Pass,
+          "agrees with the double estimate at " + std::to_string(points.size()) +
+              " points (within " + fmt(worst) + " relative); marching in pairs from " +
+              std::to_string(starts.size()) + " points near the surface came no nearer than " +
+              fmt(de) + ", what the estimate resolves at these parameters, so nothing past "
+              "double was checked (more iterations would)");
+      return;
+    }
+    // Sixteen points 2e-21 R apart, going away from the surface there (back along the march)
+    // and across it.
+    const double step = 2e-21 * r;
+    double across[3] = {dir[1] - dir[2], dir[2] - dir[0], dir[0] - dir[1]};
+    const double across_length =
+        std::sqrt(across[0] * across[0] + across[1] * across[1] + across[2] * across[2]);
+    std::vector<DePoint> line;
+    for (int k = 0; k < 16; ++k)
+      line.push_back(
+          {static_cast<float>((-dir[0] * (k + 1) + across[0] / across_length * k) * step),
+           static_cast<float>((-dir[1] * (k + 1) + across[1] / across_length * k) * step),
+           static_cast<float>((-dir[2] * (k + 1) + across[2] / across_length * k) * step)});
+    const auto values =
+        worker_.probe_de(info, defaults_.params, line, 16, Precision::DoubleDouble, &origin);
+    double steepest = 0;
+    std::vector<float> distinct;
+    for (int k = 0; k < 16; ++k) {
+      if (std::find(distinct.begin(), distinct.end(), values[k]) == distinct.end())
+        distinct.push_back(values[k]);
+      if (k == 0) continue;
+      const double dx = double(line[k][0]) - line[k - 1][0], dy = double(line[k][1]) - line[k - 1][1],
+                   dz = double(line[k][2]) - line[k - 1][2];
+      const double apart = std::sqrt(dx * dx + dy * dy + dz * dz);
+      steepest = std::max(steepest, std::abs(double(values[k]) - values[k - 1]) / apart);
+    }
+    const std::string where_deep = "at 16 points " + fmt(step * std::sqrt(2.0)) + " apart, " +
+                                   fmt(de) + " from the surface and off it (" +
+                                   std::to_string(steps) +
+                                   " steps in pairs from " + fmt(points[start]) + ")";
+    if (!(steepest <= 1 + options_.lipschitz_tolerance) || distinct.size() < 4) {
+      add("de-pairs", CheckStatus::Fail,
+          where_deep + ": " + std::to_string(distinct.size()) + " different values, |dDE| / |dp| " +
+              "up to " + fmt(steepest) +
+              (distinct.size() < 4 ? " (the estimate does not resolve past double: is it "
+                                     "computed in pairs?)"
+                                   : " (it oversteps there)"));
+      return;
+    }
+    add("de-pairs", CheckStatus::Pass,
+        "agrees with the double estimate at " + std::to_string(points.size()) +
+            " points (within " + fmt(worst) + " relative); " + where_deep + ": " +
+            std::to_string(distinct.size()) + " different values, |dDE| / |dp| at most " +
+            fmt(steepest));
   }
 
   void check_de() {
