@@ -242,7 +242,8 @@ TEST(DeLibrary, GuideListsEverySignature) {
                                           "mandelbrot_distance_bound", "smooth_order", "sort_pair", "bristor_jacobian_times",
                                           "hybrid_rotate", "mb2_fold", "mb2_component",
                                           "mb2_with_component", "mb2_rotate_back", "dd_order",
-                                          "menger_step"};
+                                          "menger_step", "dd_unit_complex_pow_int",
+                                          "dd_mandelbulb_whole"};
   size_t found = 0;
   for (const auto& entry :
        std::filesystem::directory_iterator(std::string(SOURCE_DIR) + "/kernels/de")) {

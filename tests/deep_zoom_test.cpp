@@ -239,6 +239,18 @@ TEST(DeepZoom, MengerAt1e19MatchesFloat128Tracer) {
   expect_deep_view_right(sponge, s, eye);
 }
 
+// The Mandelbulb (power 8, 40 iterations) from 1e-19 above its surface: the pairs' de Moivre
+// form against the reference's trigonometry in __float128.
+TEST(DeepZoom, MandelbulbAt1e19MatchesFloat128Tracer) {
+  if (!test::runtime().device().has_fp64) GTEST_SKIP() << "the device has no double precision";
+  Scene s = load_scene("mandelbulb", "iterations", 40);
+  test::BulbReference bulb;
+  const double start[3] = {0.3, 0.7, 2.2}, aim[3] = {0.02, 0.05, 0};
+  quad eye[3];
+  place_deep_camera(bulb, start, aim, 1e-19, s.state, eye);
+  expect_deep_view_right(bulb, s, eye);
+}
+
 // Automatic precision: float at the scene's own view, double 1e-10 from the surface (a footprint
 // of 3.6e-13 at 320 pixels, some 150 ulps of the bounding radius 10.7), pairs 1e-19 from it; and double for a scene without a pair estimate, with the eye and target that double
 // cannot tell apart refused by name rather than drawn.

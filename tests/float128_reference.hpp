@@ -3,6 +3,8 @@
 // (double_double_test.cpp, deep_zoom_test.cpp).
 #pragma once
 
+#include <quadmath.h>
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -82,6 +84,31 @@ struct SpongeReference {
       if (q > inside) inside = q;
     }
     return (quad_sqrt(outside2) + (inside < 0 ? inside : quad(0))) / scale_n;
+  }
+};
+
+// The power-n Mandelbulb (polar axis z, theta = acos(z / r), phi = atan2(y, x)) through the
+// angles, with libquadmath's trigonometry: written apart from the kernels' de Moivre form, it
+// checks that too.
+struct BulbReference {
+  int iterations = 40;
+  double power = 8, bailout = 2;
+  quad de(const quad p[3]) const {
+    quad z[3] = {p[0], p[1], p[2]};
+    quad dr = 1;
+    quad r = sqrtq(z[0] * z[0] + z[1] * z[1] + z[2] * z[2]);
+    for (int i = 0; i < iterations && r < bailout; ++i) {
+      const quad theta = (r > 0 ? acosq(z[2] / r) : quad(0)) * power;
+      const quad phi = atan2q(z[1], z[0]) * power;
+      const quad r_pow = powq(r, power - 1);
+      dr = power * r_pow * dr + 1;
+      const quad zr = r_pow * r;
+      z[0] = zr * sinq(theta) * cosq(phi) + p[0];
+      z[1] = zr * sinq(theta) * sinq(phi) + p[1];
+      z[2] = zr * cosq(theta) + p[2];
+      r = sqrtq(z[0] * z[0] + z[1] * z[1] + z[2] * z[2]);
+    }
+    return quad(0.5) * logq(r) * r / dr;
   }
 };
 

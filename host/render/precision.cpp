@@ -57,7 +57,7 @@ void check_pair_frame(const SceneInfo& info, const RenderSettings& settings) {
     throw std::invalid_argument(
         "render.precision dd: scene '" + info.id +
         "' has no pair estimate (a scene_de_dd in its DE source; docs/deep_zoom.md): the "
-        "Mandelbox and Menger scenes have one");
+        "Mandelbox, Menger and Mandelbulb scenes have one");
   if (settings.integrator == Integrator::Path)
     throw std::invalid_argument(
         "render.precision dd: the path tracer does not work in pairs yet; render with "

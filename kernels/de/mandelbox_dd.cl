@@ -57,6 +57,13 @@ real_t de_mandelbox_dd(dd3_t p, int iterations, scalar_t scale, scalar_t min_rad
     dr = lane_select(live, next_dr, dr);
     r2 = lane_select(live, v3_length2(dd3_to_v3(z)), r2);
   }
+  /* A lane whose orbit ended in pairs (escaped, or every iteration done) takes |z| from the
+   * pairs: rounded to double it would move the estimate in steps of an ulp of |z| over dr, coarse
+   * where dr is still small (few iterations, a deep view). */
+  /* (i is the same in every lane: a scalar condition picks the whole mask, never ORs into it,
+   * since a vector select reads each lane's top bit.) */
+  const mask_t ended_in_pairs = i >= iterations ? FR_MASK_TRUE : (r2 >= bailout2);
+  const dd_t r_pairs = dd_sqrt(dd3_length2(z));
   /* The rest in double: p rounded to double costs at most an ulp of |p| over dr (as above). */
   vec3_t zd = dd3_to_v3(z);
   const vec3_t pd = dd3_to_v3(p);
@@ -73,5 +80,6 @@ real_t de_mandelbox_dd(dd3_t p, int iterations, scalar_t scale, scalar_t min_rad
     dr = lane_select(live, next_dr, dr);
     r2d = lane_select(live, v3_length2(zd), r2d);
   }
-  return sqrt(r2d) / fabs(dr);
+  return lane_select(ended_in_pairs, r_pairs.hi / fabs(dr) + r_pairs.lo / fabs(dr),
+                     sqrt(r2d) / fabs(dr));
 }
