@@ -207,53 +207,48 @@ void expect_deep_view_right(const Shape& shape, const Scene& s, const quad eye[3
   EXPECT_LT(bad.share_within(1), 0.5) << "double drew the view as well as pairs did";
 }
 
+// A view `distance` from where the ray from `start` towards `aim` meets the surface of scene `id`
+// (its `iterations` set), rendered in pairs against the march in __float128 with `shape`.
+template <class Shape>
+void expect_right_at(const char* id, int iterations, const Shape& shape, const double start[3],
+                     const double aim[3], quad distance) {
+  if (!test::runtime().device().has_fp64) GTEST_SKIP() << "the device has no double precision";
+  Scene s = load_scene(id, "iterations", iterations);
+  quad eye[3];
+  place_deep_camera(shape, start, aim, distance, s.state, eye);
+  expect_deep_view_right(shape, s, eye);
+}
+
 // Lowe's Mandelbox (scale 2; 90 iterations resolve 2^-90, 8e-28) seen from 1e-19 above its
 // surface; and, for the stability tier, from 1e-18 and 1e-22 (a footprint of 8e-24, 2^-77).
-void expect_mandelbox_right_at(quad distance) {
-  if (!test::runtime().device().has_fp64) GTEST_SKIP() << "the device has no double precision";
-  Scene s = load_scene("mandelbox", "iterations", 90);
-  test::BoxReference box;
-  const double start[3] = {7, 6.5, 5}, aim[3] = {2, 1.3, 0.7};
-  quad eye[3];
-  place_deep_camera(box, start, aim, distance, s.state, eye);
-  expect_deep_view_right(box, s, eye);
-}
+const double kBoxStart[3] = {7, 6.5, 5}, kBoxAim[3] = {2, 1.3, 0.7};
 TEST(DeepZoom, MandelboxAt1e19MatchesFloat128Tracer) {
-  expect_mandelbox_right_at(1e-19);
+  expect_right_at("mandelbox", 90, test::BoxReference{}, kBoxStart, kBoxAim, 1e-19);
 }
 TEST(DeepZoom, MandelboxAt1e18MatchesFloat128Tracer) {
-  expect_mandelbox_right_at(1e-18);
+  expect_right_at("mandelbox", 90, test::BoxReference{}, kBoxStart, kBoxAim, 1e-18);
 }
 TEST(DeepZoom, MandelboxAt1e22MatchesFloat128Tracer) {
-  expect_mandelbox_right_at(1e-22);
+  expect_right_at("mandelbox", 90, test::BoxReference{}, kBoxStart, kBoxAim, 1e-22);
 }
 
 // The Menger sponge (level 50: holes down to 3^-50, 1.4e-24) from 1e-19 above a face.
 TEST(DeepZoom, MengerAt1e19MatchesFloat128Tracer) {
-  if (!test::runtime().device().has_fp64) GTEST_SKIP() << "the device has no double precision";
-  Scene s = load_scene("menger", "iterations", 50);
-  test::SpongeReference sponge;
   const double start[3] = {2.1, 1.7, 2.6}, aim[3] = {0.13, 0.31, -0.05};
-  quad eye[3];
-  place_deep_camera(sponge, start, aim, 1e-19, s.state, eye);
-  expect_deep_view_right(sponge, s, eye);
+  expect_right_at("menger", 50, test::SpongeReference{}, start, aim, 1e-19);
 }
 
 // The Mandelbulb (power 8, 40 iterations) from 1e-19 above its surface: the pairs' de Moivre
 // form against the reference's trigonometry in __float128.
 TEST(DeepZoom, MandelbulbAt1e19MatchesFloat128Tracer) {
-  if (!test::runtime().device().has_fp64) GTEST_SKIP() << "the device has no double precision";
-  Scene s = load_scene("mandelbulb", "iterations", 40);
-  test::BulbReference bulb;
   const double start[3] = {0.3, 0.7, 2.2}, aim[3] = {0.02, 0.05, 0};
-  quad eye[3];
-  place_deep_camera(bulb, start, aim, 1e-19, s.state, eye);
-  expect_deep_view_right(bulb, s, eye);
+  expect_right_at("mandelbulb", 40, test::BulbReference{}, start, aim, 1e-19);
 }
 
 // Automatic precision: float at the scene's own view, double 1e-10 from the surface (a footprint
-// of 3.6e-13 at 320 pixels, some 150 ulps of the bounding radius 10.7), pairs 1e-19 from it; and double for a scene without a pair estimate, with the eye and target that double
-// cannot tell apart refused by name rather than drawn.
+// of 3.6e-13 at 320 pixels, some 150 ulps of the bounding radius 10.7), pairs 1e-19 from it; and
+// double for a scene without a pair estimate, with the eye and target that double cannot tell
+// apart refused by name rather than drawn.
 TEST(DeepZoom, AutoPicksFloatDoubleAndPairsByDepth) {
   if (!test::runtime().device().has_fp64) GTEST_SKIP() << "the device has no double precision";
   Scene s = load_scene("mandelbox", "iterations", 90);
@@ -262,12 +257,11 @@ TEST(DeepZoom, AutoPicksFloatDoubleAndPairsByDepth) {
   settings.height_px = 240;
   EXPECT_EQ(resolve_precision(test::runtime(), s.scene->info, s.state, settings), Precision::Float);
   test::BoxReference box;
-  const double start[3] = {7, 6.5, 5}, aim[3] = {2, 1.3, 0.7};
   quad eye[3];
-  place_deep_camera(box, start, aim, 1e-10, s.state, eye);
+  place_deep_camera(box, kBoxStart, kBoxAim, 1e-10, s.state, eye);
   EXPECT_EQ(resolve_precision(test::runtime(), s.scene->info, s.state, settings),
             Precision::Double);
-  place_deep_camera(box, start, aim, 1e-19, s.state, eye);
+  place_deep_camera(box, kBoxStart, kBoxAim, 1e-19, s.state, eye);
   EXPECT_EQ(resolve_precision(test::runtime(), s.scene->info, s.state, settings),
             Precision::DoubleDouble);
 
