@@ -312,8 +312,8 @@ TEST(CameraPath, ADeepZoomIsInLogDistanceAndInPairs) {
   // The target 0.3 as a pair: hi the double nearest 0.3, lo what it lacks.
   EXPECT_EQ(path->keyframes[0].target.x, 0.3);
   EXPECT_NEAR(path->keyframes[0].target_lo.x, 1.1102230246251566e-17, 1e-32);
-  for (const auto& [time_s, distance] :
-       std::vector<std::pair<double, double>>{{0, 1}, {5, 1e-5}, {10, 1e-10}, {19, 1e-19}, {20, 1e-20}}) {
+  for (const auto& [time_s, distance] : std::vector<std::pair<double, double>>{
+           {0, 1}, {5, 1e-5}, {10, 1e-10}, {19, 1e-19}, {20, 1e-20}}) {
     const PathSample s = sample_camera_path(*path, info, time_s);
     const std::array<double, 3> view = view_vector(s.camera, s.camera_lo);
     EXPECT_NEAR(view[0], -distance, 1e-9 * distance) << "at " << time_s << " s";
@@ -323,7 +323,8 @@ TEST(CameraPath, ADeepZoomIsInLogDistanceAndInPairs) {
     EXPECT_EQ(s.camera_lo.target[0], path->keyframes[0].target_lo.x);
   }
   // Saved and read back: every pair to its own precision (hi exactly, lo within 2^-104 of hi).
-  const auto back = parse_camera_path(format_camera_path(*path, info), "saved.toml", info, &problems);
+  const auto back =
+      parse_camera_path(format_camera_path(*path, info), "saved.toml", info, &problems);
   ASSERT_TRUE(back);
   for (size_t k = 0; k < 2; ++k) {
     const Keyframe &a = path->keyframes[k], &b = back->keyframes[k];

@@ -235,14 +235,26 @@ TEST(DeLibrary, GuideListsEverySignature) {
   const std::string guide((std::istreambuf_iterator<char>(guide_file)), {});
   ASSERT_FALSE(guide.empty());
   // Helpers the library uses internally, not meant for scenes.
-  const std::set<std::string> internal = {"pow_int",          "unit_complex_pow_int",
-                                          "mandelbulb_pow_int", "mandelbulb_pow_real",
-                                          "mandelbox_iterate",  "kifs_iterate",
-                                          "bulb_iterate",       "kleinian_separation",
-                                          "mandelbrot_distance_bound", "smooth_order", "sort_pair", "bristor_jacobian_times",
-                                          "hybrid_rotate", "mb2_fold", "mb2_component",
-                                          "mb2_with_component", "mb2_rotate_back", "dd_order",
-                                          "menger_step", "dd_unit_complex_pow_int",
+  const std::set<std::string> internal = {"pow_int",
+                                          "unit_complex_pow_int",
+                                          "mandelbulb_pow_int",
+                                          "mandelbulb_pow_real",
+                                          "mandelbox_iterate",
+                                          "kifs_iterate",
+                                          "bulb_iterate",
+                                          "kleinian_separation",
+                                          "mandelbrot_distance_bound",
+                                          "smooth_order",
+                                          "sort_pair",
+                                          "bristor_jacobian_times",
+                                          "hybrid_rotate",
+                                          "mb2_fold",
+                                          "mb2_component",
+                                          "mb2_with_component",
+                                          "mb2_rotate_back",
+                                          "dd_order",
+                                          "menger_step",
+                                          "dd_unit_complex_pow_int",
                                           "dd_mandelbulb_whole"};
   size_t found = 0;
   for (const auto& entry :

@@ -127,8 +127,8 @@ struct DepthComparison {
     return v.empty() ? 1e30 : v[v.size() / 2];
   }
   double share_within(double limit) const {
-    const auto n = std::count_if(footprints.begin(), footprints.end(),
-                                 [&](double f) { return f <= limit; });
+    const auto n =
+        std::count_if(footprints.begin(), footprints.end(), [&](double f) { return f <= limit; });
     return footprints.empty() ? 0 : double(n) / double(footprints.size());
   }
 };
@@ -152,7 +152,8 @@ DepthComparison compare_depths(const Shape& shape, const Scene& s, const quad ey
       const quad dir[3] = {d.x, d.y, d.z};
       const float depth = image.depth[static_cast<size_t>(y) * settings.width_px + x];
       const quad t = march_like_renderer(
-          shape, eye, dir, quad(settings.hit_threshold_k) * static_cast<float>(rays.pixel_angle_rad),
+          shape, eye, dir,
+          quad(settings.hit_threshold_k) * static_cast<float>(rays.pixel_angle_rad),
           settings.max_steps, settings.refine_steps, 1.0);
       if (t < 0 && trace(shape, eye, dir, 1e-25, 1.0) > 0) {
         ++out.reference_out_of_steps;  // the renderer's fallback for such rays is its own
@@ -188,9 +189,10 @@ void expect_deep_view_right(const Shape& shape, const Scene& s, const quad eye[3
   // the roundings (the pairs' estimate is within a thousandth of a footprint of the reference's),
   // so they stop at the same step; now and then a ray whose estimate meets the threshold within
   // that margin stops one step apart (at most a footprint or so).
-  std::printf("pairs: %d pixels hit in both, %d differ, median %.3g footprints, %.0f%% within "
-              "0.1\n",
-              got.both_hit, got.mask_differs, got.median(), 100 * got.share_within(0.1));
+  std::printf(
+      "pairs: %d pixels hit in both, %d differ, median %.3g footprints, %.0f%% within "
+      "0.1\n",
+      got.both_hit, got.mask_differs, got.median(), 100 * got.share_within(0.1));
   EXPECT_GE(got.both_hit, pairs.width_px * pairs.height_px * 9 / 10);
   EXPECT_LE(got.mask_differs, 1);
   EXPECT_LE(got.median(), 0.01) << "median depth difference, in footprints";
@@ -201,9 +203,10 @@ void expect_deep_view_right(const Shape& shape, const Scene& s, const quad eye[3
   const RenderSettings doubles = depth_settings(Precision::Double);
   const FrameImage wrong = renderer.render(s.scene->info, s.state, doubles, true);
   const DepthComparison bad = compare_depths(shape, s, eye, wrong, doubles);
-  std::printf("double: %d pixels hit in both, %d differ, median %.3g footprints, %.0f%% within "
-              "1\n",
-              bad.both_hit, bad.mask_differs, bad.median(), 100 * bad.share_within(1));
+  std::printf(
+      "double: %d pixels hit in both, %d differ, median %.3g footprints, %.0f%% within "
+      "1\n",
+      bad.both_hit, bad.mask_differs, bad.median(), 100 * bad.share_within(1));
   EXPECT_LT(bad.share_within(1), 0.5) << "double drew the view as well as pairs did";
 }
 

@@ -4,9 +4,9 @@
 // operation's relative error is within a few 2^-106; and at points 1e-22 from the Mandelbox's
 // surface, where double cannot even hold the point, the pair DE agrees with the reference within
 // a thousandth of such a pixel while double cannot tell the points apart (why pairs are needed).
+#include "float128_reference.hpp"
 #include "render/dd_selftest.hpp"
 #include "render/kernel_sources.hpp"
-#include "float128_reference.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>

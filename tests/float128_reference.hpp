@@ -46,8 +46,10 @@ struct BoxReference {
                fixed2 = static_cast<quad>(fixed_radius) * fixed_radius;
     for (int i = 0; i < iterations && r2 < 1e8; ++i) {
       for (quad& c : z) {
-        if (c > fold) c = 2 * static_cast<quad>(fold) - c;
-        else if (c < -fold) c = -2 * static_cast<quad>(fold) - c;
+        if (c > fold)
+          c = 2 * static_cast<quad>(fold) - c;
+        else if (c < -fold)
+          c = -2 * static_cast<quad>(fold) - c;
       }
       const quad f2 = z[0] * z[0] + z[1] * z[1] + z[2] * z[2];
       const quad factor = f2 < min2 ? fixed2 / min2 : f2 < fixed2 ? fixed2 / f2 : quad(1);

@@ -35,9 +35,8 @@ double zoom_notches(const InputState& input, double dt_s) {
 }
 
 CameraMotion update_camera(fr_camera& camera, CameraLow& low, CameraMode mode,
-                           const InputState& input, bool look, double dt_s,
-                           double surface_distance, const CameraControls& c,
-                           const ZoomPoint* zoom_point) {
+                           const InputState& input, bool look, double dt_s, double surface_distance,
+                           const CameraControls& c, const ZoomPoint* zoom_point) {
   CameraMotion motion;
   // Relative to the eye: the eye at the origin, the target at target - eye from the pairs.
   const std::array<double, 3> view = view_vector(camera, low);
@@ -113,7 +112,8 @@ CameraMotion update_camera(fr_camera& camera, CameraLow& low, CameraMode mode,
     zoom += (1 - std::pow(kZoomPerNotch, notches)) * target_distance;
     if (zoom != 0) motion.moved = true;
     if (max_step > 0) zoom = std::min(zoom, max_step);
-    target_distance = std::max(target_distance - zoom, std::max(0.01 * target_distance, floor_distance));
+    target_distance =
+        std::max(target_distance - zoom, std::max(0.01 * target_distance, floor_distance));
     eye = target - forward * target_distance;
   }
   // Back to world coordinates, in pairs: the target is the old eye plus its new offset (in

@@ -49,9 +49,8 @@ struct ZoomPoint {
 // (scene_data.hpp, CameraLow: the moves are worked out relative to the eye and added to its
 // double-double), so a zoom goes on past what double resolves.
 CameraMotion update_camera(fr_camera& camera, CameraLow& low, CameraMode mode,
-                           const InputState& input, bool look, double dt_s,
-                           double surface_distance, const CameraControls& controls,
-                           const ZoomPoint* zoom_point = nullptr);
+                           const InputState& input, bool look, double dt_s, double surface_distance,
+                           const CameraControls& controls, const ZoomPoint* zoom_point = nullptr);
 
 // The same for a camera in double alone (what the pairs add is dropped).
 inline CameraMotion update_camera(fr_camera& camera, CameraMode mode, const InputState& input,

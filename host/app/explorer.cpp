@@ -144,8 +144,8 @@ bool Explorer::update(const InputState& input, double dt_s, double now_s) {
       stats_.surface_distance = worker_.probe_de(slot.scene->info, slot.state.params, {eye_f})[0];
     }
     // A zoom in fly mode goes towards the surface under the pointer (camera_controller.hpp).
-    if (probe_ok && !path_.playing && mode_ == CameraMode::Fly &&
-        zoom_notches(input, dt_s) != 0 && window_width_px_ > 0 && window_height_px_ > 0) {
+    if (probe_ok && !path_.playing && mode_ == CameraMode::Fly && zoom_notches(input, dt_s) != 0 &&
+        window_width_px_ > 0 && window_height_px_ > 0) {
       const auto [x, y] = mouse_look_ || !input.pointer
                               ? std::pair(window_width_px_ / 2, window_height_px_ / 2)
                               : *input.pointer;
@@ -177,8 +177,7 @@ bool Explorer::update(const InputState& input, double dt_s, double now_s) {
   if (path_.playing)
     advance_playback(path_, slot.scene->info, dt_s, slot.state);
   else if (update_camera(slot.state.camera, slot.state.camera_lo, mode_, input, mouse_look_, dt_s,
-                         stats_.surface_distance, controls_,
-                         zoom_to_point ? &zoom_point : nullptr)
+                         stats_.surface_distance, controls_, zoom_to_point ? &zoom_point : nullptr)
                .moved)
     changed_ = true;
   std::string error;

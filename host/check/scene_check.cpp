@@ -156,8 +156,7 @@ class Checker {
   bool check_compiles() {
     const SceneInfo& info = scene_->info;
     std::vector<std::string> built, failed;
-    for (Precision precision :
-         {Precision::Float, Precision::Double, Precision::DoubleDouble}) {
+    for (Precision precision : {Precision::Float, Precision::Double, Precision::DoubleDouble}) {
       if (precision != Precision::Float && !worker_.device().has_fp64) continue;
       if (precision == Precision::DoubleDouble && !has_pair_estimate(info)) continue;
       for (int lanes : {1, 16}) {
@@ -235,8 +234,8 @@ class Checker {
       doubles = worker_.probe_de(info, defaults_.params, points, 16, Precision::Double);
       pairs = worker_.probe_de(info, defaults_.params, points, 16, Precision::DoubleDouble);
     } catch (const std::exception& e) {
-      add("de-pairs", CheckStatus::Fail, std::string("evaluating the pair estimate failed: ") +
-                                             e.what());
+      add("de-pairs", CheckStatus::Fail,
+          std::string("evaluating the pair estimate failed: ") + e.what());
       return;
     }
     double worst = 0;
@@ -265,7 +264,8 @@ class Checker {
     if (starts.empty()) {
       add("de-pairs", CheckStatus::Warn,
           "agrees with the double estimate at " + std::to_string(points.size()) +
-              " points (within " + fmt(worst) + " relative); no point outside the surface to "
+              " points (within " + fmt(worst) +
+              " relative); no point outside the surface to "
               "march from, so its depth is not checked");
       return;
     }
@@ -275,8 +275,8 @@ class Checker {
     int steps = 0;
     size_t start = starts.front();
     const auto pair_at = [&](const DePoint& q) {
-      return double(worker_.probe_de(info, defaults_.params, {q}, 1, Precision::DoubleDouble,
-                                     &origin)[0]);
+      return double(
+          worker_.probe_de(info, defaults_.params, {q}, 1, Precision::DoubleDouble, &origin)[0]);
     };
     for (size_t candidate : starts) {
       start = candidate;
@@ -317,8 +317,8 @@ class Checker {
       if (de <= goal) break;
     }
     // Stuck at double's resolution (some ulps of the position): an estimate in double.
-    const double position = std::max({std::abs(origin.eye[0].hi), std::abs(origin.eye[1].hi),
-                                      std::abs(origin.eye[2].hi), r});
+    const double position = std::max(
+        {std::abs(origin.eye[0].hi), std::abs(origin.eye[1].hi), std::abs(origin.eye[2].hi), r});
     if (!(de <= goal) && nearest < 1e3 * DBL_EPSILON * position) {
       add("de-pairs", CheckStatus::Fail,
           "marching in pairs from " + std::to_string(starts.size()) +
@@ -334,7 +334,8 @@ class Checker {
           "agrees with the double estimate at " + std::to_string(points.size()) +
               " points (within " + fmt(worst) + " relative); marching in pairs from " +
               std::to_string(starts.size()) + " points near the surface came no nearer than " +
-              fmt(de) + ", what the estimate resolves at these parameters, so nothing past "
+              fmt(de) +
+              ", what the estimate resolves at these parameters, so nothing past "
               "double was checked (more iterations would)");
       return;
     }
@@ -358,15 +359,16 @@ class Checker {
       if (std::find(distinct.begin(), distinct.end(), values[k]) == distinct.end())
         distinct.push_back(values[k]);
       if (k == 0) continue;
-      const double dx = double(line[k][0]) - line[k - 1][0], dy = double(line[k][1]) - line[k - 1][1],
+      const double dx = double(line[k][0]) - line[k - 1][0],
+                   dy = double(line[k][1]) - line[k - 1][1],
                    dz = double(line[k][2]) - line[k - 1][2];
       const double apart = std::sqrt(dx * dx + dy * dy + dz * dz);
       steepest = std::max(steepest, std::abs(double(values[k]) - values[k - 1]) / apart);
     }
     const std::string where_deep = "at 16 points " + fmt(step * std::sqrt(2.0)) + " apart, " +
                                    fmt(de) + " from the surface and off it (" +
-                                   std::to_string(steps) +
-                                   " steps in pairs from " + fmt(points[start]) + ")";
+                                   std::to_string(steps) + " steps in pairs from " +
+                                   fmt(points[start]) + ")";
     // Points 2e-21 R apart and as far off the surface: a pair estimate tells (nearly) all of
     // them apart; one rounded to double anywhere on its way gives a few steps.
     if (!(steepest <= 1 + options_.lipschitz_tolerance) || distinct.size() < 12) {
@@ -374,15 +376,14 @@ class Checker {
           where_deep + ": " + std::to_string(distinct.size()) + " different values, |dDE| / |dp| " +
               "up to " + fmt(steepest) +
               (distinct.size() < 12 ? " (the estimate does not resolve past double: is it "
-                                     "computed in pairs?)"
-                                   : " (it oversteps there)"));
+                                      "computed in pairs?)"
+                                    : " (it oversteps there)"));
       return;
     }
     add("de-pairs", CheckStatus::Pass,
-        "agrees with the double estimate at " + std::to_string(points.size()) +
-            " points (within " + fmt(worst) + " relative); " + where_deep + ": " +
-            std::to_string(distinct.size()) + " different values, |dDE| / |dp| at most " +
-            fmt(steepest));
+        "agrees with the double estimate at " + std::to_string(points.size()) + " points (within " +
+            fmt(worst) + " relative); " + where_deep + ": " + std::to_string(distinct.size()) +
+            " different values, |dDE| / |dp| at most " + fmt(steepest));
   }
 
   void check_de() {

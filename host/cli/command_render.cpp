@@ -60,14 +60,16 @@ void report_rays(const FrameImage& image, const SceneInfo& info, const SceneStat
       if (has_pair_estimate(info))
         spdlog::warn("{}double can resolve there; use --precision dd (or auto)", share);
       else
-        spdlog::warn("{}double can resolve there, and scene '{}' has no pair estimate "
-                     "(scene_de_dd): the picture there is not right",
-                     share, info.id);
+        spdlog::warn(
+            "{}double can resolve there, and scene '{}' has no pair estimate "
+            "(scene_de_dd): the picture there is not right",
+            share, info.id);
       break;
     default:
-      spdlog::warn("{}double-double resolves (16 of its ulps, 2^-100 of the position): past the "
-                   "deepest view Fractalis renders",
-                   share);
+      spdlog::warn(
+          "{}double-double resolves (16 of its ulps, 2^-100 of the position): past the "
+          "deepest view Fractalis renders",
+          share);
   }
 }
 

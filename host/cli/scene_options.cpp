@@ -42,7 +42,8 @@ std::vector<OptionSpec> scene_option_specs() {
       {"fov", "DEG", false, "horizontal field of view in degrees, (0, 180)"},
       {"preset", "NAME|FILE", false,
        "start from a preset (values and view; `fractalis list` shows them), a preset file "
-       "(.toml) or a Mandelbulber2 settings file (.fract, imported on the fly); --scene may be left "
+       "(.toml) or a Mandelbulber2 settings file (.fract, imported on the fly); --scene may be "
+       "left "
        "out"},
       {"param", "KEY=VALUE", true, "set a scene parameter (repeatable); vec3 as x,y,z"},
       {"time", "SECONDS", false, "scene time for the update callback (default 0)"},
@@ -378,9 +379,10 @@ void apply_scene_overrides(const SceneInfo& info, const ParsedOptions& options, 
       lo[i] = v[i].lo;
     }
     if (digits > kPairDigits)
-      spdlog::warn("{}: a number with {} significant digits; a double-double keeps about 32, and "
-                   "the rest is dropped",
-                   what, digits);
+      spdlog::warn(
+          "{}: a number with {} significant digits; a double-double keeps about 32, and "
+          "the rest is dropped",
+          what, digits);
   };
   set_pairs("eye", state.camera.eye, state.camera_lo.eye);
   set_pairs("target", state.camera.target, state.camera_lo.target);

@@ -248,8 +248,8 @@ std::string format_camera_path(const CameraPath& path, const SceneInfo& scene) {
     const Keyframe& key = path.keyframes[k];
     out +=
         fmt::format("\n[[keyframe]]\ntime_s = {}\neye = {}\ntarget = {}\nup = {}\nfov_deg = {}\n",
-                    key.time_s, position(key.eye, key.eye_lo),
-                    position(key.target, key.target_lo), vec(key.up), key.fov_deg);
+                    key.time_s, position(key.eye, key.eye_lo), position(key.target, key.target_lo),
+                    vec(key.up), key.fov_deg);
     std::string params;
     for (size_t i = 0; i < scene.params.size() && i < key.params.size(); ++i) {
       const fr_value& v = key.params[i];

@@ -262,8 +262,7 @@ std::vector<std::string> apply_preset(const Preset& preset, const SceneInfo& sce
         // Positions keep every digit a pair holds (a deep view's, docs/deep_zoom.md).
         const auto v = toml_vec3_pairs(value);
         if (!v) {
-          problem(toml_line(value), k +
-                                        ": expected [x, y, z] (three finite numbers, or decimal "
+          problem(toml_line(value), k + ": expected [x, y, z] (three finite numbers, or decimal "
                                         "strings for more digits than a double holds)");
           continue;
         }

@@ -5,8 +5,8 @@
 #include "render/scene_source_guard.hpp"
 
 #include <algorithm>
-#include <initializer_list>
 #include <cstring>
+#include <initializer_list>
 #include <set>
 #include <sstream>
 
@@ -292,13 +292,14 @@ AssembledKernel finish(std::ostringstream& out, const SceneInfo& info, const Ker
   k.build_options = "-cl-std=CL1.2 -cl-mad-enable -w";
   // Double-double's error terms need every rounding as written: no contraction, no fast math
   // (on PoCL either zeroes them; the self-test, render/dd_selftest.hpp, shows it).
-  if (config.precision == Precision::DoubleDouble) k.build_options = "-cl-std=CL1.2 -w";
-  else if (config.fast_math) k.build_options += " -cl-fast-relaxed-math";
+  if (config.precision == Precision::DoubleDouble)
+    k.build_options = "-cl-std=CL1.2 -w";
+  else if (config.fast_math)
+    k.build_options += " -cl-fast-relaxed-math";
   if (config.quick_build) k.build_options += " -cl-opt-disable";
   k.description = "scene '" + info.id + "' " + kind + " kernel (" +
                   (config.integrator == Integrator::Path ? "path tracing, " : "") + "lanes " +
-                  std::to_string(config.lanes) + ", " +
-                  enum_row(config.precision).label +
+                  std::to_string(config.lanes) + ", " + enum_row(config.precision).label +
                   ", stages: " + stage_names(config.stages) +
                   ((config.stages & kStageCone) ? ", cone pre-pass" : "") +
                   ((config.stages & kStageEnvironment) ? ", environment image" : "") +

@@ -43,7 +43,8 @@ Precision resolve_precision(ClRuntime& runtime, const SceneInfo& info, const Sce
   const float pair_de =
       probe_de(runtime, info, state.params, {{0, 0, 0}}, 1, Precision::DoubleDouble, &origin)[0];
   const double pair_distance = std::isfinite(pair_de) ? std::abs(double(pair_de)) : 0.0;
-  return pair_distance * rays.pixel_angle_rad < kDoubleFootprintUlps * double_resolution(position_scale)
+  return pair_distance * rays.pixel_angle_rad <
+                 kDoubleFootprintUlps * double_resolution(position_scale)
              ? Precision::DoubleDouble
              : Precision::Double;
 }

@@ -108,14 +108,15 @@ void Renderer::render_sample(const SceneInfo& info, const SceneState& state,
                            : last_precision_;
   last_precision_ = settings.precision;
   const bool pairs = settings.precision == Precision::DoubleDouble;
-  if (pairs) check_pair_frame(info, settings);
+  if (pairs)
+    check_pair_frame(info, settings);
   else if (check_camera(state.camera) && !check_camera(state.camera, state.camera_lo))
     throw std::invalid_argument(
         "camera: the eye and target lie closer than double tells apart; only render.precision "
         "dd renders such a view" +
-        std::string(has_pair_estimate(info) ? ""
-                                            : ", and scene '" + info.id +
-                                                  "' has no pair estimate (scene_de_dd)"));
+        std::string(has_pair_estimate(info)
+                        ? ""
+                        : ", and scene '" + info.id + "' has no pair estimate (scene_de_dd)"));
   const int lanes = lanes_for(settings);
   std::string description;
   // The denoiser is guided by the passes.
@@ -136,8 +137,8 @@ void Renderer::render_sample(const SceneInfo& info, const SceneState& state,
       pairs ? std::optional(eye_relative_view(state, 0)) : std::nullopt;
   const SceneState& drawn = relative ? relative->state : state;
   const CameraRays rays = whole_image_rays(drawn.camera, settings);
-  fr_frame_constants fc = make_frame_constants(rays, drawn, settings, sample_index,
-                                               relative ? relative->bounding_centre : glm::dvec3(0));
+  fr_frame_constants fc = make_frame_constants(
+      rays, drawn, settings, sample_index, relative ? relative->bounding_centre : glm::dvec3(0));
   const cl_mem environment = environment_memory(settings);
   fc.env_width = environment_width_px_;
   fc.env_height = environment_height_px_;

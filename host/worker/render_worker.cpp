@@ -537,8 +537,7 @@ std::vector<float> RenderWorker::probe_de(const SceneInfo& info,
                                           int lanes, Precision precision,
                                           const PairOrigin* origin) {
   ensure_started();
-  if (local_)
-    return fr::probe_de(local_->runtime, info, params, points, lanes, precision, origin);
+  if (local_) return fr::probe_de(local_->runtime, info, params, points, lanes, precision, origin);
   const uint64_t key = send_scene(info);
   WireWriter w = probe_request(key, params, points);
   w.i32(lanes);
