@@ -237,9 +237,12 @@ const FrameView* Explorer::render(int window_width_px, int window_height_px) {
   }
   // Temporal reuse (app/temporal_reuse.hpp) while only the camera moves; a frame after anything
   // else changed is scaled, as with reuse off, and keeps nothing of the frames before it.
-  const bool temporal_next = settings_.explorer.temporal;  // (once the frames are not quick)
+  // Not past double: reuse carries samples between cameras in world coordinates, in double,
+  // which cannot tell a deep view's eye positions apart (pairs: docs/deep_zoom.md).
+  const bool deep = stats_.precision == Precision::DoubleDouble;
+  const bool temporal_next = settings_.explorer.temporal && !deep;  // (once not quick)
   const bool temporal = temporal_next && !quick_frame_;
-  if (scene_changed_) reuse_.reset();
+  if (scene_changed_ || deep) reuse_.reset();
   // With the path integrator chosen, a parked view accumulates its samples; flying stays fast.
   const bool path = settings_.render.integrator == Integrator::Path;
   frames_.set_full_quality_samples(path ? settings_.explorer.path_samples
@@ -395,7 +398,7 @@ const FrameView* Explorer::render(int window_width_px, int window_height_px) {
   if (keep && last_.depth && last_.rgba8) {
     // The window's frame: this one's pixels where it traced them, earlier frames' elsewhere.
     const auto compose_start = std::chrono::steady_clock::now();
-    const uint8_t* shown = reuse_.compose(make_camera_rays(slot.state.camera, window_w, window_h),
+    const uint8_t* shown = reuse_.compose(view_camera_rays(slot.state, window_w, window_h),
                                           phase, last_.rgba8, last_.depth);
     stats_.reuse = reuse_.counts();
     FrameView composed;

@@ -242,7 +242,7 @@ std::string format_camera_path(const CameraPath& path, const SceneInfo& scene) {
   auto position = [&](const glm::dvec3& hi, const glm::dvec3& lo) {
     if (lo == glm::dvec3(0.0)) return vec(hi);
     const double h[3] = {hi.x, hi.y, hi.z}, l[3] = {lo.x, lo.y, lo.z};
-    return toml_vec3_text(h, l);
+    return toml_pairs_text(h, l);
   };
   for (size_t k = 0; k < path.keyframes.size(); ++k) {
     const Keyframe& key = path.keyframes[k];

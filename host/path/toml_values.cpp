@@ -1,8 +1,6 @@
 #include "path/toml_values.hpp"
 
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <sstream>
 
 namespace fr {
@@ -58,28 +56,10 @@ std::optional<std::array<DoubleDouble, 3>> toml_vec3_pairs(const toml::node& n) 
   return v;
 }
 
-std::string toml_vec3_text(const double hi[3], const double lo[3]) {
-  const bool pairs = lo[0] != 0 || lo[1] != 0 || lo[2] != 0;
+std::string toml_pairs_text(const double hi[3], const double lo[3]) {
   std::string out = "[";
-  for (int i = 0; i < 3; ++i) {
-    if (i > 0) out += ", ";
-    if (pairs) {
-      out += '"' + format_double_double(DoubleDouble{hi[i], lo[i]}) + '"';
-    } else {
-      // The shortest text that reads back as the same double.
-      char buffer[40];
-      std::snprintf(buffer, sizeof buffer, "%.17g", hi[i]);
-      double back = std::strtod(buffer, nullptr);
-      for (int digits = 1; digits <= 17; ++digits) {
-        std::snprintf(buffer, sizeof buffer, "%.*g", digits, hi[i]);
-        back = std::strtod(buffer, nullptr);
-        if (back == hi[i]) break;
-      }
-      std::string text = buffer;
-      if (text.find_first_of(".en") == std::string::npos) text += ".0";
-      out += text;
-    }
-  }
+  for (int i = 0; i < 3; ++i)
+    out += (i > 0 ? ", \"" : "\"") + format_double_double(DoubleDouble{hi[i], lo[i]}) + '"';
   return out + "]";
 }
 

@@ -25,9 +25,8 @@ std::optional<glm::dvec3> toml_vec3(const toml::node& n);
 // of finite numbers, or of decimal strings ("5.908838584519028311238859964040553") where a
 // number needs more digits than a TOML float (a double) keeps; or nullopt.
 std::optional<std::array<DoubleDouble, 3>> toml_vec3_pairs(const toml::node& n);
-// How a position is written back: plain numbers when the pairs' low parts are zero, else strings
-// of 34 digits.
-std::string toml_vec3_text(const double hi[3], const double lo[3]);
+// A position past double as it is written back: [x, y, z] as strings of 34 digits.
+std::string toml_pairs_text(const double hi[3], const double lo[3]);
 // The value of parameter `p` in `n` (a bool, a number, [x, y, z], a choice's name), within its
 // range; or nullopt with *why set ("expected a whole number", "outside the range of ...").
 std::optional<fr_value> toml_param_value(const toml::node& n, const ParamInfo& p, std::string* why);
