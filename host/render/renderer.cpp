@@ -3,6 +3,7 @@
 #include "render/environment_map.hpp"
 
 #include "render/camera.hpp"
+#include "render/dd_selftest.hpp"
 #include "render/eye_relative.hpp"
 #include "render/frame_constants.hpp"
 #include "render/kernel_assembly.hpp"
@@ -108,9 +109,18 @@ void Renderer::render_sample(const SceneInfo& info, const SceneState& state,
                            : last_precision_;
   last_precision_ = settings.precision;
   const bool pairs = settings.precision == Precision::DoubleDouble;
-  if (pairs)
+  if (pairs) {
     check_pair_frame(info, settings);
-  else if (check_camera(state.camera) && !check_camera(state.camera, state.camera_lo))
+    // Pairs only where the device keeps their error terms, checked once.
+    if (!pairs_refused_) {
+      const DdSelftest test = dd_selftest(runtime_);
+      pairs_refused_ = test.exact ? "" : test.failed;
+    }
+    if (!pairs_refused_->empty())
+      throw std::runtime_error("render.precision dd: device " + runtime_.device().name +
+                               " does not keep double-double's error terms (" +
+                               *pairs_refused_ + ")");
+  } else if (check_camera(state.camera) && !check_camera(state.camera, state.camera_lo))
     throw std::invalid_argument(
         "camera: the eye and target lie closer than double tells apart; only render.precision "
         "dd renders such a view" +

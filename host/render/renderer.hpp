@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -183,6 +184,9 @@ class Renderer {
   int last_lanes_ = 0;
   Readback last_outputs_ = Readback::Everything;  // what the last sample's kernel wrote
   Precision last_precision_ = Precision::Float;
+  // The device's double-double self-test (render/dd_selftest.hpp), run before its first pair
+  // frame: "" when it passed, else why pairs are refused there.
+  std::optional<std::string> pairs_refused_;
   ClBufferHandle constants_, params_, hdr_, depth_, steps_, factors_, status_, normal_, albedo_,
       rgba8_;
   size_t params_bytes_ = 0;
