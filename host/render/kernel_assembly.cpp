@@ -9,6 +9,8 @@
 #include <initializer_list>
 #include <set>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 namespace fr {
 namespace {
@@ -91,17 +93,44 @@ void append_file(std::ostringstream& out, std::string_view name, std::string_vie
 }
 
 // Pastes `text` with its #include "fr/NAME.cl" lines replaced by the library files (each once,
-// recursively), keeping line numbers right with #line directives.
+// recursively), keeping line numbers right with #line directives. Unless `pairs`, an include
+// inside an `#if FR_DD` block (a scene's pair estimate, compiled out there) is left out: the
+// kernel then holds only what it compiles.
 void append_with_includes(std::ostringstream& out, const std::string& scene_id,
                           std::string_view name, std::string_view text,
-                          std::set<std::string>& included) {
+                          std::set<std::string>& included, bool pairs) {
   out << "#line 1 \"" << name << "\"\n";
   std::istringstream lines{std::string(text)};
   std::string line;
   int number = 0;
+  // Per open #if: whether it lies in a pairs-only block, and whether it opened one.
+  std::vector<std::pair<bool, bool>> blocks;
+  const auto directive = [](const std::string& l, size_t at, const char* word) {
+    return l.compare(at, std::strlen(word), word) == 0;
+  };
   while (std::getline(lines, line)) {
     ++number;
     const auto first = line.find_first_not_of(" \t");
+    const bool in_pairs_block = !blocks.empty() && blocks.back().first;
+    if (first != std::string::npos && line[first] == '#') {
+      std::string trimmed = line.substr(first);
+      trimmed.erase(trimmed.find_last_not_of(" \t\r") + 1);
+      if (trimmed == "#if FR_DD") {
+        blocks.push_back({true, true});
+      } else if (directive(line, first, "#if")) {  // #if, #ifdef, #ifndef
+        blocks.push_back({in_pairs_block, false});
+      } else if ((directive(line, first, "#else") || directive(line, first, "#elif")) &&
+                 !blocks.empty() && blocks.back().second) {
+        blocks.back() = {blocks.size() > 1 && blocks[blocks.size() - 2].first, false};
+      } else if (directive(line, first, "#endif") && !blocks.empty()) {
+        blocks.pop_back();
+      }
+    }
+    if (!pairs && in_pairs_block && first != std::string::npos &&
+        line.compare(first, 8, "#include") == 0) {
+      out << '\n';
+      continue;
+    }
     if (first != std::string::npos && line.compare(first, 8, "#include") == 0) {
       const auto open = line.find('"'), close = line.rfind('"');
       const std::string target =
@@ -118,7 +147,7 @@ void append_with_includes(std::ostringstream& out, const std::string& scene_id,
       }
       if (included.insert(target).second)
         append_with_includes(out, scene_id, target, kernel_source("de/" + target.substr(3)),
-                             included);
+                             included, pairs);
       out << "#line " << number + 1 << " \"" << name << "\"\n";
       continue;
     }
@@ -265,9 +294,11 @@ void append_scene_prefix(std::ostringstream& out, const SceneInfo& info,
   scene_macros.erase(std::unique(scene_macros.begin(), scene_macros.end()), scene_macros.end());
   for (const auto& m : scene_macros) out << "#pragma push_macro(\"" << m << "\")\n";
   std::set<std::string> included;
-  append_with_includes(out, info.id, info.de_source_name, info.de_source, included);
+  const bool pairs = config.precision == Precision::DoubleDouble;
+  append_with_includes(out, info.id, info.de_source_name, info.de_source, included, pairs);
   if (has_surface)
-    append_with_includes(out, info.id, info.surface_source_name, info.surface_source, included);
+    append_with_includes(out, info.id, info.surface_source_name, info.surface_source, included,
+                         pairs);
   if (!scene_macros.empty()) out << "/* The scene's macros end with its code. */\n";
   for (const auto& m : scene_macros) out << "#pragma pop_macro(\"" << m << "\")\n";
   // A double-double kernel: every stage's scene_de becomes the scene's pair estimate at the eye
