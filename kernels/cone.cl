@@ -60,8 +60,7 @@ __kernel void fr_cone(__constant const fr_frame_constants* fc,
    * smaller than any where the ray is inside them). Before that, every block ray is outside the
    * bounds, where there is no surface. */
   const scalar_t radius = fc->bounding_radius;
-  const vec3_t centre = bounding_centre(fc);
-  const vec3_t origin = v3_sub(ray.origin, centre);
+  const vec3_t origin = FR_FROM_CENTRE(ray.origin);
   const real_t grown =
       (real_t)radius + spread_origin + spread_dir * (v3_length(origin) + (real_t)(3 * radius));
   const real_t b = v3_dot(origin, ray.dir);
@@ -77,7 +76,7 @@ __kernel void fr_cone(__constant const fr_frame_constants* fc,
     const vec3_t p = v3_mad(ray.origin, ray.dir, t);
     /* Outside the bounds the distance to them is exact, and the DE may over-estimate there
      * (march.cl never evaluates it outside). */
-    const real_t outside = v3_length(v3_sub(p, centre)) - (real_t)radius;
+    const real_t outside = v3_length(FR_FROM_CENTRE(p)) - (real_t)radius;
     const real_t dist = lane_select(outside > (real_t)0, outside,
                                     scene_de(p, params) * (real_t)fc->step_scale);
     FR_COUNT(FR_COUNT_CONE, active, 1);

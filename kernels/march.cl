@@ -25,7 +25,7 @@ typedef struct march_result_t {
 inline mask_t intersect_bounds(ray_t ray, __constant const fr_frame_constants* fc,
                                real_t* t_enter, real_t* t_exit) {
   const scalar_t radius = fc->bounding_radius;
-  const vec3_t origin = v3_sub(ray.origin, bounding_centre(fc));
+  const vec3_t origin = FR_FROM_CENTRE(ray.origin);
   real_t b = v3_dot(origin, ray.dir);
   real_t c = v3_length2(origin) - (real_t)(radius * radius);
   real_t disc = b * b - c;

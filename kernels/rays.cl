@@ -41,10 +41,14 @@ ray_t camera_ray(__constant const fr_frame_constants* fc, real_t px, real_t py, 
   return ray;
 }
 
-/* The bounding sphere's centre: the origin, or -eye in a double-double kernel. */
-inline vec3_t bounding_centre(__constant const fr_frame_constants* fc) {
-  return v3_hi_lo(fc->bounding_centre, fc->bounding_centre_lo);
-}
+/* A point relative to the bounding sphere's centre: the origin, except in a double-double kernel,
+ * whose coordinates are relative to the eye (the centre at -eye). Other kernels compile the point
+ * as it is: no work they do not need. */
+#if FR_DD
+#define FR_FROM_CENTRE(p) v3_sub((p), v3_hi_lo(fc->bounding_centre, fc->bounding_centre_lo))
+#else
+#define FR_FROM_CENTRE(p) (p)
+#endif
 
 /* Hit threshold at path length t from the eye: the clarity function k * t * pixel angle, never
  * below a few ulp of max(|p|, bounding radius): positions near the scene are only that precise,
@@ -56,7 +60,7 @@ inline real_t hit_threshold(__constant const fr_frame_constants* fc, real_t t, v
   /* (|p| in world coordinates: a double-double kernel's p is relative to the eye, and its
    * positions are pairs, FR_POSITION_EPSILON.) */
   real_t ulp_floor = (real_t)(4 * FR_POSITION_EPSILON) *
-                     fmax(v3_length(v3_sub(p, bounding_centre(fc))), (real_t)fc->bounding_radius);
+                     fmax(v3_length(FR_FROM_CENTRE(p)), (real_t)fc->bounding_radius);
   return fmax(clarity, ulp_floor);
 }
 
