@@ -1,4 +1,5 @@
 #include "app/camera_controller.hpp"
+#include "io/dd_text.hpp"
 #include "scene/camera_up.hpp"
 #include "scene/vec3.hpp"
 
@@ -12,14 +13,6 @@
 
 namespace fr {
 namespace {
-
-// hi + lo += delta, the pair normalised again (Knuth's TwoSum, then the quick one).
-void add_to_pair(double& hi, double& lo, double delta) {
-  const double s = hi + delta, bb = s - hi;
-  const double e = (hi - (s - bb)) + (delta - bb) + lo;
-  hi = s + e;
-  lo = e - (hi - s);
-}
 
 // A wheel notch zooms a quarter of the way in.
 constexpr double kZoomPerNotch = 0.75;
@@ -121,13 +114,13 @@ CameraMotion update_camera(fr_camera& camera, CameraLow& low, CameraMode mode,
   const double eye_hi[3] = {camera.eye[0], camera.eye[1], camera.eye[2]};
   const double eye_lo[3] = {low.eye[0], low.eye[1], low.eye[2]};
   for (int i = 0; i < 3; ++i) {
-    camera.eye[i] = eye_hi[i];
-    low.eye[i] = eye_lo[i];
-    add_to_pair(camera.eye[i], low.eye[i], eye[i]);
+    const DoubleDouble moved_eye = pair_plus({eye_hi[i], eye_lo[i]}, eye[i]);
+    camera.eye[i] = moved_eye.hi;
+    low.eye[i] = moved_eye.lo;
     if (mode == CameraMode::Fly || target[i] != view[i]) {
-      camera.target[i] = eye_hi[i];
-      low.target[i] = eye_lo[i];
-      add_to_pair(camera.target[i], low.target[i], target[i]);
+      const DoubleDouble moved_target = pair_plus({eye_hi[i], eye_lo[i]}, target[i]);
+      camera.target[i] = moved_target.hi;
+      low.target[i] = moved_target.lo;
     }
   }
   return motion;

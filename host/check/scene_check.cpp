@@ -302,14 +302,7 @@ class Checker {
       const double first = pair_at({0, 0, 0});
       de = first;
       for (steps = 0; steps < 3000 && de > goal; ++steps) {
-        for (int c = 0; c < 3; ++c) {
-          // origin += dir * de, as a pair (TwoSum, then normalised).
-          DoubleDouble& o = origin.eye[c];
-          const double d = dir[c] * de, sum = o.hi + d, bb = sum - o.hi;
-          const double e = (o.hi - (sum - bb)) + (d - bb) + o.lo;
-          o.hi = sum + e;
-          o.lo = e - (o.hi - sum);
-        }
+        for (int c = 0; c < 3; ++c) origin.eye[c] = pair_plus(origin.eye[c], dir[c] * de);
         de = pair_at({0, 0, 0});
         nearest = std::min(nearest, std::abs(de));
         if (!(de < 4 * first)) break;  // the ray left the surface behind: a miss

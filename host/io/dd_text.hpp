@@ -23,6 +23,16 @@ struct DoubleDouble {
   bool operator==(const DoubleDouble&) const = default;
 };
 
+// a + b as a normalised pair (Knuth's TwoSum for a.hi + b, then a.lo, then the quick TwoSum):
+// how the host moves a position in pairs (the camera, a path's zoom, check's march). Not for a
+// compiler that reassociates floating point (the project builds without -ffast-math).
+inline DoubleDouble pair_plus(DoubleDouble a, double b) {
+  const double s = a.hi + b, bb = s - a.hi;
+  const double e = (a.hi - (s - bb)) + (b - bb) + a.lo;
+  const double hi = s + e;
+  return {hi, e - (hi - s)};
+}
+
 // A decimal number: an optional sign, digits with an optional point, an optional exponent
 // ("-1.25", "3e-21", ".5E+3"). Digits past the 36th significant one are dropped (a pair holds
 // about 32); *significant_digits, when given, receives how many the text had. Nullopt for

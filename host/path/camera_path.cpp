@@ -36,13 +36,6 @@ glm::dvec3 view_of(const Keyframe& k) {
   return {v[0], v[1], v[2]};
 }
 
-// a + b as a normalised pair (Knuth's TwoSum): hi the nearest double, lo the rest.
-void two_sum(double a, double b, double* hi, double* lo) {
-  const double s = a + b, bb = s - a;
-  *hi = s;
-  *lo = (a - (s - bb)) + (b - bb);
-}
-
 // The keyframe's orientation: right, up and back (-forward) as the rotation's columns.
 glm::dquat orientation(const Keyframe& k) {
   fr_camera c{};
@@ -318,10 +311,9 @@ PathSample sample_camera_path(const CameraPath& path, const SceneInfo& scene, do
     // A zoom: towards the common target along the view, the distance in log, the eye in pairs.
     const double d = std::exp((1 - u) * std::log(d1) + u * std::log(d2));
     for (int c = 0; c < 3; ++c) {
-      double hi = 0, lo = 0;
-      two_sum(k1.target[c], -forward[c] * d, &hi, &lo);
-      s.camera.eye[c] = hi;
-      s.camera_lo.eye[c] = lo + k1.target_lo[c];
+      const DoubleDouble eye = pair_plus({k1.target[c], k1.target_lo[c]}, -forward[c] * d);
+      s.camera.eye[c] = eye.hi;
+      s.camera_lo.eye[c] = eye.lo;
       s.camera.target[c] = k1.target[c];
       s.camera_lo.target[c] = k1.target_lo[c];
     }

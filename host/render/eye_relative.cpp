@@ -4,11 +4,7 @@ namespace fr {
 
 std::array<DoubleDouble, 3> eye_pairs(const fr_camera& camera, const CameraLow& low) {
   std::array<DoubleDouble, 3> eye;
-  for (int i = 0; i < 3; ++i) {
-    // The pair normalised (Knuth's quick TwoSum, |eye| >= |eye_lo|).
-    const double a = camera.eye[i], b = low.eye[i], hi = a + b;
-    eye[i] = DoubleDouble{hi, b - (hi - a)};
-  }
+  for (int i = 0; i < 3; ++i) eye[i] = pair_plus({camera.eye[i], 0}, low.eye[i]);
   return eye;
 }
 
