@@ -10,7 +10,7 @@ set(fractalis_kernel_files frame_constants.h prelude.cl eval_counts.cl rays.cl m
     de/julia.cl de/palette.cl de/mandelbox.cl de/kifs.cl de/jerusalem.cl de/kleinian.cl
     de/hypercomplex.cl de/cantor.cl de/kali.cl de/recursive.cl
     de/hybrid.cl de/staging.cl de/mandelbulber.cl de/dd.cl de/mandelbox_dd.cl de/menger_dd.cl
-    de/mandelbulb_dd.cl
+    de/mandelbulb_dd.cl de/dd_folds.cl de/hybrid_dd.cl
     dd_selftest.cl dd_relative.cl)
 
 function(fractalis_embed_kernels out_var)

@@ -7,6 +7,7 @@
 #include "float128_reference.hpp"
 #include "plugin/scene_instance.hpp"
 #include "render/camera.hpp"
+#include "render/de_probe.hpp"
 #include "render/kernel_assembly.hpp"
 #include "render/precision.hpp"
 #include "render/renderer.hpp"
@@ -29,17 +30,25 @@ struct Scene {
   SceneState state;
 };
 
-Scene load_scene(const std::string& id, const std::string& param, double value) {
+// Scene `id` with the parameters' first components set as given (a choice by its index).
+Scene load_scene(const std::string& id,
+                 const std::vector<std::pair<std::string, double>>& values) {
   Scene s;
   s.scene = test::load_or_fail(std::filesystem::path(SCENE_PLUGIN_DIR) / (id + PLUGIN_SUFFIX));
   s.state = make_default_state(s.scene->info);
-  const int index = s.scene->info.find_param(param);
-  EXPECT_GE(index, 0);
-  if (index >= 0) s.state.params[index].v[0] = value;
+  for (const auto& [param, value] : values) {
+    const int index = s.scene->info.find_param(param);
+    EXPECT_GE(index, 0) << param;
+    if (index >= 0) s.state.params[index].v[0] = value;
+  }
   std::string error;
   auto instance = SceneInstance::create(s.scene, &error);
   EXPECT_TRUE(instance && instance->update(s.state, 0.0, &error)) << error;
   return s;
+}
+
+Scene load_scene(const std::string& id, const std::string& param, double value) {
+  return load_scene(id, {{param, value}});
 }
 
 // Sphere tracing in __float128 from `from` along unit `dir` until the reference estimate is below
@@ -213,10 +222,9 @@ void expect_deep_view_right(const Shape& shape, const Scene& s, const quad eye[3
 // A view `distance` from where the ray from `start` towards `aim` meets the surface of scene `id`
 // (its `iterations` set), rendered in pairs against the march in __float128 with `shape`.
 template <class Shape>
-void expect_right_at(const char* id, int iterations, const Shape& shape, const double start[3],
-                     const double aim[3], quad distance) {
+void expect_right_at(Scene s, const Shape& shape, const double start[3], const double aim[3],
+                     quad distance) {
   if (!test::runtime().device().has_fp64) GTEST_SKIP() << "the device has no double precision";
-  Scene s = load_scene(id, "iterations", iterations);
   quad eye[3];
   place_deep_camera(shape, start, aim, distance, s.state, eye);
   expect_deep_view_right(shape, s, eye);
@@ -226,26 +234,92 @@ void expect_right_at(const char* id, int iterations, const Shape& shape, const d
 // surface; and, for the stability tier, from 1e-18 and 1e-22 (a footprint of 8e-24, 2^-77).
 const double kBoxStart[3] = {7, 6.5, 5}, kBoxAim[3] = {2, 1.3, 0.7};
 TEST(DeepZoom, MandelboxAt1e19MatchesFloat128Tracer) {
-  expect_right_at("mandelbox", 90, test::BoxReference{}, kBoxStart, kBoxAim, 1e-19);
+  expect_right_at(load_scene("mandelbox", "iterations", 90), test::BoxReference{}, kBoxStart, kBoxAim, 1e-19);
 }
 TEST(DeepZoom, MandelboxAt1e18MatchesFloat128Tracer) {
-  expect_right_at("mandelbox", 90, test::BoxReference{}, kBoxStart, kBoxAim, 1e-18);
+  expect_right_at(load_scene("mandelbox", "iterations", 90), test::BoxReference{}, kBoxStart, kBoxAim, 1e-18);
 }
 TEST(DeepZoom, MandelboxAt1e22MatchesFloat128Tracer) {
-  expect_right_at("mandelbox", 90, test::BoxReference{}, kBoxStart, kBoxAim, 1e-22);
+  expect_right_at(load_scene("mandelbox", "iterations", 90), test::BoxReference{}, kBoxStart, kBoxAim, 1e-22);
+}
+
+// The Mandelbox's Julia form (the scene's defaults: scale -2, min radius 0.3, c = 1.8 in each
+// coordinate; a double kernel gets a parameter's double whole) and the rotated box (the scene's default turns, 6 degrees about x and 11 about y) from 1e-19
+// above their surfaces.
+TEST(DeepZoom, MandelboxJuliaAt1e19MatchesFloat128Tracer) {
+  test::BoxReference julia;
+  julia.scale = -2;
+  julia.min_radius = 0.3;
+  julia.julia = true;
+  for (double& c : julia.c) c = 1.8;
+  const double start[3] = {5.5, 4, 6.4}, aim[3] = {0.3, 0.2, 0.1};
+  expect_right_at(load_scene("mandelbox_julia", "iterations", 90), julia, start, aim, 1e-19);
+}
+TEST(DeepZoom, MandelboxRotatedAt1e19MatchesFloat128Tracer) {
+  test::BoxReference rotated;
+  rotated.angle_rad[0] = 6.0 * (M_PI / 180);
+  rotated.angle_rad[1] = 11.0 * (M_PI / 180);
+  const double start[3] = {10, 7, 11}, aim[3] = {0.5, 0.3, 0.2};
+  expect_right_at(load_scene("mandelbox_rotated", "iterations", 90), rotated, start, aim, 1e-19);
+}
+
+// The hybrid composer's steps in pairs, chained as Lowe's box (box fold, sphere fold, scale 2 and
+// add p; no safety factor, the linear estimate) with its bailout 1000: the Mandelbox's reference
+// with that bailout, from 1e-19 above the surface.
+TEST(DeepZoom, HybridBoxStepsAt1e19MatchFloat128Tracer) {
+  test::BoxReference box;
+  box.bailout2 = 1e6;
+  // Kinds and estimates by index (plugins/hybrid/hybrid.c): none 0, box_fold 2, sphere_fold 3,
+  // scale_translate 4; linear 1.
+  const Scene s = load_scene(
+      "hybrid", {{"step1", 2}, {"step1_a", 1}, {"step2", 3}, {"step2_a", 0.5}, {"step2_b", 1},
+                 {"step3", 4}, {"step3_a", 2}, {"step4", 0}, {"step5", 0}, {"step6", 0},
+                 {"iterations", 90}, {"bailout", 1000}, {"estimate", 1}, {"de_factor", 1},
+                 {"bound", 15}});
+  expect_right_at(s, box, kBoxStart, kBoxAim, 1e-19);
 }
 
 // The Menger sponge (level 50: holes down to 3^-50, 1.4e-24) from 1e-19 above a face.
 TEST(DeepZoom, MengerAt1e19MatchesFloat128Tracer) {
   const double start[3] = {2.1, 1.7, 2.6}, aim[3] = {0.13, 0.31, -0.05};
-  expect_right_at("menger", 50, test::SpongeReference{}, start, aim, 1e-19);
+  expect_right_at(load_scene("menger", "iterations", 50), test::SpongeReference{}, start, aim, 1e-19);
 }
 
 // The Mandelbulb (power 8, 40 iterations) from 1e-19 above its surface: the pairs' de Moivre
 // form against the reference's trigonometry in __float128.
 TEST(DeepZoom, MandelbulbAt1e19MatchesFloat128Tracer) {
   const double start[3] = {0.3, 0.7, 2.2}, aim[3] = {0.02, 0.05, 0};
-  expect_right_at("mandelbulb", 40, test::BulbReference{}, start, aim, 1e-19);
+  expect_right_at(load_scene("mandelbulb", "iterations", 40), test::BulbReference{}, start, aim, 1e-19);
+}
+
+// A pair estimate that is double at some parameters is found out, not trusted: the Mandelbulb at
+// power 8.5 has no pair form (its angles would need trigonometry in pairs), so 1e-19 above its
+// surface the host's probe sees it round (pair_estimate_resolves_view) and auto stays in double
+// (where render warns); at power 8 the same test passes and auto picks pairs.
+TEST(DeepZoom, PairEstimateThatRoundsToDoubleIsFoundOut) {
+  if (!test::runtime().device().has_fp64) GTEST_SKIP() << "the device has no double precision";
+  const double start[3] = {0.3, 0.7, 2.2}, aim[3] = {0.02, 0.05, 0};
+  RenderSettings settings = depth_settings(Precision::Auto);
+  settings.width_px = 320;
+  settings.height_px = 240;
+  for (const double power : {8.5, 8.0}) {
+    SCOPED_TRACE("power " + std::to_string(power));
+    Scene s = load_scene("mandelbulb", {{"iterations", 40}, {"power", power}});
+    test::BulbReference bulb;
+    bulb.power = power;
+    quad eye[3];
+    place_deep_camera(bulb, start, aim, 1e-19, s.state, eye);
+    const PairProbe probe = [&](const std::vector<std::array<float, 3>>& points,
+                                const PairOrigin& origin) {
+      return probe_de(test::runtime(), s.scene->info, s.state.params, points, 1,
+                      Precision::DoubleDouble, &origin);
+    };
+    const CameraRays rays = view_camera_rays(s.state, settings.width_px, settings.height_px);
+    const bool whole = power == 8.0;
+    EXPECT_EQ(pair_estimate_resolves_view(probe, s.state, rays), whole);
+    EXPECT_EQ(resolve_precision(test::runtime(), s.scene->info, s.state, settings),
+              whole ? Precision::DoubleDouble : Precision::Double);
+  }
 }
 
 // Automatic precision: float at the scene's own view, double 1e-10 from the surface (a footprint

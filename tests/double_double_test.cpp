@@ -269,7 +269,8 @@ TEST(DoubleDouble, MandelboxAtPointsNearTheSurfaceAgreesWithFloat128) {
       "}\n__kernel void doubles(" + kDeepArguments + ") {\n" + kDeepPoint +
       "  STORE(de_mandelbox(rounded, (int)iterations, 2.0, 0.5, 1.0, 1.0, &trap), i, out);\n}\n";
   check_deep(points,
-             {"de/operators.cl", "de/folds.cl", "de/mandelbox.cl", "de/dd.cl", "de/mandelbox_dd.cl"},
+             {"de/primitives.cl", "de/operators.cl", "de/folds.cl", "de/mandelbox.cl", "de/kifs.cl",
+              "de/dd.cl", "de/dd_folds.cl", "de/mandelbox_dd.cl"},
              kernels, box.iterations);
 }
 
@@ -286,8 +287,8 @@ TEST(DoubleDouble, MengerAtPointsNearTheSurfaceAgreesWithFloat128) {
       "}\n__kernel void doubles(" + kDeepArguments + ") {\n" + kDeepPoint +
       "  STORE(de_menger(rounded, (int)iterations, 3.0, v3s(1, 1, 1), 0.0, &trap), i, out);\n}\n";
   check_deep(points,
-             {"de/primitives.cl", "de/operators.cl", "de/folds.cl", "de/menger.cl", "de/dd.cl",
-              "de/menger_dd.cl"},
+             {"de/primitives.cl", "de/operators.cl", "de/folds.cl", "de/menger.cl", "de/kifs.cl",
+              "de/dd.cl", "de/dd_folds.cl", "de/menger_dd.cl"},
              kernels, sponge.iterations);
 }
 

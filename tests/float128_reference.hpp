@@ -34,17 +34,46 @@ inline void split(quad x, double* hi, double* lo) {
 
 // The Mandelbox (scale 2, min radius 0.5, fixed radius 1, fold 1, 90 iterations) in __float128.
 // (Its estimate resolves about 1 / dr: 2^-n after n iterations, so a view 1e-22 across needs
-// some 75; 60 stall near 1e-19.)
+// some 75; 60 stall near 1e-19.) Its Julia form adds c in place of p (dr without the +1); its
+// rotated form turns the folded point by angle_rad about x, then y, then z (the rotation's
+// cosines and sines in double, as the scene's parameters give them).
 struct BoxReference {
   int iterations = 90;
   double scale = 2, min_radius = 0.5, fixed_radius = 1, fold = 1;
+  double bailout2 = 1e8;  // |z|^2 past which the orbit has escaped (the hybrid scene's is a parameter)
+  bool julia = false;
+  double c[3] = {0, 0, 0};
+  double angle_rad[3] = {0, 0, 0};
+  // The point turned as the scenes turn it (kernels' p_rotate_x, _y, _z, in that order).
+  void rotate(quad z[3]) const {
+    if (angle_rad[0] != 0) {
+      const quad co = std::cos(angle_rad[0]), si = std::sin(angle_rad[0]);
+      const quad y = co * z[1] + si * z[2], w = -si * z[1] + co * z[2];
+      z[1] = y;
+      z[2] = w;
+    }
+    if (angle_rad[1] != 0) {
+      const quad co = std::cos(angle_rad[1]), si = std::sin(angle_rad[1]);
+      const quad x = co * z[0] - si * z[2], w = si * z[0] + co * z[2];
+      z[0] = x;
+      z[2] = w;
+    }
+    if (angle_rad[2] != 0) {
+      const quad co = std::cos(angle_rad[2]), si = std::sin(angle_rad[2]);
+      const quad x = co * z[0] + si * z[1], y = -si * z[0] + co * z[1];
+      z[0] = x;
+      z[1] = y;
+    }
+  }
   quad de(const quad p[3]) const {
     quad z[3] = {p[0], p[1], p[2]};
+    const quad added[3] = {julia ? quad(c[0]) : p[0], julia ? quad(c[1]) : p[1],
+                           julia ? quad(c[2]) : p[2]};
     quad dr = 1;
     quad r2 = z[0] * z[0] + z[1] * z[1] + z[2] * z[2];
     const quad min2 = static_cast<quad>(min_radius) * min_radius,
                fixed2 = static_cast<quad>(fixed_radius) * fixed_radius;
-    for (int i = 0; i < iterations && r2 < 1e8; ++i) {
+    for (int i = 0; i < iterations && r2 < bailout2; ++i) {
       for (quad& c : z) {
         if (c > fold)
           c = 2 * static_cast<quad>(fold) - c;
@@ -53,8 +82,9 @@ struct BoxReference {
       }
       const quad f2 = z[0] * z[0] + z[1] * z[1] + z[2] * z[2];
       const quad factor = f2 < min2 ? fixed2 / min2 : f2 < fixed2 ? fixed2 / f2 : quad(1);
-      for (int c = 0; c < 3; ++c) z[c] = z[c] * factor * scale + p[c];
-      dr = dr * factor * (scale < 0 ? -scale : scale) + 1;
+      rotate(z);
+      for (int c = 0; c < 3; ++c) z[c] = z[c] * factor * scale + added[c];
+      dr = dr * factor * (scale < 0 ? -scale : scale) + (julia ? 0 : 1);
       r2 = z[0] * z[0] + z[1] * z[1] + z[2] * z[2];
     }
     return quad_sqrt(r2) / quad_abs(dr);

@@ -178,6 +178,20 @@ TEST(KernelAssembly, ParameterBlockAndSpecialisation) {
     EXPECT_EQ(radius[0], static_cast<float>(v));
     EXPECT_EQ(double(radius[0]) + (double(radius[1]) + double(radius[2])), v) << v;
   }
+  // A vec3's three components alike (GCC 12 at -O3 once dropped the rest of x and y): the block
+  // holds x, y, z, then their mids, then their lows.
+  SceneInfo with_vec3 = info;
+  with_vec3.params[1].flags = 0;  // the tint travels in the block
+  auto vec3_values = make_default_state(with_vec3).params;
+  vec3_values[1] = {{1.8, -0.3, 1e-9 / 3}};
+  const auto vec3_bytes = pack_scene_params(with_vec3, vec3_values);
+  ASSERT_EQ(vec3_bytes.size(), 12u + 36u);
+  float tint[9];
+  std::memcpy(tint, vec3_bytes.data() + 12, sizeof tint);
+  for (int c = 0; c < 3; ++c)
+    EXPECT_EQ(double(tint[c]) + (double(tint[3 + c]) + double(tint[6 + c])), vec3_values[1].v[c])
+        << "component " << c;
+
   const auto d = assemble_render_kernel(info, values, KernelConfig{16, Precision::Double});
   EXPECT_TRUE(contains(d.source, "  float radius;\n  float radius__mid;\n  float radius__lo;\n"));
   EXPECT_TRUE(contains(d.source,

@@ -167,11 +167,28 @@ bool Explorer::update(const InputState& input, double dt_s, double now_s) {
   if (window_width_px_ > 0 && window_height_px_ > 0) {
     const CameraRays rays = view_camera_rays(slot.state, window_width_px_, window_height_px_);
     stats_.pixel_footprint = std::abs(stats_.surface_distance) * rays.pixel_angle_rad;
-    // Past double there, and nothing finer to render it in: said in the overlay.
-    stats_.past_resolution =
-        !has_pair_estimate(slot.scene->info) &&
+    // Past double there, and nothing finer to render it in: said in the overlay. A pair
+    // estimate that is only double at these parameters counts as none (asked only that deep).
+    const bool past_double =
         stats_.pixel_footprint < kDoubleFootprintUlps * position_epsilon(Precision::Double) *
                                      std::max(glm::length(rays.eye), slot.state.bounding_radius);
+    stats_.pairs_unresolved = false;
+    if (past_double && pairs && probe_ok && !quick_frame_) {
+      try {
+        const PairProbe probe = [&](const std::vector<std::array<float, 3>>& points,
+                                    const PairOrigin& origin) {
+          return worker_.probe_de(slot.scene->info, slot.state.params, points, 1,
+                                  Precision::DoubleDouble, &origin);
+        };
+        stats_.pairs_unresolved = !pair_estimate_resolves_view(probe, slot.state, rays);
+      } catch (const RenderWorkerFailure& e) {
+        worker_failed(slot, e);
+      } catch (const std::exception& e) {
+        slot.error = e.what();
+      }
+    }
+    stats_.past_resolution =
+        past_double && (!has_pair_estimate(slot.scene->info) || stats_.pairs_unresolved);
   }
   const SceneState before = slot.state;
   if (path_.playing)

@@ -49,9 +49,11 @@ struct ExplorerStats {
   double surface_distance = 0;             // DE at the eye
   // The depth: a pixel's footprint at the nearest surface (the DE at the eye times the pixel
   // angle), "pixel 3.2e-21" in the overlay; and whether the view is past what the last frame's
-  // number type resolves there while the scene has no pair estimate (said, never drawn silently).
+  // number type resolves there while the scene has no pair estimate, or one that is only double
+  // at these parameters (pairs_unresolved; said, never drawn silently).
   double pixel_footprint = 0;
   bool past_resolution = false;
+  bool pairs_unresolved = false;
   // Where the last full frame's DE evaluations went, while counting is on (samples 0: off).
   EvalCounts eval_counts;
 };

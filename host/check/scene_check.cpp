@@ -347,6 +347,7 @@ class Checker {
     const auto values =
         worker_.probe_de(info, defaults_.params, line, 16, Precision::DoubleDouble, &origin);
     double steepest = 0;
+    int steep_steps = 0;
     std::vector<float> distinct;
     for (int k = 0; k < 16; ++k) {
       if (std::find(distinct.begin(), distinct.end(), values[k]) == distinct.end())
@@ -356,7 +357,9 @@ class Checker {
                    dy = double(line[k][1]) - line[k - 1][1],
                    dz = double(line[k][2]) - line[k - 1][2];
       const double apart = std::sqrt(dx * dx + dy * dy + dz * dz);
-      steepest = std::max(steepest, std::abs(double(values[k]) - values[k - 1]) / apart);
+      const double slope = std::abs(double(values[k]) - values[k - 1]) / apart;
+      steepest = std::max(steepest, slope);
+      steep_steps += slope > 1 + options_.lipschitz_tolerance;
     }
     const std::string where_deep = "at 16 points " + fmt(step * std::sqrt(2.0)) + " apart, " +
                                    fmt(de) + " from the surface and off it (" +
@@ -364,10 +367,15 @@ class Checker {
                                    fmt(points[start]) + ")";
     // Points 2e-21 R apart and as far off the surface: a pair estimate tells (nearly) all of
     // them apart; one rounded to double anywhere on its way gives a few steps.
-    if (!(steepest <= 1 + options_.lipschitz_tolerance) || distinct.size() < 12) {
+    // A step or two over the bound is a seam where the escape iteration changes (de-lipschitz
+    // allows those too, and a hybrid's first-order estimate has them at every depth); more is
+    // an estimate that oversteps.
+    const bool seams_only = steep_steps <= 2;
+    if (!seams_only || distinct.size() < 12) {
       add("de-pairs", CheckStatus::Fail,
           where_deep + ": " + std::to_string(distinct.size()) + " different values, |dDE| / |dp| " +
-              "up to " + fmt(steepest) +
+              "up to " + fmt(steepest) + " (" + std::to_string(steep_steps) + " of 15 steps over " +
+              fmt(1 + options_.lipschitz_tolerance) + ")" +
               (distinct.size() < 12 ? " (the estimate does not resolve past double: is it "
                                       "computed in pairs?)"
                                     : " (it oversteps there)"));
@@ -376,7 +384,10 @@ class Checker {
     add("de-pairs", CheckStatus::Pass,
         "agrees with the double estimate at " + std::to_string(points.size()) + " points (within " +
             fmt(worst) + " relative); " + where_deep + ": " + std::to_string(distinct.size()) +
-            " different values, |dDE| / |dp| at most " + fmt(steepest));
+            " different values, |dDE| / |dp| at most " + fmt(steepest) +
+            (steep_steps > 0 ? " (" + std::to_string(steep_steps) +
+                                   " of 15 steps over the bound: a seam, as de-lipschitz allows)"
+                             : ""));
   }
 
   void check_de() {

@@ -34,7 +34,7 @@ namespace {
 // How the primary rays ended, and the warnings a user must see: many rays out of steps, a camera
 // inside the solid, surface detail finer than float resolves.
 void report_rays(const FrameImage& image, const SceneInfo& info, const SceneState& state,
-                 const RenderSettings& settings, std::ostream& out) {
+                 const RenderSettings& settings, RenderWorker& worker, std::ostream& out) {
   const RayCounts rays = count_rays(image);
   const size_t total = image.ray_status.size();
   auto percent = [&](size_t n) { return 100.0 * double(n) / double(std::max<size_t>(total, 1)); };
@@ -49,6 +49,25 @@ void report_rays(const FrameImage& image, const SceneInfo& info, const SceneStat
     spdlog::warn(
         "the camera is inside the surface: every ray starts inside the solid and is black");
   const CameraRays camera_rays = view_camera_rays(state, image.width_px, image.height_px);
+  // Past double, whether the scene's pair estimate resolves these parameters (some are double
+  // at some: the Mandelbulb at a fractional power).
+  const auto pairs_resolve = [&] {
+    const PairProbe probe = [&](const std::vector<std::array<float, 3>>& points,
+                                const PairOrigin& origin) {
+      return worker.probe_de(info, state.params, points, 1, Precision::DoubleDouble, &origin);
+    };
+    return pair_estimate_resolves_view(probe, state, camera_rays);
+  };
+  if (image.precision == Precision::DoubleDouble) {
+    const size_t past_double =
+        pixels_below_resolution(image.depth, camera_rays, Precision::Double);
+    if (past_double > 0 && !pairs_resolve())
+      spdlog::warn(
+          "{:.2f}% of surface pixels are finer than double resolves, and scene '{}''s pair "
+          "estimate is only double at these parameters (docs/deep_zoom.md): the picture there "
+          "is not right",
+          percent(past_double), info.id);
+  }
   const size_t fine = pixels_below_resolution(image.depth, camera_rays, image.precision);
   if (fine == 0) return;
   const std::string share = fmt::format("{:.2f}% of surface pixels are finer than ", percent(fine));
@@ -57,8 +76,13 @@ void report_rays(const FrameImage& image, const SceneInfo& info, const SceneStat
       spdlog::warn("{}float can resolve there; use --precision double (or auto)", share);
       break;
     case Precision::Double:
-      if (has_pair_estimate(info))
+      if (has_pair_estimate(info) && pairs_resolve())
         spdlog::warn("{}double can resolve there; use --precision dd (or auto)", share);
+      else if (has_pair_estimate(info))
+        spdlog::warn(
+            "{}double can resolve there, and scene '{}''s pair estimate is only double at "
+            "these parameters (docs/deep_zoom.md): the picture there is not right",
+            share, info.id);
       else
         spdlog::warn(
             "{}double can resolve there, and scene '{}' has no pair estimate "
@@ -242,7 +266,7 @@ void render_whole(PreparedScene& p, const std::string& out_file, std::ostream& r
          << " on " << p.device.name << " (lanes " << image.lanes << ", "
          << precision_name(image.precision) << "): kernel build " << static_cast<int>(build_ms)
          << " ms, render " << static_cast<int>(render_ms) << " ms; wrote " << out_file << "\n";
-  report_rays(image, p.scene->info, p.state, p.render, report);
+  report_rays(image, p.scene->info, p.state, p.render, renderer, report);
   if (p.render.count_evaluations) report << format_eval_counts(renderer.eval_counts());
 }
 

@@ -5,6 +5,7 @@
 #include "render/scene_source_guard.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <initializer_list>
 #include <set>
@@ -453,6 +454,24 @@ bool has_pair_estimate(const SceneInfo& info) {
   return source_defines_function(info.de_source, "scene_de_dd");
 }
 
+namespace {
+
+// A double as three floats whose sum is exactly it.
+struct FloatSplit {
+  float hi = 0, mid = 0, lo = 0;
+};
+
+FloatSplit split_in_floats(double v) {
+  FloatSplit s;
+  s.hi = static_cast<float>(v);
+  const double rest = v - static_cast<double>(s.hi);
+  s.mid = static_cast<float>(rest);
+  s.lo = static_cast<float>(rest - static_cast<double>(s.mid));
+  return s;
+}
+
+}  // namespace
+
 std::vector<uint8_t> pack_scene_params(const SceneInfo& info, const std::vector<fr_value>& values,
                                        const PairOrigin* origin) {
   std::vector<uint8_t> bytes;
@@ -468,18 +487,15 @@ std::vector<uint8_t> pack_scene_params(const SceneInfo& info, const std::vector<
       push(&v);
     } else {
       // hi + mid + lo is the double exactly: each remainder is exact in double and has 24
-      // fewer significant bits than the last.
-      float hi[3] = {0, 0, 0}, mid[3] = {0, 0, 0}, lo[3] = {0, 0, 0};
-      for (int c = 0; c < p.component_count(); ++c) {
-        const double v = values[i].v[c];
-        hi[c] = static_cast<float>(v);
-        const double rest = v - static_cast<double>(hi[c]);
-        mid[c] = static_cast<float>(rest);
-        lo[c] = static_cast<float>(rest - static_cast<double>(mid[c]));
-      }
-      for (int c = 0; c < p.component_count(); ++c) push(&hi[c]);
-      for (int c = 0; c < p.component_count(); ++c) push(&mid[c]);
-      for (int c = 0; c < p.component_count(); ++c) push(&lo[c]);
+      // fewer significant bits than the last. One component at a time through split_in_floats:
+      // GCC 12's SLP vectorizer at -O3 turned the same arithmetic over float[3] arrays into a
+      // round trip it dropped, losing the x and y components' rest (kernel_assembly_test).
+      std::array<FloatSplit, 3> parts{};
+      const int n = p.component_count();
+      for (int c = 0; c < n; ++c) parts[c] = split_in_floats(values[i].v[c]);
+      for (int c = 0; c < n; ++c) push(&parts[c].hi);
+      for (int c = 0; c < n; ++c) push(&parts[c].mid);
+      for (int c = 0; c < n; ++c) push(&parts[c].lo);
     }
   }
   if (origin) {

@@ -43,10 +43,57 @@ Precision resolve_precision(ClRuntime& runtime, const SceneInfo& info, const Sce
   const float pair_de =
       probe_de(runtime, info, state.params, {{0, 0, 0}}, 1, Precision::DoubleDouble, &origin)[0];
   const double pair_distance = std::isfinite(pair_de) ? std::abs(double(pair_de)) : 0.0;
-  return pair_distance * rays.pixel_angle_rad <
-                 kDoubleFootprintUlps * double_resolution(position_scale)
-             ? Precision::DoubleDouble
-             : Precision::Double;
+  const double pair_footprint = pair_distance * rays.pixel_angle_rad;
+  if (pair_footprint >= kDoubleFootprintUlps * double_resolution(position_scale))
+    return Precision::Double;
+  // Pairs only where they resolve more than double would at these parameters.
+  const PairProbe probe = [&](const std::vector<std::array<float, 3>>& points,
+                              const PairOrigin& at) {
+    return probe_de(runtime, info, state.params, points, 1, Precision::DoubleDouble, &at);
+  };
+  return pair_estimate_resolves(probe, eye_pair, pair_footprint) ? Precision::DoubleDouble
+                                                                 : Precision::Double;
+}
+
+bool pair_estimate_resolves(const PairProbe& probe, const std::array<DoubleDouble, 3>& eye,
+                            double footprint) {
+  if (!(footprint > 0) || !std::isfinite(footprint)) return true;
+  constexpr int kPoints = 8;
+  const double spacing = 0.25 * footprint;
+  // Only axes along which the points (1.75 footprints) span less than half an ulp of the eye's
+  // coordinate tell: along the others double sees the steps too.
+  std::vector<int> axes;
+  std::vector<std::array<float, 3>> points;
+  for (int axis = 0; axis < 3; ++axis) {
+    const double x = std::abs(eye[axis].hi);
+    if (!(2 * footprint < std::nextafter(x, INFINITY) - x)) continue;
+    axes.push_back(axis);
+    for (int k = 0; k < kPoints; ++k) {
+      std::array<float, 3> q{0, 0, 0};
+      q[axis] = static_cast<float>(k * spacing);
+      points.push_back(q);
+    }
+  }
+  if (axes.empty()) return true;
+  PairOrigin origin;
+  std::copy(eye.begin(), eye.end(), origin.eye);
+  const std::vector<float> values = probe(points, origin);
+  for (size_t a = 0; a < axes.size(); ++a) {
+    std::vector<float> line(values.begin() + a * kPoints, values.begin() + (a + 1) * kPoints);
+    std::sort(line.begin(), line.end());
+    if (std::unique(line.begin(), line.end()) - line.begin() >= 6) return true;
+  }
+  return false;
+}
+
+bool pair_estimate_resolves_view(const PairProbe& probe, const SceneState& state,
+                                 const CameraRays& rays) {
+  const std::array<DoubleDouble, 3> eye = eye_pairs(state.camera, state.camera_lo);
+  PairOrigin origin;
+  std::copy(eye.begin(), eye.end(), origin.eye);
+  const float de = probe({{0, 0, 0}}, origin)[0];
+  if (!std::isfinite(de)) return true;
+  return pair_estimate_resolves(probe, eye, std::abs(double(de)) * rays.pixel_angle_rad);
 }
 
 double double_resolution(double position_scale) {

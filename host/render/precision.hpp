@@ -10,9 +10,12 @@
 
 #include "render/camera.hpp"
 #include "render/cl_runtime.hpp"
+#include "render/kernel_assembly.hpp"  // PairOrigin, DoubleDouble
 #include "render/render_settings.hpp"
 #include "scene/scene_data.hpp"
 
+#include <array>
+#include <functional>
 #include <vector>
 
 namespace fr {
@@ -34,6 +37,25 @@ double double_resolution(double position_scale);
 // pairs) and the scene has a pair estimate, else Double.
 Precision resolve_precision(ClRuntime& runtime, const SceneInfo& info, const SceneState& state,
                             const RenderSettings& settings);
+
+// A pair estimate's values at points relative to an origin (probe_de in DoubleDouble, on this
+// process's device or through a render worker).
+using PairProbe = std::function<std::vector<float>(const std::vector<std::array<float, 3>>&,
+                                                   const PairOrigin&)>;
+
+// Whether a scene's pair estimate resolves what double cannot at this eye: 8 points a quarter of
+// the footprint apart along each axis on which that spans under half an ulp of the eye's
+// coordinate, and the estimate takes at least 6 different values along one of them. An estimate
+// that rounds the point to double takes at most 2 there. Some scenes' pair estimates
+// are double at some parameters (the Mandelbulb at a fractional power): this is how the host
+// finds out without knowing the formula. True where the footprint is not positive or no axis
+// qualifies (nothing to learn: double resolves the steps too).
+bool pair_estimate_resolves(const PairProbe& probe, const std::array<DoubleDouble, 3>& eye,
+                            double footprint);
+
+// pair_estimate_resolves at this view's eye, its footprint from the pair estimate there.
+bool pair_estimate_resolves_view(const PairProbe& probe, const SceneState& state,
+                                 const CameraRays& rays);
 
 // Throws std::invalid_argument, saying why, when this scene cannot render a double-double frame
 // with these settings: it has no pair estimate, or the path tracer or fast math is asked for.

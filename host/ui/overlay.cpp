@@ -180,9 +180,12 @@ void draw_statistics(Explorer& explorer, const OverlayState& overlay) {
               st.surface_distance, st.pixel_footprint);
   if (st.past_resolution) {
     const ImVec4 orange(1, 0.6f, 0.2f, 1);
-    wrapped_text(&orange,
-                 "Past what double resolves here, and this scene has no pair estimate "
-                 "(scene_de_dd): the picture is not right this deep.");
+    wrapped_text(&orange, st.pairs_unresolved
+                              ? "Past what double resolves here, and this scene's pair estimate "
+                                "is only double at these parameters: the picture is not right "
+                                "this deep."
+                              : "Past what double resolves here, and this scene has no pair "
+                                "estimate (scene_de_dd): the picture is not right this deep.");
   }
   // Never silent: rays out of steps and the precision in use, in warning colour when it matters.
   const bool many = 100 * st.out_of_steps_fraction > kOutOfStepsWarnPercent;

@@ -9,24 +9,29 @@
  * a pixel and the rest runs in double. The Mandelbox's dr never shrinks (the sphere fold's factor
  * is at least 1, |scale| > 1), so a lane switches once; the loop keeps the pairs until every lane
  * of the work-item may switch. `pixel` is the size the estimate must resolve (a pixel's footprint
- * at the point; 0 keeps every iteration in pairs). */
+ * at the point; 0 keeps every iteration in pairs). The Julia and rotated boxes run the same loop
+ * (mandelbox_dd_iterate). */
 #include "fr/dd.cl"
 #include "fr/folds.cl"
+#include "fr/operators.cl"
+#include "fr/mandelbox.cl"
+#include "fr/dd_folds.cl"
 
-/* 2 clamp(x, -limit, limit) - x, exactly: 2 limit - x above the limit, -2 limit - x below it. */
-inline dd_t dd_fold_box1(dd_t x, real_t limit) {
-  const dd_t above = dd_add_d(dd_neg(x), 2 * limit);
-  const dd_t below = dd_add_d(dd_neg(x), -2 * limit);
-  return dd_select(dd_gt_d(x, limit), above, dd_select(dd_lt_d(x, -limit), below, x));
-}
-
-real_t de_mandelbox_dd(dd3_t p, int iterations, scalar_t scale, scalar_t min_radius,
-                       scalar_t fixed_radius, scalar_t fold_limit, real_t pixel) {
+/* The iteration shared by the box, its Julia form and the rotated box (mandelbox_iterate's): the
+ * Julia form adds the constant c (a double) instead of p, and its dr gets no +1; the rotation
+ * (Euler angles in radians, x then y then z) follows the folds. Both keep dr from shrinking, so a
+ * lane's switch to double stays final. For the Julia form p enters only the first iteration: the
+ * bound's size is max(|z|, |c|). */
+inline real_t mandelbox_dd_iterate(dd3_t p, int iterations, scalar_t scale, scalar_t min_radius,
+                                   scalar_t fixed_radius, scalar_t fold_limit, int julia, vec3_t c,
+                                   scalar_t angle_x, scalar_t angle_y, scalar_t angle_z,
+                                   real_t pixel) {
   const real_t limit = to_real(fold_limit);
-  const real_t min2 = to_real(min_radius * min_radius);
-  const real_t fixed2 = to_real(fixed_radius * fixed_radius);
   const real_t bailout2 = to_real(1e8);
-  const real_t p_size = sqrt(dd_to_real(dd3_length2(p)));
+  const real_t dr_added = julia ? to_real(0) : to_real(1);
+  const real_t p_size =
+      julia ? v3_length(c) : sqrt(dd_to_real(dd3_length2(p)));
+  const dd3_t added = julia ? dd3_from(c) : p;
   /* 1000 ulps of double, relative */
   const real_t switch_ulps = to_real(1000 * DBL_EPSILON);
   dd3_t z = p;
@@ -40,19 +45,13 @@ real_t de_mandelbox_dd(dd3_t p, int iterations, scalar_t scale, scalar_t min_rad
     const mask_t live = r2 < bailout2;
     if (!any_lane(live)) break;
     if (!any_lane(live & needs_pairs)) break; /* the rest in double, below */
-    dd3_t folded = dd3_make(dd_fold_box1(z.x, limit), dd_fold_box1(z.y, limit),
-                            dd_fold_box1(z.z, limit));
-    const dd_t f2 = dd3_length2(folded);
-    /* The sphere fold: times fixed2 / min2 inside min_radius, fixed2 / r2 between the radii. */
-    const mask_t inner = dd_lt_d(f2, min2);
-    const mask_t shell = !inner & dd_lt_d(f2, fixed2);
-    const dd_t safe_r2 = dd_select(shell, f2, dd_from(to_real(1)));
-    const dd_t factor = dd_select(
-        inner, dd_from(fixed2 / min2),
-        dd_select(shell, dd_div_d_by(fixed2, safe_r2), dd_from(to_real(1))));
+    const dd3_t folded = dd3_fold_box(z, limit);
+    const dd_t factor = dd_sphere_fold_factor(dd3_length2(folded), min_radius, fixed_radius);
     /* scale x factor first: one product of pairs a coordinate, not two. */
-    const dd3_t next = dd3_add(dd3_scale(folded, dd_mul_d(factor, to_real(scale))), p);
-    const real_t next_dr = dr * factor.hi * to_real(fabs(scale)) + to_real(1);
+    const dd3_t turned = dd3_rotate_xyz(dd3_scale(folded, dd_mul_d(factor, to_real(scale))),
+                                        angle_x, angle_y, angle_z);
+    const dd3_t next = dd3_add(turned, added);
+    const real_t next_dr = dr * factor.hi * to_real(fabs(scale)) + dr_added;
     z = dd3_select(live, next, z);
     dr = lane_select(live, next_dr, dr);
     r2 = lane_select(live, v3_length2(dd3_to_v3(z)), r2);
@@ -66,7 +65,7 @@ real_t de_mandelbox_dd(dd3_t p, int iterations, scalar_t scale, scalar_t min_rad
   const dd_t r_pairs = dd_sqrt(dd3_length2(z));
   /* The rest in double: p rounded to double costs at most an ulp of |p| over dr (as above). */
   vec3_t zd = dd3_to_v3(z);
-  const vec3_t pd = dd3_to_v3(p);
+  const vec3_t pd = julia ? c : dd3_to_v3(p);
   real_t r2d = v3_length2(zd);
   for (; i < iterations; ++i) {
     const mask_t live = r2d < bailout2;
@@ -74,12 +73,34 @@ real_t de_mandelbox_dd(dd3_t p, int iterations, scalar_t scale, scalar_t min_rad
     vec3_t folded = p_fold_box(zd, limit);
     real_t factor = to_real(1);
     folded = p_fold_sphere(folded, to_real(min_radius), to_real(fixed_radius), &factor);
+    folded = p_rotate_xyz(folded, angle_x, angle_y, angle_z);
     const vec3_t next = v3_add(v3_scale(folded, to_real(scale)), pd);
-    const real_t next_dr = dr * factor * to_real(fabs(scale)) + to_real(1);
+    const real_t next_dr = dr * factor * to_real(fabs(scale)) + dr_added;
     zd = v3_select(live, next, zd);
     dr = lane_select(live, next_dr, dr);
     r2d = lane_select(live, v3_length2(zd), r2d);
   }
   return lane_select(ended_in_pairs, r_pairs.hi / fabs(dr) + r_pairs.lo / fabs(dr),
                      sqrt(r2d) / fabs(dr));
+}
+
+real_t de_mandelbox_dd(dd3_t p, int iterations, scalar_t scale, scalar_t min_radius,
+                       scalar_t fixed_radius, scalar_t fold_limit, real_t pixel) {
+  return mandelbox_dd_iterate(p, iterations, scale, min_radius, fixed_radius, fold_limit, 0,
+                              v3s(0, 0, 0), 0, 0, 0, pixel);
+}
+
+/* Lowe's box as a Julia set (de_mandelbox_julia) in pairs. */
+real_t de_mandelbox_julia_dd(dd3_t p, int iterations, scalar_t scale, scalar_t min_radius,
+                             scalar_t fixed_radius, scalar_t fold_limit, vec3_t c, real_t pixel) {
+  return mandelbox_dd_iterate(p, iterations, scale, min_radius, fixed_radius, fold_limit, 1, c, 0,
+                              0, 0, pixel);
+}
+
+/* The rotated box (de_mandelbox_rotated) in pairs. */
+real_t de_mandelbox_rotated_dd(dd3_t p, int iterations, scalar_t scale, scalar_t min_radius,
+                               scalar_t fixed_radius, scalar_t fold_limit, scalar_t angle_x,
+                               scalar_t angle_y, scalar_t angle_z, real_t pixel) {
+  return mandelbox_dd_iterate(p, iterations, scale, min_radius, fixed_radius, fold_limit, 0,
+                              v3s(0, 0, 0), angle_x, angle_y, angle_z, pixel);
 }

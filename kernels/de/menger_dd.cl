@@ -12,14 +12,7 @@
 #include "fr/operators.cl"
 #include "fr/folds.cl"
 #include "fr/menger.cl"
-
-/* The pair with the larger value first. */
-inline void dd_order(dd_t* a, dd_t* b) {
-  const mask_t swap = dd_lt(*a, *b);
-  const dd_t first = dd_select(swap, *b, *a), second = dd_select(swap, *a, *b);
-  *a = first;
-  *b = second;
-}
+#include "fr/dd_folds.cl"
 
 real_t de_menger_dd(dd3_t p, int iterations, scalar_t scale, vec3_t offset, scalar_t rotation,
                     real_t pixel) {

@@ -53,7 +53,7 @@ STEP(6, NONE, 1, 1, 0, 0, 0)
 
 static const fr_param_desc iterations =
     FR_INT_PARAM("iterations", "Iterations", "Hybrid", "Times the whole chain of steps runs.", 8, 1,
-                 40, FR_PARAM_SPECIALIZE);
+                 100, FR_PARAM_SPECIALIZE);
 static const fr_param_desc bailout =
     FR_FLOAT_PARAM("bailout", "Bailout", "Hybrid",
                    "An orbit this far out has escaped; larger is more exact for the estimate.", 64,

@@ -42,8 +42,8 @@ static const fr_param_desc angle_z_deg = FR_FLOAT_PARAM(
     "angle_z_deg", "Rotation z", "Fractal", "Rotation about z after each fold, degrees.", 0.0, -180,
     180, FR_PARAM_ANIMATABLE);
 static const fr_param_desc iterations =
-    FR_INT_PARAM("iterations", "Iterations", "Fractal", "Folds per evaluation; more is finer.", 14,
-                 4, 40, FR_PARAM_SPECIALIZE);
+    FR_INT_PARAM("iterations", "Iterations", "Fractal", "Folds per evaluation; more is finer. A view d across needs about log2(1/d) + a few.",
+                 14, 4, 100, FR_PARAM_SPECIALIZE);
 static const fr_param_desc color_near =
     FR_COLOR_PARAM("color_near", "Colour (deep orbits)", "Colour",
                    "Albedo where the orbit came close to the centre.", 0.9, 0.8, 0.6);
