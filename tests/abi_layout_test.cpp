@@ -22,8 +22,9 @@ static_assert(offsetof(fr_scene_entry, struct_size) == 8);
 static_assert(offsetof(fr_scene_entry, scene) == 16);
 
 static_assert(sizeof(fr_value) == 24);
-// 1.0 ended at 120; 1.2 added choices and choice_count.
-static_assert(sizeof(fr_param_desc) == 136);
+// 1.0 ended at 120; 1.2 added choices and choice_count; 1.4 detail_ratio.
+static_assert(sizeof(fr_param_desc) == 144);
+static_assert(offsetof(fr_param_desc, detail_ratio) == 136);
 static_assert(offsetof(fr_param_desc, choices) == 120);
 static_assert(offsetof(fr_param_desc, choice_count) == 128);
 static_assert(offsetof(fr_param_desc, key) == 16);
@@ -85,6 +86,6 @@ TEST(AbiLayout, CAndCppAgree) {
 
 TEST(AbiLayout, VersionMacros) {
   EXPECT_EQ(FR_ABI_VERSION_MAJOR, 1u);
-  EXPECT_EQ(FR_ABI_VERSION_MINOR, 3u);
+  EXPECT_EQ(FR_ABI_VERSION_MINOR, 4u);
   EXPECT_STREQ(FR_SCENE_ENTRY_SYMBOL, "fractalis_scene_entry");
 }

@@ -8,6 +8,7 @@
 #include "plugin/scene_instance.hpp"
 #include "render/camera.hpp"
 #include "render/de_probe.hpp"
+#include "render/depth_iterations.hpp"
 #include "render/kernel_assembly.hpp"
 #include "render/precision.hpp"
 #include "render/renderer.hpp"
@@ -241,6 +242,35 @@ TEST(DeepZoom, MandelboxAt1e18MatchesFloat128Tracer) {
 }
 TEST(DeepZoom, MandelboxAt1e22MatchesFloat128Tracer) {
   expect_right_at(load_scene("mandelbox", "iterations", 90), test::BoxReference{}, kBoxStart, kBoxAim, 1e-22);
+}
+
+// Iterations that follow the depth (render.auto_iterations, render/depth_iterations.hpp): the box
+// with its default 14, 1e-19 from its surface, is raised to what the view's footprint needs
+// (log2(R / f), some 71 here), and the view rendered with that count matches the reference
+// with the same count.
+TEST(DeepZoom, MandelboxIterationsFollowTheDepth) {
+  if (!test::runtime().device().has_fp64) GTEST_SKIP() << "the device has no double precision";
+  Scene s = load_scene("mandelbox", "iterations", 14);
+  test::BoxReference box;
+  quad eye[3];
+  place_deep_camera(box, kBoxStart, kBoxAim, 1e-19, s.state, eye);
+  const RenderSettings pairs = depth_settings(Precision::DoubleDouble);
+  const DeProbe probe = [&](const std::vector<fr_value>& params,
+                            const std::vector<std::array<float, 3>>& points, Precision precision,
+                            const PairOrigin* origin) {
+    return probe_de(test::runtime(), s.scene->info, params, points, 1, precision, origin);
+  };
+  std::vector<fr_value> params;
+  const auto raised = raise_iterations_for_view(probe, s.scene->info, s.state, pairs.width_px,
+                                                pairs.height_px, true, params);
+  ASSERT_EQ(raised.size(), 1u);
+  std::printf("raised: %s\n", describe_raised(raised).c_str());
+  EXPECT_EQ(raised[0].set, 14);
+  EXPECT_GE(raised[0].used, 64);
+  EXPECT_LE(raised[0].used, 88);
+  s.state.params = params;
+  box.iterations = raised[0].used;
+  expect_deep_view_right(box, s, eye);
 }
 
 // The Mandelbox's Julia form (the scene's defaults: scale -2, min radius 0.3, c = 1.8 in each

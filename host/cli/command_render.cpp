@@ -12,6 +12,7 @@
 #include "mpi/shared_tasks.hpp"
 #include "platform/files.hpp"
 #include "render/camera.hpp"
+#include "render/depth_iterations.hpp"
 #include "render/kernel_assembly.hpp"
 #include "render/memory_budget.hpp"
 #include "render/precision.hpp"
@@ -266,6 +267,9 @@ void render_whole(PreparedScene& p, const std::string& out_file, std::ostream& r
          << " on " << p.device.name << " (lanes " << image.lanes << ", "
          << precision_name(image.precision) << "): kernel build " << static_cast<int>(build_ms)
          << " ms, render " << static_cast<int>(render_ms) << " ms; wrote " << out_file << "\n";
+  if (!renderer.raised_iterations().empty())
+    report << "for the view's depth (render.auto_iterations): "
+           << describe_raised(renderer.raised_iterations()) << "\n";
   report_rays(image, p.scene->info, p.state, p.render, renderer, report);
   if (p.render.count_evaluations) report << format_eval_counts(renderer.eval_counts());
 }

@@ -156,6 +156,7 @@ DescriptorCopy copy_descriptor(const fr_scene_entry* entry,
     param.default_value = p.default_value;
     param.min_value = p.min_value;
     param.max_value = p.max_value;
+    param.detail_ratio = p.detail_ratio;  // zero from a plugin built before 1.4 (copy_struct)
     if (p.type == FR_PARAM_CHOICE) {
       // Counted before the table is read; each name copied within its cap.
       if (p.choice_count == 0 || p.choice_count > kMaxChoices)

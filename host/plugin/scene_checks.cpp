@@ -139,6 +139,13 @@ std::optional<std::string> check_param_info(const ParamInfo& p, size_t index) {
   } else if (!p.choices.empty()) {
     return where + ": only a choice has names";
   }
+  if (p.detail_ratio != 0) {
+    if (p.type != FR_PARAM_INT)
+      return where + ": only an int iteration count has a detail_ratio";
+    if (!(p.detail_ratio > 1) || !std::isfinite(p.detail_ratio) || p.detail_ratio > 1e6)
+      return where + ": detail_ratio " + describe_value(fr_value{{p.detail_ratio, 0, 0}}, 1) +
+             " must be above 1 and finite (or 0: not an iteration count)";
+  }
   return std::nullopt;
 }
 

@@ -101,6 +101,7 @@ void write_scene_info(WireWriter& w, const SceneInfo& info) {
     write_value(w, p.max_value);
     w.u32(static_cast<uint32_t>(p.choices.size()));
     for (const std::string& c : p.choices) w.str(c);
+    w.f64(p.detail_ratio);
   }
   w.u64(info.features);
   write_camera(w, info.camera);
@@ -139,6 +140,7 @@ bool read_scene_info(WireReader& r, SceneInfo* info) {
     const uint32_t choice_count = r.u32();
     if (r.failed() || choice_count > kMaxChoices) return false;
     for (uint32_t c = 0; c < choice_count; ++c) p.choices.push_back(r.str(kMaxIdBytes));
+    p.detail_ratio = r.f64();
     s.params.push_back(std::move(p));
   }
   s.features = r.u64();

@@ -18,7 +18,7 @@ namespace fr {
 
 // Bumped whenever a message's layout changes; the host passes it to the scene host, which refuses
 // to talk to another version.
-constexpr uint32_t kSceneWireVersion = 2;
+constexpr uint32_t kSceneWireVersion = 3;
 constexpr uint32_t kMaxFrameBytes = 16u << 20;
 
 enum class WireKind : uint32_t {

@@ -197,6 +197,9 @@ struct RenderSettings {
   bool adaptive_relaxation = true;
   bool cone_prepass = true;  // one cone per 8x8 pixels skips the empty space first (cone.cl)
   bool fast_math = false;    // build with -cl-fast-relaxed-math (finite-math-only, relaxed trig)
+  // Iteration counts follow the view's depth (render/depth_iterations.hpp): a deep zoom raises a
+  // scene's counts to what its pixel footprint needs. Applied by the render worker's client.
+  bool auto_iterations = true;
   // Build with LLVM's optimizations off (-cl-opt-disable): the same picture, a kernel that
   // compiles about three times faster and renders four to six times slower. Not a setting: the
   // explorer's edit mode asks for it for the first frame after a DE changes (app/scene_edit.hpp),
@@ -300,6 +303,7 @@ void visit_render_fields(Settings& s, Visit&& visit) {
   visit("adaptive_relaxation", s.adaptive_relaxation);
   visit("cone_prepass", s.cone_prepass);
   visit("fast_math", s.fast_math);
+  visit("auto_iterations", s.auto_iterations);
   visit("quick_build", s.quick_build);
   visit("count_evaluations", s.count_evaluations);
   visit("outputs", s.outputs);
@@ -357,7 +361,7 @@ constexpr size_t aggregate_member_count() {
 }  // namespace detail
 // RenderSettings' direct members (the window counts once): a new field changes the count. List
 // it in visit_render_fields, then update this number.
-static_assert(detail::aggregate_member_count<RenderSettings>() == 69,
+static_assert(detail::aggregate_member_count<RenderSettings>() == 70,
               "RenderSettings changed: list the new field in visit_render_fields");
 
 }  // namespace fr

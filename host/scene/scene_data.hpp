@@ -27,6 +27,8 @@ struct ParamInfo {
   fr_value min_value{};
   fr_value max_value{};
   std::vector<std::string> choices;  // FR_PARAM_CHOICE: the names of its values, by index
+  // ABI 1.4: an iteration count's detail ratio (fr_param_desc.detail_ratio); 0 for the rest.
+  double detail_ratio = 0;
 
   int component_count() const { return type == FR_PARAM_VEC3 || type == FR_PARAM_COLOR ? 3 : 1; }
   // Whole-number types (int, bool, choice): an int in the kernel, rounded when clamped.

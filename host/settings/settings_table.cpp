@@ -306,6 +306,11 @@ std::vector<SettingSpec> make_table() {
       "Cone pre-pass: one cone per 8x8 pixels marches through the empty space first, and the "
       "pixels'\nrays start where it stopped (the same hits for fewer DE evaluations; off with "
       "depth of field)."));
+  t.push_back(bool_setting<&S::render, &R::auto_iterations>(
+      "render.auto_iterations",
+      "Raise a scene's iteration counts as the view deepens, to what its pixel footprint at the "
+      "surface\nneeds (a deep zoom: the Mandelbox some 70 at 1e-19); never lowers a count the "
+      "scene or you set."));
   t.push_back(bool_setting<&S::render, &R::fast_math>(
       "render.fast_math",
       "Build the kernels with -cl-fast-relaxed-math (finite-math-only, relaxed trigonometry): "

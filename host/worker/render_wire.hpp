@@ -20,7 +20,7 @@ namespace fr {
 
 // Bumped whenever a message's layout changes; fractalis passes it to the worker, which refuses to
 // talk to another version.
-constexpr uint32_t kRenderWireVersion = 5;
+constexpr uint32_t kRenderWireVersion = 6;
 
 // Whether a precision sent back by the worker is one a frame ran in (never Auto).
 constexpr bool resolved_precision(uint32_t p) {

@@ -341,9 +341,45 @@ uint64_t RenderWorker::send_scene(const SceneInfo& info) {
   return key;
 }
 
-Precision RenderWorker::prepare(const SceneInfo& info, const SceneState& state,
+const SceneState& RenderWorker::deepened(const SceneInfo& info, const SceneState& state,
+                                         const RenderSettings& settings) {
+  if (!settings.auto_iterations ||
+      std::none_of(info.params.begin(), info.params.end(),
+                   [](const ParamInfo& p) { return p.detail_ratio > 0; })) {
+    raised_.clear();
+    return state;
+  }
+  // The view: the scene, its camera (with the digits past double), its parameters and the
+  // image's size; probed once, then every sample and band of it reuses the answer.
+  std::string view = info.id + '\n' + std::to_string(settings.width_px) + 'x' +
+                     std::to_string(settings.height_px) + '\n' + std::to_string(state.bounding_radius);
+  const auto add = [&view](const void* p, size_t n) {
+    view.append(static_cast<const char*>(p), n);
+  };
+  add(&state.camera, sizeof state.camera);
+  add(&state.camera_lo, sizeof state.camera_lo);
+  for (const fr_value& v : state.params) add(&v, sizeof v);
+  if (view != deepened_view_) {
+    const DeProbe probe = [&](const std::vector<fr_value>& params,
+                              const std::vector<std::array<float, 3>>& points, Precision precision,
+                              const PairOrigin* origin) {
+      return probe_de(info, params, points, 1, precision, origin);
+    };
+    deepened_state_ = state;
+    raised_ = raise_iterations_for_view(probe, info, state, settings.width_px, settings.height_px,
+                                        device_.has_fp64, deepened_state_.params);
+    deepened_view_ = std::move(view);
+  }
+  return std::any_of(raised_.begin(), raised_.end(),
+                     [](const RaisedIterations& r) { return r.used > r.set; })
+             ? deepened_state_
+             : state;
+}
+
+Precision RenderWorker::prepare(const SceneInfo& info, const SceneState& requested,
                                 const RenderSettings& settings) {
   ensure_started();
+  const SceneState& state = deepened(info, requested, settings);
   if (local_) return local_->renderer.prepare(info, state, settings);
   WireWriter w;
   w.u64(send_scene(info));
@@ -385,10 +421,11 @@ double RenderWorker::sample_limit_s() const {
   return limit_s;
 }
 
-void RenderWorker::render_sample(const SceneInfo& info, const SceneState& state,
+void RenderWorker::render_sample(const SceneInfo& info, const SceneState& requested,
                                  const RenderSettings& settings, int sample_index, Readback outputs,
                                  RowBand rows) {
   ensure_started();
+  const SceneState& state = deepened(info, requested, settings);
   if (local_)
     return local_->renderer.render_sample(info, state, settings, sample_index, outputs, rows);
   WireWriter w;
@@ -490,12 +527,13 @@ FrameView RenderWorker::finish_frame(const RenderSettings& settings, Readback wh
   return view;
 }
 
-FrameView RenderWorker::render_frame(const SceneInfo& info, const SceneState& state,
+FrameView RenderWorker::render_frame(const SceneInfo& info, const SceneState& requested,
                                      const RenderSettings& settings, int sample_index,
                                      Readback outputs, Readback read, RowBand rows) {
   if (static_cast<int>(read) > static_cast<int>(outputs))
     throw std::logic_error("RenderWorker::render_frame: reads the passes the sample wrote");
   ensure_started();
+  const SceneState& state = deepened(info, requested, settings);
   FrameView view;
   view.width_px = settings.width_px;
   view.height_px = settings.height_px;

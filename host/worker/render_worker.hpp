@@ -22,6 +22,7 @@
 #include "platform/channel.hpp"
 #include "plugin/plugin_policy.hpp"
 #include "render/cl_runtime.hpp"
+#include "render/depth_iterations.hpp"
 #include "render/eval_counts.hpp"
 #include "render/kernel_assembly.hpp"
 #include "render/renderer.hpp"
@@ -116,6 +117,10 @@ class RenderWorker {
   std::vector<float> probe_material(const SceneInfo& info, const std::vector<fr_value>& params,
                                     const fr_frame_constants& fc,
                                     const std::vector<std::array<float, 3>>& points);
+  // What render.auto_iterations raised for the last view prepared or rendered (empty: nothing;
+  // render/depth_iterations.hpp). prepare, render_sample and render_frame render a scene's
+  // iteration counts as the view's depth needs, from a probe of the DE at the eye once per view.
+  const std::vector<RaisedIterations>& raised_iterations() const { return raised_; }
   // Builds a program of the scene `info` (a check's or a warm-up's), to be found in the cache.
   void build(const SceneInfo& info, const std::string& source, const std::string& options,
              const std::string& description);
@@ -161,6 +166,12 @@ class RenderWorker {
   // A changed DE's first frame and its probes get at most kFirstLimitOfAnEditS.
   double sample_limit_s() const;
   std::map<std::string, uint64_t> key_of_id_;  // the last scene key sent under each scene id
+  // render.auto_iterations: `state`, or the same with its iteration counts raised for its view.
+  const SceneState& deepened(const SceneInfo& info, const SceneState& state,
+                             const RenderSettings& settings);
+  std::string deepened_view_;  // the view deepened_state_ and raised_ were worked out for
+  SceneState deepened_state_;
+  std::vector<RaisedIterations> raised_;
   std::set<uint64_t> edited_keys_;             // keys sent under an id that had another key before
 };
 

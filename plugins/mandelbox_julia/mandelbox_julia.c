@@ -34,8 +34,10 @@ static const fr_param_desc fold_limit =
     FR_FLOAT_PARAM("fold_limit", "Fold limit", "Fractal", "The box fold reflects beyond +-limit.",
                    1.0, 0.25, 2, 0);
 static const fr_param_desc iterations =
-    FR_INT_PARAM("iterations", "Iterations", "Fractal", "Folds per evaluation; more is finer. A view d across needs about log2(1/d) + a few.",
-                 14, 4, 100, FR_PARAM_SPECIALIZE);
+    FR_ITERATIONS_PARAM("iterations", "Iterations", "Fractal",
+                        "Folds per evaluation; more is finer. A view d across needs about "
+                        "log2(1/d) + a few (render.auto_iterations raises it for a deep view).",
+                        14, 4, 100, FR_PARAM_SPECIALIZE, 2.0);
 static const fr_param_desc color_near =
     FR_COLOR_PARAM("color_near", "Colour (deep orbits)", "Colour",
                    "Albedo where the orbit came close to the centre.", 0.8, 0.75, 0.6);

@@ -11,10 +11,11 @@ extern const char fr_surface_source[];
 enum { P_ITERATIONS, P_SCALE, P_OFFSET, P_ROTATION, P_COLOR_NEAR, P_COLOR_FAR, P_COUNT };
 
 static const fr_param_desc iterations =
-    FR_INT_PARAM("iterations", "Level", "Fractal",
-                 "Recursion level n: the sponge of 20^n cubes, holes down to 3^-n across (a "
-                 "view 1e-20 across needs about 42).",
-                 4, 1, 70, FR_PARAM_SPECIALIZE);
+    FR_ITERATIONS_PARAM("iterations", "Level", "Fractal",
+                        "Recursion level n: the sponge of 20^n cubes, holes down to 3^-n across "
+                        "(a view 1e-20 across needs about 42; render.auto_iterations raises it "
+                        "for a deep view).",
+                        4, 1, 70, FR_PARAM_SPECIALIZE, 3.0);
 static const fr_param_desc scale = FR_FLOAT_PARAM(
     "scale", "Scale", "Fractal", "Scale per fold; 3 is the classic sponge.", 3, 1.5, 4, 0);
 static const fr_param_desc offset =

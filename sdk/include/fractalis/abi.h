@@ -41,6 +41,8 @@
  * choice_count; FR_SCENE_ENTRY_V1_2.
  * ABI 1.3 added: fr_light.radius (area lights). A plugin that sets it still loads on an older
  * host, whose lights stay points.
+ * ABI 1.4 added: fr_param_desc.detail_ratio (iteration counts that follow a deep zoom). A plugin
+ * that sets it still loads on an older host, whose counts stay as set.
  */
 #ifndef FRACTALIS_ABI_H
 #define FRACTALIS_ABI_H
@@ -53,7 +55,7 @@ extern "C" {
 #endif
 
 #define FR_ABI_VERSION_MAJOR 1u
-#define FR_ABI_VERSION_MINOR 3u
+#define FR_ABI_VERSION_MINOR 4u
 
 /* Whether a struct that starts with struct_size, as the other side built it, has `field`:
  * a 1.1 plugin on a 1.0 host must not read fields the host does not have, e.g.

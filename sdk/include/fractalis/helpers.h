@@ -26,6 +26,15 @@
   FR_PARAM_DESC_(FR_PARAM_FLOAT, key, name, group, desc, flags, def, 0, 0, min, 0, 0, max, 0, 0)
 #define FR_INT_PARAM(key, name, group, desc, def, min, max, flags) \
   FR_PARAM_DESC_(FR_PARAM_INT, key, name, group, desc, flags, def, 0, 0, min, 0, 0, max, 0, 0)
+/* An iteration count whose each step resolves detail `ratio` times finer (ABI 1.4,
+ * fr_param_desc.detail_ratio): the host raises it as a view deepens (render.auto_iterations). */
+#define FR_ITERATIONS_PARAM(key_, name_, group_, desc_, def, min, max, flags_, ratio)            \
+  {                                                                                              \
+    .struct_size = sizeof(fr_param_desc), .type = FR_PARAM_INT, .flags = (flags_), .reserved = 0, \
+    .key = (key_), .name = (name_), .group = (group_), .description = (desc_),                   \
+    .default_value = {{(def), 0, 0}}, .min_value = {{(min), 0, 0}},                              \
+    .max_value = {{(max), 0, 0}}, .detail_ratio = (ratio)                                        \
+  }
 #define FR_BOOL_PARAM(key, name, group, desc, def, flags) \
   FR_PARAM_DESC_(FR_PARAM_BOOL, key, name, group, desc, flags, def, 0, 0, 0, 0, 0, 1, 0, 0)
 /* Each component of a vec3 lies in [min, max]. */
