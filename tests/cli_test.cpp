@@ -211,7 +211,7 @@ TEST(Cli, HelpAndVersion) {
   EXPECT_EQ(listed, 12);
   const CliRun v = run({"--version"});
   EXPECT_EQ(v.code, 0);
-  EXPECT_NE(v.out.find("scene ABI 1.3"), std::string::npos);
+  EXPECT_NE(v.out.find("scene ABI 1.4"), std::string::npos);
   EXPECT_EQ(run({}).code, 2);
 }
 

@@ -253,6 +253,8 @@ TEST(DeLibrary, GuideListsEverySignature) {
                                           "mb2_with_component",
                                           "mb2_rotate_back",
                                           "dd_order",
+                                          "dd_reflect_pair",
+                                          "mandelbox_dd_iterate",
                                           "menger_step",
                                           "dd_unit_complex_pow_int",
                                           "dd_mandelbulb_whole"};

@@ -36,46 +36,75 @@ SceneInfo counted_scene(double ratio, double max_count) {
   return info;
 }
 
-TEST(DepthIterations, FootprintNeedsLogOfTheRatio) {
+// R = 8, pixels of 2^-10 rad: an eye d from the surface adds log_g(R / d) iterations to the count
+// set (in steps of 4, rounded down), up to what the footprint d 2^-10 needs, log_g(R / f) (rounded
+// up to a step), never below the count set or past the max.
+TEST(DepthIterations, AddsTheZoomUpToWhatThePixelsNeed) {
   const SceneInfo info = counted_scene(2, 100);
+  const double pixel = std::ldexp(1.0, -10);
   std::vector<fr_value> params = make_default_state(info).params;
-  // R / f = 8 / 2^-60 = 2^63: 63 iterations, raised to the next step of 8, 64.
-  auto raised = raise_iterations_for_footprint(info, 8, std::ldexp(1.0, -60), params);
+  // d = 2^-57: the zoom adds log2(8 / 2^-57) = 60, 14 + 60 = 74; the pixels need 70, stepped 72.
+  auto raised = raise_iterations_for_depth(info, 8, std::ldexp(1.0, -57), pixel, params);
   ASSERT_EQ(raised.size(), 1u);
   EXPECT_EQ(raised[0].key, "iterations");
   EXPECT_EQ(raised[0].set, 14);
-  EXPECT_EQ(raised[0].needed, 63);
-  EXPECT_EQ(raised[0].used, 64);
-  EXPECT_EQ(params[1].v[0], 64);
+  EXPECT_EQ(raised[0].needed, 70);
+  EXPECT_EQ(raised[0].used, 72);
+  EXPECT_FALSE(raised[0].capped);
+  EXPECT_EQ(params[1].v[0], 72);
   EXPECT_EQ(params[0].v[0], 2) << "a parameter without a ratio is left alone";
 
-  // A shallow view needs fewer than set: nothing changes (never lowered).
+  // d = 2^-7: the zoom adds 10, stepped down to 8: 22; the footprint 2^-17 needs 20: 20.
   params = make_default_state(info).params;
-  EXPECT_TRUE(raise_iterations_for_footprint(info, 8, 0.01, params).empty());
+  raised = raise_iterations_for_depth(info, 8, std::ldexp(1.0, -7), pixel, params);
+  ASSERT_EQ(raised.size(), 1u);
+  EXPECT_EQ(raised[0].used, 20);
+
+  // The scene seen whole (d >= R) or barely closer (zoom under a step): the count set.
+  params = make_default_state(info).params;
+  EXPECT_TRUE(raise_iterations_for_depth(info, 8, 9, pixel, params).empty());
+  EXPECT_TRUE(raise_iterations_for_depth(info, 8, 1.5, pixel, params).empty());
   EXPECT_EQ(params[1].v[0], 14);
 
-  // The Menger sponge's 3: R / f = 3^50 needs 50, rendered 56.
+  // A deliberately coarse count keeps its coarseness relative to the view: 2 at d = 8 / 2^5
+  // becomes 2 + 4 = 6, though the pixels could use 15.
+  params[1].v[0] = 2;
+  raised = raise_iterations_for_depth(info, 8, 8 * std::ldexp(1.0, -5), pixel, params);
+  ASSERT_EQ(raised.size(), 1u);
+  EXPECT_EQ(raised[0].used, 6);
+  EXPECT_EQ(raised[0].needed, 15);
+
+  // An explicit count above what the pixels need stays: 90 at d = 2^-57 (they need 70).
+  params = make_default_state(info).params;
+  params[1].v[0] = 90;
+  EXPECT_TRUE(raise_iterations_for_depth(info, 8, std::ldexp(1.0, -57), pixel, params).empty());
+  EXPECT_EQ(params[1].v[0], 90);
+
+  // The Menger sponge's 3: d = 8 / 3^40 adds 40 (stepped 40), the pixels need 40 + 6.3, 47,
+  // stepped 48: 4 + 40 = 44.
   const SceneInfo sponge = counted_scene(3, 70);
   params = make_default_state(sponge).params;
-  raised = raise_iterations_for_footprint(sponge, 8, 8 / std::pow(3.0, 50), params);
+  params[1].v[0] = 4;
+  raised = raise_iterations_for_depth(sponge, 8, 8 / std::pow(3.0, 40), pixel, params);
   ASSERT_EQ(raised.size(), 1u);
-  EXPECT_EQ(raised[0].needed, 50);
-  EXPECT_EQ(raised[0].used, 56);
+  EXPECT_EQ(raised[0].needed, 47);
+  EXPECT_EQ(raised[0].used, 44);
 
-  // Past the max: the max, and what the view needed, said.
+  // Past the max: the max, and what the view asked for, said.
   const SceneInfo capped = counted_scene(2, 40);
   params = make_default_state(capped).params;
-  raised = raise_iterations_for_footprint(capped, 8, std::ldexp(1.0, -60), params);
+  raised = raise_iterations_for_depth(capped, 8, std::ldexp(1.0, -57), pixel, params);
   ASSERT_EQ(raised.size(), 1u);
   EXPECT_EQ(raised[0].used, 40);
-  EXPECT_EQ(raised[0].needed, 63);
-  EXPECT_NE(describe_raised(raised).find("needs 63 but that is its max"), std::string::npos)
+  EXPECT_TRUE(raised[0].capped);
+  EXPECT_NE(describe_raised(raised).find("its max (the view asks for more: 70)"),
+            std::string::npos)
       << describe_raised(raised);
 
   // Nothing to go on: no change.
   params = make_default_state(info).params;
-  for (double f : {0.0, -1.0, double(NAN), double(INFINITY), 100.0})
-    EXPECT_TRUE(raise_iterations_for_footprint(info, 8, f, params).empty()) << f;
+  for (double d : {0.0, -1.0, double(NAN), double(INFINITY), 100.0})
+    EXPECT_TRUE(raise_iterations_for_depth(info, 8, d, pixel, params).empty()) << d;
 }
 
 // A scene whose surface is `distance` from the eye and whose estimate with n iterations cannot
@@ -99,10 +128,11 @@ TEST(DepthIterations, ProbesAgainAtTheMaxWhereTheSetCountsCannotSee) {
   const auto raised = raise_iterations_for_view(probe, info, state, 64, 48, false, params);
   ASSERT_EQ(raised.size(), 1u);
   const CameraRays rays = make_camera_rays(state.camera, 64, 48);
-  const double footprint = static_cast<double>(static_cast<float>(distance)) * rays.pixel_angle_rad;
-  const int needed = static_cast<int>(std::ceil(std::log2(8 / footprint)));
+  const double seen = static_cast<double>(static_cast<float>(distance));
+  const int needed = static_cast<int>(std::ceil(std::log2(8 / (seen * rays.pixel_angle_rad))));
+  const int zoom = static_cast<int>(std::log2(8 / seen)) / 4 * 4;
   EXPECT_EQ(raised[0].needed, needed);
-  EXPECT_EQ(raised[0].used, (needed + 7) / 8 * 8);
+  EXPECT_EQ(raised[0].used, std::min(14 + zoom, (needed + 3) / 4 * 4));
   EXPECT_EQ(params[1].v[0], raised[0].used);
   EXPECT_EQ(probes, 2) << "the set counts, then the max";
 
@@ -117,6 +147,13 @@ TEST(DepthIterations, ProbesAgainAtTheMaxWhereTheSetCountsCannotSee) {
   EXPECT_TRUE(raise_iterations_for_view(shallow, info, state, 64, 48, false, params).empty());
   EXPECT_EQ(probes, 1);
   EXPECT_EQ(params[1].v[0], 14);
+
+  // An eye 12 outside the bounding sphere (R 8) cannot be closer than 12 to the surface: no
+  // count could gain a step, and nothing is probed.
+  probes = 0;
+  state.camera.eye[2] = 20;
+  EXPECT_TRUE(raise_iterations_for_view(probe, info, state, 64, 48, false, params).empty());
+  EXPECT_EQ(probes, 0);
 }
 
 }  // namespace

@@ -131,7 +131,7 @@ TEST(PluginLoader, WrongAbiMajor) {
   expect_failure("wrong_major", LoadResult::WrongAbiMajor, "wrong ABI major: plugin 2, host 1");
 }
 TEST(PluginLoader, AbiMinorTooNew) {
-  expect_failure("too_new_minor", LoadResult::AbiTooNew, "plugin needs ABI 1.99, host has 1.3");
+  expect_failure("too_new_minor", LoadResult::AbiTooNew, "plugin needs ABI 1.99, host has 1.4");
 }
 TEST(PluginLoader, StructTooSmall) {
   expect_failure("small_struct", LoadResult::StructTooSmall,

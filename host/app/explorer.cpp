@@ -3,6 +3,8 @@
 
 #include "image/exr_write.hpp"
 #include "image/poster.hpp"
+#include "io/atomic_file.hpp"
+#include "path/preset.hpp"
 #include "render/camera.hpp"
 #include "render/device.hpp"
 #include "render/eye_relative.hpp"
@@ -469,6 +471,7 @@ const FrameView* Explorer::render(int window_width_px, int window_height_px) {
     frames_.report(stats_.frame_ms);
   }
   stats_.precision = last_.precision;
+  stats_.raised_iterations = describe_raised(worker_.raised_iterations());
   return &last_;
 }
 
@@ -562,6 +565,11 @@ void Explorer::set_count_evaluations(bool on) {
   changed_ = true;
 }
 
+std::filesystem::path screenshot_view_file(const std::filesystem::path& image) {
+  std::filesystem::path view = image;
+  return view.replace_extension(".toml");
+}
+
 bool Explorer::screenshot(const std::filesystem::path& file, int width_px, int height_px,
                           std::string* error) {
   RenderSettings s = settings_.render;
@@ -595,6 +603,16 @@ bool Explorer::screenshot(const std::filesystem::path& file, int width_px, int h
   changed_ = true;
   try {
     render_poster(worker_, slot.scene->info, slot.state, s, file, poster_band_pixels(file));
+    // The view beside it, every digit of a deep one kept: `--preset shot.toml` opens it again.
+    const std::filesystem::path view = screenshot_view_file(file);
+    const std::string text = format_preset(
+        slot.scene->info, slot.state, slot.scene->info.name + " (screenshot)",
+        "The view and parameters of " + file.filename().string() + ".");
+    std::string view_error;
+    if (view == file)
+      spdlog::warn("the screenshot's view is not saved: {} is the image's own name", view.string());
+    else if (!write_file_atomic(view, text, &view_error))
+      spdlog::warn("the screenshot's view: {}", view_error);
     return true;
   } catch (const RenderWorkerFailure& e) {
     worker_failed(slot, e);

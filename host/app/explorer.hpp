@@ -54,9 +54,14 @@ struct ExplorerStats {
   double pixel_footprint = 0;
   bool past_resolution = false;
   bool pairs_unresolved = false;
+  // What render.auto_iterations raised for the last frame ("iterations 72 (set 14)"; "": nothing).
+  std::string raised_iterations;
   // Where the last full frame's DE evaluations went, while counting is on (samples 0: off).
   EvalCounts eval_counts;
 };
+
+// Where a screenshot's view goes: the image's name with .toml for its extension.
+std::filesystem::path screenshot_view_file(const std::filesystem::path& image);
 
 class Explorer {
  public:
@@ -85,7 +90,9 @@ class Explorer {
   std::optional<double> depth_under(int x, int y, int width_px, int height_px);
 
   // Writes a PNG (or, for a file named *.exr, an OpenEXR file with its passes) of the current
-  // view at the given size with full-quality samples, in bands (image/poster.hpp).
+  // view at the given size with full-quality samples, in bands (image/poster.hpp), and the view
+  // beside it as a preset (screenshot_view_file: parameters, and eye and target with every digit
+  // a deep view has), which `--preset FILE` opens again.
   bool screenshot(const std::filesystem::path& file, int width_px, int height_px,
                   std::string* error);
 

@@ -86,6 +86,7 @@ struct AnimateJob {
   int fps = 24;
   std::filesystem::path out_path;
   const VideoFormat* video = nullptr;  // null: a folder of PNG frames
+  std::string raised;  // what render.auto_iterations last raised, said when it changes
 };
 
 AnimateJob plan_animation(const ParsedOptions& options) {
@@ -158,6 +159,13 @@ void render_frame(AnimateJob& job, const ParsedOptions& options, RenderWorker& r
   for (int s = 0; s < std::max(1, p.render.samples); ++s)
     renderer.render_sample(info, p.state, p.render, s, Readback::DisplayAndSteps);
   renderer.finish(p.render, Readback::DisplayAndSteps, image);
+  // A zoom's counts rise as it deepens: each change said once, with its frame.
+  const std::string raised = describe_raised(renderer.raised_iterations());
+  if (raised != job.raised) {
+    if (!raised.empty())
+      spdlog::info("frame {}: for the view's depth (render.auto_iterations): {}", i, raised);
+    job.raised = raised;
+  }
 }
 
 void write_frame_png(const AnimateJob& job, int i, const FrameImage& image) {

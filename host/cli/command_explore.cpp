@@ -147,7 +147,9 @@ int command_explore(const std::vector<std::string>& args, std::ostream& out,
           overlay.screenshot_at_window_size ? window.height_px() : overlay.screenshot_size[1];
       std::string error;
       if (explorer.screenshot(overlay.screenshot_file.data(), w, h, &error))
-        spdlog::info("saved {}", overlay.screenshot_file.data());
+        spdlog::info("saved {} and its view, {} (--preset opens it)",
+                     overlay.screenshot_file.data(),
+                     screenshot_view_file(overlay.screenshot_file.data()).string());
       else
         spdlog::error("{}", error);
     }

@@ -233,9 +233,8 @@ std::string format_camera_path(const CameraPath& path, const SceneInfo& scene) {
                   scene.id, scene.id);
   auto vec = [](const glm::dvec3& v) { return fmt::format("[{}, {}, {}]", v.x, v.y, v.z); };
   auto position = [&](const glm::dvec3& hi, const glm::dvec3& lo) {
-    if (lo == glm::dvec3(0.0)) return vec(hi);
     const double h[3] = {hi.x, hi.y, hi.z}, l[3] = {lo.x, lo.y, lo.z};
-    return toml_pairs_text(h, l);
+    return toml_position_text(h, l);
   };
   for (size_t k = 0; k < path.keyframes.size(); ++k) {
     const Keyframe& key = path.keyframes[k];
@@ -247,25 +246,7 @@ std::string format_camera_path(const CameraPath& path, const SceneInfo& scene) {
     for (size_t i = 0; i < scene.params.size() && i < key.params.size(); ++i) {
       const fr_value& v = key.params[i];
       if (k > 0 && std::memcmp(&v, &path.keyframes[k - 1].params[i], sizeof v) == 0) continue;
-      const ParamInfo& p = scene.params[i];
-      std::string text;
-      switch (p.type) {
-        case FR_PARAM_BOOL:
-          text = v.v[0] != 0 ? "true" : "false";
-          break;
-        case FR_PARAM_INT:
-          text = fmt::format("{}", static_cast<long long>(v.v[0]));
-          break;
-        case FR_PARAM_CHOICE:
-          text = fmt::format("\"{}\"", p.choice_name(v));
-          break;
-        case FR_PARAM_FLOAT:
-          text = fmt::format("{}", v.v[0]);
-          break;
-        default:
-          text = vec(glm::dvec3(v.v[0], v.v[1], v.v[2]));
-      }
-      params += p.key + " = " + text + "\n";
+      params += scene.params[i].key + " = " + toml_param_text(scene.params[i], v) + "\n";
     }
     if (!params.empty()) out += "[keyframe.params]\n" + params;
   }

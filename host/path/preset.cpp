@@ -5,6 +5,8 @@
 #include "path/toml_values.hpp"
 #include "scene/vec3.hpp"
 
+#include <spdlog/fmt/fmt.h>
+
 #include <algorithm>
 #include <fstream>
 #include <map>
@@ -90,6 +92,25 @@ std::optional<Preset> preset_from_text(const std::string& text, const std::files
   p.name = *name;
   p.description = (*root)["description"].value<std::string>().value_or("");
   return p;
+}
+
+namespace {
+constexpr double kNoLow[3] = {0, 0, 0};
+}  // namespace
+
+std::string format_preset(const SceneInfo& scene, const SceneState& state, const std::string& name,
+                          const std::string& description) {
+  std::string out = "scene = " + toml_string_text(scene.id) + "\nname = " +
+                    toml_string_text(name) + "\ndescription = " +
+                    toml_string_text(description) + "\n\n[params]\n";
+  for (size_t i = 0; i < scene.params.size() && i < state.params.size(); ++i)
+    out += scene.params[i].key + " = " + toml_param_text(scene.params[i], state.params[i]) + "\n";
+  const fr_camera& c = state.camera;
+  out += "\n[camera]\neye = " + toml_position_text(c.eye, state.camera_lo.eye) +
+         "\ntarget = " + toml_position_text(c.target, state.camera_lo.target) + "\nup = " +
+         toml_position_text(c.up, kNoLow) + "\nfov_deg = " + fmt::format("{}", c.fov_deg) +
+         "\n";
+  return out;
 }
 
 std::optional<Preset> read_preset_file(const std::filesystem::path& file, const std::string& id,

@@ -63,6 +63,12 @@ std::optional<Preset> preset_from_text(const std::string& text, const std::files
 std::optional<Preset> read_preset_file(const std::filesystem::path& file, const std::string& id,
                                        std::vector<std::string>* problems);
 
+// A preset's text for a scene's state: its parameter values and its view (eye and target with
+// every digit a pair holds), as a screenshot's view is saved beside it; preset_from_text reads it
+// back to the same values.
+std::string format_preset(const SceneInfo& scene, const SceneState& state, const std::string& name,
+                          const std::string& description);
+
 // The preset's [settings] as KEY and VALUE texts, as `--set KEY=VALUE` takes them (in the file's
 // order); checking them is the settings table's (settings/settings.hpp). Only render.* keys: any
 // other (plugins.isolation, say) is a problem and left out.

@@ -1,5 +1,7 @@
 #include "path/toml_values.hpp"
 
+#include <spdlog/fmt/fmt.h>
+
 #include <cmath>
 #include <sstream>
 
@@ -61,6 +63,35 @@ std::string toml_pairs_text(const double hi[3], const double lo[3]) {
   for (int i = 0; i < 3; ++i)
     out += (i > 0 ? ", \"" : "\"") + format_double_double(DoubleDouble{hi[i], lo[i]}) + '"';
   return out + "]";
+}
+
+std::string toml_position_text(const double hi[3], const double lo[3]) {
+  if (lo[0] != 0 || lo[1] != 0 || lo[2] != 0) return toml_pairs_text(hi, lo);
+  return fmt::format("[{}, {}, {}]", hi[0], hi[1], hi[2]);
+}
+
+std::string toml_param_text(const ParamInfo& p, const fr_value& v) {
+  switch (p.type) {
+    case FR_PARAM_BOOL:
+      return v.v[0] != 0 ? "true" : "false";
+    case FR_PARAM_INT:
+      return fmt::format("{}", static_cast<long long>(v.v[0]));
+    case FR_PARAM_CHOICE:
+      return toml_string_text(p.choice_name(v));
+    case FR_PARAM_FLOAT:
+      return fmt::format("{}", v.v[0]);
+    default:
+      return fmt::format("[{}, {}, {}]", v.v[0], v.v[1], v.v[2]);
+  }
+}
+
+std::string toml_string_text(const std::string& s) {
+  std::string out = "\"";
+  for (const char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + '"';
 }
 
 // The value of parameter `p` in `n`, or why not.

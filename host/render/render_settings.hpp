@@ -197,8 +197,8 @@ struct RenderSettings {
   bool adaptive_relaxation = true;
   bool cone_prepass = true;  // one cone per 8x8 pixels skips the empty space first (cone.cl)
   bool fast_math = false;    // build with -cl-fast-relaxed-math (finite-math-only, relaxed trig)
-  // Iteration counts follow the view's depth (render/depth_iterations.hpp): a deep zoom raises a
-  // scene's counts to what its pixel footprint needs. Applied by the render worker's client.
+  // Iteration counts follow the view's depth (render/depth_iterations.hpp): a zoom adds to a
+  // scene's counts as the eye closes in. Applied by the render worker's client.
   bool auto_iterations = true;
   // Build with LLVM's optimizations off (-cl-opt-disable): the same picture, a kernel that
   // compiles about three times faster and renders four to six times slower. Not a setting: the

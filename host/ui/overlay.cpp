@@ -178,6 +178,8 @@ void draw_statistics(Explorer& explorer, const OverlayState& overlay) {
   // The depth: a pixel's footprint at the nearest surface, and the number type that renders it.
   ImGui::Text("%.1f DE steps/pixel, surface %.4g away, pixel %.2g", st.de_steps_per_pixel,
               st.surface_distance, st.pixel_footprint);
+  if (!st.raised_iterations.empty())
+    ImGui::Text("for the depth: %s", st.raised_iterations.c_str());
   if (st.past_resolution) {
     const ImVec4 orange(1, 0.6f, 0.2f, 1);
     wrapped_text(&orange, st.pairs_unresolved

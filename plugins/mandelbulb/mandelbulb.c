@@ -29,7 +29,7 @@ static const fr_param_desc iterations =
     FR_ITERATIONS_PARAM("iterations", "Iterations", "Fractal",
                         "Maximum escape-time iterations; more gives finer detail and costs time "
                         "(render.auto_iterations raises it for a deep view).",
-                        8, 1, 64, FR_PARAM_SPECIALIZE, 3.0);
+                        8, 1, 100, FR_PARAM_SPECIALIZE, 3.0);
 /* With r < B before a step, the next |z| is at most B^n + B, and the DE squares it to take its
  * length: (B^n + B)^2 must stay below FLT_MAX = 2^128 for n up to 16, so B^16 < 2^63 or so.
  * B = 12 gives 12^16 = 1.8e17 and (1.8e17)^2 = 3.4e34, with room to spare; 16 would overflow. */

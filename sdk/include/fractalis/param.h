@@ -78,9 +78,9 @@ typedef struct fr_param_desc {
   /* ABI 1.4. For an FR_PARAM_INT iteration count (the orbit's steps, a sponge's levels): the
    * factor by which each one more resolves finer detail, as a multiple of the scene's bounding
    * radius (2 for the Mandelbox, 3 for the Menger sponge: detail of size R / ratio^n after n).
-   * With render.auto_iterations the host raises the value to log(R / footprint) / log(ratio) where
-   * the view's pixel footprint at the surface needs more than the value set (a deep zoom), never
-   * lowers it, and says so. 0: not such a count (and every parameter of a plugin built before
+   * With render.auto_iterations the host adds log(R / d) / log(ratio) to the value as the eye
+   * closes in to a distance d from the surface (a deep zoom), up to what the view's pixel
+   * footprint resolves, never lowers it, and says so. 0: not such a count (and every parameter of a plugin built before
    * 1.4). Finite and above 1 otherwise. FR_ITERATIONS_PARAM (helpers.h) sets it. */
   double detail_ratio;
 } fr_param_desc;
