@@ -7,7 +7,9 @@
 #include "cli/cli.hpp"
 #include "image/png_write.hpp"
 #include "kernel_crash.hpp"
+#include "path/preset.hpp"
 #include "platform/system_facts.hpp"
+#include "plugin/scene_instance.hpp"
 #include "test_support.hpp"
 #include "ui/overlay.hpp"
 #include "ui/scene_browser_view.hpp"
@@ -219,6 +221,25 @@ TEST_F(ExplorerWindow, ScreenshotIsTheHeadlessRender) {
           .render(explorer->current().scene->info, explorer->current().state, s);
   EXPECT_LE(test::pixels_differing(png.rgba8, reference.rgba8, 2), 96u * 54 / 100);
   EXPECT_GT(luminance_spread(png.rgba8), 10) << "the screenshot is blank";
+
+  // Its view beside it, as a preset: read back onto the scene's defaults, the same camera and
+  // parameters (what `--preset shot.toml` opens).
+  const std::filesystem::path view = file.parent_path() / "shot.toml";
+  ASSERT_TRUE(std::filesystem::exists(view));
+  std::vector<std::string> problems;
+  const auto preset = read_preset_file(view, "shot", &problems);
+  ASSERT_TRUE(preset) << (problems.empty() ? "" : problems.front());
+  const SceneSlot& slot = explorer->current();
+  EXPECT_EQ(preset->scene_id, slot.scene->info.id);
+  SceneState back = make_default_state(slot.scene->info);
+  const auto apply_problems = apply_preset(*preset, slot.scene->info, back);
+  ASSERT_TRUE(apply_problems.empty()) << apply_problems.front();
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_EQ(back.camera.eye[c], slot.state.camera.eye[c]);
+    EXPECT_EQ(back.camera.target[c], slot.state.camera.target[c]);
+  }
+  for (size_t i = 0; i < back.params.size(); ++i)
+    EXPECT_EQ(back.params[i].v[0], slot.state.params[i].v[0]) << slot.scene->info.params[i].key;
 }
 
 // K records the view as a keyframe, the saved path is what was recorded (read back by the

@@ -5,7 +5,8 @@
  * Comparisons, negations, swaps and absolute values are exact on pairs; reflections across planes
  * with irrational normals and rotations round like one pair operation. Every constant (a plane's
  * normal, a rotation's cosine and sine) is the same double the double form uses, so where double
- * resolves a view the two forms agree to double's rounding. */
+ * resolves a view the two forms agree to double's rounding. The folds a loop calls every iteration
+ * are always inlined: a dd3_t is six vectors of doubles, which a call passes through memory. */
 #include "fr/dd.cl"
 #include "fr/kifs.cl" /* FR_PHI, and the double forms */
 
@@ -17,27 +18,55 @@ inline dd_t dd_fold_box1(dd_t x, real_t limit) {
 }
 
 /* Lowe's box fold (p_fold_box). */
-inline dd3_t dd3_fold_box(dd3_t z, real_t limit) {
+__attribute__((always_inline)) inline dd3_t dd3_fold_box(dd3_t z, real_t limit) {
   return dd3_make(dd_fold_box1(z.x, limit), dd_fold_box1(z.y, limit), dd_fold_box1(z.z, limit));
 }
 
-/* Lowe's sphere fold's factor at a folded point whose |.|^2 is f2 (p_fold_sphere's): fixed^2 /
- * min^2 inside min_radius, fixed^2 / f2 between the radii, 1 outside. In pairs, the squares of
- * the radii exact (a double's square is a pair): a factor rounded to double would make a shape
- * 1e-16 off the parameters' own, which a view past double sees. */
-inline dd_t dd_sphere_fold_factor(dd_t f2, scalar_t min_radius, scalar_t fixed_radius) {
-  /* The radii are the same in every lane: their squares' low parts as scalars (TwoProd). */
-  const scalar_t min_hi = min_radius * min_radius, fixed_hi = fixed_radius * fixed_radius;
-  const scalar_t fixed_lo = fma(fixed_radius, fixed_radius, -fixed_hi);
-  const dd_t min2 = dd_make(to_real(min_hi), to_real(fma(min_radius, min_radius, -min_hi)));
-  const dd_t fixed2 = dd_make(to_real(fixed_hi), to_real(fixed_lo));
-  const mask_t inner = dd_lt(f2, min2);
-  const mask_t shell = !inner & dd_lt(f2, fixed2);
+/* Lowe's sphere fold with its constants in pairs, worked out once per evaluation: the radii's
+ * squares exact (a double's square is a pair; a factor rounded to double would make a shape 1e-16
+ * off the parameters' own, which a view past double sees) and the inner factor fixed^2 / min^2.
+ * They are the same in every lane, so scalars: nothing more for the loop to keep in vectors. */
+typedef struct {
+  scalar_t min2_hi, min2_lo, fixed2_hi, fixed2_lo, inner_hi, inner_lo;
+} dd_sphere_fold_t;
+
+inline dd_sphere_fold_t dd_sphere_fold_prepare(scalar_t min_radius, scalar_t fixed_radius) {
+  dd_sphere_fold_t f;
+  f.min2_hi = min_radius * min_radius;
+  f.min2_lo = fma(min_radius, min_radius, -f.min2_hi); /* TwoProd's error term */
+  f.fixed2_hi = fixed_radius * fixed_radius;
+  f.fixed2_lo = fma(fixed_radius, fixed_radius, -f.fixed2_hi);
+  /* fixed2 / min2 in two quotient digits, in scalars (dd_div's way): the remainder of the first
+   * digit exact through TwoProd, the second from it. */
+  const scalar_t q1 = f.fixed2_hi / f.min2_hi;
+  const scalar_t product = q1 * f.min2_hi;
+  const scalar_t product_error = fma(q1, f.min2_hi, -product);
+  const scalar_t rest =
+      ((f.fixed2_hi - product) - product_error) + f.fixed2_lo - q1 * f.min2_lo;
+  const scalar_t q2 = rest / f.min2_hi;
+  f.inner_hi = q1 + q2;
+  f.inner_lo = q2 - (f.inner_hi - q1);
+  return f;
+}
+
+/* a < b for a pair b given as scalars. */
+inline mask_t dd_lt_s(dd_t a, scalar_t b_hi, scalar_t b_lo) {
+  return (a.hi < b_hi) | ((a.hi == b_hi) & (a.lo < b_lo));
+}
+
+/* The fold's factor at a folded point whose |.|^2 is f2 (p_fold_sphere's): fixed^2 / min^2
+ * inside min_radius, fixed^2 / f2 between the radii, 1 outside. */
+__attribute__((always_inline)) inline dd_t dd_sphere_fold_factor(dd_t f2,
+                                                                  const dd_sphere_fold_t* fold) {
+  const mask_t inner = dd_lt_s(f2, fold->min2_hi, fold->min2_lo);
+  const mask_t shell = !inner & dd_lt_s(f2, fold->fixed2_hi, fold->fixed2_lo);
   const dd_t safe_r2 = dd_select(shell, f2, dd_from(to_real(1)));
-  /* A square without a low part (fixed radius 1, 0.5) divides as a double, the cheaper way. */
+  /* A square without a low part (fixed radius 1, 0.5): a double over the pair, the cheaper way. */
   const dd_t between =
-      fixed_lo == 0 ? dd_div_d_by(fixed2.hi, safe_r2) : dd_div(fixed2, safe_r2);
-  return dd_select(inner, dd_div(fixed2, min2),
+      fold->fixed2_lo == 0
+          ? dd_div_d_by(to_real(fold->fixed2_hi), safe_r2)
+          : dd_div(dd_make(to_real(fold->fixed2_hi), to_real(fold->fixed2_lo)), safe_r2);
+  return dd_select(inner, dd_make(to_real(fold->inner_hi), to_real(fold->inner_lo)),
                    dd_select(shell, between, dd_from(to_real(1))));
 }
 
@@ -119,7 +148,7 @@ inline dd3_t dd3_rotate_z_cs(dd3_t q, real_t c, real_t s) {
 }
 
 /* p_rotate_xyz: Euler angles in radians, x then y then z; zero angles cost nothing. */
-inline dd3_t dd3_rotate_xyz(dd3_t q, scalar_t angle_x, scalar_t angle_y, scalar_t angle_z) {
+__attribute__((always_inline)) inline dd3_t dd3_rotate_xyz(dd3_t q, scalar_t angle_x, scalar_t angle_y, scalar_t angle_z) {
   if (angle_x != 0) q = dd3_rotate_x_cs(q, (real_t)cos(angle_x), (real_t)sin(angle_x));
   if (angle_y != 0) q = dd3_rotate_y_cs(q, (real_t)cos(angle_y), (real_t)sin(angle_y));
   if (angle_z != 0) q = dd3_rotate_z_cs(q, (real_t)cos(angle_z), (real_t)sin(angle_z));

@@ -36,7 +36,8 @@ inline void hybrid_step_dd(int kind, mask_t live, dd3_t* z, real_t* dr, dd3_t p,
       q = dd3_fold_box(q, to_real(a));
       break;
     case HYBRID_SPHERE_FOLD: {
-      const dd_t factor = dd_sphere_fold_factor(dd3_length2(q), a, b);
+      const dd_sphere_fold_t fold = dd_sphere_fold_prepare(a, b);
+      const dd_t factor = dd_sphere_fold_factor(dd3_length2(q), &fold);
       q = dd3_scale(q, factor);
       d *= factor.hi;
       break;
