@@ -365,15 +365,19 @@ const SceneState& RenderWorker::deepened(const SceneInfo& info, const SceneState
                               const PairOrigin* origin) {
       return probe_de(info, params, points, 1, precision, origin);
     };
-    deepened_state_ = state;
+    std::vector<fr_value> raised_params;
     raised_ = raise_iterations_for_view(probe, info, state, settings.width_px, settings.height_px,
-                                        device_.has_fp64, deepened_state_.params);
+                                        device_.has_fp64, raised_params);
     deepened_view_ = std::move(view);
   }
-  return std::any_of(raised_.begin(), raised_.end(),
-                     [](const RaisedIterations& r) { return r.used > r.set; })
-             ? deepened_state_
-             : state;
+  if (std::none_of(raised_.begin(), raised_.end(),
+                   [](const RaisedIterations& r) { return r.used > r.set; }))
+    return state;
+  // This call's state (its time, lights and the rest are this frame's) with the counts raised.
+  deepened_state_ = state;
+  for (const RaisedIterations& r : raised_)
+    if (const int i = info.find_param(r.key); i >= 0) deepened_state_.params[i].v[0] = r.used;
+  return deepened_state_;
 }
 
 Precision RenderWorker::prepare(const SceneInfo& info, const SceneState& requested,
