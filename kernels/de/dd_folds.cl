@@ -70,6 +70,17 @@ __attribute__((always_inline)) inline dd_t dd_sphere_fold_factor(dd_t f2,
                    dd_select(shell, between, dd_from(to_real(1))));
 }
 
+/* The distance from z (in pairs) to the unit box |x_i| <= 1 (sd_box's formula), with each
+ * |z_i| - 1 taken in pairs, where the subtraction cancels near a face, and the rest in double. */
+inline real_t dd3_unit_box_distance(dd3_t z) {
+  const vec3_t q = v3(dd_to_real(dd_add_d(dd_abs(z.x), to_real(-1))),
+                      dd_to_real(dd_add_d(dd_abs(z.y), to_real(-1))),
+                      dd_to_real(dd_add_d(dd_abs(z.z), to_real(-1))));
+  const real_t outside = v3_length(v3_max(q, v3s(0, 0, 0)));
+  const real_t inside = fmin(fmax(q.x, fmax(q.y, q.z)), to_real(0));
+  return outside + inside;
+}
+
 inline dd3_t dd3_abs(dd3_t z) { return dd3_make(dd_abs(z.x), dd_abs(z.y), dd_abs(z.z)); }
 
 /* The pair with the larger value first. */

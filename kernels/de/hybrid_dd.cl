@@ -102,14 +102,7 @@ inline void hybrid_step_dd(int kind, mask_t live, dd3_t* z, real_t* dr, dd3_t p,
  * distance from |z_i| - 1 in pairs, where the subtraction cancels. */
 inline real_t hybrid_estimate_dd(int estimate, dd3_t z, real_t dr) {
   const real_t safe_dr = fmax(fabs(dr), to_real(FR_SCALAR_MIN));
-  if (estimate == HYBRID_ESTIMATE_BOX) {
-    const vec3_t q = v3(dd_to_real(dd_add_d(dd_abs(z.x), to_real(-1))),
-                        dd_to_real(dd_add_d(dd_abs(z.y), to_real(-1))),
-                        dd_to_real(dd_add_d(dd_abs(z.z), to_real(-1))));
-    const real_t outside = v3_length(v3_max(q, v3s(0, 0, 0)));
-    const real_t inside = fmin(fmax(q.x, fmax(q.y, q.z)), to_real(0));
-    return (outside + inside) / safe_dr;
-  }
+  if (estimate == HYBRID_ESTIMATE_BOX) return dd3_unit_box_distance(z) / safe_dr;
   const dd_t r = dd_sqrt(dd3_length2(z));
   if (estimate == HYBRID_ESTIMATE_LOG) {
     /* 0.5 r ln r to first order in r's low part */

@@ -44,13 +44,8 @@ real_t de_menger_dd(dd3_t p, int iterations, scalar_t scale, vec3_t offset, scal
   }
   if (i == iterations) {
     /* Every level in pairs (a point this close to a level-n sponge's face): the box's distance
-     * from the pairs, where |z| - 1 cancels, then in double (sd_box's formula). */
-    const vec3_t q = v3(dd_to_real(dd_add_d(dd_abs(z.x), to_real(-1))),
-                        dd_to_real(dd_add_d(dd_abs(z.y), to_real(-1))),
-                        dd_to_real(dd_add_d(dd_abs(z.z), to_real(-1))));
-    const real_t outside = v3_length(v3_max(q, v3s(0, 0, 0)));
-    const real_t inside = fmin(fmax(q.x, fmax(q.y, q.z)), to_real(0));
-    return (outside + inside) * to_real(pown_scalar(1 / scale, iterations));
+     * from the pairs, where |z| - 1 cancels. */
+    return dd3_unit_box_distance(z) * to_real(pown_scalar(1 / scale, iterations));
   }
   /* The rest in double, as fr/menger.cl's loop. */
   vec3_t zd = dd3_to_v3(z);
