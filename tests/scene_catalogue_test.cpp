@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <set>
@@ -153,6 +154,30 @@ TEST(SceneCatalogue, ChoiceRules) {
         p.max_value.v[0] = 12;
       },
       "only a choice has names");
+}
+
+// ABI 1.4's detail ratio: the Mandelbox's iteration count declares 2 (read from the plugin), and
+// only an int count may have one, above 1 and finite.
+TEST(SceneCatalogue, DetailRatioRules) {
+  const LoadOutcome o = load_scene_plugin(std::filesystem::path(SCENE_PLUGIN_DIR) /
+                                          ("mandelbox" PLUGIN_SUFFIX));
+  ASSERT_TRUE(o.scene) << o.message;
+  const SceneInfo good = o.scene->info;
+  const int count = good.find_param("iterations");
+  ASSERT_GE(count, 0);
+  EXPECT_EQ(good.params[count].detail_ratio, 2.0);
+  EXPECT_EQ(good.params[good.find_param("scale")].detail_ratio, 0.0);
+  EXPECT_EQ(check_scene_info(good), std::nullopt);
+  auto broken = [&](const std::string& key, double ratio, const std::string& says) {
+    SceneInfo info = good;
+    info.params[info.find_param(key)].detail_ratio = ratio;
+    const auto problem = check_scene_info(info);
+    ASSERT_TRUE(problem.has_value()) << key << " " << ratio;
+    EXPECT_NE(problem->find(says), std::string::npos) << *problem;
+  };
+  broken("scale", 2, "only an int iteration count has a detail_ratio");
+  for (double ratio : {0.5, 1.0, -2.0, double(NAN), double(INFINITY), 1e7})
+    broken("iterations", ratio, "must be above 1 and finite");
 }
 
 const std::vector<std::string> kHybridPresets = {"bulb_in_a_box", "folded_cubic_bulb",
