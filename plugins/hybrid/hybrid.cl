@@ -13,6 +13,9 @@
     hybrid_step(PARAM(step##n), live, &z, &dr, p, PARAM(step##n##_a), PARAM(step##n##_b), \
                 PARAM(step##n##_v));
 
+/* The chain's six steps, in order, each by `apply` (in double, or in pairs below). */
+#define HYBRID_STEPS(apply) apply(1) apply(2) apply(3) apply(4) apply(5) apply(6)
+
 inline real_t hybrid_de(vec3_t p, __constant const scene_params_t* params, real_t* trap) {
   vec3_t z = p;
   real_t dr = to_real(1);
@@ -22,12 +25,7 @@ inline real_t hybrid_de(vec3_t p, __constant const scene_params_t* params, real_
   for (int i = 0; i < PARAM(iterations); ++i) {
     const mask_t live = r2 < bailout2;
     if (!any_lane(live)) break;
-    HYBRID_APPLY(1)
-    HYBRID_APPLY(2)
-    HYBRID_APPLY(3)
-    HYBRID_APPLY(4)
-    HYBRID_APPLY(5)
-    HYBRID_APPLY(6)
+    HYBRID_STEPS(HYBRID_APPLY)
     r2 = lane_select(live, v3_length2(z), r2);
     orbit_min = lane_select(live, fmin(orbit_min, r2), orbit_min);
   }
@@ -75,12 +73,7 @@ inline real_t hybrid_de_dd_once(dd3_t p, __constant const scene_params_t* params
     if (!any_lane(live)) break;
     const mask_t needs_pairs = fabs(dr) * resolution <= switch_ulps * fmax(sqrt(r2), floor_size);
     if (!any_lane(live & needs_pairs)) break; /* the rest in double, below */
-    HYBRID_APPLY_DD(1)
-    HYBRID_APPLY_DD(2)
-    HYBRID_APPLY_DD(3)
-    HYBRID_APPLY_DD(4)
-    HYBRID_APPLY_DD(5)
-    HYBRID_APPLY_DD(6)
+    HYBRID_STEPS(HYBRID_APPLY_DD)
     r2 = lane_select(live, v3_length2(dd3_to_v3(z)), r2);
   }
   /* (i is the same in every lane: a scalar condition picks the whole mask.) */
@@ -97,12 +90,7 @@ inline real_t hybrid_de_dd_once(dd3_t p, __constant const scene_params_t* params
       const mask_t live = r2 < bailout2;
       if (!any_lane(live)) break;
       *short_of |= live & (fabs(dr) * resolution <= switch_ulps * fmax(sqrt(r2), floor_size));
-      HYBRID_APPLY(1)
-      HYBRID_APPLY(2)
-      HYBRID_APPLY(3)
-      HYBRID_APPLY(4)
-      HYBRID_APPLY(5)
-      HYBRID_APPLY(6)
+      HYBRID_STEPS(HYBRID_APPLY)
       r2 = lane_select(live, v3_length2(z), r2);
     }
     return to_real(PARAM(de_factor)) *
