@@ -6,7 +6,7 @@ set(fractalis_kernel_files frame_constants.h prelude.cl eval_counts.cl rays.cl m
     normals.cl shadow.cl ao.cl glow.cl fog.cl lens.cl reflect.cl lights.cl environment.cl shade.cl
     film.cl render.cl
     material.cl area_lights.cl path.cl post.cl denoise.cl probe.cl material_probe.cl
-    de/primitives.cl de/operators.cl de/folds.cl de/mandelbulb.cl de/menger.cl de/sierpinski.cl
+    de/primitives.cl de/operators.cl de/folds.cl de/powers.cl de/mandelbulb.cl de/menger.cl de/sierpinski.cl
     de/julia.cl de/palette.cl de/mandelbox.cl de/kifs.cl de/jerusalem.cl de/kleinian.cl
     de/hypercomplex.cl de/cantor.cl de/kali.cl de/recursive.cl
     de/hybrid.cl de/staging.cl de/mandelbulber.cl de/dd.cl de/mandelbox_dd.cl de/menger_dd.cl

@@ -432,7 +432,8 @@ TEST(Cli, ListVerboseShowsTheKernel) {
   EXPECT_NE(bulb.find("stages ao; left out: dof, glow, shadows, fog, reflections"),
             std::string::npos)
       << bulb;
-  EXPECT_NE(bulb.find("DE library files: fr/mandelbulb.cl fr/palette.cl\n"), std::string::npos)
+  EXPECT_NE(bulb.find("DE library files: fr/mandelbulb.cl fr/palette.cl fr/powers.cl\n"),
+            std::string::npos)
       << bulb;
   EXPECT_NE(bulb.find("baked in as constants: iterations=8;"), std::string::npos) << bulb;
 }

@@ -499,6 +499,75 @@ TEST_F(Mb2De, AsinBulbWithBetaOffsetIsTheAcosBulb) {
   EXPECT_GT(compared, 20);
 }
 
+// Mandelbulber2's bulb step (id 2) written out with its trigonometry: theta = asin(z/r) + beta,
+// phi = atan2(y, x) + alpha, both times the power, r the 4D length, w untouched.
+void mb2_bulb_reference(V4& z, double& dr, double power, double alpha_deg, double beta_deg) {
+  const double r = z.length(), k = M_PI / 180;
+  const double th = (std::asin(z.z / r) + beta_deg * k) * power;
+  const double ph = (std::atan2(z.y, z.x) + alpha_deg * k) * power;
+  const double rp1 = std::pow(r, power - 1);
+  dr = rp1 * power * dr + 1;
+  const double rp = rp1 * r;
+  z = V4{rp * std::cos(th) * std::cos(ph), rp * std::cos(th) * std::sin(ph), rp * std::sin(th), z.w};
+}
+
+// The bulb with both angle offsets, at a whole power (the kernel's path without trigonometry) and
+// a fractional one (its trigonometric path), against the step written out above: five iterations
+// of z <- bulb(z) + p from points in and around the set.
+TEST_F(Mb2De, BulbWithAngleOffsetsAtWholeAndFractionalPowers) {
+  for (const double power : {9.0, 3.0, 8.5}) {
+    set("bulb_power", power);
+    set("bulb_alpha", 17);
+    set("bulb_beta", -23);
+    set("iterations", 5);
+    set("bailout", 4);
+    std::vector<std::array<float, 3>> points;
+    for (int i = 0; i < 48; ++i)
+      points.push_back({static_cast<float>(std::sin(i * 1.3) * 1.2),
+                        static_cast<float>(std::cos(i * 2.9) * 1.2),
+                        static_cast<float>(std::sin(i * 0.7 + 2) * 1.2)});
+    points.push_back({0, 0, 0.7f});  // on the z axis: phi is alpha there
+    const auto ours = probe_de(test::runtime(), scene->info, values, points, 16, Precision::Double);
+    int compared = 0;
+    for (size_t i = 0; i < points.size(); ++i) {
+      const V4 p{points[i][0], points[i][1], points[i][2], 0};
+      V4 z = p;
+      double dr = 1;
+      for (int n = 0; n < 5; ++n) {
+        mb2_bulb_reference(z, dr, power, 17, -23);
+        z = V4{z.x + p.x, z.y + p.y, z.z + p.z, 0};
+        if (z.length() > 4) break;
+      }
+      const double expected = log_estimate(z.length(), dr);
+      if (!(expected > 1e-3 && expected < 10)) continue;
+      EXPECT_NEAR(ours[i], expected, 1e-5 * expected) << "power " << power << ", point " << i;
+      ++compared;
+    }
+    EXPECT_GT(compared, 20) << "power " << power;
+  }
+}
+
+// A bulb after a hypercomplex step sees w: r is 4D, and so is the latitude's cosine
+// (|(x, y, w)| / r). Slot 1 hypercomplex (w <- 2 x w - 2 y z), slot 2 bulb power 4, one each.
+TEST_F(Mb2De, BulbAfterHypercomplexCountsW) {
+  set("hybrid", 1);
+  set("iterations", 2);
+  choose("f1", "hypercomplex");
+  choose("f2", "mandelbulb");
+  set("bulb_power", 4);
+  set("bulb_beta", 10);
+  set("bailout", 1e6);
+  const V4 p{0.75, -0.625, 0.5, 0};  // exact in float
+  V4 z{p.x * p.x - p.y * p.y - p.z * p.z + p.x, 2 * p.x * p.y + p.y, 2 * p.x * p.z + p.z,
+       -2 * p.y * p.z};
+  double dr = 2 * p.length();
+  mb2_bulb_reference(z, dr, 4, 0, 10);
+  z = V4{z.x + p.x, z.y + p.y, z.z + p.z, z.w};
+  const double expected = log_estimate(z.length(), dr);
+  ASSERT_GT(expected, 1e-3);
+  EXPECT_NEAR(de({0.75f, -0.625f, 0.5f}), expected, 1e-5 * expected);
+}
+
 // The hybrid sequence by hand: slot 1 (bulb, power 2, two in a row), slot 2 (power-2 bulb), N = 3:
 // bulb, bulb, power2, each followed by + c.
 TEST_F(Mb2De, HybridSequenceByHand) {

@@ -12,6 +12,14 @@
  *     per lane (mb2_lane0 takes a uniform value out of a lane vector).
  * Every step computes all lanes; the loop keeps the result only on the lanes still iterating. */
 
+/* The steps and the loop are inlined into one body: each step's switches are then constants
+ * there (the parameters that shape it are compiled in), and the nine-plane IFS or a rotated box
+ * fold unrolls to what the file enables. As calls, they passed the setup and 16-lane vectors by
+ * memory and tested every plane's flag at run time. */
+#define FR_MB2_INLINE __attribute__((always_inline))
+
+#include "fr/powers.cl"
+
 #define MB2_NONE 0
 #define MB2_MANDELBULB 1      /* id 2: White and Nylander's bulb, latitude by asin */
 #define MB2_POWER2 2          /* id 3: the power-2 bulb's polynomial form */
@@ -39,12 +47,12 @@ typedef struct mb2_rot_t {
   scalar_t m[9];
 } mb2_rot_t;
 
-inline vec3_t mb2_rotate(mb2_rot_t r, vec3_t v) {
+FR_MB2_INLINE inline vec3_t mb2_rotate(mb2_rot_t r, vec3_t v) {
   return v3(r.m[0] * v.x + r.m[1] * v.y + r.m[2] * v.z, r.m[3] * v.x + r.m[4] * v.y + r.m[5] * v.z,
             r.m[6] * v.x + r.m[7] * v.y + r.m[8] * v.z);
 }
 /* The inverse (transpose) rotation. */
-inline vec3_t mb2_rotate_back(mb2_rot_t r, vec3_t v) {
+FR_MB2_INLINE inline vec3_t mb2_rotate_back(mb2_rot_t r, vec3_t v) {
   return v3(r.m[0] * v.x + r.m[3] * v.y + r.m[6] * v.z, r.m[1] * v.x + r.m[4] * v.y + r.m[7] * v.z,
             r.m[2] * v.x + r.m[5] * v.y + r.m[8] * v.z);
 }
@@ -81,16 +89,67 @@ inline int mb2_turns(vec3_t deg) {
   return mb2_lane0(deg.x) != 0 || mb2_lane0(deg.y) != 0 || mb2_lane0(deg.z) != 0;
 }
 
+/* id 2's constants, once per evaluation: a whole power in [1, 64] takes no trigonometry. */
+typedef struct mb2_bulb_t {
+  scalar_t power, alpha_rad, beta_rad;
+  int whole;
+  scalar_t cos_alpha, sin_alpha, cos_beta, sin_beta;
+} mb2_bulb_t;
+
+inline mb2_bulb_t mb2_bulb_setup(scalar_t power, scalar_t alpha_deg, scalar_t beta_deg) {
+  mb2_bulb_t b;
+  b.power = power;
+  b.alpha_rad = alpha_deg * (scalar_t)(M_PI / 180);
+  b.beta_rad = beta_deg * (scalar_t)(M_PI / 180);
+  b.whole = power == rint(power) && power >= 1 && power <= 64;
+  b.cos_alpha = cos(b.alpha_rad);
+  b.sin_alpha = sin(b.alpha_rad);
+  b.cos_beta = cos(b.beta_rad);
+  b.sin_beta = sin(b.beta_rad);
+  return b;
+}
+
 /* id 2: theta = asin(z/r) + beta, phi = atan2(y, x) + alpha, both times the power;
- * dr <- p r^(p-1) dr + 1. */
-inline void mb2_mandelbulb(vec3_t* z, real_t r, real_t* dr, scalar_t power, scalar_t alpha_rad,
-                           scalar_t beta_rad) {
+ * dr <- p r^(p-1) dr + 1 (r the 4D length, w untouched).
+ *
+ * A whole power takes the angles without trigonometry, as fr/mandelbulb.cl's bulb does: the unit
+ * vectors (cos, sin) of asin(z/r) and atan2(y, x) are read off z (cos asin(z/r) = |(x, y, w)| / r,
+ * which w enters as it enters r), turned by beta and alpha, and raised to the power by de
+ * Moivre's formula. On the z axis atan2 is taken as atan2(0, 0) = 0 (phi = alpha), as in the
+ * trigonometric path for +0. */
+FR_MB2_INLINE inline void mb2_mandelbulb(vec3_t* z, real_t w, real_t r, real_t* dr,
+                                         const mb2_bulb_t* b) {
   const real_t safe_r = fmax(r, to_real(FR_SCALAR_MIN));
-  const real_t th = (asin(clamp(z->z / safe_r, to_real(-1), to_real(1))) + to_real(beta_rad)) *
-                    to_real(power);
-  const real_t ph = (atan2(z->y, z->x) + to_real(alpha_rad)) * to_real(power);
-  const real_t rp1 = pow_nonneg(r, to_real(power - 1));
-  *dr = rp1 * to_real(power) * *dr + to_real(1);
+  if (b->whole) {
+    const int n = (int)b->power;
+    const real_t inv_r = to_real(1) / safe_r;
+    const real_t rho2 = z->x * z->x + z->y * z->y;
+    /* (cos, sin) of the latitude, then of latitude + beta. */
+    const real_t c0 = fmin(sqrt(rho2 + w * w) * inv_r, to_real(1));
+    const real_t s0 = clamp(z->z * inv_r, to_real(-1), to_real(1));
+    real_t ct = c0 * to_real(b->cos_beta) - s0 * to_real(b->sin_beta);
+    real_t st = c0 * to_real(b->sin_beta) + s0 * to_real(b->cos_beta);
+    /* (cos, sin) of the longitude, then of longitude + alpha. */
+    const real_t rho = sqrt(rho2);
+    const mask_t on_axis = rho <= to_real(FR_SCALAR_MIN);
+    const real_t inv_rho = to_real(1) / fmax(rho, to_real(FR_SCALAR_MIN));
+    const real_t cp0 = lane_select(on_axis, to_real(1), z->x * inv_rho);
+    const real_t sp0 = lane_select(on_axis, to_real(0), z->y * inv_rho);
+    real_t cp = cp0 * to_real(b->cos_alpha) - sp0 * to_real(b->sin_alpha);
+    real_t sp = cp0 * to_real(b->sin_alpha) + sp0 * to_real(b->cos_alpha);
+    unit_complex_pow_int(&ct, &st, n);
+    unit_complex_pow_int(&cp, &sp, n);
+    const real_t rp1 = pow_int(r, n - 1);
+    *dr = rp1 * to_real(b->power) * *dr + to_real(1);
+    const real_t rp = rp1 * r;
+    *z = v3(rp * ct * cp, rp * ct * sp, rp * st);
+    return;
+  }
+  const real_t th = (asin(clamp(z->z / safe_r, to_real(-1), to_real(1))) + to_real(b->beta_rad)) *
+                    to_real(b->power);
+  const real_t ph = (atan2(z->y, z->x) + to_real(b->alpha_rad)) * to_real(b->power);
+  const real_t rp1 = pow_nonneg(r, to_real(b->power - 1));
+  *dr = rp1 * to_real(b->power) * *dr + to_real(1);
   const real_t rp = rp1 * r;
   const real_t cth = cos(th);
   *z = v3(rp * cth * cos(ph), rp * cth * sin(ph), rp * sin(th));
@@ -98,7 +157,7 @@ inline void mb2_mandelbulb(vec3_t* z, real_t r, real_t* dr, scalar_t power, scal
 
 /* id 3: x' = (x^2 - y^2) t, y' = 2 x y t, z' = -2 z sqrt(x^2 + y^2), t = 1 - z^2 / (x^2 + y^2);
  * dr <- 2 r dr. */
-inline void mb2_power2(vec3_t* z, real_t r, real_t* dr) {
+FR_MB2_INLINE inline void mb2_power2(vec3_t* z, real_t r, real_t* dr) {
   const real_t s = fmax(z->x * z->x + z->y * z->y, to_real(FR_SCALAR_MIN));
   const real_t t = to_real(1) - z->z * z->z / s;
   *dr = 2 * r * *dr;
@@ -106,7 +165,7 @@ inline void mb2_power2(vec3_t* z, real_t r, real_t* dr) {
 }
 
 /* id 4: the hypercomplex square on (x, y, z, w); dr <- 2 r dr. */
-inline void mb2_hypercomplex(vec3_t* z, real_t* w, real_t r, real_t* dr) {
+FR_MB2_INLINE inline void mb2_hypercomplex(vec3_t* z, real_t* w, real_t r, real_t* dr) {
   const vec3_t q = *z;
   const real_t qw = *w;
   *dr = 2 * r * *dr;
@@ -116,7 +175,7 @@ inline void mb2_hypercomplex(vec3_t* z, real_t* w, real_t r, real_t* dr) {
 }
 
 /* id 5: the quaternion square on (x, y, z) (w untouched in 2.20); dr <- 2 r dr. */
-inline void mb2_quaternion(vec3_t* z, real_t r, real_t* dr) {
+FR_MB2_INLINE inline void mb2_quaternion(vec3_t* z, real_t r, real_t* dr) {
   const vec3_t q = *z;
   *dr = 2 * r * *dr;
   *z = v3(q.x * q.x - q.y * q.y - q.z * q.z, 2 * q.x * q.y, 2 * q.x * q.z);
@@ -124,7 +183,7 @@ inline void mb2_quaternion(vec3_t* z, real_t r, real_t* dr) {
 
 /* id 7: abs, sort descending, scale, then the fixed offsets x, y -= 2 and z -= 2 when z > 1;
  * dr <- s dr. */
-inline void mb2_menger(vec3_t* z, real_t* dr, scalar_t scale) {
+FR_MB2_INLINE inline void mb2_menger(vec3_t* z, real_t* dr, scalar_t scale) {
   vec3_t q = v3_abs(*z);
   real_t t;
   mask_t m = q.x < q.y;
@@ -170,7 +229,7 @@ inline vec3_t mb2_with_component(vec3_t v, int axis, real_t a) {
 
 /* id 8: box fold (optionally in rotated frames per axis), sphere fold about -offset, the main
  * rotation, scale; dr <- dr |s| (times the sphere fold's factor) + 1. w takes the scalings. */
-inline void mb2_mandelbox(vec3_t* z, real_t* w, real_t* dr, const mb2_mandelbox_t* b) {
+FR_MB2_INLINE inline void mb2_mandelbox(vec3_t* z, real_t* w, real_t* dr, const mb2_mandelbox_t* b) {
   vec3_t q = *z;
   const real_t limit = to_real(b->limit), value = to_real(b->value);
   if (b->fold_rotations) {
@@ -219,11 +278,14 @@ typedef struct mb2_kifs_t {
 /* id 10: abs per axis; each enabled plane rotates, then reflects what lies below its distance;
  * the main rotation about the offset point; the edge fold; scale about the offset (Menger mode:
  * z only above half its offset); dr <- dr |s|. */
-inline void mb2_kifs(vec3_t* z, real_t* w, real_t* dr, const mb2_kifs_t* k) {
+FR_MB2_INLINE inline void mb2_kifs(vec3_t* z, real_t* w, real_t* dr, const mb2_kifs_t* k) {
   vec3_t q = *z;
   if (k->abs_x) q.x = fabs(q.x);
   if (k->abs_y) q.y = fabs(q.y);
   if (k->abs_z) q.z = fabs(q.z);
+  /* Unrolled: with the loop inlined, each plane's flag is a constant and a disabled plane
+   * leaves no code (as a loop its values were read back from memory by index). */
+#pragma unroll
   for (int i = 0; i < MB2_KIFS_PLANES; ++i) {
     if (!k->enabled[i]) continue;
     if (k->rotated[i]) q = mb2_rotate(k->plane_rotation[i], q);
@@ -255,7 +317,7 @@ inline void mb2_kifs(vec3_t* z, real_t* w, real_t* dr, const mb2_kifs_t* k) {
 
 /* id 103: the box's clamp fold, then the inversion k = max(K / |z|^2, 1) (K a squared radius);
  * dr <- dr (k + tweak); then the offset. */
-inline void mb2_pseudo_kleinian(vec3_t* z, real_t* w, real_t* dr, vec3_t box, scalar_t min_r2,
+FR_MB2_INLINE inline void mb2_pseudo_kleinian(vec3_t* z, real_t* w, real_t* dr, vec3_t box, scalar_t min_r2,
                                 scalar_t tweak, vec3_t offset) {
   vec3_t q = *z;
   q = v3(2 * clamp(q.x, -box.x, box.x) - q.x, 2 * clamp(q.y, -box.y, box.y) - q.y,
@@ -266,6 +328,15 @@ inline void mb2_pseudo_kleinian(vec3_t* z, real_t* w, real_t* dr, vec3_t box, sc
   *w = *w * k;
   *dr = *dr * (k + to_real(tweak));
   *z = v3_add(q, offset);
+}
+
+/* |(z, w)| without overflowing where its square would (an orbit past 1e19 in float). */
+FR_MB2_INLINE inline real_t mb2_length4(vec3_t z, real_t w) {
+  const real_t m = fmax(fmax(fabs(z.x), fabs(z.y)), fmax(fabs(z.z), fabs(w)));
+  const real_t inv = to_real(1) / fmax(m, to_real(FR_SCALAR_MIN));
+  const vec3_t u = v3_scale(z, inv);
+  const real_t uw = w * inv;
+  return lane_select(isinf(m), m, m * sqrt(v3_length2(u) + uw * uw));
 }
 
 /* The distance from the last z (4D length r) and dr, by the chosen estimate; Mandelbulber2 keeps

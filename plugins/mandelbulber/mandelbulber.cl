@@ -21,6 +21,7 @@
 
 /* What the formulas need, gathered once per evaluation (rotations as matrices). */
 typedef struct mb2_setup_t {
+  mb2_bulb_t bulb;
   mb2_mandelbox_t box;
   mb2_kifs_t kifs;
 } mb2_setup_t;
@@ -45,8 +46,10 @@ typedef struct mb2_setup_t {
    PARAM(f5) == (kind) || PARAM(f6) == (kind) || PARAM(f7) == (kind) || PARAM(f8) == (kind) || \
    PARAM(f9) == (kind))
 
-inline mb2_setup_t mb2_setup(__constant const scene_params_t* params) {
+FR_MB2_INLINE inline mb2_setup_t mb2_setup(__constant const scene_params_t* params) {
   mb2_setup_t s;
+  if (MB2_USES(MB2_MANDELBULB))
+    s.bulb = mb2_bulb_setup(PARAM(bulb_power), PARAM(bulb_alpha), PARAM(bulb_beta));
   if (MB2_USES(MB2_MANDELBOX)) {
     s.box.scale = PARAM(box_scale);
     s.box.limit = PARAM(box_fold_limit);
@@ -91,21 +94,21 @@ inline mb2_setup_t mb2_setup(__constant const scene_params_t* params) {
 }
 
 /* One formula step of kind `kind` (a compile-time constant at each call). */
-inline void mb2_step(int kind, vec3_t* z, real_t* w, real_t r, real_t* dr, const mb2_setup_t* s,
-                     __constant const scene_params_t* params) {
+FR_MB2_INLINE inline void mb2_step(int kind, vec3_t* z, real_t* w, real_t r2, real_t* dr,
+                                  const mb2_setup_t* s, __constant const scene_params_t* params) {
+  /* Only the squares' steps need r itself: its square root is taken there, not per iteration. */
   switch (kind) {
     case MB2_MANDELBULB:
-      mb2_mandelbulb(z, r, dr, PARAM(bulb_power), PARAM(bulb_alpha) * (scalar_t)(M_PI / 180),
-                     PARAM(bulb_beta) * (scalar_t)(M_PI / 180));
+      mb2_mandelbulb(z, *w, sqrt(r2), dr, &s->bulb);
       break;
     case MB2_POWER2:
-      mb2_power2(z, r, dr);
+      mb2_power2(z, sqrt(r2), dr);
       break;
     case MB2_HYPERCOMPLEX:
-      mb2_hypercomplex(z, w, r, dr);
+      mb2_hypercomplex(z, w, sqrt(r2), dr);
       break;
     case MB2_QUATERNION:
-      mb2_quaternion(z, r, dr);
+      mb2_quaternion(z, sqrt(r2), dr);
       break;
     case MB2_MENGER:
       mb2_menger(z, dr, PARAM(menger_scale));
@@ -150,20 +153,23 @@ inline int mb2_slot_runs(int slot, int i, __constant const scene_params_t* param
 #define MB2_RUN_SLOT(n)                                                        \
   case n - 1:                                                                  \
     kind = PARAM(f##n);                                                        \
-    mb2_step(PARAM(f##n), &nz, &nw, r, &ndr, &setup, params);                 \
+    mb2_step(PARAM(f##n), &nz, &nw, r2, &ndr, &setup, params);                \
     add_c = PARAM(f##n##_add_c);                                               \
     check = PARAM(f##n##_check_bailout);                                       \
     break;
 
-inline real_t mb2_de(vec3_t p, __constant const scene_params_t* params, real_t* trap) {
+FR_MB2_INLINE inline real_t mb2_de(vec3_t p, __constant const scene_params_t* params, real_t* trap) {
   const mb2_setup_t setup = mb2_setup(params);
   const vec3_t c = v3_mul(PARAM(julia) ? PARAM(julia_c) : p, PARAM(constant_factor));
   vec3_t z = p, z_prev = p, z_prev2 = p;
   real_t w = to_real(0);
   real_t dr = to_real(1);
-  real_t r = v3_length(z);
-  real_t orbit_min = r * r;
+  /* |z|^2 (4D): the bailout test compares squares (a square root per iteration cost a sixth of
+   * an IFS evaluation); r itself is taken once, for the estimate. */
+  real_t r2 = v3_length2(z);
+  real_t orbit_min = r2;
   const real_t bailout = to_real(PARAM(bailout));
+  const real_t bailout2 = to_real(PARAM(bailout) * PARAM(bailout));
   mask_t live = FR_MASK_TRUE;
   mask_t escaped = FR_MASK_FALSE; /* by the bailout or the Kleinian convergence test */
   mask_t no_formula = FR_MASK_FALSE; /* reached a slot without a formula */
@@ -201,9 +207,9 @@ inline real_t mb2_de(vec3_t p, __constant const scene_params_t* params, real_t* 
       counter = 0;
       slot = mb2_next_slot(slot, params);
     }
-    const real_t nr = sqrt(v3_length2(nz) + nw * nw);
+    const real_t nr2 = v3_length2(nz) + nw * nw;
     /* A NaN orbit keeps its last finite z and stops. */
-    const mask_t finite = !isnan(nr);
+    const mask_t finite = !isnan(nr2);
     const mask_t step = live & finite;
     if (MB2_USES(MB2_PSEUDO_KLEINIAN)) {
       z_prev2 = v3_select(step, z_prev, z_prev2);
@@ -212,17 +218,17 @@ inline real_t mb2_de(vec3_t p, __constant const scene_params_t* params, real_t* 
     z = v3_select(step, nz, z);
     w = lane_select(step, nw, w);
     dr = lane_select(step, ndr, dr);
-    r = lane_select(step, nr, r);
-    orbit_min = lane_select(step, fmin(orbit_min, nr * nr), orbit_min);
+    r2 = lane_select(step, nr2, r2);
+    orbit_min = lane_select(step, fmin(orbit_min, nr2), orbit_min);
     mask_t stop = live & !finite;
     if (check) {
-      const mask_t out = step & (nr > bailout);
+      const mask_t out = step & (nr2 > bailout2);
       stop = stop | out;
       escaped = escaped | out;
     }
     if (check && kind == MB2_PSEUDO_KLEINIAN) {
       /* Mandelbulber2's convergence test for Kleinian orbits. */
-      const real_t limit = to_real(0.1) / bailout * fmax(nr, to_real(FR_SCALAR_MIN));
+      const real_t limit = to_real(0.1) / bailout * fmax(sqrt(nr2), to_real(FR_SCALAR_MIN));
       const mask_t converged = step & ((v3_length(v3_sub(z, z_prev)) < limit) |
                                        (v3_length(v3_sub(z, z_prev2)) < limit));
       stop = stop | converged;
@@ -231,7 +237,7 @@ inline real_t mb2_de(vec3_t p, __constant const scene_params_t* params, real_t* 
     live = live & !stop;
   }
   *trap = orbit_min;
-  real_t d = mb2_distance(PARAM(estimate), z, r, dr, PARAM(linear_offset), PARAM(pk_de_offset));
+  real_t d = mb2_distance(PARAM(estimate), z, mb2_length4(z, w), dr, PARAM(linear_offset), PARAM(pk_de_offset));
   /* Mandelbulber2 with limits: an orbit that ran all N iterations is surface. */
   if (PARAM(solid_interior)) d = lane_select(escaped, d, to_real(0));
   d = lane_select(no_formula, to_real(10), d);
