@@ -161,6 +161,9 @@ typedef struct fr_frame_constants {
    * double-double kernel, whose coordinates are relative to the eye (dd_relative.cl): -eye. */
   float bounding_centre[4];
   float bounding_centre_lo[4];
+  /* The hit threshold's floor is a few ulps of max(|p|, this) (rays.cl): the eye's distance from
+   * the bounding centre, at most the bounding radius (host/render/precision.hpp). */
+  float threshold_floor_scale;
 } fr_frame_constants;
 
 #endif /* FR_FRAME_CONSTANTS_H */

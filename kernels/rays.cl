@@ -51,16 +51,19 @@ ray_t camera_ray(__constant const fr_frame_constants* fc, real_t px, real_t py, 
 #endif
 
 /* Hit threshold at path length t from the eye: the clarity function k * t * pixel angle, never
- * below a few ulp of max(|p|, bounding radius): positions near the scene are only that precise,
- * and without the floor a ray next to a singular point (the Mandelbulb's centre, |p| -> 0,
- * DE -> 0) would crawl by ever smaller steps for its whole budget. */
+ * below a few ulp of max(|p|, the eye's distance from the centre up to the bounding radius):
+ * positions are only that precise (a ray's points are the eye's position plus a path), and
+ * without the floor a ray next to a singular point (the Mandelbulb's centre, |p| -> 0, DE -> 0)
+ * would crawl by ever smaller steps for its whole budget. Not the bounding radius alone: an
+ * imported view's bound reaches as far as Mandelbulber2 could see (tens of units), and its
+ * ulps would hide a close-up's detail in float. */
 inline real_t hit_threshold(__constant const fr_frame_constants* fc, real_t t, vec3_t p) {
   real_t clarity = fc->hit_threshold_abs > 0 ? (real_t)fc->hit_threshold_abs
                                              : (real_t)(fc->hit_threshold_k * fc->pixel_angle_rad) * t;
   /* (|p| in world coordinates: a double-double kernel's p is relative to the eye, and its
    * positions are pairs, FR_POSITION_EPSILON.) */
   real_t ulp_floor = (real_t)(4 * FR_POSITION_EPSILON) *
-                     fmax(v3_length(FR_FROM_CENTRE(p)), (real_t)fc->bounding_radius);
+                     fmax(v3_length(FR_FROM_CENTRE(p)), (real_t)fc->threshold_floor_scale);
   return fmax(clarity, ulp_floor);
 }
 

@@ -83,12 +83,22 @@ fract_value() {
 now() { date +%s.%N; }
 
 compared=0
+declare -A seen
 while IFS= read -r -d '' file; do
   [ -n "$match" ] && [[ "$file" != *"$match"* ]] && continue
   [ "$limit" -gt 0 ] && [ "$compared" -ge "$limit" ] && break
   name=$(basename "$file" .fract)
   id=$(echo "$name" | tr 'A-Z' 'a-z' | tr -c 'a-z0-9\n' '_')
-  if ! "$fractalis" import "$file" --out "$out/presets" >"$out/log/$id.import" 2>&1; then
+  # Two collections hold a mandelbox22_anim: a second file of a name gets a suffix (and its own
+  # preset folder, since import never replaces a preset with other contents).
+  if [ -n "${seen[$id]:-}" ]; then
+    seen[$id]=$((seen[$id] + 1))
+    id="${id}_${seen[$id]}"
+  else
+    seen[$id]=1
+  fi
+  mkdir -p "$out/presets/$id"
+  if ! "$fractalis" import "$file" --out "$out/presets/$id" --force >"$out/log/$id.import" 2>&1; then
     continue
   fi
   compared=$((compared + 1))

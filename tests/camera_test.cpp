@@ -62,6 +62,30 @@ TEST(Camera, NonSquareImage) {
   expect_dir(camera_ray_dir(r, 1, 0), {-gx + 2 * gx / 3, gy, -1});
 }
 
+// Mandelbulber2's grid (render.pixel_corners), against its own formula: pixel (x, y) of a W x H
+// image looks along normalise(u fov, 1, v fov) in (right, forward, up), u = (x / W - 1/2) W / H,
+// v = 1/2 - y / H, fov the image plane's height at unit distance; legacy_coordinate_system
+// (mirror_vertical) makes v = y / H - 1/2. Fractalis's horizontal field of view for it is
+// 2 atan(fov W / (2 H)). W = 4, H = 2, fov 0.8.
+TEST(Camera, PixelCornersAreMandelbulber2sGrid) {
+  const double fov = 0.8, w = 4, h = 2;
+  const double fov_deg = 2 * std::atan(fov * w / (2 * h)) * 180 / std::numbers::pi;
+  const fr_camera c = make_camera({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, fov_deg);
+  const CameraRays r = make_camera_rays(c, 4, 2, false, true);
+  const CameraRays m = make_camera_rays(c, 4, 2, true, true);
+  for (int y = 0; y < 2; ++y)
+    for (int x = 0; x < 4; ++x) {
+      const double u = (x / w - 0.5) * w / h, v = 0.5 - y / h, v_legacy = y / h - 0.5;
+      // Right is +x, up +y, forward -z here.
+      expect_dir(camera_ray_dir(r, x, y), {u * fov, v * fov, -1});
+      expect_dir(camera_ray_dir(m, x, y), {u * fov, v_legacy * fov, -1});
+    }
+  EXPECT_NEAR(r.pixel_angle_rad, std::atan(fov / h), 1e-12);
+  // Pixel centres instead (the default): the last column's centre on the right edge.
+  const CameraRays centres = make_camera_rays(c, 4, 2);
+  expect_dir(camera_ray_dir(centres, 3, 0), {fov, fov / 2, -1});
+}
+
 // Looking along +x from (1,2,3) with up +z: forward (1,0,0), left = z x x = (0,1,0), up (0,0,1).
 TEST(Camera, RotatedFrame) {
   const CameraRays r = make_camera_rays(make_camera({1, 2, 3}, {4, 2, 3}, {0, 0, 2}, 90), 3, 3);

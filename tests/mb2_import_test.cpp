@@ -159,6 +159,9 @@ TEST(Mb2Import, FieldOfViewFromTheImagePlane) {
       parse("[main_parameters]\nfov 0,6;\nimage_width 1600;\nimage_height 900;\n"), "x"));
   EXPECT_NEAR(num(t, "camera", "fov_deg"),
               2 * std::atan(0.6 * 16.0 / 9.0 / 2) * 180 / std::numbers::pi, 1e-9);
+  // Mandelbulber2's pixel grid (camera_test.cpp checks the rays), the picture not mirrored.
+  EXPECT_EQ(t["settings"]["render.pixel_corners"].value<bool>(), true);
+  EXPECT_EQ(t["settings"]["render.mirror_vertical"].value<bool>(), false);
 }
 
 // A hybrid: the estimate family with the most iterations (linear on a tie), the largest default

@@ -152,7 +152,9 @@ bool Explorer::update(const InputState& input, double dt_s, double now_s) {
                               ? std::pair(window_width_px_ / 2, window_height_px_ / 2)
                               : *input.pointer;
       if (const auto d = depth_under(x, y, window_width_px_, window_height_px_)) {
-        const CameraRays rays = view_camera_rays(slot.state, window_width_px_, window_height_px_);
+        const CameraRays rays =
+            view_camera_rays(slot.state, window_width_px_, window_height_px_,
+                             settings_.render.mirror_vertical, settings_.render.pixel_corners);
         const glm::dvec3 dir = camera_ray_dir(rays, x, y);
         store_dvec3(zoom_point.dir, dir);
         zoom_point.distance = *d;
@@ -417,8 +419,10 @@ const FrameView* Explorer::render(int window_width_px, int window_height_px) {
   if (keep && last_.depth && last_.rgba8) {
     // The window's frame: this one's pixels where it traced them, earlier frames' elsewhere.
     const auto compose_start = std::chrono::steady_clock::now();
-    const uint8_t* shown = reuse_.compose(view_camera_rays(slot.state, window_w, window_h),
-                                          phase, last_.rgba8, last_.depth);
+    const uint8_t* shown = reuse_.compose(
+        view_camera_rays(slot.state, window_w, window_h, settings_.render.mirror_vertical,
+                         settings_.render.pixel_corners),
+        phase, last_.rgba8, last_.depth);
     stats_.reuse = reuse_.counts();
     FrameView composed;
     composed.width_px = window_w;
@@ -527,7 +531,9 @@ std::optional<double> Explorer::focus_at(int x, int y, int width_px, int height_
   const std::optional<double> depth = depth_under(x, y, width_px, height_px);
   if (!depth) return std::nullopt;
   // The lens focuses on a plane across the view (kernels/lens.cl): the distance along it.
-  const CameraRays rays = view_camera_rays(current().state, width_px, height_px);
+  const CameraRays rays =
+      view_camera_rays(current().state, width_px, height_px, settings_.render.mirror_vertical,
+                       settings_.render.pixel_corners);
   const double along = *depth * glm::dot(camera_ray_dir(rays, x, y), rays.forward);
   settings_.render.focus_distance = static_cast<float>(std::clamp(along, 1e-30, 1000.0));
   mark_changed();

@@ -843,7 +843,7 @@ class Checker {
     // never enters the solid. So: is the ray still at or in the surface 4 and 8 hit thresholds
     // beyond the careful hit? Entering a solid it is; leaving an edge's neighbourhood it is not.
     const CameraRays camera = make_camera_rays(state.camera, quarter.width_px, quarter.height_px,
-                                               plain.mirror_vertical);
+                                               plain.mirror_vertical, plain.pixel_corners);
     std::vector<DePoint> beyond_points;
     std::vector<double> threshold_of;
     for (size_t i : past) {

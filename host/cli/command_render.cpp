@@ -49,7 +49,8 @@ void report_rays(const FrameImage& image, const SceneInfo& info, const SceneStat
   if (rays.inside > 0 && rays.inside == total)
     spdlog::warn(
         "the camera is inside the surface: every ray starts inside the solid and is black");
-  const CameraRays camera_rays = view_camera_rays(state, image.width_px, image.height_px);
+  const CameraRays camera_rays = view_camera_rays(state, image.width_px, image.height_px,
+                                                  settings.mirror_vertical, settings.pixel_corners);
   // Past double, whether the scene's pair estimate resolves these parameters (some are double
   // at some: the Mandelbulb at a fractional power).
   const auto pairs_resolve = [&] {

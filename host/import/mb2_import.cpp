@@ -490,6 +490,8 @@ void Importer::camera() {
   const bool mirror = flag("legacy_coordinate_system");
   setting("render.mirror_vertical", mirror ? "true" : "false");
   if (mirror) note(Kind::Mapped, "legacy_coordinate_system", "render.mirror_vertical = true");
+  // Mandelbulber2's pixel (x, y) looks through its corner, at x / W - 1/2 of the image's width.
+  setting("render.pixel_corners", "true");
   handled.insert("camera_rotation");
   handled.insert("camera_distance_to_target");
 }

@@ -8,7 +8,8 @@
 #include <numbers>
 
 namespace fr {
-CameraRays make_camera_rays(const fr_camera& c, int k, int m, bool mirror_vertical) {
+CameraRays make_camera_rays(const fr_camera& c, int k, int m, bool mirror_vertical,
+                            bool pixel_corners) {
   const glm::dvec3 t = to_dvec3(c.target) - to_dvec3(c.eye);
   const glm::dvec3 b = glm::cross(effective_up(c), t);
   const glm::dvec3 v = glm::cross(t, b);
@@ -22,15 +23,30 @@ CameraRays make_camera_rays(const fr_camera& c, int k, int m, bool mirror_vertic
   r.forward = t_n;
   r.width_px = k;
   r.height_px = m;
-  // A one-pixel-wide image has a single column at the centre (the model divides by k - 1).
-  r.pixel_step_x = k > 1 ? (2.0 * g_x / (k - 1)) * b_n : glm::dvec3(0.0);
-  r.pixel_step_y = m > 1 ? (2.0 * g_y / (m - 1)) * v_n : glm::dvec3(0.0);
-  r.first_pixel_dir = t_n - (k > 1 ? g_x : 0.0) * b_n - (m > 1 ? g_y : 0.0) * v_n;
-  r.pixel_angle_rad = k > 1 ? std::atan(2.0 * g_x / (k - 1)) : 2.0 * std::atan(g_x);
+  // The first pixel's offsets along b_n and v_n (the model's p_1m: the bottom-right pixel).
+  double first_x, first_y;
+  if (pixel_corners) {
+    // Column i from the right is image column k - 1 - i, at (2 (k - 1 - i) / k - 1) g_x across:
+    // (1 - 2 / k) g_x - i (2 g_x / k), and b_n points left. Likewise rows from the bottom.
+    r.pixel_step_x = (2.0 * g_x / k) * b_n;
+    r.pixel_step_y = (2.0 * g_y / m) * v_n;
+    first_x = (1.0 - 2.0 / k) * g_x;
+    first_y = (1.0 - 2.0 / m) * g_y;
+    r.pixel_angle_rad = std::atan(2.0 * g_x / k);
+  } else {
+    // A one-pixel-wide image has a single column at the centre (the model divides by k - 1).
+    r.pixel_step_x = k > 1 ? (2.0 * g_x / (k - 1)) * b_n : glm::dvec3(0.0);
+    r.pixel_step_y = m > 1 ? (2.0 * g_y / (m - 1)) * v_n : glm::dvec3(0.0);
+    first_x = k > 1 ? g_x : 0.0;
+    first_y = m > 1 ? g_y : 0.0;
+    r.pixel_angle_rad = k > 1 ? std::atan(2.0 * g_x / (k - 1)) : 2.0 * std::atan(g_x);
+  }
+  // Mirrored, every row's vertical offset changes sign: the first row's and the step's.
   if (mirror_vertical) {
-    r.first_pixel_dir += r.pixel_step_y * static_cast<double>(m - 1);
+    first_y = -first_y;
     r.pixel_step_y = -r.pixel_step_y;
   }
+  r.first_pixel_dir = t_n - first_x * b_n - first_y * v_n;
   return r;
 }
 

@@ -36,10 +36,15 @@ struct CameraRays {
 
 // The model's vectors for a width_px x height_px image (each >= 1). The camera must pass
 // check_camera (scene/scene_data.hpp).
-// mirror_vertical: the picture mirrored top to bottom (row y shows the ray of row height - 1 - y),
-// as Mandelbulber2's legacy_coordinate_system draws; no camera move gives a mirror image.
+// mirror_vertical: the picture mirrored top to bottom (row y shows the ray of row height - 1 - y,
+// or with pixel_corners the vertical offsets negated), as Mandelbulber2's
+// legacy_coordinate_system draws; no camera move gives a mirror image.
+// pixel_corners: Mandelbulber2's grid: the field of view spans the image edge to edge and pixel
+// (x, y) looks through its top-left corner, at (2x / width - 1) g_x across and (1 - 2y / height)
+// g_y up (g = tan of half the field of view); without it the first and last pixels' centres lie
+// on the field of view's edges, at (2x / (width - 1) - 1) g_x.
 CameraRays make_camera_rays(const fr_camera& camera, int width_px, int height_px,
-                            bool mirror_vertical = false);
+                            bool mirror_vertical = false, bool pixel_corners = false);
 
 // Unit direction of the ray through image pixel (x, y), row 0 at the top; the same arithmetic
 // as kernels/rays.cl, in double.

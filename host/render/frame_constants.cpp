@@ -19,7 +19,7 @@ static_assert(FR_KERNEL_LIGHT_DIRECTIONAL == FR_LIGHT_DIRECTIONAL &&
 
 // The kernels read this struct with OpenCL C's layout rules; with only 4-byte fields both sides
 // agree, and these checks keep it so.
-static_assert(sizeof(fr_frame_constants) == 1060, "fr_frame_constants layout changed");
+static_assert(sizeof(fr_frame_constants) == 1064, "fr_frame_constants layout changed");
 static_assert(offsetof(fr_frame_constants, first_pixel_dir) == 0);
 static_assert(offsetof(fr_frame_constants, light_vector) == 96);
 static_assert(offsetof(fr_frame_constants, light_kind) == 352);
@@ -42,6 +42,7 @@ static_assert(offsetof(fr_frame_constants, env_intensity) == 1020);
 static_assert(offsetof(fr_frame_constants, hit_threshold_abs) == 1024);
 static_assert(offsetof(fr_frame_constants, bounding_centre) == 1028);
 static_assert(offsetof(fr_frame_constants, bounding_centre_lo) == 1044);
+static_assert(offsetof(fr_frame_constants, threshold_floor_scale) == 1060);
 namespace {
 void put(float out[4], glm::dvec3 v) {
   out[0] = static_cast<float>(v.x);
@@ -87,6 +88,10 @@ std::array<double, 2> sample_jitter(int i) {
   const double g = 1.32471795724474602596;  // plastic number
   double x = 0.5 + i / g, y = 0.5 + i / (g * g);
   return {x - std::floor(x) - 0.5, y - std::floor(y) - 0.5};
+}
+
+double threshold_floor_scale(double eye_distance, double bounding_radius) {
+  return std::min(std::max(eye_distance, bounding_radius / 1024), bounding_radius);
 }
 
 fr_frame_constants make_frame_constants(const CameraRays& rays, const SceneState& state,
@@ -204,6 +209,8 @@ fr_frame_constants make_frame_constants(const CameraRays& rays, const SceneState
   fc.hit_threshold_k = s.hit_threshold_k;
   fc.hit_threshold_abs = s.hit_threshold_abs;
   fc.bounding_radius = static_cast<float>(radius);
+  fc.threshold_floor_scale =
+      static_cast<float>(threshold_floor_scale(glm::length(rays.eye - bounding_centre), radius));
   fc.step_scale = s.step_scale;
   fc.ao_strength = s.ao_strength;
   fc.ao_distance = static_cast<float>(s.ao_distance * radius);

@@ -22,6 +22,14 @@ fr_frame_constants make_frame_constants(const CameraRays& rays, const SceneState
                                         const RenderSettings& settings, int sample_index,
                                         glm::dvec3 bounding_centre = glm::dvec3(0.0));
 
+// The scale besides |p| whose ulps floor the hit threshold (fr_frame_constants.
+// threshold_floor_scale, kernels/rays.cl): the eye's distance from the bounding centre, at most
+// the bounding radius. A ray's points are the eye's position plus a path, so they are no more
+// precise than the eye's; every surface point lies within the bounding radius. And at least
+// 1/1024 of the radius: an eye at a singular centre (the Mandelbulb's, where the estimate is 0
+// and no surface) would otherwise have no floor at all, and its rays crawl for every step.
+double threshold_floor_scale(double eye_distance, double bounding_radius);
+
 // Sub-pixel offset of a sample, in (-0.5, 0.5)^2: (0, 0) for sample 0, then the R2 sequence
 // (Roberts' additive recurrence), which covers the pixel evenly for any sample count.
 std::array<double, 2> sample_jitter(int sample_index);

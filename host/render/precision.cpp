@@ -2,6 +2,7 @@
 
 #include "render/de_probe.hpp"
 #include "render/eye_relative.hpp"
+#include "render/frame_constants.hpp"
 #include "render/kernel_assembly.hpp"
 
 #include <glm/geometric.hpp>
@@ -21,16 +22,25 @@ Precision resolve_precision(ClRuntime& runtime, const SceneInfo& info, const Sce
                             const RenderSettings& settings) {
   if (settings.precision != Precision::Auto) return settings.precision;
   if (!runtime.device().has_fp64) return Precision::Float;
-  const CameraRays rays = view_camera_rays(state, settings.width_px, settings.height_px);
+  const CameraRays rays = view_camera_rays(state, settings.width_px, settings.height_px,
+                                           settings.mirror_vertical, settings.pixel_corners);
   const std::array<float, 3> eye{static_cast<float>(rays.eye.x), static_cast<float>(rays.eye.y),
                                  static_cast<float>(rays.eye.z)};
   const float de = probe_de(runtime, info, state.params, {eye}, 1, Precision::Double)[0];
-  // The nearest surface is at least |DE| away. The hit threshold never falls below a few ulps of
-  // max(|p|, bounding radius) (kernels/rays.cl), so the bounding radius is the scale float must
-  // resolve a footprint at: a scene bounded generously (an imported view's, to everything
-  // Mandelbulber2 could see) needs double sooner than its eye's distance alone would say.
+  // The nearest surface is at least |DE| away, and every surface point lies within the bounding
+  // radius: a hit t from the eye is at most min(|eye| + t, R) from the centre, and its footprint
+  // t x pixel angle over that grows with t. So the nearest hit's is the least, and float resolves
+  // every hit of the view when it resolves a footprint at distance |DE| on positions of
+  // min(|eye| + |DE|, R) (or the threshold floor's own scale, where that is more: ulps of
+  // max(|p|, threshold_floor_scale) floor the kernel's hit threshold), and the floor is then
+  // under a quarter of every hit's footprint. (An imported view's
+  // bound reaches as far as Mandelbulber2 could see, tens of units: its close-ups are judged at
+  // the eye's scale, not at that.)
   const double distance = std::isfinite(de) ? std::abs(double(de)) : 0.0;
-  const double position_scale = state.bounding_radius;
+  const double eye_distance = glm::length(rays.eye);
+  const double position_scale =
+      std::max(threshold_floor_scale(eye_distance, state.bounding_radius),
+               std::min(eye_distance + distance, state.bounding_radius));
   const double footprint = distance * rays.pixel_angle_rad;
   if (footprint >= kFloatFootprintUlps * float_resolution(position_scale)) return Precision::Float;
   if (!has_pair_estimate(info) || settings.integrator == Integrator::Path || settings.fast_math)
@@ -126,14 +136,16 @@ double position_epsilon(Precision precision) {
   }
 }
 
-CameraRays view_camera_rays(const SceneState& state, int width_px, int height_px) {
+CameraRays view_camera_rays(const SceneState& state, int width_px, int height_px,
+                            bool mirror_vertical, bool pixel_corners) {
   const std::array<double, 3> view = view_vector(state.camera, state.camera_lo);
   fr_camera relative = state.camera;
   for (int i = 0; i < 3; ++i) {
     relative.eye[i] = 0;
     relative.target[i] = view[i];
   }
-  CameraRays rays = make_camera_rays(relative, width_px, height_px);
+  CameraRays rays =
+      make_camera_rays(relative, width_px, height_px, mirror_vertical, pixel_corners);
   const std::array<DoubleDouble, 3> eye = eye_pairs(state.camera, state.camera_lo);
   rays.eye = glm::dvec3(eye[0].hi, eye[1].hi, eye[2].hi);
   return rays;

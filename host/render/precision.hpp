@@ -67,7 +67,10 @@ double position_epsilon(Precision precision);
 
 // The view's rays for a width_px x height_px image: the direction from the camera's pairs (so a
 // view whose eye and target double cannot tell apart still has one), the eye its nearest double.
-CameraRays view_camera_rays(const SceneState& state, int width_px, int height_px);
+// mirror_vertical and pixel_corners as make_camera_rays takes them (render.mirror_vertical,
+// render.pixel_corners): where a pixel's ray goes, for picking and reprojection.
+CameraRays view_camera_rays(const SceneState& state, int width_px, int height_px,
+                            bool mirror_vertical = false, bool pixel_corners = false);
 
 // After a render: how many hit pixels (depth finite) have a footprint under
 // kFloatFootprintUlps ulps (position_epsilon) of their hit position in the precision they were

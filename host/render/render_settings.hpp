@@ -246,6 +246,9 @@ struct RenderSettings {
   int aperture_blades = 0;       // the aperture's sides (bokeh shape); below 3: round
   // The picture mirrored top to bottom (Mandelbulber2's legacy_coordinate_system; camera.hpp).
   bool mirror_vertical = false;
+  // Pixels sampled at their top-left corners, the field of view spanning the image edge to edge
+  // (Mandelbulber2's grid; camera.hpp); false: pixel centres, the outer ones on its edges.
+  bool pixel_corners = false;
   // An edge-avoiding filter over the accumulated picture, guided by the first hits' normals,
   // depths and albedos (kernels/denoise.cl): for path tracing at few samples.
   bool denoise = false;
@@ -333,6 +336,7 @@ void visit_render_fields(Settings& s, Visit&& visit) {
   visit("focus_distance", s.focus_distance);
   visit("aperture_blades", s.aperture_blades);
   visit("mirror_vertical", s.mirror_vertical);
+  visit("pixel_corners", s.pixel_corners);
   visit("denoise", s.denoise);
   visit("albedo", s.albedo);
   visit("ambient", s.ambient);
@@ -361,7 +365,7 @@ constexpr size_t aggregate_member_count() {
 }  // namespace detail
 // RenderSettings' direct members (the window counts once): a new field changes the count. List
 // it in visit_render_fields, then update this number.
-static_assert(detail::aggregate_member_count<RenderSettings>() == 70,
+static_assert(detail::aggregate_member_count<RenderSettings>() == 71,
               "RenderSettings changed: list the new field in visit_render_fields");
 
 }  // namespace fr

@@ -38,8 +38,9 @@ void set_arg(cl_kernel k, cl_uint index, const T& value) {
 CameraRays whole_image_rays(const fr_camera& camera, const RenderSettings& s) {
   const ImageWindow& win = s.window;
   if (win.full_width_px <= 0)
-    return make_camera_rays(camera, s.width_px, s.height_px, s.mirror_vertical);
-  return make_camera_rays(camera, win.full_width_px, win.full_height_px, s.mirror_vertical);
+    return make_camera_rays(camera, s.width_px, s.height_px, s.mirror_vertical, s.pixel_corners);
+  return make_camera_rays(camera, win.full_width_px, win.full_height_px, s.mirror_vertical,
+                          s.pixel_corners);
 }
 
 size_t round_up_div(size_t n, size_t d) {

@@ -420,6 +420,11 @@ std::vector<SettingSpec> make_table() {
       "render.mirror_vertical",
       "Mirror the picture top to bottom, as Mandelbulber2's legacy_coordinate_system does\n"
       "(imported .fract files set it)."));
+  t.push_back(bool_setting<&S::render, &R::pixel_corners>(
+      "render.pixel_corners",
+      "Sample each pixel at its top-left corner, the field of view spanning the image edge to\n"
+      "edge, as Mandelbulber2 does (imported .fract files set it); false: pixel centres, the\n"
+      "first and last on the field of view's edges."));
   t.push_back(in_overlay(number_setting<&S::render, &R::aperture_radius>(
                              "render.aperture", 0, 10, false,
                              "Thin-lens aperture radius in world units; 0 is a pinhole (no depth "
