@@ -340,8 +340,8 @@ TEST(DoubleDouble, MandelbulbOfFewIterationsAgreesWithFloat128) {
       std::string("__kernel void pairs(") + kDeepArguments + ") {\n" + kDeepPoint +
       "  STORE(de_mandelbulb_dd(p, 8.0f, 2.0, (int)iterations, (real_t)pixel), i, out);\n}\n";
   for (int lanes : {1, 16}) {
-    const std::string source =
-        program(lanes, {"de/powers.cl", "de/mandelbulb.cl", "de/dd.cl", "de/mandelbulb_dd.cl"}, kernels);
+    const std::string source = program(
+        lanes, {"de/powers.cl", "de/mandelbulb.cl", "de/dd.cl", "de/mandelbulb_dd.cl"}, kernels);
     const auto got =
         run(test::runtime(), source, "pairs", lanes, {xh, xl, yh, yl, zh, zl}, {8.0, 0.0});
     for (int k = 0; k < 16; ++k)

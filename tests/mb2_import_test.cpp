@@ -511,7 +511,8 @@ void mb2_bulb_reference(V4& z, double& dr, double power, double alpha_deg, doubl
   const double rp1 = std::pow(r, power - 1);
   dr = rp1 * power * dr + 1;
   const double rp = rp1 * r;
-  z = V4{rp * std::cos(th) * std::cos(ph), rp * std::cos(th) * std::sin(ph), rp * std::sin(th), z.w};
+  z = V4{rp * std::cos(th) * std::cos(ph), rp * std::cos(th) * std::sin(ph), rp * std::sin(th),
+         z.w};
 }
 
 // The bulb with both angle offsets, at a whole power (the kernel's path without trigonometry) and

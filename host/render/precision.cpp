@@ -38,9 +38,8 @@ Precision resolve_precision(ClRuntime& runtime, const SceneInfo& info, const Sce
   // the eye's scale, not at that.)
   const double distance = std::isfinite(de) ? std::abs(double(de)) : 0.0;
   const double eye_distance = glm::length(rays.eye);
-  const double position_scale =
-      std::max(threshold_floor_scale(eye_distance, state.bounding_radius),
-               std::min(eye_distance + distance, state.bounding_radius));
+  const double position_scale = std::max(threshold_floor_scale(eye_distance, state.bounding_radius),
+                                         std::min(eye_distance + distance, state.bounding_radius));
   const double footprint = distance * rays.pixel_angle_rad;
   if (footprint >= kFloatFootprintUlps * float_resolution(position_scale)) return Precision::Float;
   if (!has_pair_estimate(info) || settings.integrator == Integrator::Path || settings.fast_math)
@@ -144,8 +143,7 @@ CameraRays view_camera_rays(const SceneState& state, int width_px, int height_px
     relative.eye[i] = 0;
     relative.target[i] = view[i];
   }
-  CameraRays rays =
-      make_camera_rays(relative, width_px, height_px, mirror_vertical, pixel_corners);
+  CameraRays rays = make_camera_rays(relative, width_px, height_px, mirror_vertical, pixel_corners);
   const std::array<DoubleDouble, 3> eye = eye_pairs(state.camera, state.camera_lo);
   rays.eye = glm::dvec3(eye[0].hi, eye[1].hi, eye[2].hi);
   return rays;

@@ -229,7 +229,8 @@ inline vec3_t mb2_with_component(vec3_t v, int axis, real_t a) {
 
 /* id 8: box fold (optionally in rotated frames per axis), sphere fold about -offset, the main
  * rotation, scale; dr <- dr |s| (times the sphere fold's factor) + 1. w takes the scalings. */
-FR_MB2_INLINE inline void mb2_mandelbox(vec3_t* z, real_t* w, real_t* dr, const mb2_mandelbox_t* b) {
+FR_MB2_INLINE inline void mb2_mandelbox(vec3_t* z, real_t* w, real_t* dr,
+                                        const mb2_mandelbox_t* b) {
   vec3_t q = *z;
   const real_t limit = to_real(b->limit), value = to_real(b->value);
   if (b->fold_rotations) {
@@ -317,8 +318,8 @@ FR_MB2_INLINE inline void mb2_kifs(vec3_t* z, real_t* w, real_t* dr, const mb2_k
 
 /* id 103: the box's clamp fold, then the inversion k = max(K / |z|^2, 1) (K a squared radius);
  * dr <- dr (k + tweak); then the offset. */
-FR_MB2_INLINE inline void mb2_pseudo_kleinian(vec3_t* z, real_t* w, real_t* dr, vec3_t box, scalar_t min_r2,
-                                scalar_t tweak, vec3_t offset) {
+FR_MB2_INLINE inline void mb2_pseudo_kleinian(vec3_t* z, real_t* w, real_t* dr, vec3_t box,
+                                              scalar_t min_r2, scalar_t tweak, vec3_t offset) {
   vec3_t q = *z;
   q = v3(2 * clamp(q.x, -box.x, box.x) - q.x, 2 * clamp(q.y, -box.y, box.y) - q.y,
          2 * clamp(q.z, -box.z, box.z) - q.z);

@@ -158,7 +158,8 @@ inline int mb2_slot_runs(int slot, int i, __constant const scene_params_t* param
     check = PARAM(f##n##_check_bailout);                                       \
     break;
 
-FR_MB2_INLINE inline real_t mb2_de(vec3_t p, __constant const scene_params_t* params, real_t* trap) {
+FR_MB2_INLINE inline real_t mb2_de(vec3_t p, __constant const scene_params_t* params,
+                                   real_t* trap) {
   const mb2_setup_t setup = mb2_setup(params);
   const vec3_t c = v3_mul(PARAM(julia) ? PARAM(julia_c) : p, PARAM(constant_factor));
   vec3_t z = p, z_prev = p, z_prev2 = p;
@@ -237,7 +238,8 @@ FR_MB2_INLINE inline real_t mb2_de(vec3_t p, __constant const scene_params_t* pa
     live = live & !stop;
   }
   *trap = orbit_min;
-  real_t d = mb2_distance(PARAM(estimate), z, mb2_length4(z, w), dr, PARAM(linear_offset), PARAM(pk_de_offset));
+  real_t d = mb2_distance(PARAM(estimate), z, mb2_length4(z, w), dr, PARAM(linear_offset),
+                          PARAM(pk_de_offset));
   /* Mandelbulber2 with limits: an orbit that ran all N iterations is surface. */
   if (PARAM(solid_interior)) d = lane_select(escaped, d, to_real(0));
   d = lane_select(no_formula, to_real(10), d);
