@@ -162,7 +162,8 @@ typedef struct fr_frame_constants {
   float bounding_centre[4];
   float bounding_centre_lo[4];
   /* The hit threshold's floor is a few ulps of max(|p|, this) (rays.cl): the eye's distance from
-   * the bounding centre, at most the bounding radius (host/render/precision.hpp). */
+   * the bounding centre, between 1/1024 of the bounding radius and the radius
+   * (threshold_floor_scale, host/render/frame_constants.hpp). */
   float threshold_floor_scale;
 } fr_frame_constants;
 

@@ -740,7 +740,8 @@ class Checker {
         {"subsurface_color.b", 0, 1}, {"mean_free_path", 0, kNone},
         {"emission.r", 0, kNone},     {"emission.g", 0, kNone},
         {"emission.b", 0, kNone}};
-    const CameraRays rays = make_camera_rays(state.camera, s.width_px, s.height_px);
+    const CameraRays rays = make_camera_rays(state.camera, s.width_px, s.height_px,
+                                             s.mirror_vertical, s.pixel_corners);
     std::vector<Point> points;
     for (int y = 0; y < s.height_px; ++y)
       for (int x = 0; x < s.width_px; ++x) {

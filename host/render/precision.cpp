@@ -33,9 +33,8 @@ Precision resolve_precision(ClRuntime& runtime, const SceneInfo& info, const Sce
   // every hit of the view when it resolves a footprint at distance |DE| on positions of
   // min(|eye| + |DE|, R) (or the threshold floor's own scale, where that is more: ulps of
   // max(|p|, threshold_floor_scale) floor the kernel's hit threshold), and the floor is then
-  // under a quarter of every hit's footprint. (An imported view's
-  // bound reaches as far as Mandelbulber2 could see, tens of units: its close-ups are judged at
-  // the eye's scale, not at that.)
+  // under a quarter of every hit's footprint. (An imported view's bound reaches as far as
+  // Mandelbulber2 could see, tens of units: its close-ups are judged at the eye's scale.)
   const double distance = std::isfinite(de) ? std::abs(double(de)) : 0.0;
   const double eye_distance = glm::length(rays.eye);
   const double position_scale = std::max(threshold_floor_scale(eye_distance, state.bounding_radius),
