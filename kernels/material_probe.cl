@@ -36,3 +36,25 @@ __kernel void fr_probe_material(__constant const fr_frame_constants* fc,
   for (int f = 0; f < FR_MATERIAL_FLOATS; ++f) probe_store(fields[f], f, first, count, out);
 }
 #endif
+
+/* The surface function's albedo at given points, 3 floats a point: tests compare a scene's
+ * colouring with an independent answer. */
+__kernel void fr_probe_albedo(__constant const scene_params_t* params, __global const float* xyz,
+                              __global float* out, int count) {
+  const int first = get_global_id(0) * FR_LANES;
+  float x[FR_LANES], y[FR_LANES], z[FR_LANES];
+  for (int lane = 0; lane < FR_LANES; ++lane) {
+    const int i = min(first + lane, count - 1);
+    x[lane] = xyz[3 * i + 0];
+    y[lane] = xyz[3 * i + 1];
+    z[lane] = xyz[3 * i + 2];
+  }
+  const surface_t s = scene_surface(v3(load_lanes(x), load_lanes(y), load_lanes(z)), params);
+  float lanes[FR_LANES];
+  const real_t fields[3] = {s.albedo.x, s.albedo.y, s.albedo.z};
+  for (int f = 0; f < 3; ++f) {
+    store_lanes(fields[f], lanes);
+    for (int lane = 0; lane < FR_LANES && first + lane < count; ++lane)
+      out[(first + lane) * 3 + f] = lanes[lane];
+  }
+}

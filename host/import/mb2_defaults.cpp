@@ -125,6 +125,21 @@ const Mb2Default kMain[] = {
     {"contrast", "1"},
     {"gamma", "1"},
     {"mat1_reflectance", "0"},
+    // The surface colour (material 1, the fractal's).
+    {"mat1_use_colors_from_palette", "true"},
+    {"mat1_surface_gradient_enable", "true"},
+    {"mat1_surface_color", "c350 c350 c350"},
+    {"mat1_surface_color_gradient",
+     "0 fd6029 1000 698403 2000 fff59b 3000 f5bd22 4000 0b5e87 5000 c68876 6000 a51c64 7000 "
+     "3b9fee 8000 d4ffd4 9000 aba53c"},
+    {"mat1_coloring_speed", "1"},
+    {"mat1_coloring_palette_offset", "0"},
+    {"mat1_fractal_coloring_algorithm", "0"},
+    {"mat1_fractal_coloring_sphere_radius", "1"},
+    {"mat1_fractal_coloring_line_direction", "1 0 0 0"},
+    {"mat1_fractal_coloring_extra_color_enabled_false", "false"},
+    {"mat1_fractal_coloring_color_4D_enabled_false", "false"},
+    {"mat1_fractal_coloring_color_preV215_false", "false"},
 };
 
 const Mb2Default kFractal[] = {
@@ -138,6 +153,10 @@ const Mb2Default kFractal[] = {
     {"mandelbox_folding_value", "2"},
     {"mandelbox_folding_min_radius", "0.5"},
     {"mandelbox_folding_fixed_radius", "1"},
+    {"mandelbox_color", "0.03 0.05 0.07"},
+    {"mandelbox_color_Sp1", "0.2"},
+    {"mandelbox_color_Sp2", "0.2"},
+    {"mandelbox_color_R", "0"},
     {"mandelbox_offset", "0 0 0"},
     {"mandelbox_main_rotation_enabled", "false"},
     {"mandelbox_rotation_main", "0 0 0"},

@@ -2,6 +2,7 @@
 
 #include "import/fract_values.hpp"
 #include "import/mb2_defaults.hpp"
+#include "import/mb2_palette.hpp"
 #include "io/echo.hpp"
 
 #include <algorithm>
@@ -203,6 +204,7 @@ struct Importer {
   void camera();
   void quality();
   void look();
+  void colouring();
   void unhandled_keys();
   std::string toml(const std::string& name) const;
 };
@@ -595,8 +597,7 @@ void Importer::look() {
   const bool glow = flag("glow_enabled");
   setting("render.effects.glow", glow ? "true" : "false");
   if (glow) {
-    setting("render.glow_color",
-            vec3_text(fract_colour(f, "glow_color_1", main("glow_color_1"))));
+    setting("render.glow_color", vec3_text(fract_colour(f, "glow_color_1", main("glow_color_1"))));
     note(Kind::Approximated, "glow_enabled, glow_color_1",
          "Fractalis's glow in glow_color_1, its own strength (Mandelbulber2's counts steps)");
   }
@@ -629,15 +630,16 @@ void Importer::look() {
     const double aspect =
         static_cast<double>(std::max(w, 1LL)) / static_cast<double>(std::max(h, 1LL));
     const double f = std::clamp(focus, 1e-6, 1000.0);
-    const double aperture =
-        std::clamp(f * std::clamp(number("fov"), 0.0, 100.0) * std::max(radius, 0.0) *
-                       (1 + aspect) / 2000,
-                   0.0, 10.0);
+    const double aperture = std::clamp(
+        f * std::clamp(number("fov"), 0.0, 100.0) * std::max(radius, 0.0) * (1 + aspect) / 2000,
+        0.0, 10.0);
     setting("render.focus_distance", number_text(f));
     setting("render.aperture", number_text(aperture));
     note(Kind::Approximated, "DOF_enabled, DOF_focus, DOF_radius",
-         "a thin lens focused at " + number_text(f) + " with the blur Mandelbulber2's gives: "
-         "render.aperture = " + number_text(aperture) + " (it needs samples: --samples 64)");
+         "a thin lens focused at " + number_text(f) +
+             " with the blur Mandelbulber2's gives: "
+             "render.aperture = " +
+             number_text(aperture) + " (it needs samples: --samples 64)");
   }
   handled.insert({"DOF_focus", "DOF_radius"});
   const bool reflections = flag("raytraced_reflections");
@@ -656,8 +658,7 @@ void Importer::look() {
   // intensity a: the same beyond d0, a hundredth of the view's distance (so that a close-up's
   // lights fall off as its own), capped within it.
   const auto eye = vec3("camera"), target = vec3("target");
-  const double view_distance =
-      length({target[0] - eye[0], target[1] - eye[1], target[2] - eye[2]});
+  const double view_distance = length({target[0] - eye[0], target[1] - eye[1], target[2] - eye[2]});
   int last_aux = 0;
   std::string aux_toml[4];
   for (int i = 1; i <= 4; ++i) {
@@ -666,8 +667,7 @@ void Importer::look() {
         {"aux_light_position_" + k, "aux_light_colour_" + k, "aux_light_intensity_" + k});
     if (!flag("aux_light_enabled_" + k)) continue;
     const auto position = vec3("aux_light_position_" + k);
-    const auto colour =
-        fract_colour(f, "aux_light_colour_" + k, main("aux_light_colour_" + k));
+    const auto colour = fract_colour(f, "aux_light_colour_" + k, main("aux_light_colour_" + k));
     const double mb2 = 1.3 * 100 / 24 * std::max(number("aux_light_intensity_" + k), 0.0);
     const double d0 = std::max(0.01 * view_distance, 1e-12);
     const double attenuation = 1 / (d0 * d0);
@@ -713,6 +713,112 @@ void Importer::look() {
   handled.insert({"brightness", "contrast", "gamma"});
 }
 
+// The surface colour. Mandelbulber2 colours the fractal from its palette (a colouring pass over
+// the hit point's orbit gives an index, the index a position in the gradient) unless the file
+// turns that off, and then in mat1_surface_color. The scene does the same (colour_mode palette:
+// mandelbulber_surface.cl) with the gradient sampled at 64 even positions. Colours are
+// Mandelbulber2's display values; the scene's albedo is linear, so they are decoded from sRGB.
+void Importer::colouring() {
+  const int kSamples = 64;
+  auto linear = [](const std::array<double, 3>& c) {
+    return vec3_text({srgb_to_linear(c[0]), srgb_to_linear(c[1]), srgb_to_linear(c[2])});
+  };
+  handled.insert({"mat1_coloring_palette_size", "mat1_is_defined", "mat1_coloring_saturation"});
+  if (!flag("mat1_use_colors_from_palette") || !flag("mat1_surface_gradient_enable")) {
+    param("colour_mode", "\"surface\"");
+    param("surface_colour",
+          linear(fract_colour(f, "mat1_surface_color", main("mat1_surface_color"))));
+    note(Kind::Approximated, "mat1_surface_color", "surface_colour (decoded from sRGB)");
+    return;
+  }
+  handled.insert({"mat1_surface_color", "mat1_surface_color_palette"});
+  // Files from before 2.19 keep a palette; Mandelbulber2 turns it into a gradient of n evenly
+  // spaced colours, its speed into speed 10 / n and its offset into offset / n.
+  Mb2Gradient gradient;
+  double speed = number("mat1_coloring_speed"), offset = number("mat1_coloring_palette_offset");
+  std::string source;
+  if (f.version < 2.19 - 1e-9) {
+    const std::string key = "mat1_surface_color_palette";
+    if (given(key)) {
+      gradient = mb2_parse_old_palette(f, key, f.main.at(key));
+      source = key;
+    } else {
+      gradient =
+          mb2_parse_gradient(f, "mat1_surface_color_gradient", main("mat1_surface_color_gradient"));
+      source = "the default gradient";
+    }
+    speed *= 10.0 / gradient.colours;
+    offset /= gradient.colours;
+  } else {
+    gradient =
+        mb2_parse_gradient(f, "mat1_surface_color_gradient", main("mat1_surface_color_gradient"));
+    source = given("mat1_surface_color_gradient") ? "mat1_surface_color_gradient"
+                                                  : "the default gradient";
+  }
+  handled.insert("mat1_surface_color_gradient");
+  param("colour_mode", "\"palette\"");
+  for (int j = 0; j < kSamples; ++j)
+    param("palette_" + std::to_string(j),
+          linear(mb2_gradient_colour(gradient, static_cast<float>(j) / kSamples)));
+  param("colour_speed", number_text(std::clamp(speed, 0.0, 1e6)));
+  param("colour_offset", number_text(std::clamp(offset, -1e6, 1e6)));
+  const long long algorithm = integer("mat1_fractal_coloring_algorithm");
+  if (algorithm < 0 || algorithm > 4) {
+    // -1 (none) and out-of-range values: the standard trap, said.
+    note(Kind::Approximated, "mat1_fractal_coloring_algorithm",
+         std::to_string(algorithm) + ": the standard trap (|z|) instead");
+  }
+  static const char* const kAlgorithms[] = {"standard", "z_dot_point", "sphere", "cross", "line"};
+  param("colour_algorithm",
+        std::string("\"") + kAlgorithms[algorithm >= 0 && algorithm <= 4 ? algorithm : 0] + "\"");
+  param("colour_sphere_radius",
+        number_text(std::clamp(number("mat1_fractal_coloring_sphere_radius"), 0.0, 1e6)));
+  {
+    // A 4-vector in Mandelbulber2; its w meets the trap's w, which is 0 (4D colouring is off).
+    FractEntry e = main("mat1_fractal_coloring_line_direction");
+    std::istringstream in(e.value);
+    std::vector<std::string> w;
+    for (std::string t; in >> t;) w.push_back(t);
+    if (w.size() == 4) e.value = w[0] + " " + w[1] + " " + w[2];
+    auto d = fract_vec3(f, "mat1_fractal_coloring_line_direction", e);
+    for (double& c : d) c = std::clamp(c, -1e6, 1e6);
+    param("colour_line_direction", vec3_text(d));
+  }
+  // The Mandelbox's fold colours, from the first slot running one (Mandelbulber2 keeps them per
+  // slot; a second Mandelbox slot's own are not used).
+  int box_slot = -1;
+  for (const auto& [key, value] : params)
+    if (key.size() == 2 && key[0] == 'f' && value == "\"mandelbox\"" && box_slot < 0)
+      box_slot = key[1] - '1';
+  const int s = std::max(box_slot, 0);
+  auto clamp3 = [](std::array<double, 3> v) {
+    for (double& c : v) c = std::clamp(c, -1e6, 1e6);
+    return v;
+  };
+  param("box_colour", vec3_text(clamp3(fract_vec3(f, "mandelbox_color",
+                                                  mb2_fractal_entry(f, s, "mandelbox_color")))));
+  for (const auto& [scene_key, fract_key] : {std::pair{"box_colour_sp1", "mandelbox_color_Sp1"},
+                                             std::pair{"box_colour_sp2", "mandelbox_color_Sp2"},
+                                             std::pair{"box_colour_r", "mandelbox_color_R"}})
+    param(scene_key,
+          number_text(std::clamp(fract_number(f, fract_key, mb2_fractal_entry(f, s, fract_key)),
+                                 -1e6, 1e6)));
+  note(Kind::Approximated,
+       "mat1_surface_color_gradient, mat1_coloring_speed, "
+       "mat1_coloring_palette_offset, mat1_fractal_coloring_algorithm",
+       "Mandelbulber2's palette colouring (colour_mode = palette) from " + source + " (" +
+           std::to_string(gradient.colours) + " colours), sampled at 64 positions" +
+           (gradient.colours > 32 ? ": finer detail is smoothed" : ""));
+  if (flag("mat1_fractal_coloring_extra_color_enabled_false"))
+    note(Kind::Ignored, "mat1_fractal_coloring_extra_color_enabled_false",
+         "colouring by numbers: the standard colour index is used");
+  if (flag("mat1_fractal_coloring_color_4D_enabled_false"))
+    note(Kind::Ignored, "mat1_fractal_coloring_color_4D_enabled_false", "the trap is 3D here");
+  if (flag("mat1_fractal_coloring_color_preV215_false"))
+    note(Kind::Ignored, "mat1_fractal_coloring_color_preV215_false",
+         "the colouring pass's bailouts are 2.15's");
+}
+
 void Importer::unhandled_keys() {
   for (const auto& [key, entry] : f.main)
     if (!handled.count(key) && !kNotPicture.count(key)) note(Kind::Ignored, key, "not imported");
@@ -746,6 +852,7 @@ void Importer::run(const std::string& name) {
   camera();
   quality();
   look();
+  colouring();
   unhandled_keys();
   if (out.faithful()) out.preset_toml = toml(name);
 }
@@ -779,7 +886,29 @@ std::vector<std::string> Mb2Import::refusals() const {
 }
 
 Mb2Import import_fract(const FractFile& file, const std::string& name) {
-  Importer importer(file);
+  // Mandelbulber2 renames the material keys of files from 2.071 and before to material 1's.
+  FractFile renamed = file;
+  if (file.version <= 2.071 + 1e-9) {
+    static const std::pair<const char*, const char*> kRenames[] = {
+        {"reflect", "mat1_reflectance"},
+        {"coloring_speed", "mat1_coloring_speed"},
+        {"coloring_palette_size", "mat1_coloring_palette_size"},
+        {"coloring_palette_offset", "mat1_coloring_palette_offset"},
+        {"coloring_random_seed", "mat1_coloring_random_seed"},
+        {"coloring_saturation", "mat1_coloring_saturation"},
+        {"fractal_color", "mat1_use_colors_from_palette"},
+        {"surface_color_palette", "mat1_surface_color_palette"},
+        {"fractal_coloring_algorithm", "mat1_fractal_coloring_algorithm"},
+        {"fractal_coloring_sphere_radius", "mat1_fractal_coloring_sphere_radius"},
+        {"fractal_coloring_line_direction", "mat1_fractal_coloring_line_direction"}};
+    for (const auto& [from, to] : kRenames) {
+      const auto it = renamed.main.find(from);
+      if (it == renamed.main.end()) continue;
+      renamed.main.emplace(to, it->second);
+      renamed.main.erase(it);
+    }
+  }
+  Importer importer(renamed);
   importer.run(name);
   return std::move(importer.out);
 }

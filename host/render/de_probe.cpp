@@ -86,4 +86,19 @@ std::vector<float> probe_material(ClRuntime& runtime, const SceneInfo& info,
                    points.size(), lanes, kMaterialFloats);
 }
 
+std::vector<float> probe_albedo(ClRuntime& runtime, const SceneInfo& info,
+                                const std::vector<fr_value>& params,
+                                const std::vector<std::array<float, 3>>& points,
+                                Precision precision) {
+  if (points.empty()) return {};
+  const int lanes = resolve_lanes(0, &runtime.device());
+  const AssembledKernel k =
+      assemble_material_probe_kernel(info, params, KernelConfig{lanes, precision});
+  const std::vector<uint8_t> packed = pack_scene_params(info, params);
+  return run_probe(runtime, k, "fr_probe_albedo",
+                   {{packed.data(), packed.size(), "albedo probe parameters"},
+                    {points.data(), points.size() * sizeof(points[0]), "albedo probe points"}},
+                   points.size(), lanes, 3);
+}
+
 }  // namespace fr

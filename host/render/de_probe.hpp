@@ -32,4 +32,10 @@ std::vector<float> probe_material(ClRuntime& runtime, const SceneInfo& info,
                                   const std::vector<fr_value>& params, const fr_frame_constants& fc,
                                   const std::vector<std::array<float, 3>>& points);
 
+// The surface function's albedo (scene_surface) at `points`: 3 floats a point.
+std::vector<float> probe_albedo(ClRuntime& runtime, const SceneInfo& info,
+                                const std::vector<fr_value>& params,
+                                const std::vector<std::array<float, 3>>& points,
+                                Precision precision = Precision::Float);
+
 }  // namespace fr

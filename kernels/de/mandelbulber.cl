@@ -214,6 +214,9 @@ inline real_t mb2_fold(real_t a, real_t limit, real_t value) {
 typedef struct mb2_mandelbox_t {
   scalar_t scale, limit, value, min_r2, fixed_r2;
   vec3_t offset;
+  /* Mandelbulber2's colouring counts of the folds (mandelbox_color, _Sp1, _Sp2): per axis
+   * folded, and for the inner or the outer sphere fold. */
+  scalar_t colour_x, colour_y, colour_z, colour_sp1, colour_sp2;
   int main_rotation, fold_rotations;
   mb2_rot_t main;
   mb2_rot_t neg[3], pos[3]; /* per-axis fold rotations */
@@ -228,11 +231,14 @@ inline vec3_t mb2_with_component(vec3_t v, int axis, real_t a) {
 }
 
 /* id 8: box fold (optionally in rotated frames per axis), sphere fold about -offset, the main
- * rotation, scale; dr <- dr |s| (times the sphere fold's factor) + 1. w takes the scalings. */
-FR_MB2_INLINE inline void mb2_mandelbox(vec3_t* z, real_t* w, real_t* dr,
+ * rotation, scale; dr <- dr |s| (times the sphere fold's factor) + 1. w takes the scalings.
+ * `colour` is Mandelbulber2's aux.color: each fold adds its colour factor (the estimate does not
+ * read it, and inlined, its sums are dropped there). */
+FR_MB2_INLINE inline void mb2_mandelbox(vec3_t* z, real_t* w, real_t* dr, real_t* colour,
                                         const mb2_mandelbox_t* b) {
   vec3_t q = *z;
   const real_t limit = to_real(b->limit), value = to_real(b->value);
+  const scalar_t axis_colour[3] = {b->colour_x, b->colour_y, b->colour_z};
   if (b->fold_rotations) {
     for (int axis = 0; axis < 3; ++axis) {
       /* Mandelbulber's naming: the "neg" rotation frames the fold on the positive side. */
@@ -245,8 +251,12 @@ FR_MB2_INLINE inline void mb2_mandelbox(vec3_t* z, real_t* w, real_t* dr,
       const mask_t low = cd < -limit;
       const vec3_t from_low = mb2_rotate_back(b->pos[axis], mb2_with_component(c, axis, -value - cd));
       q = v3_select(high, from_high, v3_select(low, from_low, q));
+      *colour += lane_select(high | low, to_real(axis_colour[axis]), to_real(0));
     }
   } else {
+    *colour += lane_select(fabs(q.x) > limit, to_real(axis_colour[0]), to_real(0)) +
+               lane_select(fabs(q.y) > limit, to_real(axis_colour[1]), to_real(0)) +
+               lane_select(fabs(q.z) > limit, to_real(axis_colour[2]), to_real(0));
     q = v3(mb2_fold(q.x, limit, value), mb2_fold(q.y, limit, value), mb2_fold(q.z, limit, value));
   }
   const real_t r2 = v3_length2(q) + *w * *w;
@@ -255,6 +265,8 @@ FR_MB2_INLINE inline void mb2_mandelbox(vec3_t* z, real_t* w, real_t* dr,
       lane_select(r2 < to_real(b->min_r2), to_real(b->fixed_r2 / fmax(b->min_r2, FR_SCALAR_MIN)),
                   lane_select(r2 < to_real(b->fixed_r2),
                               to_real(b->fixed_r2) / fmax(r2, to_real(FR_SCALAR_MIN)), to_real(1)));
+  *colour += lane_select(r2 < to_real(b->min_r2), to_real(b->colour_sp1),
+                         lane_select(r2 < to_real(b->fixed_r2), to_real(b->colour_sp2), to_real(0)));
   q = v3_sub(v3_scale(q, factor), b->offset);
   if (b->main_rotation) q = mb2_rotate(b->main, q);
   *z = v3_scale(q, to_real(b->scale));

@@ -236,79 +236,159 @@ static const fr_param_desc color_contrast =
     FR_FLOAT_PARAM("color_contrast", "Colour contrast", "Colour",
                    "Exponent of the orbit-trap blend.", 1, 0.25, 8, 0);
 
+static const char* const colour_modes[] = {"trap", "palette", "surface"};
+static const fr_param_desc colour_mode = FR_CHOICE_PARAM(
+    "colour_mode", "Colouring", "Colour",
+    "trap: Fractalis's orbit-trap blend; palette: Mandelbulber2's palette colouring; surface: "
+    "one colour.",
+    0, colour_modes, FR_PARAM_SPECIALIZE);
+static const char* const colour_algorithms[] = {"standard", "z_dot_point", "sphere", "cross",
+                                                "line"};
+static const fr_param_desc colour_algorithm = FR_CHOICE_PARAM(
+    "colour_algorithm", "Colouring algorithm", "Colour",
+    "Mandelbulber2's trap (fractal_coloring_algorithm 0-4): |z|, |z.p|, ||z - p| - radius|, "
+    "min |z_i|, |z.direction|.",
+    0, colour_algorithms, FR_PARAM_SPECIALIZE);
+static const fr_param_desc colour_sphere_radius =
+    FR_FLOAT_PARAM("colour_sphere_radius", "Trap sphere radius", "Colour",
+                   "The sphere algorithm's radius.", 1, 0, 1e6, 0);
+static const fr_param_desc colour_line_direction =
+    FR_VEC3_PARAM("colour_line_direction", "Trap line direction", "Colour",
+                  "The line algorithm's direction.", 1, 0, 0, -1e6, 1e6, 0);
+static const fr_param_desc colour_speed =
+    FR_FLOAT_PARAM("colour_speed", "Palette speed", "Colour",
+                   "Palette turns per 2560 of the colour index.", 1, 0, 1e6, FR_PARAM_ANIMATABLE);
+static const fr_param_desc colour_offset = FR_FLOAT_PARAM(
+    "colour_offset", "Palette offset", "Colour",
+    "Added to the palette position (1 is a whole turn).", 0, -1e6, 1e6, FR_PARAM_ANIMATABLE);
+static const fr_param_desc surface_colour =
+    FR_COLOR_PARAM("surface_colour", "Surface colour", "Colour",
+                   "The albedo in the surface mode (linear).", 0.55, 0.55, 0.55);
+static const fr_param_desc box_colour =
+    FR_VEC3_PARAM("box_colour", "Fold colour x, y, z", "Colour",
+                  "Added to the fold colour per axis a Mandelbox step folds (mandelbox_color).",
+                  0.03, 0.05, 0.07, -1e6, 1e6, 0);
+static const fr_param_desc box_colour_sp1 =
+    FR_FLOAT_PARAM("box_colour_sp1", "Fold colour, inner sphere", "Colour",
+                   "Added when the sphere fold is within the minimum radius.", 0.2, -1e6, 1e6, 0);
+static const fr_param_desc box_colour_sp2 =
+    FR_FLOAT_PARAM("box_colour_sp2", "Fold colour, outer sphere", "Colour",
+                   "Added when the sphere fold is within the fixed radius.", 0.2, -1e6, 1e6, 0);
+static const fr_param_desc box_colour_r =
+    FR_FLOAT_PARAM("box_colour_r", "Fold colour, radius", "Colour",
+                   "The weight of r / 1e13 in a Mandelbox's colour index.", 0, -1e6, 1e6, 0);
+/* The palette: 64 samples at positions j / 64 (linear colour); by default a ramp. */
+#define PALETTE_ENTRY(j)                                                                        \
+  static const fr_param_desc palette_##j = FR_COLOR_PARAM(                                      \
+      "palette_" #j, "Palette " #j, "Palette", "The palette's colour at position " #j " / 64.", \
+      (j) / 63.0, 0.45, 1 - (j) / 63.0);
+#define PALETTE_ENTRIES8(a)                                                       \
+  PALETTE_ENTRY(a##0)                                                             \
+  PALETTE_ENTRY(a##1) PALETTE_ENTRY(a##2) PALETTE_ENTRY(a##3) PALETTE_ENTRY(a##4) \
+      PALETTE_ENTRY(a##5) PALETTE_ENTRY(a##6) PALETTE_ENTRY(a##7)
+PALETTE_ENTRY(0)
+PALETTE_ENTRY(1) PALETTE_ENTRY(2) PALETTE_ENTRY(3) PALETTE_ENTRY(4) PALETTE_ENTRY(5)
+    PALETTE_ENTRY(6) PALETTE_ENTRY(7) PALETTE_ENTRY(8) PALETTE_ENTRY(9) PALETTE_ENTRIES8(1)
+        PALETTE_ENTRY(18) PALETTE_ENTRY(19) PALETTE_ENTRIES8(2) PALETTE_ENTRY(28) PALETTE_ENTRY(29)
+            PALETTE_ENTRIES8(3) PALETTE_ENTRY(38) PALETTE_ENTRY(39) PALETTE_ENTRIES8(4)
+                PALETTE_ENTRY(48) PALETTE_ENTRY(49) PALETTE_ENTRIES8(5) PALETTE_ENTRY(58)
+                    PALETTE_ENTRY(59) PALETTE_ENTRY(60) PALETTE_ENTRY(61) PALETTE_ENTRY(62)
+                        PALETTE_ENTRY(63)
+#define PALETTE_LIST8(a)                                                               \
+  &palette_##a##0, &palette_##a##1, &palette_##a##2, &palette_##a##3, &palette_##a##4, \
+      &palette_##a##5, &palette_##a##6, &palette_##a##7
+#define PALETTE_LIST                                                                              \
+  &palette_0, &palette_1, &palette_2, &palette_3, &palette_4, &palette_5, &palette_6, &palette_7, \
+      &palette_8, &palette_9, PALETTE_LIST8(1), &palette_18, &palette_19, PALETTE_LIST8(2),       \
+      &palette_28, &palette_29, PALETTE_LIST8(3), &palette_38, &palette_39, PALETTE_LIST8(4),     \
+      &palette_48, &palette_49, PALETTE_LIST8(5), &palette_58, &palette_59, &palette_60,          \
+      &palette_61, &palette_62, &palette_63
+
 #define SLOT_LIST(n) \
   &f##n, &f##n##_iterations, &f##n##_start, &f##n##_stop, &f##n##_add_c, &f##n##_check_bailout
 #define PLANE_LIST(i)                                                    \
   &kifs_plane##i, &kifs_plane##i##_direction, &kifs_plane##i##_distance, \
       &kifs_plane##i##_intensity, &kifs_plane##i##_rotation
-static const fr_param_desc* const params[] = {SLOT_LIST(1),
-                                              SLOT_LIST(2),
-                                              SLOT_LIST(3),
-                                              SLOT_LIST(4),
-                                              SLOT_LIST(5),
-                                              SLOT_LIST(6),
-                                              SLOT_LIST(7),
-                                              SLOT_LIST(8),
-                                              SLOT_LIST(9),
-                                              &iterations,
-                                              &hybrid,
-                                              &repeat_from,
-                                              &bailout,
-                                              &julia,
-                                              &julia_c,
-                                              &constant_factor,
-                                              &estimate,
-                                              &linear_offset,
-                                              &bound,
-                                              &solid_interior,
-                                              &limits,
-                                              &limit_min,
-                                              &limit_max,
-                                              &bulb_power,
-                                              &bulb_alpha,
-                                              &bulb_beta,
-                                              &box_scale,
-                                              &box_fold_limit,
-                                              &box_fold_value,
-                                              &box_min_radius,
-                                              &box_fixed_radius,
-                                              &box_offset,
-                                              &box_main_rotation,
-                                              &box_rotation,
-                                              &box_fold_rotations,
-                                              &box_rotation_neg_1,
-                                              &box_rotation_neg_2,
-                                              &box_rotation_neg_3,
-                                              &box_rotation_pos_1,
-                                              &box_rotation_pos_2,
-                                              &box_rotation_pos_3,
-                                              &menger_scale,
-                                              &kifs_scale,
-                                              &kifs_offset,
-                                              &kifs_rotation_enabled,
-                                              &kifs_rotation,
-                                              &kifs_edge,
-                                              &kifs_abs_x,
-                                              &kifs_abs_y,
-                                              &kifs_abs_z,
-                                              &kifs_menger_mode,
-                                              PLANE_LIST(0),
-                                              PLANE_LIST(1),
-                                              PLANE_LIST(2),
-                                              PLANE_LIST(3),
-                                              PLANE_LIST(4),
-                                              PLANE_LIST(5),
-                                              PLANE_LIST(6),
-                                              PLANE_LIST(7),
-                                              PLANE_LIST(8),
-                                              &pk_box,
-                                              &pk_min_r2,
-                                              &pk_tweak,
-                                              &pk_de_offset,
-                                              &pk_offset,
-                                              &color_near,
-                                              &color_far,
-                                              &color_contrast};
+                            static const fr_param_desc* const params[] = {SLOT_LIST(1),
+                                                                          SLOT_LIST(2),
+                                                                          SLOT_LIST(3),
+                                                                          SLOT_LIST(4),
+                                                                          SLOT_LIST(5),
+                                                                          SLOT_LIST(6),
+                                                                          SLOT_LIST(7),
+                                                                          SLOT_LIST(8),
+                                                                          SLOT_LIST(9),
+                                                                          &iterations,
+                                                                          &hybrid,
+                                                                          &repeat_from,
+                                                                          &bailout,
+                                                                          &julia,
+                                                                          &julia_c,
+                                                                          &constant_factor,
+                                                                          &estimate,
+                                                                          &linear_offset,
+                                                                          &bound,
+                                                                          &solid_interior,
+                                                                          &limits,
+                                                                          &limit_min,
+                                                                          &limit_max,
+                                                                          &bulb_power,
+                                                                          &bulb_alpha,
+                                                                          &bulb_beta,
+                                                                          &box_scale,
+                                                                          &box_fold_limit,
+                                                                          &box_fold_value,
+                                                                          &box_min_radius,
+                                                                          &box_fixed_radius,
+                                                                          &box_offset,
+                                                                          &box_main_rotation,
+                                                                          &box_rotation,
+                                                                          &box_fold_rotations,
+                                                                          &box_rotation_neg_1,
+                                                                          &box_rotation_neg_2,
+                                                                          &box_rotation_neg_3,
+                                                                          &box_rotation_pos_1,
+                                                                          &box_rotation_pos_2,
+                                                                          &box_rotation_pos_3,
+                                                                          &menger_scale,
+                                                                          &kifs_scale,
+                                                                          &kifs_offset,
+                                                                          &kifs_rotation_enabled,
+                                                                          &kifs_rotation,
+                                                                          &kifs_edge,
+                                                                          &kifs_abs_x,
+                                                                          &kifs_abs_y,
+                                                                          &kifs_abs_z,
+                                                                          &kifs_menger_mode,
+                                                                          PLANE_LIST(0),
+                                                                          PLANE_LIST(1),
+                                                                          PLANE_LIST(2),
+                                                                          PLANE_LIST(3),
+                                                                          PLANE_LIST(4),
+                                                                          PLANE_LIST(5),
+                                                                          PLANE_LIST(6),
+                                                                          PLANE_LIST(7),
+                                                                          PLANE_LIST(8),
+                                                                          &pk_box,
+                                                                          &pk_min_r2,
+                                                                          &pk_tweak,
+                                                                          &pk_de_offset,
+                                                                          &pk_offset,
+                                                                          &color_near,
+                                                                          &color_far,
+                                                                          &color_contrast,
+                                                                          &colour_mode,
+                                                                          &colour_algorithm,
+                                                                          &colour_sphere_radius,
+                                                                          &colour_line_direction,
+                                                                          &colour_speed,
+                                                                          &colour_offset,
+                                                                          &surface_colour,
+                                                                          &box_colour,
+                                                                          &box_colour_sp1,
+                                                                          &box_colour_sp2,
+                                                                          &box_colour_r,
+                                                                          PALETTE_LIST};
 enum { P_BOUND = 9 * 6 + 9 };
 
 /* Mandelbulber2's own start: the power-9 bulb seen from (3, -6, 2), z up. */

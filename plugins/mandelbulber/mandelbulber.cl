@@ -57,6 +57,14 @@ FR_MB2_INLINE inline mb2_setup_t mb2_setup(__constant const scene_params_t* para
     s.box.min_r2 = PARAM(box_min_radius) * PARAM(box_min_radius);
     s.box.fixed_r2 = PARAM(box_fixed_radius) * PARAM(box_fixed_radius);
     s.box.offset = PARAM(box_offset);
+    {
+      const vec3_t fold_colour = PARAM(box_colour);
+      s.box.colour_x = mb2_lane0(fold_colour.x);
+      s.box.colour_y = mb2_lane0(fold_colour.y);
+      s.box.colour_z = mb2_lane0(fold_colour.z);
+    }
+    s.box.colour_sp1 = PARAM(box_colour_sp1);
+    s.box.colour_sp2 = PARAM(box_colour_sp2);
     s.box.main_rotation = PARAM(box_main_rotation) && mb2_turns(PARAM(box_rotation));
     if (s.box.main_rotation) s.box.main = mb2_rotation2(PARAM(box_rotation));
     s.box.fold_rotations = PARAM(box_fold_rotations);
@@ -95,7 +103,8 @@ FR_MB2_INLINE inline mb2_setup_t mb2_setup(__constant const scene_params_t* para
 
 /* One formula step of kind `kind` (a compile-time constant at each call). */
 FR_MB2_INLINE inline void mb2_step(int kind, vec3_t* z, real_t* w, real_t r2, real_t* dr,
-                                  const mb2_setup_t* s, __constant const scene_params_t* params) {
+                                  real_t* colour, const mb2_setup_t* s,
+                                  __constant const scene_params_t* params) {
   /* Only the squares' steps need r itself: its square root is taken there, not per iteration. */
   switch (kind) {
     case MB2_MANDELBULB:
@@ -114,7 +123,7 @@ FR_MB2_INLINE inline void mb2_step(int kind, vec3_t* z, real_t* w, real_t r2, re
       mb2_menger(z, dr, PARAM(menger_scale));
       break;
     case MB2_MANDELBOX:
-      mb2_mandelbox(z, w, dr, &s->box);
+      mb2_mandelbox(z, w, dr, colour, &s->box);
       break;
     case MB2_KIFS:
       mb2_kifs(z, w, dr, &s->kifs);
@@ -153,18 +162,56 @@ inline int mb2_slot_runs(int slot, int i, __constant const scene_params_t* param
 #define MB2_RUN_SLOT(n)                                                        \
   case n - 1:                                                                  \
     kind = PARAM(f##n);                                                        \
-    mb2_step(PARAM(f##n), &nz, &nw, r2, &ndr, &setup, params);                \
+    mb2_step(PARAM(f##n), &nz, &nw, r2, &ndr, &ncolour, &setup, params);                \
     add_c = PARAM(f##n##_add_c);                                               \
     check = PARAM(f##n##_check_bailout);                                       \
     break;
 
-FR_MB2_INLINE inline real_t mb2_de(vec3_t p, __constant const scene_params_t* params,
-                                   real_t* trap) {
+/* Mandelbulber2's colouring algorithms (mat1_fractal_coloring_algorithm 0-4): the value whose
+ * smallest over the orbit is the orbit trap. */
+#define MB2_COLOUR_STANDARD 0    /* |z| */
+#define MB2_COLOUR_Z_DOT_POINT 1 /* |z . p| */
+#define MB2_COLOUR_SPHERE 2      /* ||z - p| - radius| */
+#define MB2_COLOUR_CROSS 3       /* min(|x|, |y|, |z|) */
+#define MB2_COLOUR_LINE 4        /* |z . direction| */
+
+/* What a colouring pass keeps of an orbit, as Mandelbulber2's colouring mode does. */
+typedef struct mb2_orbit_t {
+  real_t colour_min; /* the trap's smallest value (1000 if never taken) */
+  real_t aux_colour; /* the folds' colour sum, from 1 */
+  real_t r, dr;      /* at the end */
+} mb2_orbit_t;
+
+FR_MB2_INLINE inline real_t mb2_trap_value(vec3_t z, vec3_t p,
+                                           __constant const scene_params_t* params) {
+  switch (PARAM(colour_algorithm)) {
+    case MB2_COLOUR_Z_DOT_POINT:
+      return fabs(v3_dot(z, p));
+    case MB2_COLOUR_SPHERE:
+      return fabs(v3_length(v3_sub(z, p)) - to_real(PARAM(colour_sphere_radius)));
+    case MB2_COLOUR_CROSS:
+      return fmin(fmin(fabs(z.x), fabs(z.y)), fabs(z.z));
+    case MB2_COLOUR_LINE:
+      return fabs(v3_dot(z, PARAM(colour_line_direction)));
+    default:
+      return v3_length(z);
+  }
+}
+
+/* The orbit of p: the distance estimate (colouring = 0), or Mandelbulber2's colouring pass
+ * (colouring = 1, a constant at each call: the pass's extra sums and tests vanish from the
+ * estimate). The colouring pass differs as Mandelbulber2's does: where a slot checks the bailout
+ * it takes the trap value first (not after a Mandelbox step in the standard algorithm), and a
+ * Mandelbox step in the standard algorithm runs on until |z| passes 1e15 (its fold count is the
+ * colour); a step that no longer moves z (|dz| / r < 1e-15) ends a Mandelbox or Kleinian orbit. */
+FR_MB2_INLINE inline real_t mb2_iterate(vec3_t p, __constant const scene_params_t* params,
+                                        const int colouring, real_t* trap, mb2_orbit_t* orbit) {
   const mb2_setup_t setup = mb2_setup(params);
   const vec3_t c = v3_mul(PARAM(julia) ? PARAM(julia_c) : p, PARAM(constant_factor));
   vec3_t z = p, z_prev = p, z_prev2 = p;
   real_t w = to_real(0);
   real_t dr = to_real(1);
+  real_t aux_colour = to_real(1), colour_min = to_real(1000);
   /* |z|^2 (4D): the bailout test compares squares (a square root per iteration cost a sixth of
    * an IFS evaluation); r itself is taken once, for the estimate. */
   real_t r2 = v3_length2(z);
@@ -189,7 +236,7 @@ FR_MB2_INLINE inline real_t mb2_de(vec3_t p, __constant const scene_params_t* pa
       break;
     }
     vec3_t nz = z;
-    real_t nw = w, ndr = dr;
+    real_t nw = w, ndr = dr, ncolour = aux_colour;
     int kind = MB2_NONE, add_c = 1, check = 1;
     switch (seq) {
       MB2_RUN_SLOT(1)
@@ -212,7 +259,22 @@ FR_MB2_INLINE inline real_t mb2_de(vec3_t p, __constant const scene_params_t* pa
     /* A NaN orbit keeps its last finite z and stops. */
     const mask_t finite = !isnan(nr2);
     const mask_t step = live & finite;
-    if (MB2_USES(MB2_PSEUDO_KLEINIAN)) {
+    mask_t stop = live & !finite;
+    if (colouring && check) {
+      const real_t nr = sqrt(nr2);
+      const int standard = PARAM(colour_algorithm) == MB2_COLOUR_STANDARD;
+      const int box = kind == MB2_MANDELBOX;
+      if (!box || !standard)
+        colour_min = lane_select(step, fmin(colour_min, mb2_trap_value(nz, p, params)), colour_min);
+      mask_t out = step & (nr > ((box && standard) ? to_real(1e15) : bailout));
+      if (box || kind == MB2_PSEUDO_KLEINIAN) {
+        const vec3_t dz = v3_sub(nz, z);
+        const real_t dw = nw - w;
+        out = out | (step & (sqrt(v3_length2(dz) + dw * dw) < to_real(1e-15) * nr));
+      }
+      stop = stop | out;
+    }
+    if (!colouring && MB2_USES(MB2_PSEUDO_KLEINIAN)) {
       z_prev2 = v3_select(step, z_prev, z_prev2);
       z_prev = v3_select(step, z, z_prev);
     }
@@ -220,14 +282,14 @@ FR_MB2_INLINE inline real_t mb2_de(vec3_t p, __constant const scene_params_t* pa
     w = lane_select(step, nw, w);
     dr = lane_select(step, ndr, dr);
     r2 = lane_select(step, nr2, r2);
+    if (colouring) aux_colour = lane_select(step, ncolour, aux_colour);
     orbit_min = lane_select(step, fmin(orbit_min, nr2), orbit_min);
-    mask_t stop = live & !finite;
-    if (check) {
+    if (!colouring && check) {
       const mask_t out = step & (nr2 > bailout2);
       stop = stop | out;
       escaped = escaped | out;
     }
-    if (check && kind == MB2_PSEUDO_KLEINIAN) {
+    if (!colouring && check && kind == MB2_PSEUDO_KLEINIAN) {
       /* Mandelbulber2's convergence test for Kleinian orbits. */
       const real_t limit = to_real(0.1) / bailout * fmax(sqrt(nr2), to_real(FR_SCALAR_MIN));
       const mask_t converged = step & ((v3_length(v3_sub(z, z_prev)) < limit) |
@@ -238,8 +300,15 @@ FR_MB2_INLINE inline real_t mb2_de(vec3_t p, __constant const scene_params_t* pa
     live = live & !stop;
   }
   *trap = orbit_min;
-  real_t d = mb2_distance(PARAM(estimate), z, mb2_length4(z, w), dr, PARAM(linear_offset),
-                          PARAM(pk_de_offset));
+  const real_t r = mb2_length4(z, w);
+  if (colouring) {
+    orbit->colour_min = colour_min;
+    orbit->aux_colour = aux_colour;
+    orbit->r = r;
+    orbit->dr = dr;
+    return r;
+  }
+  real_t d = mb2_distance(PARAM(estimate), z, r, dr, PARAM(linear_offset), PARAM(pk_de_offset));
   /* Mandelbulber2 with limits: an orbit that ran all N iterations is surface. */
   if (PARAM(solid_interior)) d = lane_select(escaped, d, to_real(0));
   d = lane_select(no_formula, to_real(10), d);
@@ -250,6 +319,12 @@ FR_MB2_INLINE inline real_t mb2_de(vec3_t p, __constant const scene_params_t* pa
     d = fmax(d, sd_box(v3_sub(p, centre), half_size));
   }
   return d;
+}
+
+FR_MB2_INLINE inline real_t mb2_de(vec3_t p, __constant const scene_params_t* params,
+                                   real_t* trap) {
+  mb2_orbit_t unused;
+  return mb2_iterate(p, params, 0, trap, &unused);
 }
 
 real_t scene_de(vec3_t p, __constant const scene_params_t* params) {
