@@ -10,7 +10,7 @@
 #
 # usage: scripts/compare-mandelbulber2.sh [--examples DIR] [--width PX] [--limit N] [--out DIR]
 #                                         [--match TEXT] [--require PERCENT] [--build DIR]
-#                                         [--no-build]
+#                                         [--no-build] [--counts]
 #   --examples  the .fract files (default: mandelbulber2-data's examples)
 #   --width     image width; the height keeps each file's aspect (default 160)
 #   --limit     compare at most N importable files (default: all)
@@ -20,6 +20,9 @@
 #               5 footprints (the CTest entry, label mandelbulber2, runs a few files so)
 #   --build     the build folder to take fractalis and mb2_compare from (default: build/)
 #   --no-build  install nothing and build nothing (CTest runs it from a built tree)
+#   --counts    also render each file once with `render --counts` (not timed) and add where the
+#               DE evaluations went to results.tsv and the summary: per pixel, the march's lane
+#               evaluations made and the share of its lanes busy, the normals', the colour's
 # Prints one line per file and a summary; results.tsv has the table (docs/mandelbulber2.md).
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
@@ -31,6 +34,7 @@ match=""
 out=""
 require=""
 build=1
+counts=0
 while [ $# -gt 0 ]; do
   case "$1" in
     --examples) examples="$2"; shift 2 ;;
@@ -41,6 +45,7 @@ while [ $# -gt 0 ]; do
     --require) require="$2"; shift 2 ;;
     --build) FRACTALIS_BUILD="$2"; shift 2 ;;
     --no-build) build=0; shift ;;
+    --counts) counts=1; shift ;;
     *) echo "compare-mandelbulber2: unknown argument '$1'" >&2; exit 2 ;;
   esac
 done
@@ -58,7 +63,7 @@ compare="$FRACTALIS_BUILD/tests/mb2_compare"
 
 mkdir -p "$out/mb" "$out/fr" "$out/presets" "$out/log"
 results="$out/results.tsv"
-printf 'file\tformulas\tsize\tmismatch_percent\tmedian_footprints\tp90_footprints\tmb2_s\tfractalis_s\tspeed_ratio\n' >"$results"
+printf 'file\tformulas\tsize\tmismatch_percent\tmedian_footprints\tp90_footprints\tmb2_s\tfractalis_s\tspeed_ratio\tmarch_made\tmarch_busy_percent\tnormals_made\tcolour_made\ttotal_made\n' >"$results"
 
 # Mandelbulber2's switches for a plain surface: no effect that blurs, jitters or costs time
 # without moving the surface. Booleans are 1/0 on its command line.
@@ -131,11 +136,23 @@ while IFS= read -r -d '' file; do
   done >"$out/log/$id.fractalis_ms"
   fr_ms=$(sort -g "$out/log/$id.fractalis_ms" | sed -n 2p)
   fr_s=$(awk -v ms="${fr_ms:-0}" 'BEGIN { s = ms / 1000; if (s < 0.001) s = 0.001; printf "%.3f", s }')
+  # Where the evaluations went (a counting kernel, slower, so not timed): per pixel, made.
+  stages="-\t-\t-\t-\t-"
+  if [ "$counts" -eq 1 ] &&
+    "$fractalis" render --preset "$file" --size "${width}x${height}" "${fractalis_plain[@]}" \
+      --counts --out "$out/fr/${id}_counts.png" >"$out/log/$id.counts" 2>&1; then
+    stages=$(awk '
+      /^ *primary +march / { march = $NF; busy = $(NF - 2); sub(/%/, "", busy) }
+      /^ *primary +normals / { normals = $NF }
+      /^ *primary +surface colour / { colour = $NF }
+      /^ *total / { total = $NF }
+      END { printf "%s\t%s\t%s\t%s\t%s", march, busy, normals, colour, total }' "$out/log/$id.counts")
+  fi
   metrics=$("$compare" "$out/mb/${id}_zbuffer.png" "$out/fr/$id.exr" "$fov") || { echo "$name: compare failed"; continue; }
   read -r mismatch median p90 _ _ <<<"$metrics"
   ratio=$(awk -v a="$mb2_s" -v b="$fr_s" 'BEGIN { printf "%.1f", a / b }')
-  printf '%s\t%s\t%sx%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "${file#"$examples"/}" "$formulas" "$width" \
-    "$height" "$mismatch" "$median" "$p90" "$mb2_s" "$fr_s" "$ratio" >>"$results"
+  printf '%s\t%s\t%sx%s\t%s\t%s\t%s\t%s\t%s\t%s\t%b\n' "${file#"$examples"/}" "$formulas" "$width" \
+    "$height" "$mismatch" "$median" "$p90" "$mb2_s" "$fr_s" "$ratio" "$stages" >>"$results"
   echo "$name [$formulas]: mismatch ${mismatch}%, depth ${median} footprints (p90 $p90), mandelbulber2 ${mb2_s} s, fractalis ${fr_s} s (${ratio}x)"
 done < <(find "$examples" -name '*.fract' -print0 | sort -z)
 
@@ -157,6 +174,20 @@ awk -F'\t' 'NR > 1 { print $2 "\t" ($4 <= 3 && $5 != "nan" && $5 <= 5) "\t" $9 }
   awk -F'\t' '{ n[$1]++; ok[$1] += $2; r[$1, n[$1]] = $3 }
     END { for (f in n) { m = n[f]; med = (m % 2 ? r[f, (m + 1) / 2] : (r[f, m / 2] + r[f, m / 2 + 1]) / 2)
             printf "  %-32s %3d %3d %6.1fx\n", f, m, ok[f], med } }' | sort
+if [ "$counts" -eq 1 ]; then
+  # By family, the medians of the evaluations a pixel: the march's (and its lanes busy), all.
+  echo "by formulas, DE evaluations a pixel (medians: march made, march lanes busy %, all made):"
+  awk -F'\t' 'NR > 1 && $10 != "-" { print $2 "\t" $10 "\t" $11 "\t" $14 }' "$results" |
+    awk -F'\t' '{ n[$1]++; for (c = 2; c <= 4; c++) v[$1, c, n[$1]] = $c }
+      END { for (f in n) { m = n[f]; printf "  %-32s", f
+              for (c = 2; c <= 4; c++) {
+                for (i = 1; i <= m; i++) {  # insertion sort (mawk has no asort)
+                  x = v[f, c, i] + 0; j = i - 1
+                  while (j > 0 && s[j] > x) { s[j + 1] = s[j]; j-- }
+                  s[j + 1] = x }
+                printf " %8.1f", (m % 2 ? s[(m + 1) / 2] : (s[m / 2] + s[m / 2 + 1]) / 2) }
+              printf "\n" } }' | sort
+fi
 echo "table: $results"
 if [ -n "$require" ] && [ $((100 * ok)) -lt $((require * n)) ]; then
   echo "compare-mandelbulber2: $ok of $n within tolerance, fewer than $require%" >&2
