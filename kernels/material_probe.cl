@@ -1,8 +1,9 @@
 /* material_probe.cl — a scene's material function (scene_material, prelude.cl) at given points,
  * as it returns them, before material.cl clamps them: `fractalis check` reports values outside
  * material_t's ranges, which the renderer would otherwise change silently. Pasted after
- * material.cl into a kernel with the scene's surface source; only for scenes that define the
- * function. Writes FR_MATERIAL_FLOATS floats a point, in material_t's order. */
+ * material.cl into a kernel with the scene's surface source. fr_probe_material (FR_MATERIAL_FLOATS
+ * floats a point, in material_t's order) exists only for scenes that define the function;
+ * fr_probe_albedo (the surface function's albedo) for every scene. */
 
 #define FR_MATERIAL_FLOATS 19
 
