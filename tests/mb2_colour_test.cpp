@@ -5,7 +5,7 @@
 #include "import/fract_file.hpp"
 #include "import/mb2_import.hpp"
 #include "import/mb2_palette.hpp"
-#include "plugin/scene_instance.hpp"
+#include "mb2_scene_fixture.hpp"
 #include "render/de_probe.hpp"
 #include "test_support.hpp"
 
@@ -148,34 +148,15 @@ TEST(Mb2Palette, ImporterSamplesTheGradient) {
 
 // --- The colouring pass on the device ---------------------------------------------------------
 
-class Mb2Colour : public ::testing::Test {
+class Mb2Colour : public test::Mb2SceneTest {
  protected:
   void SetUp() override {
-    scene =
-        test::load_or_fail(std::filesystem::path(SCENE_PLUGIN_DIR) / "mandelbulber" PLUGIN_SUFFIX);
-    ASSERT_TRUE(scene);
-    values = make_default_state(scene->info).params;
+    Mb2SceneTest::SetUp();
+    if (HasFatalFailure()) return;
     choose("colour_mode", "palette");
     // A ramp: sample j is (j / 64, 0, 0), so the albedo's red is the palette position (up to
     // 63 / 64; from there it runs back to sample 0).
     for (int j = 0; j < 64; ++j) set3(("palette_" + std::to_string(j)).c_str(), j / 64.0, 0, 0);
-  }
-  void set(const char* key, double v) {
-    const int i = scene->info.find_param(key);
-    ASSERT_GE(i, 0) << key;
-    values[i].v[0] = v;
-  }
-  void set3(const char* key, double x, double y, double z) {
-    const int i = scene->info.find_param(key);
-    ASSERT_GE(i, 0) << key;
-    values[i].v[0] = x;
-    values[i].v[1] = y;
-    values[i].v[2] = z;
-  }
-  void choose(const char* key, const char* name) {
-    const int i = scene->info.find_param(key);
-    ASSERT_GE(i, 0) << key;
-    values[i].v[0] = scene->info.params[i].choice_index(name);
   }
   // The palette position Mandelbulber2 takes for a colour index, as the ramp shows it.
   static double ramp_red(double index, double speed, double offset) {
@@ -190,8 +171,6 @@ class Mb2Colour : public ::testing::Test {
     for (size_t i = 0; i < points.size(); ++i) out.push_back(albedo[3 * i]);
     return out;
   }
-  std::shared_ptr<const LoadedScene> scene;
-  std::vector<fr_value> values;
 };
 
 struct Z4 {
@@ -204,6 +183,15 @@ const std::vector<std::array<float, 3>> kPoints = {
     {0.3f, 0.2f, 0.1f},  {1.1f, -0.7f, 0.4f}, {-1.6f, 0.9f, 0.2f},  {0.05f, -0.9f, -0.8f},
     {2.5f, 0.1f, -0.3f}, {0.7f, 0.7f, 0.7f},  {-0.2f, 0.4f, 1.3f},  {1.9f, 1.2f, -1.4f},
     {5.5f, 3.0f, -4.0f}, {-7.0f, 2.0f, 1.5f}, {20.0f, -15.0f, 9.0f}};
+
+// Mandelbulber2's bulb step (latitude by asin, no angle offsets), then c.
+void bulb_step(Z4& z, double power, const Z4& c) {
+  const double r = z.length();
+  const double th = power * std::asin(z.z / r), ph = power * std::atan2(z.y, z.x);
+  const double rp = std::pow(r, power);
+  z = Z4{rp * std::cos(th) * std::cos(ph) + c.x, rp * std::cos(th) * std::sin(ph) + c.y,
+         rp * std::sin(th) + c.z, 0};
+}
 
 // A Mandelbox step as Mandelbulber2 colours it: 0.1, 0.2, 0.3 per axis folded, 0.5 for the inner
 // sphere, 0.7 for the outer.
@@ -323,11 +311,8 @@ TEST_F(Mb2Colour, HybridIndexByHand) {
       const Z4 last = z;
       const bool bulb = i % 2 == 0;
       if (bulb) {
-        const double r = z.length();
-        const double th = 2 * std::asin(z.z / r), ph = 2 * std::atan2(z.y, z.x);
-        dr = 2 * r * dr + 1;
-        z = Z4{r * r * std::cos(th) * std::cos(ph) + c.x, r * r * std::cos(th) * std::sin(ph) + c.y,
-               r * r * std::sin(th) + c.z, 0};
+        dr = 2 * z.length() * dr + 1;
+        bulb_step(z, 2, c);
       } else {
         box_step(z, dr, colour, c);
       }
@@ -358,11 +343,7 @@ TEST_F(Mb2Colour, BulbIndexIsFiveThousandTraps) {
     Z4 z = c;
     double trap = 1000;
     for (int i = 0; i < 20; ++i) {
-      const double r = z.length();
-      const double th = 8 * std::asin(z.z / r), ph = 8 * std::atan2(z.y, z.x);
-      const double r8 = std::pow(r, 8);
-      z = Z4{r8 * std::cos(th) * std::cos(ph) + c.x, r8 * std::cos(th) * std::sin(ph) + c.y,
-             r8 * std::sin(th) + c.z, 0};
+      bulb_step(z, 8, c);
       trap = std::min(trap, z.length3());
       if (z.length() > 10) break;
     }

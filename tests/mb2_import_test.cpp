@@ -7,6 +7,8 @@
 #include "import/fract_file.hpp"
 #include "import/fract_values.hpp"
 #include "import/mb2_defaults.hpp"
+#include "import/mb2_palette.hpp"
+#include "mb2_scene_fixture.hpp"
 #include "path/preset.hpp"
 #include "plugin/scene_instance.hpp"
 #include "render/de_probe.hpp"
@@ -17,8 +19,8 @@
 
 #include <cmath>
 #include <fstream>
-#include <set>
 #include <numbers>
+#include <set>
 
 namespace fr {
 namespace {
@@ -118,7 +120,8 @@ TEST(Mb2Defaults, TableHoldsMandelbulber2Values) {
   const auto camera = fract_vec3(none, "camera", mb2_main_entry(none, "camera"));
   EXPECT_EQ(camera, (std::array<double, 3>{3, -6, 2}));
   EXPECT_EQ(fract_number(none, "power", mb2_fractal_entry(none, 0, "power")), 9);
-  EXPECT_EQ(fract_number(none, "mandelbox_scale", mb2_fractal_entry(none, 0, "mandelbox_scale")), 2);
+  EXPECT_EQ(fract_number(none, "mandelbox_scale", mb2_fractal_entry(none, 0, "mandelbox_scale")),
+            2);
   EXPECT_EQ(fract_vec3(none, "IFS_offset", mb2_fractal_entry(none, 0, "IFS_offset")),
             (std::array<double, 3>{1, 0, 0}));
   // A file's own value wins over the default.
@@ -201,7 +204,8 @@ TEST(Mb2Import, MainLightRelativeToTheCamera) {
   const double expected[3] = {0.5, 0.5, -std::sqrt(0.5)};
   for (int i = 0; i < 3; ++i)
     EXPECT_NEAR(key["direction"][i].value<double>().value_or(NAN), expected[i], 1e-12) << i;
-  EXPECT_NEAR(key["color"][1].value<double>().value_or(NAN), 0x8000 / 65535.0, 1e-12);
+  EXPECT_NEAR(key["color"][1].value<double>().value_or(NAN), srgb_to_linear(0x8000 / 65535.0),
+              1e-12);
   EXPECT_NEAR(key["intensity"].value<double>().value_or(NAN), 2.6, 1e-12);
 }
 
@@ -228,7 +232,8 @@ TEST(Mb2Import, AuxiliaryLightsArePointLights) {
   const double a = 1 / (0.05 * 0.05);
   EXPECT_NEAR(aux["attenuation"].value<double>().value_or(NAN), a, 1e-9);
   EXPECT_NEAR(aux["intensity"].value<double>().value_or(NAN), 1.3 * 100 / 24 * 2 * a, 1e-9);
-  EXPECT_NEAR(aux["color"][2].value<double>().value_or(NAN), 0x8000 / 65535.0, 1e-12);
+  EXPECT_NEAR(aux["color"][2].value<double>().value_or(NAN), srgb_to_linear(0x8000 / 65535.0),
+              1e-12);
   EXPECT_EQ(aux["falloff"].value<double>(), 2.0);
   // Beyond d0 the light falls off as Mandelbulber2's 100 I / (24 d^2), times the key light's 1.3.
   for (double d : {0.5, 2.0, 7.0})
@@ -357,8 +362,7 @@ TEST(PresetLights, ReplaceTheFirstLightsOrAreReported) {
                                   "intensity = 4\nattenuation = 0.5\nfalloff = 1\n"),
                            scene->info, lit)
                   .empty());
-  EXPECT_EQ(lit.lights[0].vector[0], make_default_state(scene->info).lights[0].vector[0])
-      << "kept";
+  EXPECT_EQ(lit.lights[0].vector[0], make_default_state(scene->info).lights[0].vector[0]) << "kept";
   EXPECT_EQ(lit.lights[1].kind, FR_LIGHT_POINT);
   EXPECT_EQ(lit.lights[1].vector[1], -2);
   EXPECT_EQ(lit.lights[1].intensity, 4);
@@ -388,36 +392,11 @@ TEST(PresetSettings, OnlyRenderSettings) {
 }
 
 // The scene's DE on the device, in double, against the formulas written out here.
-class Mb2De : public ::testing::Test {
+class Mb2De : public test::Mb2SceneTest {
  protected:
-  void SetUp() override {
-    scene =
-        test::load_or_fail(std::filesystem::path(SCENE_PLUGIN_DIR) / "mandelbulber" PLUGIN_SUFFIX);
-    ASSERT_TRUE(scene);
-    values = make_default_state(scene->info).params;
-  }
-  void set(const char* key, double v) {
-    const int i = scene->info.find_param(key);
-    ASSERT_GE(i, 0) << key;
-    values[i].v[0] = v;
-  }
-  void set3(const char* key, double x, double y, double z) {
-    const int i = scene->info.find_param(key);
-    ASSERT_GE(i, 0) << key;
-    values[i].v[0] = x;
-    values[i].v[1] = y;
-    values[i].v[2] = z;
-  }
-  void choose(const char* key, const char* name) {
-    const int i = scene->info.find_param(key);
-    ASSERT_GE(i, 0) << key;
-    values[i].v[0] = scene->info.params[i].choice_index(name);
-  }
   float de(std::array<float, 3> p) {
     return probe_de(test::runtime(), scene->info, values, {p}, 16, Precision::Double)[0];
   }
-  std::shared_ptr<const LoadedScene> scene;
-  std::vector<fr_value> values;
 };
 
 struct V4 {

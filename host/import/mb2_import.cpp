@@ -186,6 +186,13 @@ struct Importer {
   long long integer(const std::string& key) { return fract_integer(f, key, main(key)); }
   bool flag(const std::string& key) { return fract_bool(f, key, main(key)); }
   std::array<double, 3> vec3(const std::string& key) { return fract_vec3(f, key, main(key)); }
+  // A colour as Fractalis takes it: Mandelbulber2's are display values, shaded as they are;
+  // Fractalis's are linear, encoded to sRGB at the end, so each is decoded from sRGB.
+  std::array<double, 3> colour(const std::string& key) {
+    auto c = fract_colour(f, key, main(key));
+    for (double& v : c) v = srgb_to_linear(v);
+    return c;
+  }
   bool given(const std::string& key) const { return f.main.count(key) != 0; }
   // The scene's bounding radius: what Mandelbulber2 can see from the camera.
   double bound_radius() {
@@ -578,12 +585,13 @@ void Importer::look() {
           to_light[i] = right[i] * local[0] + fw[i] * local[1] + up[i] * local[2];
       }
     }
-    const auto colour = fract_colour(f, "main_light_colour", main("main_light_colour"));
+    const auto light_colour = colour("main_light_colour");
     const double intensity =
         light ? 1.3 * std::clamp(number("main_light_intensity"), 0.0, 1e5) : 0.0;
     std::ostringstream t;
     t << "[[lights]]\ndirection = " << vec3_text({-to_light[0], -to_light[1], -to_light[2]})
-      << "\ncolor = " << vec3_text(colour) << "\nintensity = " << number_text(intensity) << "\n";
+      << "\ncolor = " << vec3_text(light_colour) << "\nintensity = " << number_text(intensity)
+      << "\n";
     lights_toml = t.str();
     note(Kind::Approximated,
          "main_light_alpha, main_light_beta, main_light_colour, main_light_intensity",
@@ -597,7 +605,7 @@ void Importer::look() {
   const bool glow = flag("glow_enabled");
   setting("render.effects.glow", glow ? "true" : "false");
   if (glow) {
-    setting("render.glow_color", vec3_text(fract_colour(f, "glow_color_1", main("glow_color_1"))));
+    setting("render.glow_color", vec3_text(colour("glow_color_1")));
     note(Kind::Approximated, "glow_enabled, glow_color_1",
          "Fractalis's glow in glow_color_1, its own strength (Mandelbulber2's counts steps)");
   }
@@ -611,8 +619,7 @@ void Importer::look() {
     const double density = std::clamp(bound_radius() / visibility, 0.0, 1e9);
     setting("render.fog_method", "\"exponential\"");
     setting("render.fog_density", number_text(density));
-    setting("render.fog_color",
-            vec3_text(fract_colour(f, "basic_fog_color", main("basic_fog_color"))));
+    setting("render.fog_color", vec3_text(colour("basic_fog_color")));
     note(Kind::Approximated, "basic_fog_enabled, basic_fog_visibility, basic_fog_color",
          "exponential fog, 1 - exp(-t / basic_fog_visibility), in basic_fog_color");
   }
@@ -667,13 +674,13 @@ void Importer::look() {
         {"aux_light_position_" + k, "aux_light_colour_" + k, "aux_light_intensity_" + k});
     if (!flag("aux_light_enabled_" + k)) continue;
     const auto position = vec3("aux_light_position_" + k);
-    const auto colour = fract_colour(f, "aux_light_colour_" + k, main("aux_light_colour_" + k));
+    const auto light_colour = colour("aux_light_colour_" + k);
     const double mb2 = 1.3 * 100 / 24 * std::max(number("aux_light_intensity_" + k), 0.0);
     const double d0 = std::max(0.01 * view_distance, 1e-12);
     const double attenuation = 1 / (d0 * d0);
     const double intensity = std::min(mb2 * attenuation, 1e30);
     std::ostringstream t;
-    t << "position = " << vec3_text(position) << "\ncolor = " << vec3_text(colour)
+    t << "position = " << vec3_text(position) << "\ncolor = " << vec3_text(light_colour)
       << "\nintensity = " << number_text(intensity)
       << "\nattenuation = " << number_text(attenuation) << "\nfalloff = 2\n";
     aux_toml[i - 1] = t.str();
@@ -691,9 +698,8 @@ void Importer::look() {
   // runs from horizon to zenith about the camera's up and keeps the horizon's colour below it.
   {
     const bool three = flag("background_3_colors_enable");
-    const auto top = fract_colour(f, "background_color_1", main("background_color_1"));
-    const auto middle =
-        three ? fract_colour(f, "background_color_2", main("background_color_2")) : top;
+    const auto top = colour("background_color_1");
+    const auto middle = three ? colour("background_color_2") : top;
     const double brightness = std::clamp(number("background_brightness"), 0.0, 1e3);
     auto rgb = [&](const std::array<double, 3>& c) {
       return vec3_text({std::min(c[0] * brightness, 1e3), std::min(c[1] * brightness, 1e3),
@@ -726,8 +732,7 @@ void Importer::colouring() {
   handled.insert({"mat1_coloring_palette_size", "mat1_is_defined", "mat1_coloring_saturation"});
   if (!flag("mat1_use_colors_from_palette") || !flag("mat1_surface_gradient_enable")) {
     param("colour_mode", "\"surface\"");
-    param("surface_colour",
-          linear(fract_colour(f, "mat1_surface_color", main("mat1_surface_color"))));
+    param("surface_colour", vec3_text(colour("mat1_surface_color")));
     note(Kind::Approximated, "mat1_surface_color", "surface_colour (decoded from sRGB)");
     return;
   }

@@ -159,12 +159,12 @@ inline int mb2_slot_runs(int slot, int i, __constant const scene_params_t* param
          i <= MB2_SLOT_FIELD(slot, _stop);
 }
 
-#define MB2_RUN_SLOT(n)                                                        \
-  case n - 1:                                                                  \
-    kind = PARAM(f##n);                                                        \
-    mb2_step(PARAM(f##n), &nz, &nw, r2, &ndr, &ncolour, &setup, params);                \
-    add_c = PARAM(f##n##_add_c);                                               \
-    check = PARAM(f##n##_check_bailout);                                       \
+#define MB2_RUN_SLOT(n)                                                  \
+  case n - 1:                                                            \
+    kind = PARAM(f##n);                                                  \
+    mb2_step(PARAM(f##n), &nz, &nw, r2, &ndr, &ncolour, &setup, params); \
+    add_c = PARAM(f##n##_add_c);                                         \
+    check = PARAM(f##n##_check_bailout);                                 \
     break;
 
 /* Mandelbulber2's colouring algorithms (mat1_fractal_coloring_algorithm 0-4): the value whose
