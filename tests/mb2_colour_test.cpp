@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 #include <toml++/toml.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -137,6 +138,16 @@ TEST(Mb2Palette, ImporterSamplesTheGradient) {
   EXPECT_DOUBLE_EQ(old["params"]["colour_offset"].value<double>().value_or(0), 0.2);
   EXPECT_NEAR(old["params"]["palette_0"][0].value<double>().value_or(-1),
               srgb_to_linear(0x10 / 255.0), 1e-9);
+
+  // A speed beyond the scene's range is clamped, and said.
+  const Mb2Import fast =
+      import_fract(parse_version("2.20", "[main_parameters]\nmat1_coloring_speed 1e9;\n"), "x");
+  EXPECT_DOUBLE_EQ(
+      toml::parse(fast.preset_toml)["params"]["colour_speed"].value<double>().value_or(0), 1e6);
+  EXPECT_TRUE(std::any_of(fast.notes.begin(), fast.notes.end(), [](const ImportNote& n) {
+    return n.item.find("mat1_coloring_speed") != std::string::npos &&
+           n.text.find("clamped") != std::string::npos;
+  }));
 
   const toml::table plain = import_table(parse_version(
       "2.06", "[main_parameters]\nfractal_color false;\nmat1_surface_color 8000 0 ffff;\n"));

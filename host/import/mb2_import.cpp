@@ -159,6 +159,13 @@ double wrap_degrees(double deg) {
   return std::fmod(deg, 360.0);
 }
 
+// A display colour (Mandelbulber2 shades its colours as they are) as a linear one (Fractalis
+// shades linear values and encodes the result).
+std::array<double, 3> decoded(std::array<double, 3> c) {
+  for (double& v : c) v = srgb_to_linear(v);
+  return c;
+}
+
 double length(const std::array<double, 3>& v) {
   return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
 }
@@ -186,12 +193,9 @@ struct Importer {
   long long integer(const std::string& key) { return fract_integer(f, key, main(key)); }
   bool flag(const std::string& key) { return fract_bool(f, key, main(key)); }
   std::array<double, 3> vec3(const std::string& key) { return fract_vec3(f, key, main(key)); }
-  // A colour as Fractalis takes it: Mandelbulber2's are display values, shaded as they are;
-  // Fractalis's are linear, encoded to sRGB at the end, so each is decoded from sRGB.
+  // A colour key as Fractalis takes it: decoded from sRGB.
   std::array<double, 3> colour(const std::string& key) {
-    auto c = fract_colour(f, key, main(key));
-    for (double& v : c) v = srgb_to_linear(v);
-    return c;
+    return decoded(fract_colour(f, key, main(key)));
   }
   bool given(const std::string& key) const { return f.main.count(key) != 0; }
   // The scene's bounding radius: what Mandelbulber2 can see from the camera.
@@ -726,9 +730,6 @@ void Importer::look() {
 // Mandelbulber2's display values; the scene's albedo is linear, so they are decoded from sRGB.
 void Importer::colouring() {
   const int kSamples = 64;
-  auto linear = [](const std::array<double, 3>& c) {
-    return vec3_text({srgb_to_linear(c[0]), srgb_to_linear(c[1]), srgb_to_linear(c[2])});
-  };
   handled.insert({"mat1_coloring_palette_size", "mat1_is_defined", "mat1_coloring_saturation"});
   if (!flag("mat1_use_colors_from_palette") || !flag("mat1_surface_gradient_enable")) {
     param("colour_mode", "\"surface\"");
@@ -764,7 +765,10 @@ void Importer::colouring() {
   param("colour_mode", "\"palette\"");
   for (int j = 0; j < kSamples; ++j)
     param("palette_" + std::to_string(j),
-          linear(mb2_gradient_colour(gradient, static_cast<float>(j) / kSamples)));
+          vec3_text(decoded(mb2_gradient_colour(gradient, static_cast<float>(j) / kSamples))));
+  if (speed > 1e6 || std::fabs(offset) > 1e6)
+    note(Kind::Approximated, "mat1_coloring_speed, mat1_coloring_palette_offset",
+         "beyond 1e6: clamped to it (the colour changes faster than a pixel either way)");
   param("colour_speed", number_text(std::clamp(speed, 0.0, 1e6)));
   param("colour_offset", number_text(std::clamp(offset, -1e6, 1e6)));
   const long long algorithm = integer("mat1_fractal_coloring_algorithm");
