@@ -7,11 +7,25 @@
 
 #define FR_MATERIAL_FLOATS 19
 
-inline void probe_store(real_t v, int field, int first, int count, __global float* out) {
+/* The packet's points, from the first at `first` (a partial last packet repeats the last). */
+inline vec3_t probe_points(__global const float* xyz, int first, int count) {
+  float x[FR_LANES], y[FR_LANES], z[FR_LANES];
+  for (int lane = 0; lane < FR_LANES; ++lane) {
+    const int i = min(first + lane, count - 1);
+    x[lane] = xyz[3 * i + 0];
+    y[lane] = xyz[3 * i + 1];
+    z[lane] = xyz[3 * i + 2];
+  }
+  return v3(load_lanes(x), load_lanes(y), load_lanes(z));
+}
+
+/* Field `field` of each of the packet's points, `floats` floats a point. */
+inline void probe_store(real_t v, int field, int floats, int first, int count,
+                        __global float* out) {
   float lanes[FR_LANES];
   store_lanes(v, lanes);
   for (int lane = 0; lane < FR_LANES && first + lane < count; ++lane)
-    out[(first + lane) * FR_MATERIAL_FLOATS + field] = lanes[lane];
+    out[(first + lane) * floats + field] = lanes[lane];
 }
 
 #if FR_SCENE_MATERIAL
@@ -19,14 +33,7 @@ __kernel void fr_probe_material(__constant const fr_frame_constants* fc,
                                 __constant const scene_params_t* params,
                                 __global const float* xyz, __global float* out, int count) {
   const int first = get_global_id(0) * FR_LANES;
-  float x[FR_LANES], y[FR_LANES], z[FR_LANES];
-  for (int lane = 0; lane < FR_LANES; ++lane) {
-    const int i = min(first + lane, count - 1); /* a partial last packet repeats the last point */
-    x[lane] = xyz[3 * i + 0];
-    y[lane] = xyz[3 * i + 1];
-    z[lane] = xyz[3 * i + 2];
-  }
-  const vec3_t p = v3(load_lanes(x), load_lanes(y), load_lanes(z));
+  const vec3_t p = probe_points(xyz, first, count);
   const material_t m = scene_material(p, default_material(scene_surface(p, params), fc), params);
   const real_t fields[FR_MATERIAL_FLOATS] = {
       m.base_color.x,       m.base_color.y,       m.base_color.z, m.specular,
@@ -34,7 +41,8 @@ __kernel void fr_probe_material(__constant const fr_frame_constants* fc,
       m.absorption.x,       m.absorption.y,       m.absorption.z, m.subsurface,
       m.subsurface_color.x, m.subsurface_color.y, m.subsurface_color.z,
       m.mean_free_path,     m.emission.x,         m.emission.y,   m.emission.z};
-  for (int f = 0; f < FR_MATERIAL_FLOATS; ++f) probe_store(fields[f], f, first, count, out);
+  for (int f = 0; f < FR_MATERIAL_FLOATS; ++f)
+    probe_store(fields[f], f, FR_MATERIAL_FLOATS, first, count, out);
 }
 #endif
 
@@ -43,19 +51,8 @@ __kernel void fr_probe_material(__constant const fr_frame_constants* fc,
 __kernel void fr_probe_albedo(__constant const scene_params_t* params, __global const float* xyz,
                               __global float* out, int count) {
   const int first = get_global_id(0) * FR_LANES;
-  float x[FR_LANES], y[FR_LANES], z[FR_LANES];
-  for (int lane = 0; lane < FR_LANES; ++lane) {
-    const int i = min(first + lane, count - 1);
-    x[lane] = xyz[3 * i + 0];
-    y[lane] = xyz[3 * i + 1];
-    z[lane] = xyz[3 * i + 2];
-  }
-  const surface_t s = scene_surface(v3(load_lanes(x), load_lanes(y), load_lanes(z)), params);
-  float lanes[FR_LANES];
-  const real_t fields[3] = {s.albedo.x, s.albedo.y, s.albedo.z};
-  for (int f = 0; f < 3; ++f) {
-    store_lanes(fields[f], lanes);
-    for (int lane = 0; lane < FR_LANES && first + lane < count; ++lane)
-      out[(first + lane) * 3 + f] = lanes[lane];
-  }
+  const surface_t s = scene_surface(probe_points(xyz, first, count), params);
+  probe_store(s.albedo.x, 0, 3, first, count, out);
+  probe_store(s.albedo.y, 1, 3, first, count, out);
+  probe_store(s.albedo.z, 2, 3, first, count, out);
 }
