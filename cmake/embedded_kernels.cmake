@@ -2,7 +2,7 @@
 # every kernel file into one C source (sdk/cmake/fractalis_embed.cmake) in the calling folder's
 # build folder, and sets VAR to that source's path (render/kernel_sources.cpp reads its table).
 # The host uses it, and so does the Windows build's part that is ported so far.
-set(fractalis_kernel_files frame_constants.h prelude.cl eval_counts.cl rays.cl march.cl cone.cl
+set(fractalis_kernel_files frame_constants.h wide_lanes.cl prelude.cl eval_counts.cl rays.cl march.cl cone.cl
     normals.cl shadow.cl ao.cl glow.cl fog.cl lens.cl reflect.cl lights.cl environment.cl shade.cl
     film.cl render.cl
     material.cl area_lights.cl path.cl post.cl denoise.cl probe.cl material_probe.cl

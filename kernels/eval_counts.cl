@@ -23,7 +23,11 @@ inline uint active_lanes(mask_t m) { return m ? 1u : 0u; }
 inline uint active_lanes(mask_t m) {
   /* A set lane is -1: its low bit is 1. */
   int bits[FR_LANES];
+#if FR_LANES >= 32
+  fr_wide_store_bits(m, bits);
+#else
   FR_CAT(vstore, FR_LANES)(FR_CAT(convert_int, FR_LANES)(m) & 1, 0, bits);
+#endif
   uint n = 0;
   for (int i = 0; i < FR_LANES; ++i) n += (uint)bits[i];
   return n;

@@ -1,7 +1,8 @@
 /* prelude.cl — lane-generic types and helpers that every scene DE and renderer stage uses.
  *
  * The host defines, before this file:
- *   FR_LANES   1, 4, 8 or 16: rays evaluated together by one work-item (a tile of pixels)
+ *   FR_LANES   1, 4, 8, 16, 32 or 64: rays evaluated together by one work-item (a tile of
+ *              pixels); 32 and 64 from wide_lanes.cl, which the host appends before this file
  *   FR_DOUBLE  0 or 1: scalar precision
  * Code written with these types builds at every width. Rules (sdk/docs/writing-a-scene.md):
  *   - real_t is one value per lane; scalar_t is one value shared by all lanes.
@@ -49,7 +50,10 @@ typedef int mask_t; /* scalar comparisons give 0 or 1 */
 #define lane_select(m, if_true, if_false) ((m) ? (real_t)(if_true) : (real_t)(if_false))
 #define FR_MASK_TRUE 1
 #else
-#if FR_DOUBLE
+#if FR_LANES >= 32
+typedef fr_wide_real_t real_t; /* wide_lanes.cl */
+typedef fr_wide_mask_t mask_t;
+#elif FR_DOUBLE
 typedef FR_CAT(double, FR_LANES) real_t;
 typedef FR_CAT(long, FR_LANES) mask_t; /* vector comparisons give -1 (true) or 0 */
 #else
@@ -75,8 +79,30 @@ typedef FR_CAT(int, FR_LANES) mask_t;
 #define FR_TILE_H 4
 #define FR_LANE_X ((real_t)(0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3))
 #define FR_LANE_Y ((real_t)(0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 3, 3, 3, 3))
+#elif FR_LANES == 32
+#define FR_TILE_W 8
+#define FR_TILE_H 4
+#define FR_LANE_X \
+  ((real_t)(0, 1, 2, 3, 4, 5, 6, 7, 0, 1, 2, 3, 4, 5, 6, 7,  \
+    0, 1, 2, 3, 4, 5, 6, 7, 0, 1, 2, 3, 4, 5, 6, 7))
+#define FR_LANE_Y \
+  ((real_t)(0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 1, 1, 1, 1,  \
+    2, 2, 2, 2, 2, 2, 2, 2, 3, 3, 3, 3, 3, 3, 3, 3))
+#elif FR_LANES == 64
+#define FR_TILE_W 8
+#define FR_TILE_H 8
+#define FR_LANE_X \
+  ((real_t)(0, 1, 2, 3, 4, 5, 6, 7, 0, 1, 2, 3, 4, 5, 6, 7,  \
+    0, 1, 2, 3, 4, 5, 6, 7, 0, 1, 2, 3, 4, 5, 6, 7,  \
+    0, 1, 2, 3, 4, 5, 6, 7, 0, 1, 2, 3, 4, 5, 6, 7,  \
+    0, 1, 2, 3, 4, 5, 6, 7, 0, 1, 2, 3, 4, 5, 6, 7))
+#define FR_LANE_Y \
+  ((real_t)(0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 1, 1, 1, 1,  \
+    2, 2, 2, 2, 2, 2, 2, 2, 3, 3, 3, 3, 3, 3, 3, 3,  \
+    4, 4, 4, 4, 4, 4, 4, 4, 5, 5, 5, 5, 5, 5, 5, 5,  \
+    6, 6, 6, 6, 6, 6, 6, 6, 7, 7, 7, 7, 7, 7, 7, 7))
 #else
-#error "FR_LANES must be 1, 4, 8 or 16"
+#error "FR_LANES must be 1, 4, 8, 16, 32 or 64"
 #endif
 #endif
 
@@ -86,15 +112,22 @@ typedef FR_CAT(int, FR_LANES) mask_t;
 #if FR_LANES == 1
 typedef uint lane_uint_t;
 #define FR_LANE_SUFFIX
+#elif FR_LANES >= 32
+typedef fr_wide_uint_t lane_uint_t;
 #else
 typedef FR_CAT(uint, FR_LANES) lane_uint_t;
 #define FR_LANE_SUFFIX FR_LANES
 #endif
+#if FR_LANES >= 32
+#define real_to_uint(x) fr_wide_to_uint(x)
+#define uint_to_real(x) fr_wide_from_uint(x)
+#else
 #define real_to_uint(x) FR_CAT(convert_uint, FR_LANE_SUFFIX)(x)
 #if FR_DOUBLE
 #define uint_to_real(x) FR_CAT(convert_double, FR_LANE_SUFFIX)(x)
 #else
 #define uint_to_real(x) FR_CAT(convert_float, FR_LANE_SUFFIX)(x)
+#endif
 #endif
 #define to_real(x) ((real_t)(x))
 #define mask_to_real(m) lane_select((m), 1, 0)
@@ -104,6 +137,9 @@ typedef FR_CAT(uint, FR_LANES) lane_uint_t;
 #if FR_LANES == 1
 inline void store_lanes(real_t v, float* out) { out[0] = (float)v; }
 inline real_t load_lanes(const float* in) { return (real_t)in[0]; }
+#elif FR_LANES >= 32
+inline void store_lanes(real_t v, float* out) { fr_wide_store(v, out); }
+inline real_t load_lanes(const float* in) { return fr_wide_load(in); }
 #elif FR_DOUBLE
 inline void store_lanes(real_t v, float* out) {
   FR_CAT(vstore, FR_LANES)(FR_CAT(convert_float, FR_LANES)(v), 0, out);

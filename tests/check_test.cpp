@@ -69,8 +69,8 @@ TEST_P(EveryInTreeScene, PassesEveryCheck) {
   const CheckRun r = run_check(std::filesystem::path(SCENE_PLUGIN_DIR) / (scene + PLUGIN_SUFFIX));
   EXPECT_EQ(r.exit_code, 0) << r.out;
   for (const char* check : {"descriptor", "de-compiles", "de-returns", "de-finite", "de-lipschitz",
-                            "de-bounded", "lanes-agree", "update", "create-destroy", "render",
-                            "unload"})
+                            "de-bounded", "wide-lanes", "lanes-agree", "update", "create-destroy",
+                            "render", "unload"})
     EXPECT_EQ(status_of(r.out, check), "PASS") << check << "\n" << r.out;
   const bool lower_bound = scene == "menger" || scene == "sierpinski" ||
                            scene.rfind("kifs_", 0) == 0;
@@ -262,6 +262,22 @@ TEST(Check, EveryBrokenFixtureFailsItsCheck) {
   // A plugin that floods the log, but does nothing wrong, passes.
   const CheckRun flood = run_check(hostile("log_flood"), limits);
   EXPECT_EQ(flood.exit_code, 0) << flood.out;
+}
+
+// A DE that builds at 16 lanes but not at 64 (it calls a built-in wide_lanes.cl does not
+// overload) is not a failure: the check warns, the other checks run at the widths that build, and
+// the render falls back to 16-lane packets.
+TEST(Check, SceneThatBuildsOnlyNarrowIsWarned) {
+  const std::filesystem::path plugin =
+      std::filesystem::path(CHECK_PLUGIN_DIR) / ("check_narrow_only" PLUGIN_SUFFIX);
+  const CheckRun r = run_check(plugin);
+  EXPECT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_EQ(status_of(r.out, "wide-lanes"), "WARN") << r.out;
+  EXPECT_NE(r.out.find("does not build at 64 lanes"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("ldexp"), std::string::npos) << r.out;
+  for (const char* check : {"de-compiles", "lanes-agree", "render"})
+    EXPECT_EQ(status_of(r.out, check), "PASS") << check << "\n" << r.out;
+  EXPECT_NE(r.out.find("widths 1 and 16 agree"), std::string::npos) << r.out;
 }
 
 TEST(Check, UsageErrors) {

@@ -59,7 +59,7 @@ TEST(Cli, UsageErrors) {
   expect_usage_error({"render", "--up", "0,0,0"}, "--up: 0,0,0 has no direction");
   expect_usage_error({"render", "--up", "0,nan,1"}, "is not a finite number");
   expect_usage_error({"render", "--fov", "200"}, "outside (0, 180) degrees");
-  expect_usage_error({"render", "--lanes", "3"}, "--lanes: expected 1, 4, 8 or 16");
+  expect_usage_error({"render", "--lanes", "3"}, "--lanes: expected 1, 4, 8, 16, 32 or 64");
   expect_usage_error({"render", "--precision", "half"}, "expected auto, float, double or dd");
   expect_usage_error({"render", "--integrator", "photon"},
                      "--integrator: expected fast or path, got 'photon'");

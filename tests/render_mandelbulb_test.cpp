@@ -63,6 +63,12 @@ TEST_F(MandelbulbRender, LaneWidthsAgree) {
   const double differing = fraction_differing(one, sixteen, 2);
   RecordProperty("lanes_1_vs_16_fraction_over_2", std::to_string(differing));
   EXPECT_LE(differing, 0.005) << "more than 0.5% of pixels differ by more than 2/255";
+  // The wide packets (kernels/wide_lanes.cl) run each lane through the same operations as 16.
+  for (int lanes : {32, 64}) {
+    const FrameImage wide = render(lanes, Precision::Float);
+    EXPECT_EQ(wide.lanes, lanes);
+    EXPECT_EQ(fraction_differing(sixteen, wide, 0), 0.0) << lanes << " lanes against 16";
+  }
 }
 
 // Float against the double reference. The surface of a fractal is chaotic at the scale of the hit

@@ -312,7 +312,8 @@ const FrameView* Explorer::render(int window_width_px, int window_height_px) {
     s.height_px = std::max(1, s.height_px / 2);
     // Packets of 4 rays rather than a CPU's 16: half the code to compile (PoCL: 0.21 s against
     // 0.47 s at -cl-opt-disable), and as fast a frame at this size.
-    if (const int lanes = s.lanes > 0 ? s.lanes : preferred_lanes(worker_.device()); lanes > 4)
+    if (const int lanes = s.lanes > 0 ? s.lanes : preferred_lanes(worker_.device(), s.precision);
+        lanes > 4)
       s.lanes = 4;
     // Auto would probe the new DE in double first: another kernel build before the frame.
     if (s.precision == Precision::Auto && good_scene_id_ == slot.scene->info.id)

@@ -167,12 +167,24 @@ SceneEvent SceneLibrary::add_or_replace(const std::filesystem::path& file,
     fresh.state.time_s = old.state.time_s;
   }
   // Build the kernel now, so a scene that does not compile never replaces a working one.
-  try {
-    const auto k = assemble_render_kernel(
-        o.scene->info, fresh.state.params,
-        make_kernel_config(o.scene->info, settings, worker_.lanes_for(settings)));
-    worker_.name_scene_file(o.scene->info.id, file);
+  // (At a wide width that the scene's code does not build at, the renderer falls back to
+  // kPacketLanes, and so does this test.)
+  worker_.name_scene_file(o.scene->info.id, file);
+  const auto build = [&](int lanes) {
+    const auto k = assemble_render_kernel(o.scene->info, fresh.state.params,
+                                          make_kernel_config(o.scene->info, settings, lanes));
     worker_.build(o.scene->info, k.source, k.build_options, k.description);
+  };
+  const int lanes = worker_.lanes_for(settings);
+  try {
+    build(lanes);
+  } catch (const KernelBuildError& e) {
+    if (settings.lanes != 0 || lanes <= kPacketLanes) return keep_old(e.what());
+    try {
+      build(kPacketLanes);
+    } catch (const std::exception&) {
+      return keep_old(e.what());  // the wide build's error: the first one the scene met
+    }
   } catch (const std::exception& e) {
     return keep_old(e.what());
   }

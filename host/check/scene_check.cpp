@@ -159,7 +159,8 @@ class Checker {
     for (Precision precision : {Precision::Float, Precision::Double, Precision::DoubleDouble}) {
       if (precision != Precision::Float && !worker_.device().has_fp64) continue;
       if (precision == Precision::DoubleDouble && !has_pair_estimate(info)) continue;
-      for (int lanes : {1, 16}) {
+      for (int lanes : {1, kPacketLanes, kWideLanes}) {
+        if (lanes == kWideLanes && precision != Precision::Float) continue;
         const std::string shape =
             std::string(precision_name(precision)) + " x" + std::to_string(lanes);
         try {
@@ -168,8 +169,12 @@ class Checker {
               assemble_probe_kernel(info, defaults_.params, KernelConfig{lanes, precision});
           worker_.build(info, k.source, k.build_options, k.description);
           built.push_back(shape);
+          if (lanes == kWideLanes) wide_builds_ = true;
         } catch (const std::exception& e) {
-          failed.push_back(shape + ": " + e.what());
+          if (lanes == kWideLanes)
+            wide_error_ = first_build_error(e.what());
+          else
+            failed.push_back(shape + ": " + e.what());
         }
       }
     }
@@ -200,6 +205,15 @@ class Checker {
     for (const auto& b : built) list += (list.empty() ? "" : ", ") + b;
     add("de-compiles", worker_.device().has_fp64 ? CheckStatus::Pass : CheckStatus::Warn,
         "built " + list + (worker_.device().has_fp64 ? "" : "; the device has no double"));
+    if (!wide_builds_)
+      add("wide-lanes", CheckStatus::Warn,
+          "the DE does not build at " + std::to_string(kWideLanes) +
+              " lanes, so CPUs render it as 16-lane packets, slower (call only the built-ins "
+              "kernels/wide_lanes.cl overloads on real_t): " +
+              wide_error_);
+    else
+      add("wide-lanes", CheckStatus::Pass,
+          "builds at " + std::to_string(kWideLanes) + " lanes, a CPU's width in float");
     return true;
   }
 
@@ -395,10 +409,12 @@ class Checker {
     const double r = defaults_.bounding_radius;
     const auto points = ball_points(options_.de_samples, r, 1);
     const bool fp64 = worker_.device().has_fp64;
-    std::vector<float> v16, v1, vd;
+    std::vector<float> v16, v1, vd, vwide;
     try {
       v16 = worker_.probe_de(info, defaults_.params, points, 16, Precision::Float);
       v1 = worker_.probe_de(info, defaults_.params, points, 1, Precision::Float);
+      if (wide_builds_)
+        vwide = worker_.probe_de(info, defaults_.params, points, kWideLanes, Precision::Float);
       if (fp64) vd = worker_.probe_de(info, defaults_.params, points, 16, Precision::Double);
     } catch (const std::exception& e) {
       add("de-finite", CheckStatus::Fail, std::string("evaluating the DE failed: ") + e.what());
@@ -406,7 +422,7 @@ class Checker {
     }
 
     // Finite everywhere.
-    for (const auto* values : {&v16, &v1, &vd}) {
+    for (const auto* values : {&v16, &v1, &vd, &vwide}) {
       for (size_t i = 0; i < values->size(); ++i)
         if (!std::isfinite((*values)[i])) {
           add("de-finite", CheckStatus::Fail,
@@ -543,26 +559,36 @@ class Checker {
               "DE is " + fmt(values[i]) + " at " + fmt(shell[i]) + ", |p| = " + fmt(len) +
                   ", outside the bounding radius " + fmt(r) +
                   ": the host never marches there, so that surface is cut off");
-          return add_agreement(points, v16, v1, vd, r);
+          return add_agreement(points, v16, v1, vd, vwide, r);
         }
       add("de-bounded", CheckStatus::Pass,
           "DE > 0 at " + std::to_string(shell.size()) + " points between R and 2R");
     }
-    add_agreement(points, v16, v1, vd, r);
+    add_agreement(points, v16, v1, vd, vwide, r);
   }
 
   void add_agreement(const std::vector<Point>& points, const std::vector<float>& v16,
-                     const std::vector<float>& v1, const std::vector<float>& vd, double r) {
+                     const std::vector<float>& v1, const std::vector<float>& vd,
+                     const std::vector<float>& vwide, double r) {
+    // Each width against width 1; the wide one (if it built) too.
+    std::string widths = "widths 1 and 16";
     double worst = 0;
     size_t where = 0;
-    for (size_t i = 0; i < points.size(); ++i) {
-      const double d = std::abs(double(v16[i]) - v1[i]) / (1e-6 * r + 1e-5 * std::abs(v1[i]));
-      if (d > worst) worst = d, where = i;
+    const std::vector<float>* worst_values = &v16;
+    for (const std::vector<float>* values : {&v16, &vwide}) {
+      if (values->empty()) continue;
+      if (values == &vwide) widths = "widths 1, 16 and " + std::to_string(kWideLanes);
+      for (size_t i = 0; i < points.size(); ++i) {
+        const double d =
+            std::abs(double((*values)[i]) - v1[i]) / (1e-6 * r + 1e-5 * std::abs(v1[i]));
+        if (d > worst) worst = d, where = i, worst_values = values;
+      }
     }
+    const std::string other = worst_values == &v16 ? "16" : std::to_string(kWideLanes);
     add("lanes-agree", worst <= 1 ? CheckStatus::Pass : CheckStatus::Fail,
-        worst <= 1 ? "widths 1 and 16 agree at every point"
-                   : "widths 1 and 16 differ at " + fmt(points[where]) + ": " + fmt(v1[where]) +
-                         " vs " + fmt(v16[where]));
+        worst <= 1 ? widths + " agree at every point"
+                   : "widths 1 and " + other + " differ at " + fmt(points[where]) + ": " +
+                         fmt(v1[where]) + " vs " + fmt((*worst_values)[where]));
     if (vd.empty()) {
       add("precisions-agree", CheckStatus::Warn, "the device has no double precision");
       return;
@@ -933,6 +959,8 @@ class Checker {
   CheckReport report_;
   std::shared_ptr<const LoadedScene> scene_;
   SceneState defaults_;
+  bool wide_builds_ = false;  // the DE builds at kWideLanes (check_compiles)
+  std::string wide_error_;    // why not
 };
 
 }  // namespace

@@ -6,13 +6,15 @@
 //   descriptor        every rule of the loader (its own messages)
 //   de-compiles       the DE builds at lane widths 1 and 16, in float and double, and the full
 //                     render kernel builds; errors point at the author's file and line
+//   wide-lanes        the DE builds at 64 lanes too, a CPU's width in float (a warning if not:
+//                     the host then renders it at 16, slower)
 //   de-returns        a test render in a child process finishes within plugins.vet_timeout_s
 //   de-finite         no NaN or Inf at points sampled over the bounding sphere
 //   de-lipschitz      |DE(p) - DE(q)| <= (1 + tol) |p - q| at nearby pairs (worst ratio, where)
 //   de-overestimate   no surface inside the ball of radius DE(p) / (1 + tol) around points p
 //                     outside the surface, found by fixed steps (worst ratio, where)
 //   de-bounded        no surface outside the bounding radius (DE > 0 on shells from R to 2R)
-//   lanes-agree       widths 1 and 16 give the same values
+//   lanes-agree       widths 1, 16 and 64 give the same values
 //   precisions-agree  float and double agree (a chaotic DE may differ at some points: warned)
 //   update            deterministic for the same time, valid across time samples and at every
 //                     parameter's minimum, maximum and default

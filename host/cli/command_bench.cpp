@@ -187,6 +187,7 @@ BenchReport run_bench(BenchJob& job, const ParsedOptions& options) {
   RenderWorker& renderer = *p.worker;
   Watchdog watchdog(p.render.watchdog_s, "a frame of scene '" + p.scene->info.id + "'");
   Precision ran_in = p.render.precision;  // what the last frame ran in (auto resolved)
+  int ran_lanes = 0;                      // and at what lane width
   auto frame = [&](double time_s) {
     if (job.path) {  // run time t is the path's start + t (clamped to its end)
       const PathSample sample =
@@ -197,7 +198,9 @@ BenchReport run_bench(BenchJob& job, const ParsedOptions& options) {
       apply_scene_overrides(p.scene->info, options, p.state, p.preset);
     }
     update_scene(p, time_s);
-    ran_in = renderer.render(p.scene->info, p.state, p.render).precision;
+    const auto& image = renderer.render(p.scene->info, p.state, p.render);
+    ran_in = image.precision;
+    ran_lanes = image.lanes;
     watchdog.kick();
   };
   using clock = std::chrono::steady_clock;
@@ -230,7 +233,7 @@ BenchReport run_bench(BenchJob& job, const ParsedOptions& options) {
   report.precision = p.render.precision == Precision::Auto
                          ? std::string("auto: ") + precision_name(ran_in)
                          : precision_name(p.render.precision);
-  report.lanes = renderer.lanes_for(p.render);
+  report.lanes = ran_lanes;
   return report;
 }
 

@@ -3,6 +3,7 @@
 #include "render/cl_runtime.hpp"
 #include "render/dd_selftest.hpp"
 #include "render/device.hpp"
+#include "render/render_settings.hpp"
 
 #include <spdlog/spdlog.h>
 
@@ -40,7 +41,8 @@ int command_devices(const std::vector<std::string>& args, std::ostream& out,
         << (is_default ? "  [default]" : "") << "\n"
         << "       " << d.version << ", driver " << d.driver_version << ", " << d.compute_units
         << " compute units, " << (d.global_mem_bytes >> 20) << " MiB, double "
-        << (d.has_fp64 ? "yes" : "no") << ", lanes " << preferred_lanes(d) << "\n";
+        << (d.has_fp64 ? "yes" : "no") << ", lanes " << preferred_lanes(d, Precision::Float)
+        << " (" << preferred_lanes(d, Precision::Double) << " in double)\n";
     // Whether double-double (deep zoom) keeps its error terms here (render/dd_selftest.hpp).
     if (d.has_fp64) {
       try {

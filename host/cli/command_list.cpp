@@ -35,7 +35,7 @@ std::string format_value(const ParamInfo& p, const fr_value& v) {
 // out, the DE library files it includes, and the parameters baked in as constants. This is
 // "each scene's kernel contains only what it needs", made visible.
 void describe_kernel(const SceneInfo& info, const RenderSettings& settings, std::ostream& out) {
-  const int lanes = resolve_lanes(settings.lanes, nullptr);
+  const int lanes = resolve_lanes(settings.lanes, nullptr, settings.precision);
   const KernelConfig config = make_kernel_config(info, settings, lanes);
   const AssembledKernel k = assemble_render_kernel(info, make_default_state(info).params, config);
   const fr_features all = all_optional_stages();

@@ -14,6 +14,12 @@ ClRuntime::ClRuntime(const DeviceInfo& device) : device_(device) {
   cl_check(err, "clCreateCommandQueue", "opening device " + device.name);
 }
 
+std::string first_build_error(const std::string& message) {
+  const size_t at = message.find("\nerror: ");
+  if (at == std::string::npos) return message;
+  return message.substr(at + 1, message.find('\n', at + 1) - at - 1);
+}
+
 cl_program ClRuntime::program(const std::string& source, const std::string& options,
                               const std::string& description) {
   const std::hash<std::string> hash;

@@ -19,6 +19,9 @@ class KernelBuildError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The first "error: ..." line of a build failure's message (all of it when it has none).
+std::string first_build_error(const std::string& message);
+
 class ClRuntime {
  public:
   explicit ClRuntime(const DeviceInfo& device);

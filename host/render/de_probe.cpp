@@ -2,6 +2,8 @@
 
 #include "render/kernel_assembly.hpp"
 
+#include <algorithm>
+
 static_assert(sizeof(std::array<float, 3>) == 3 * sizeof(float),
               "points are uploaded as packed xyz");
 
@@ -52,6 +54,13 @@ std::vector<float> run_probe(ClRuntime& runtime, const AssembledKernel& k, const
   return out;
 }
 
+// Probes serve checks and tests, not speed: unless asked for a width, one packet wide, which
+// every scene's code builds at (a wide one may not: wide_lanes.cl).
+int probe_lanes(int requested, const DeviceInfo& device) {
+  return requested > 0 ? requested
+                       : std::min(kPacketLanes, resolve_lanes(0, &device, Precision::Float));
+}
+
 }  // namespace
 
 std::vector<float> probe_de(ClRuntime& runtime, const SceneInfo& info,
@@ -59,7 +68,7 @@ std::vector<float> probe_de(ClRuntime& runtime, const SceneInfo& info,
                             const std::vector<std::array<float, 3>>& points, int lanes,
                             Precision precision, const PairOrigin* origin) {
   if (points.empty()) return {};
-  lanes = resolve_lanes(lanes, &runtime.device());
+  lanes = probe_lanes(lanes, runtime.device());
   const AssembledKernel k = assemble_probe_kernel(info, params, KernelConfig{lanes, precision});
   const PairOrigin world_origin{};
   if (precision == Precision::DoubleDouble && !origin) origin = &world_origin;
@@ -75,7 +84,7 @@ std::vector<float> probe_material(ClRuntime& runtime, const SceneInfo& info,
                                   const std::vector<fr_value>& params, const fr_frame_constants& fc,
                                   const std::vector<std::array<float, 3>>& points) {
   if (points.empty()) return {};
-  const int lanes = resolve_lanes(0, &runtime.device());
+  const int lanes = probe_lanes(0, runtime.device());
   const AssembledKernel k =
       assemble_material_probe_kernel(info, params, KernelConfig{lanes, Precision::Float});
   const std::vector<uint8_t> packed = pack_scene_params(info, params);
@@ -91,7 +100,7 @@ std::vector<float> probe_albedo(ClRuntime& runtime, const SceneInfo& info,
                                 const std::vector<std::array<float, 3>>& points,
                                 Precision precision) {
   if (points.empty()) return {};
-  const int lanes = resolve_lanes(0, &runtime.device());
+  const int lanes = probe_lanes(0, runtime.device());
   const AssembledKernel k =
       assemble_material_probe_kernel(info, params, KernelConfig{lanes, precision});
   const std::vector<uint8_t> packed = pack_scene_params(info, params);

@@ -1,5 +1,7 @@
 #include "render/device.hpp"
 
+#include "render/render_settings.hpp"
+
 #include <algorithm>
 #include <cctype>
 
@@ -81,6 +83,10 @@ std::vector<DeviceInfo> list_devices() {
       info.max_alloc_bytes = max_alloc;
       info.has_fp64 =
           device_string(devices[di], CL_DEVICE_EXTENSIONS).find("cl_khr_fp64") != std::string::npos;
+      cl_uint float_width = 0;
+      clGetDeviceInfo(devices[di], CL_DEVICE_NATIVE_VECTOR_WIDTH_FLOAT, sizeof float_width,
+                      &float_width, nullptr);
+      info.native_float_width = float_width;
       out.push_back(std::move(info));
     }
   }
@@ -119,15 +125,19 @@ std::optional<DeviceInfo> select_device(const std::vector<DeviceInfo>& devices,
   return std::nullopt;
 }
 
-int preferred_lanes(const DeviceInfo& device) {
-  return (device.type & CL_DEVICE_TYPE_CPU) ? 16 : 1;
+int preferred_lanes(const DeviceInfo& device, Precision precision) {
+  if (!(device.type & CL_DEVICE_TYPE_CPU)) return 1;
+  const bool in_double = precision == Precision::Double || precision == Precision::DoubleDouble;
+  if (in_double) return kPacketLanes;
+  const unsigned four_vectors = 4 * device.native_float_width;
+  return four_vectors >= 64 ? kWideLanes : four_vectors >= 32 ? 32 : kPacketLanes;
 }
 
-int resolve_lanes(int requested, const DeviceInfo* device) {
+int resolve_lanes(int requested, const DeviceInfo* device, Precision precision) {
   if (requested > 0) return requested;
   DeviceInfo cpu;
   cpu.type = CL_DEVICE_TYPE_CPU;
-  return preferred_lanes(device ? *device : cpu);
+  return preferred_lanes(device ? *device : cpu, precision);
 }
 
 }  // namespace fr

@@ -64,6 +64,7 @@ const PipelineFile kRenderPipeline[] = {
 const HostKernelNames& host_kernel_names() {
   static const HostKernelNames names = [] {
     std::vector<std::string_view> before = {kernel_source("frame_constants.h"),
+                                            kernel_source("wide_lanes.cl"),
                                             kernel_source("prelude.cl")};
     for (const auto& library : kernel_library_files())
       before.push_back(kernel_source("de/" + library.substr(3)));
@@ -279,6 +280,7 @@ void append_scene_prefix(std::ostringstream& out, const SceneInfo& info,
   // 0: colour; 1: and steps and ray status; 2: every pass (render.cl).
   out << "#define FR_OUTPUTS " << static_cast<int>(config.outputs) << "\n";
   append_file(out, "frame_constants.h", kernel_source("frame_constants.h"));
+  append_file(out, "wide_lanes.cl", kernel_source("wide_lanes.cl"));
   append_file(out, "prelude.cl", kernel_source("prelude.cl"));
   append_params(out, info, values, config.precision);
   // The scene's own code, kept from the host's (scene_source_guard.hpp): checked first, and
@@ -344,6 +346,10 @@ AssembledKernel finish(std::ostringstream& out, const SceneInfo& info, const Ker
 
 TileShape tile_shape(int lanes) {
   switch (lanes) {
+    case 64:
+      return {8, 8};
+    case 32:
+      return {8, 4};
     case 16:
       return {4, 4};
     case 8:

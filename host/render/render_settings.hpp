@@ -152,7 +152,7 @@ struct RenderSettings {
   int width_px = 1280;  // of the image rendered (the window's size when `window` is set)
   int height_px = 720;
   ImageWindow window;
-  int lanes = 0;  // 1, 4, 8 or 16; 0 picks the device's preferred width
+  int lanes = 0;  // 1, 4, 8, 16, 32 or 64; 0 picks the device's preferred width
   Precision precision = Precision::Auto;
   int samples = 1;                  // jittered samples accumulated per image (anti-aliasing)
   fr_features disabled_stages = 0;  // effects the user switched off

@@ -14,8 +14,11 @@ extern "C" {
 #include "frame_constants.h"
 }
 
+#include <spdlog/spdlog.h>
+
 #include <algorithm>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 
@@ -58,8 +61,18 @@ Renderer::Renderer(ClRuntime& runtime) : runtime_(runtime) {
   counts_ = make_buffer(runtime_.context(), CL_MEM_READ_WRITE, kCountBytes, "the DE counters");
 }
 
-int Renderer::lanes_for(const RenderSettings& s) const {
-  return resolve_lanes(s.lanes, &runtime_.device());
+namespace {
+std::pair<std::string, size_t> scene_code_key(const SceneInfo& info) {
+  const std::hash<std::string> hash;
+  return {info.id, hash(info.de_source) ^ (hash(info.surface_source) * 0x9e3779b97f4a7c15ull)};
+}
+}  // namespace
+
+int Renderer::lanes_for(const SceneInfo& info, const RenderSettings& s) const {
+  const int lanes = resolve_lanes(s.lanes, &runtime_.device(), s.precision);
+  if (s.lanes == 0 && lanes > kPacketLanes && narrow_scenes_.count(scene_code_key(info)))
+    return kPacketLanes;
+  return lanes;
 }
 
 void Renderer::ensure_buffers(size_t n) {
@@ -128,13 +141,13 @@ void Renderer::render_sample(const SceneInfo& info, const SceneState& state,
         std::string(has_pair_estimate(info)
                         ? ""
                         : ", and scene '" + info.id + "' has no pair estimate (scene_de_dd)"));
-  const int lanes = lanes_for(settings);
+  int lanes = lanes_for(info, settings);
   std::string description;
   // The denoiser is guided by the passes.
   if (settings.denoise) outputs = Readback::Everything;
   settings.outputs = outputs;
   last_outputs_ = outputs;
-  const cl_program program = render_program(info, state, settings, lanes, &description);
+  const cl_program program = render_program(info, state, settings, &lanes, &description);
   cl_kernel kernel = runtime_.kernel(program, "fr_render");
   const bool cone = make_kernel_config(info, settings, lanes).stages & kStageCone;
 
@@ -268,12 +281,25 @@ cl_mem Renderer::environment_memory(const RenderSettings& settings) {
 }
 
 cl_program Renderer::render_program(const SceneInfo& info, const SceneState& state,
-                                    const RenderSettings& settings, int lanes,
+                                    const RenderSettings& settings, int* lanes,
                                     std::string* description) {
-  const AssembledKernel assembled =
-      assemble_render_kernel(info, state.params, make_kernel_config(info, settings, lanes));
-  *description = assembled.description;
-  return runtime_.program(assembled.source, assembled.build_options, assembled.description);
+  const auto build = [&] {
+    const AssembledKernel assembled =
+        assemble_render_kernel(info, state.params, make_kernel_config(info, settings, *lanes));
+    *description = assembled.description;
+    return runtime_.program(assembled.source, assembled.build_options, assembled.description);
+  };
+  if (settings.lanes != 0 || *lanes <= kPacketLanes) return build();
+  try {
+    return build();
+  } catch (const KernelBuildError& e) {
+    // The scene's code calls what wide_lanes.cl does not overload: render as 16-lane packets.
+    spdlog::warn("scene '{}' does not build at {} lanes ({}); it renders at {} lanes, slower",
+                 info.id, *lanes, first_build_error(e.what()), kPacketLanes);
+    narrow_scenes_.insert(scene_code_key(info));
+    *lanes = kPacketLanes;
+    return build();
+  }
 }
 
 Precision Renderer::prepare(const SceneInfo& info, const SceneState& state,
@@ -282,7 +308,8 @@ Precision Renderer::prepare(const SceneInfo& info, const SceneState& state,
   settings.precision = resolve_precision(runtime_, info, state, requested);
   if (settings.precision == Precision::DoubleDouble) check_pair_frame(info, settings);
   std::string description;
-  render_program(info, state, settings, lanes_for(settings), &description);
+  int lanes = lanes_for(info, settings);
+  render_program(info, state, settings, &lanes, &description);
   post_kernel();
   return settings.precision;
 }

@@ -12,7 +12,9 @@
 #include <algorithm>
 #include <cstdint>
 #include <optional>
+#include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace fr {
@@ -149,8 +151,8 @@ class Renderer {
   // with settings.count_evaluations (otherwise all zero). Waits for the device.
   EvalCounts eval_counts();
 
-  // The lane width a frame with these settings uses on this device.
-  int lanes_for(const RenderSettings& settings) const;
+  // The lane width a frame of this scene with these settings uses on this device.
+  int lanes_for(const SceneInfo& info, const RenderSettings& settings) const;
 
   // Builds (or finds in the cache) the kernel a frame with these settings runs, deciding Auto
   // precision as the first sample would; returns the precision. Lets a caller time the kernel
@@ -160,9 +162,11 @@ class Renderer {
  private:
   void ensure_buffers(size_t pixel_count);
   // The render program for `settings` (precision already resolved; kernels fr_render and, with
-  // the cone pre-pass, fr_cone); *description names it.
+  // the cone pre-pass, fr_cone) at *lanes; *description names it. Where the device chose a wide
+  // width and the scene's code does not build at it, builds at kPacketLanes, sets *lanes to it
+  // and remembers the scene (narrow_scenes_).
   cl_program render_program(const SceneInfo& info, const SceneState& state,
-                            const RenderSettings& settings, int lanes, std::string* description);
+                            const RenderSettings& settings, int* lanes, std::string* description);
   cl_kernel post_kernel();
   // The panorama of render.environment on the device (read and uploaded when the path changes;
   // std::runtime_error naming the file when it cannot be read), or a placeholder without one;
@@ -182,6 +186,9 @@ class Renderer {
   size_t buffer_pixels_ = 0;  // capacity of the buffers
   size_t frame_pixels_ = 0;   // pixels of the frame being rendered
   int last_lanes_ = 0;
+  // Scenes (id and a hash of their code) that did not build at a wide width: they render at
+  // kPacketLanes, without a failing build each frame.
+  std::set<std::pair<std::string, size_t>> narrow_scenes_;
   Readback last_outputs_ = Readback::Everything;  // what the last sample's kernel wrote
   Precision last_precision_ = Precision::Float;
   // The device's double-double self-test (render/dd_selftest.hpp), run before its first pair

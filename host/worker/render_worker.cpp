@@ -118,7 +118,7 @@ void RenderWorker::name_scene_file(const std::string& scene_id, const std::files
 }
 
 int RenderWorker::lanes_for(const RenderSettings& settings) const {
-  return resolve_lanes(settings.lanes, &device_);
+  return resolve_lanes(settings.lanes, &device_, settings.precision);
 }
 
 std::string RenderWorker::scene_label(const std::string& scene) const {
@@ -568,7 +568,7 @@ EvalCounts RenderWorker::eval_counts() {
                                  last_scene_id_, "reading the DE counters", limits_.start_s);
   EvalCounts counts;
   WireReader r(reply);
-  if (!r.raw(&counts, sizeof counts) || counts.lanes < 1 || counts.lanes > 16)
+  if (!r.raw(&counts, sizeof counts) || counts.lanes < 1 || counts.lanes > 64)
     fail(last_scene_id_, "reading the DE counters", "sent a malformed reply", false);
   return counts;
 }
