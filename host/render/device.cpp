@@ -87,6 +87,10 @@ std::vector<DeviceInfo> list_devices() {
       clGetDeviceInfo(devices[di], CL_DEVICE_NATIVE_VECTOR_WIDTH_FLOAT, sizeof float_width,
                       &float_width, nullptr);
       info.native_float_width = float_width;
+      cl_uint double_width = 0;
+      clGetDeviceInfo(devices[di], CL_DEVICE_NATIVE_VECTOR_WIDTH_DOUBLE, sizeof double_width,
+                      &double_width, nullptr);
+      info.native_double_width = double_width;
       out.push_back(std::move(info));
     }
   }
@@ -127,9 +131,9 @@ std::optional<DeviceInfo> select_device(const std::vector<DeviceInfo>& devices,
 
 int preferred_lanes(const DeviceInfo& device, Precision precision) {
   if (!(device.type & CL_DEVICE_TYPE_CPU)) return 1;
-  const bool in_double = precision == Precision::Double || precision == Precision::DoubleDouble;
-  if (in_double) return kPacketLanes;
-  const unsigned four_vectors = 4 * device.native_float_width;
+  if (precision == Precision::DoubleDouble) return kPacketLanes;
+  const unsigned four_vectors =
+      4 * (precision == Precision::Double ? device.native_double_width : device.native_float_width);
   return four_vectors >= 64 ? kWideLanes : four_vectors >= 32 ? 32 : kPacketLanes;
 }
 

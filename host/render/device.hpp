@@ -1,8 +1,8 @@
 // device.hpp — finding OpenCL devices and choosing one.
 //
 // Default: the first GPU if there is one, else the first CPU device (PoCL on machines without a
-// GPU). A CPU device gets 64 lanes in float (four float16 packets of rays) and 16 in double, a GPU
-// 1 (one pixel per work-item).
+// GPU). A CPU device gets packets of rays four of its vectors wide (with AVX-512 64 lanes in float,
+// 32 in double), a GPU 1 lane (one pixel per work-item).
 #pragma once
 
 #include "render/cl.hpp"
@@ -28,7 +28,8 @@ struct DeviceInfo {
   unsigned long long global_mem_bytes = 0;  // CL_DEVICE_GLOBAL_MEM_SIZE
   unsigned long long max_alloc_bytes = 0;   // CL_DEVICE_MAX_MEM_ALLOC_SIZE: one buffer's limit
   bool has_fp64 = false;
-  unsigned native_float_width = 0;  // CL_DEVICE_NATIVE_VECTOR_WIDTH_FLOAT: 16 with AVX-512
+  unsigned native_float_width = 0;   // CL_DEVICE_NATIVE_VECTOR_WIDTH_FLOAT: 16 with AVX-512
+  unsigned native_double_width = 0;  // CL_DEVICE_NATIVE_VECTOR_WIDTH_DOUBLE: 8 with AVX-512
 
   bool is_gpu() const { return (type & CL_DEVICE_TYPE_GPU) != 0; }
   std::string type_name() const;
@@ -47,10 +48,9 @@ std::optional<DeviceInfo> select_device(const std::vector<DeviceInfo>& devices,
 enum class Precision;  // render_settings.hpp
 
 // Lane width that suits the device: 1 on GPUs and accelerators (one pixel per work-item); on
-// CPUs, in float, four of the device's native vectors (wide_lanes.cl: a ray's DE is a chain of
-// dependent operations, and independent chains side by side keep the vector units busy), 64
-// with AVX-512, 16 to 64; in double 16 (double16 is two AVX-512 registers a value already, and
-// wider was no faster).
+// CPUs four of the device's native vectors of the precision, 16 to 64 (wide_lanes.cl: a ray's DE
+// is a chain of dependent operations, and independent chains side by side keep the vector units
+// busy): with AVX-512 64 in float and 32 in double; 16 in double-double, whose values are pairs.
 int preferred_lanes(const DeviceInfo& device, Precision precision);
 
 // The one rule for the lane width a kernel is built with: the requested width (render.lanes,
