@@ -4,7 +4,7 @@
  * before it), so a packet of 16 floats, one AVX-512 register a value, leaves the vector units
  * waiting on latency; double16, two registers a value, costs only 1.3x float16's time. A wider
  * real_t hands the core independent chains to run side by side, at the price of more lanes
- * idling while a packet's slowest ray finishes (docs/performance.md, "Lanes").
+ * idling while a packet's slowest ray finishes (docs/performance.md, "Four packets in flight").
  *
  * How: real_t is then Clang's ext_vector_type of FR_LANES elements. Its operators work as
  * float16's do, and LLVM splits each into 16-lane instructions. OpenCL's built-ins stop at 16

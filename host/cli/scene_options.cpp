@@ -48,7 +48,8 @@ std::vector<OptionSpec> scene_option_specs() {
       {"param", "KEY=VALUE", true, "set a scene parameter (repeatable); vec3 as x,y,z"},
       {"time", "SECONDS", false, "scene time for the update callback (default 0)"},
       {"lanes", "1|4|8|16|32|64", false,
-       "rays per work-item (default: on CPUs with AVX-512 64 in float, 32 in double; 1 on GPUs)"},
+       "rays per work-item (default: on CPUs 16, with AVX-512 64 in float and 32 in double; 1 on "
+       "GPUs)"},
       {"precision", "auto|float|double|dd", false,
        "arithmetic precision of the kernel (default auto: double where float cannot resolve the "
        "view, dd (double-double) where double cannot and the scene has a pair estimate)"},

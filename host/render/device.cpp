@@ -132,9 +132,8 @@ std::optional<DeviceInfo> select_device(const std::vector<DeviceInfo>& devices,
 int preferred_lanes(const DeviceInfo& device, Precision precision) {
   if (!(device.type & CL_DEVICE_TYPE_CPU)) return 1;
   if (precision == Precision::DoubleDouble) return kPacketLanes;
-  const unsigned four_vectors =
-      4 * (precision == Precision::Double ? device.native_double_width : device.native_float_width);
-  return four_vectors >= 64 ? kWideLanes : four_vectors >= 32 ? 32 : kPacketLanes;
+  if (precision == Precision::Double) return device.native_double_width >= 8 ? 32 : kPacketLanes;
+  return device.native_float_width >= 16 ? kWideLanes : kPacketLanes;
 }
 
 int resolve_lanes(int requested, const DeviceInfo* device, Precision precision) {

@@ -1,8 +1,8 @@
 // device.hpp — finding OpenCL devices and choosing one.
 //
 // Default: the first GPU if there is one, else the first CPU device (PoCL on machines without a
-// GPU). A CPU device gets packets of rays four of its vectors wide (with AVX-512 64 lanes in float,
-// 32 in double), a GPU 1 lane (one pixel per work-item).
+// GPU). A CPU device gets packets of 16 rays, four AVX-512 vectors where it has them (64 lanes in
+// float, 32 in double), a GPU 1 lane (one pixel per work-item).
 #pragma once
 
 #include "render/cl.hpp"
@@ -48,9 +48,11 @@ std::optional<DeviceInfo> select_device(const std::vector<DeviceInfo>& devices,
 enum class Precision;  // render_settings.hpp
 
 // Lane width that suits the device: 1 on GPUs and accelerators (one pixel per work-item); on
-// CPUs four of the device's native vectors of the precision, 16 to 64 (wide_lanes.cl: a ray's DE
-// is a chain of dependent operations, and independent chains side by side keep the vector units
-// busy): with AVX-512 64 in float and 32 in double; 16 in double-double, whose values are pairs.
+// CPUs 16, and with AVX-512 (native vectors of 16 floats, 8 doubles) four native vectors: 64 in
+// float, 32 in double (wide_lanes.cl: a ray's DE is a chain of dependent operations, and
+// independent chains side by side keep the vector units busy). Not wider with AVX2: its 16
+// registers of 8 floats already spill 16-lane values (docs/performance.md); and 16 in
+// double-double, whose values are pairs.
 int preferred_lanes(const DeviceInfo& device, Precision precision);
 
 // The one rule for the lane width a kernel is built with: the requested width (render.lanes,

@@ -219,8 +219,8 @@ std::vector<SettingSpec> make_table() {
 
   SettingSpec lanes = int_setting<&S::render, &R::lanes>(
       "render.lanes", 0, 64,
-      "Rays per work-item: 0 lets the device decide (on CPUs four of its vectors side by side,\n"
-      "with AVX-512 64 in float and 32 in double; 1 on GPUs).");
+      "Rays per work-item: 0 lets the device decide (on CPUs 16, with AVX-512 64 in float and\n"
+      "32 in double; 1 on GPUs).");
   lanes.only_ints = {0, 1, 4, 8, 16, 32, 64};
   lanes.only_ints_text = "one of 0 (device's choice), 1, 4, 8, 16, 32, 64";
   t.push_back(lanes);
