@@ -208,12 +208,13 @@ class Checker {
     if (!wide_builds_)
       add("wide-lanes", CheckStatus::Warn,
           "the DE does not build at " + std::to_string(kWideLanes) +
-              " lanes, so CPUs render it as 16-lane packets, slower (call only the built-ins "
-              "kernels/wide_lanes.cl overloads on real_t): " +
+              " lanes, so CPUs with AVX-512 render it as 16-lane packets, slower (call only the "
+              "built-ins kernels/wide_lanes.cl overloads on real_t): " +
               wide_error_);
     else
       add("wide-lanes", CheckStatus::Pass,
-          "builds at " + std::to_string(kWideLanes) + " lanes, a CPU's width in float");
+          "builds at " + std::to_string(kWideLanes) +
+              " lanes, the width CPUs with AVX-512 render float at");
     return true;
   }
 

@@ -63,7 +63,7 @@ int resolve_lanes(int requested, const DeviceInfo* device, Precision precision);
 // The widest packet a scene's code is sure to build at: 32 and 64 lanes rely on wide_lanes.cl's
 // overloads of the built-ins, which a scene's code may go beyond.
 constexpr int kPacketLanes = 16;
-// The widest a CPU renders float at (AVX-512's).
+// The width a CPU with AVX-512 renders float at: four of its vectors.
 constexpr int kWideLanes = 64;
 
 }  // namespace fr
