@@ -38,8 +38,10 @@ inline void cone_spread(__constant const fr_frame_constants* fc, ray_t centre, r
 }
 
 /* One cone per lane; a work-item's lanes are FR_TILE_W x FR_TILE_H neighbouring blocks. Writes,
- * per block, the parameter t where its rays may start (their own entry into the bounds when the
- * cone could not skip anything) and the AO steps the skipped stretch stands for. */
+ * per block, the parameter t where its rays may start (0, their own entry into the bounds, when
+ * the cone could not skip anything; -1 when it found nothing to hit) and the AO steps the
+ * skipped stretch stands for. No block ray hits the surface before its block's t: the host
+ * judges a view's precision by the least (Renderer::choose_precision). */
 __kernel void fr_cone(__constant const fr_frame_constants* fc,
                       __constant const scene_params_t* params, __global float* cone_t_out,
                       __global float* cone_ao_steps_out, __global uint* counts_out) {
@@ -90,8 +92,10 @@ __kernel void fr_cone(__constant const fr_frame_constants* fc,
     t = lane_select(active, fmin(t + advance, t_exit), t);
     active &= t < t_exit;
   }
-  /* Where the cone left the bounds (or never met them), the rays find out for themselves. */
-  t = lane_select(in_bounds & (t < t_exit), t, 0);
+  /* Where the cone left the bounds (or never met them), no block ray can hit: -1, and the rays
+   * find out for themselves (march.cl starts them at their own entry into the bounds, as for 0;
+   * the host reads -1 as "nothing to hit", Renderer::cone_hit_bound). */
+  t = lane_select(in_bounds & (t < t_exit), t, -1);
 
   float tt[FR_LANES], aa[FR_LANES], bxs[FR_LANES], bys[FR_LANES];
   store_lanes(t, tt);

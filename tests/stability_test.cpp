@@ -9,6 +9,7 @@
 #include "plugin/scene_instance.hpp"
 #include "render/camera.hpp"
 #include "render/de_probe.hpp"
+#include "render/precision.hpp"
 #include "render/renderer.hpp"
 #include "test_support.hpp"
 
@@ -54,9 +55,10 @@ void set_param(const SceneInfo& info, SceneState& state, const char* key, fr_val
 Frame render_view(const std::string& id, const View& view, RenderSettings settings,
                   const Setup& setup = {}) {
   auto scene =
-      std::string(id) == "unit_ball"
-          ? test::unit_ball()
-          : test::load_or_fail(std::filesystem::path(SCENE_PLUGIN_DIR) / (id + PLUGIN_SUFFIX));
+      id == "unit_ball"      ? test::unit_ball()
+      : id == "plain_sponge" ? test::plain_sponge()
+                             : test::load_or_fail(std::filesystem::path(SCENE_PLUGIN_DIR) /
+                                                  (id + PLUGIN_SUFFIX));
   Frame f;
   f.state = make_default_state(scene->info);
   if (setup) setup(scene->info, f.state);
@@ -547,6 +549,44 @@ TEST(Stability, DeepestZoomEachPrecisionResolves) {
   EXPECT_EQ(used, Precision::Double);
   EXPECT_LT(worst_zoom_error(1e-2, Precision::Auto, &used), 2);
   EXPECT_EQ(used, Precision::Float) << "auto keeps float where it suffices";
+}
+
+// A close-up that looks past the surface beside the eye: the eye 1e-7 from an edge of the
+// sponge's central cavity (|x|, |y|, |z| < 1/3 and its tunnels are empty; the solid around the edge
+// at y = z = 1/3 lies behind the eye), looking across the cavity. The eye's DE alone asks for
+// double; the cone pre-pass, marched in double, puts every primary hit far enough off for float:
+// Auto renders in float, and the picture is double's.
+TEST(Stability, AutoRendersFloatPastANearbySurface) {
+  const double h = 1e-7, third = 1.0 / 3;
+  const View view{dvec3(0, third - h, third - h), dvec3(0, -third, -third), dvec3(1, 0, 0), 40};
+  RenderSettings automatic;
+  automatic.precision = Precision::Auto;
+  const Frame f = render_view("plain_sponge", view, automatic);
+  expect_clean(f, "auto past a nearby surface");
+  ASSERT_GT(count_rays(f.image).hit, f.image.depth.size() / 2) << "the far walls fill the view";
+  // What the eye's DE alone chose.
+  RenderSettings eye_only = automatic;
+  eye_only.cone_prepass = false;
+  EXPECT_EQ(resolve_precision(test::runtime(), test::plain_sponge()->info, f.state, eye_only),
+            Precision::Double);
+  EXPECT_EQ(f.image.precision, Precision::Float);
+  // Float resolves every hit: the nearest is at least 16 float ulps of its position wide.
+  EXPECT_EQ(pixels_below_resolution(f.image.depth, f.rays, Precision::Float), 0u);
+  expect_matches_double("plain_sponge", view, automatic, {}, 0.01, 0.5, "auto past a nearby surface");
+  // Without the cone pre-pass there is no bound but the eye's: double.
+  EXPECT_EQ(render_view("plain_sponge", view, eye_only).image.precision, Precision::Double);
+}
+
+// Nothing in view: the eye 1e-7 above the unit ball, looking away from it. The cone pre-pass
+// finds no block that can hit, so float (which has nothing to resolve) is Auto's choice.
+TEST(Stability, AutoRendersFloatWhenNothingCanBeHit) {
+  const dvec3 n(0.6, 0.8, 0);
+  RenderSettings automatic;
+  automatic.precision = Precision::Auto;
+  const Frame f = render_view("unit_ball", {n * (1 + 1e-7), n * 2.0, dvec3(0, 0, 1), 60}, automatic);
+  expect_clean(f, "auto looking away");
+  EXPECT_EQ(count_rays(f.image).hit, 0u);
+  EXPECT_EQ(f.image.precision, Precision::Float);
 }
 
 // -cl-fast-relaxed-math (finite-math-only, atan2 as atan(y/x), relaxed trig): the polar-axis

@@ -18,6 +18,23 @@ double float_resolution(double position_scale) {
   return std::abs(position_scale) * FLT_EPSILON;
 }
 
+bool float_resolves_beyond(double distance, const CameraRays& rays, double bounding_radius) {
+  // Every surface point lies within the bounding radius: a hit t from the eye is at most
+  // min(|eye| + t, R) from the centre, and its footprint t x pixel angle over that grows with t.
+  // So the nearest hit's is the least, and float resolves every hit of the view when it resolves
+  // a footprint at distance t on positions of min(|eye| + t, R) (or the threshold floor's own
+  // scale, where that is more: ulps of max(|p|, threshold_floor_scale) floor the kernel's hit
+  // threshold), and the floor is then under a quarter of every hit's footprint. (An imported
+  // view's bound reaches as far as Mandelbulber2 could see, tens of units: its close-ups are
+  // judged at the eye's scale.)
+  if (!(distance >= 0)) return false;
+  if (std::isinf(distance)) return true;  // nothing to hit
+  const double eye_distance = glm::length(rays.eye);
+  const double position_scale = std::max(threshold_floor_scale(eye_distance, bounding_radius),
+                                         std::min(eye_distance + distance, bounding_radius));
+  return distance * rays.pixel_angle_rad >= kFloatFootprintUlps * float_resolution(position_scale);
+}
+
 Precision resolve_precision(ClRuntime& runtime, const SceneInfo& info, const SceneState& state,
                             const RenderSettings& settings) {
   if (settings.precision != Precision::Auto) return settings.precision;
@@ -27,20 +44,12 @@ Precision resolve_precision(ClRuntime& runtime, const SceneInfo& info, const Sce
   const std::array<float, 3> eye{static_cast<float>(rays.eye.x), static_cast<float>(rays.eye.y),
                                  static_cast<float>(rays.eye.z)};
   const float de = probe_de(runtime, info, state.params, {eye}, 1, Precision::Double)[0];
-  // The nearest surface is at least |DE| away, and every surface point lies within the bounding
-  // radius: a hit t from the eye is at most min(|eye| + t, R) from the centre, and its footprint
-  // t x pixel angle over that grows with t. So the nearest hit's is the least, and float resolves
-  // every hit of the view when it resolves a footprint at distance |DE| on positions of
-  // min(|eye| + |DE|, R) (or the threshold floor's own scale, where that is more: ulps of
-  // max(|p|, threshold_floor_scale) floor the kernel's hit threshold), and the floor is then
-  // under a quarter of every hit's footprint. (An imported view's bound reaches as far as
-  // Mandelbulber2 could see, tens of units: its close-ups are judged at the eye's scale.)
+  // The nearest surface is at least |DE| away (float_resolves_beyond).
   const double distance = std::isfinite(de) ? std::abs(double(de)) : 0.0;
+  if (float_resolves_beyond(distance, rays, state.bounding_radius)) return Precision::Float;
   const double eye_distance = glm::length(rays.eye);
   const double position_scale = std::max(threshold_floor_scale(eye_distance, state.bounding_radius),
                                          std::min(eye_distance + distance, state.bounding_radius));
-  const double footprint = distance * rays.pixel_angle_rad;
-  if (footprint >= kFloatFootprintUlps * float_resolution(position_scale)) return Precision::Float;
   if (!has_pair_estimate(info) || settings.integrator == Integrator::Path || settings.fast_math)
     return Precision::Double;
   // Past float: ask again in pairs, at the eye itself (the probe above saw it rounded to float,

@@ -30,6 +30,11 @@ double float_resolution(double position_scale);
 // Double's: 2^-52 |p|.
 double double_resolution(double position_scale);
 
+// Whether float resolves every hit of this view that lies `distance` or farther from the eye: the
+// footprint there (distance x pixel angle) is at least kFloatFootprintUlps float ulps of the
+// positions such a hit can have. (Footprints grow with the distance faster than positions.)
+bool float_resolves_beyond(double distance, const CameraRays& rays, double bounding_radius);
+
 // The precision a frame of this view should use. Float, Double and DoubleDouble are returned as
 // they are; Auto probes the DE at the eye (on the device) and returns Float when the footprint
 // estimate is at least kFloatFootprintUlps float ulps (or the device has no doubles), else

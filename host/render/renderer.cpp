@@ -119,7 +119,7 @@ void Renderer::render_sample(const SceneInfo& info, const SceneState& state,
   // Auto is decided once per accumulation, at its first sample.
   RenderSettings settings = requested;
   settings.precision = sample_index == 0 || requested.precision != Precision::Auto
-                           ? resolve_precision(runtime_, info, state, requested)
+                           ? choose_precision(info, state, requested)
                            : last_precision_;
   last_precision_ = settings.precision;
   const bool pairs = settings.precision == Precision::DoubleDouble;
@@ -156,14 +156,52 @@ void Renderer::render_sample(const SceneInfo& info, const SceneState& state,
   last_lanes_ = lanes;
   cl_command_queue q = runtime_.queue();
 
+  cl_mem environment = nullptr;
+  const fr_frame_constants fc = upload_frame(info, state, settings, sample_index, &environment);
+
+  if (sample_index == 0) counted_samples_ = 0;
+  denoise_pass_ = denoise_next_row_ = 0;  // a new mean: nothing of it is filtered
+  if (settings.count_evaluations) {
+    if (counted_samples_ == 0) {
+      const cl_uint zero = 0;
+      cl_check(clEnqueueFillBuffer(q, counts_.get(), &zero, sizeof zero, 0, kCountBytes, 0, nullptr,
+                                   nullptr),
+               "clEnqueueFillBuffer", "clearing the DE counters");
+    }
+    ++counted_samples_;
+  }
+  const TileShape tile = tile_shape(lanes);
+  // On CPU devices, one work-item per work-group: PoCL otherwise picks groups of thousands of
+  // work-items and keeps all their private packets (a few KB each) on one thread's stack, which
+  // overflowed at 640x360. The packets are the parallelism; groups add nothing here.
+  const size_t one[2] = {1, 1};
+  const size_t* local = (runtime_.device().type & CL_DEVICE_TYPE_CPU) ? one : nullptr;
+  if (cone) enqueue_cone(program, fc, lanes, rows, description);
+  const cl_mem args[] = {constants_.get(), params_.get(),  hdr_.get(),    depth_.get(),
+                         steps_.get(),     factors_.get(), status_.get(), normal_.get(),
+                         albedo_.get(),    counts_.get(),  cone_t_.get(), cone_ao_.get(),
+                         environment};
+  for (cl_uint i = 0; i < std::size(args); ++i) set_arg(kernel, i, args[i]);
+  // A band: the work-items of its rows, numbered as in the whole image's launch.
+  const size_t offset[2] = {0, static_cast<size_t>(rows.first_row_px / tile.height_px)};
+  const size_t global[2] = {round_up_div(w, tile.width_px),
+                            round_up_div(rows.rows_px, tile.height_px)};
+  cl_check(clEnqueueNDRangeKernel(q, kernel, 2, offset, global, local, 0, nullptr, nullptr),
+           "clEnqueueNDRangeKernel", "rendering " + description);
+}
+
+fr_frame_constants Renderer::upload_frame(const SceneInfo& info, const SceneState& state,
+                                          const RenderSettings& settings, int sample_index,
+                                          cl_mem* environment) {
+  cl_command_queue q = runtime_.queue();
   // Double-double: the scene seen from its eye (render/eye_relative.hpp).
   const std::optional<EyeRelativeView> relative =
-      pairs ? std::optional(eye_relative_view(state, 0)) : std::nullopt;
+      settings.precision == Precision::DoubleDouble ? std::optional(eye_relative_view(state, 0)) : std::nullopt;
   const SceneState& drawn = relative ? relative->state : state;
   const CameraRays rays = whole_image_rays(drawn.camera, settings);
   fr_frame_constants fc = make_frame_constants(
       rays, drawn, settings, sample_index, relative ? relative->bounding_centre : glm::dvec3(0));
-  const cl_mem environment = environment_memory(settings);
+  *environment = environment_memory(settings);
   fc.env_width = environment_width_px_;
   fc.env_height = environment_height_px_;
   last_pixel_angle_rad_ = fc.pixel_angle_rad;
@@ -182,22 +220,15 @@ void Renderer::render_sample(const SceneInfo& info, const SceneState& state,
     params_ = make_buffer(runtime_.context(), CL_MEM_READ_ONLY, params.size(), "scene parameters");
     params_bytes_ = params.size();
   }
-  // Blocking: `params` and `fc` are locals.
+  // Blocking: `params` is a local (and `fc`, once returned).
   cl_check(clEnqueueWriteBuffer(q, params_.get(), CL_TRUE, 0, params.size(), params.data(), 0,
                                 nullptr, nullptr),
            "clEnqueueWriteBuffer", "uploading scene parameters");
+  return fc;
+}
 
-  if (sample_index == 0) counted_samples_ = 0;
-  denoise_pass_ = denoise_next_row_ = 0;  // a new mean: nothing of it is filtered
-  if (settings.count_evaluations) {
-    if (counted_samples_ == 0) {
-      const cl_uint zero = 0;
-      cl_check(clEnqueueFillBuffer(q, counts_.get(), &zero, sizeof zero, 0, kCountBytes, 0, nullptr,
-                                   nullptr),
-               "clEnqueueFillBuffer", "clearing the DE counters");
-    }
-    ++counted_samples_;
-  }
+void Renderer::enqueue_cone(cl_program program, const fr_frame_constants& fc, int lanes,
+                            RowBand rows, const std::string& description) {
   const size_t blocks = static_cast<size_t>(fc.cone_blocks_x) * fc.cone_blocks_y;
   if (blocks > cone_blocks_) {
     cone_t_ = make_buffer(runtime_.context(), CL_MEM_READ_WRITE, blocks * sizeof(float),
@@ -207,38 +238,63 @@ void Renderer::render_sample(const SceneInfo& info, const SceneState& state,
     cone_blocks_ = blocks;
   }
   const TileShape tile = tile_shape(lanes);
-  // On CPU devices, one work-item per work-group: PoCL otherwise picks groups of thousands of
-  // work-items and keeps all their private packets (a few KB each) on one thread's stack, which
-  // overflowed at 640x360. The packets are the parallelism; groups add nothing here.
-  const size_t one[2] = {1, 1};
+  const size_t one[2] = {1, 1};  // as render_sample's work-groups
   const size_t* local = (runtime_.device().type & CL_DEVICE_TYPE_CPU) ? one : nullptr;
-  if (cone) {
-    cl_kernel cone_kernel = runtime_.kernel(program, "fr_cone");
-    const cl_mem cone_args[] = {constants_.get(), params_.get(), cone_t_.get(), cone_ao_.get(),
-                                counts_.get()};
-    for (cl_uint i = 0; i < std::size(cone_args); ++i) set_arg(cone_kernel, i, cone_args[i]);
-    // The work-items whose blocks hold the band's rows (pixel row y is in block row
-    // (y + phase) / FR_CONE_BLOCK; bands that share a block row both compute it, alike).
-    const size_t first_block = (rows.first_row_px + fc.cone_phase_y) / FR_CONE_BLOCK;
-    const size_t last_block = (end_row - 1 + fc.cone_phase_y) / FR_CONE_BLOCK;
-    const size_t cone_offset[2] = {0, first_block / tile.height_px};
-    const size_t cone_global[2] = {round_up_div(fc.cone_blocks_x, tile.width_px),
-                                   last_block / tile.height_px + 1 - cone_offset[1]};
-    cl_check(clEnqueueNDRangeKernel(q, cone_kernel, 2, cone_offset, cone_global, local, 0, nullptr,
-                                    nullptr),
-             "clEnqueueNDRangeKernel", "the cone pre-pass of " + description);
-  }
-  const cl_mem args[] = {constants_.get(), params_.get(),  hdr_.get(),    depth_.get(),
-                         steps_.get(),     factors_.get(), status_.get(), normal_.get(),
-                         albedo_.get(),    counts_.get(),  cone_t_.get(), cone_ao_.get(),
-                         environment};
-  for (cl_uint i = 0; i < std::size(args); ++i) set_arg(kernel, i, args[i]);
-  // A band: the work-items of its rows, numbered as in the whole image's launch.
-  const size_t offset[2] = {0, static_cast<size_t>(rows.first_row_px / tile.height_px)};
-  const size_t global[2] = {round_up_div(w, tile.width_px),
-                            round_up_div(rows.rows_px, tile.height_px)};
-  cl_check(clEnqueueNDRangeKernel(q, kernel, 2, offset, global, local, 0, nullptr, nullptr),
-           "clEnqueueNDRangeKernel", "rendering " + description);
+  cl_kernel cone_kernel = runtime_.kernel(program, "fr_cone");
+  const cl_mem cone_args[] = {constants_.get(), params_.get(), cone_t_.get(), cone_ao_.get(),
+                              counts_.get()};
+  for (cl_uint i = 0; i < std::size(cone_args); ++i) set_arg(cone_kernel, i, cone_args[i]);
+  // The work-items whose blocks hold the band's rows (pixel row y is in block row
+  // (y + phase) / FR_CONE_BLOCK; bands that share a block row both compute it, alike).
+  const int end_row = rows.first_row_px + rows.rows_px;
+  const size_t first_block = (rows.first_row_px + fc.cone_phase_y) / FR_CONE_BLOCK;
+  const size_t last_block = (end_row - 1 + fc.cone_phase_y) / FR_CONE_BLOCK;
+  const size_t cone_offset[2] = {0, first_block / tile.height_px};
+  const size_t cone_global[2] = {round_up_div(fc.cone_blocks_x, tile.width_px),
+                                 last_block / tile.height_px + 1 - cone_offset[1]};
+  cl_check(clEnqueueNDRangeKernel(runtime_.queue(), cone_kernel, 2, cone_offset, cone_global,
+                                  local, 0, nullptr, nullptr),
+           "clEnqueueNDRangeKernel", "the cone pre-pass of " + description);
+}
+
+double Renderer::cone_hit_bound(const SceneInfo& info, const SceneState& state,
+                                const RenderSettings& settings) {
+  int lanes = lanes_for(info, settings);
+  std::string description;
+  const cl_program program = render_program(info, state, settings, &lanes, &description);
+  if (!(make_kernel_config(info, settings, lanes).stages & kStageCone)) return 0;
+  ensure_buffers(static_cast<size_t>(settings.width_px) * settings.height_px);
+  cl_mem environment = nullptr;
+  const fr_frame_constants fc = upload_frame(info, state, settings, 0, &environment);
+  enqueue_cone(program, fc, lanes, RowBand{0, settings.height_px}, description);
+  std::vector<float> starts(static_cast<size_t>(fc.cone_blocks_x) * fc.cone_blocks_y);
+  cl_check(clEnqueueReadBuffer(runtime_.queue(), cone_t_.get(), CL_TRUE, 0,
+                               starts.size() * sizeof(float), starts.data(), 0, nullptr, nullptr),
+           "clEnqueueReadBuffer", "reading the cone pre-pass's starts");
+  // A block's rays hit nothing nearer than its start; a negative start: they hit nothing at all
+  // (cone.cl).
+  double bound = INFINITY;
+  for (const float t : starts)
+    if (!(t < 0)) bound = std::min(bound, double(t));
+  return bound;
+}
+
+Precision Renderer::choose_precision(const SceneInfo& info, const SceneState& state,
+                                     const RenderSettings& requested) {
+  const Precision chosen = resolve_precision(runtime_, info, state, requested);
+  if (requested.precision != Precision::Auto || chosen != Precision::Double) return chosen;
+  // The eye is near some surface, yet the primary hits may all lie far off (a close-up that
+  // looks past a nearby part of the fractal): the cone pre-pass, in double, bounds every block's
+  // nearest hit from below, and float resolves the view when it resolves the nearest bound.
+  // (The pass costs under 1% of a frame's evaluations.)
+  RenderSettings in_double = requested;
+  in_double.precision = Precision::Double;
+  const CameraRays rays = view_camera_rays(state, requested.width_px, requested.height_px,
+                                           requested.mirror_vertical, requested.pixel_corners);
+  return float_resolves_beyond(cone_hit_bound(info, state, in_double), rays,
+                               state.bounding_radius)
+             ? Precision::Float
+             : Precision::Double;
 }
 
 cl_mem Renderer::environment_memory(const RenderSettings& settings) {
@@ -305,7 +361,7 @@ cl_program Renderer::render_program(const SceneInfo& info, const SceneState& sta
 Precision Renderer::prepare(const SceneInfo& info, const SceneState& state,
                             const RenderSettings& requested) {
   RenderSettings settings = requested;
-  settings.precision = resolve_precision(runtime_, info, state, requested);
+  settings.precision = choose_precision(info, state, requested);
   if (settings.precision == Precision::DoubleDouble) check_pair_frame(info, settings);
   std::string description;
   int lanes = lanes_for(info, settings);

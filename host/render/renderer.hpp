@@ -9,6 +9,8 @@
 #include "render/eval_counts.hpp"
 #include "render/render_settings.hpp"
 
+struct fr_frame_constants;  // kernels/frame_constants.h
+
 #include <algorithm>
 #include <cstdint>
 #include <optional>
@@ -168,6 +170,24 @@ class Renderer {
   cl_program render_program(const SceneInfo& info, const SceneState& state,
                             const RenderSettings& settings, int* lanes, std::string* description);
   cl_kernel post_kernel();
+  // Auto's precision for a frame (resolve_precision), moved from double to float where the cone
+  // pre-pass shows every primary hit far enough off for float (cone_hit_bound); other
+  // precisions as they are.
+  Precision choose_precision(const SceneInfo& info, const SceneState& state,
+                             const RenderSettings& requested);
+  // The whole frame's cone pre-pass, run with `settings` (precision resolved): the least start
+  // of a block whose rays can hit (none is hit nearer), +inf when none can, 0 without the pass.
+  double cone_hit_bound(const SceneInfo& info, const SceneState& state,
+                        const RenderSettings& settings);
+  // Uploads a sample's frame constants and scene parameters (the buffers constants_ and
+  // params_) and returns the constants; *environment: the kernel's panorama argument.
+  fr_frame_constants upload_frame(const SceneInfo& info, const SceneState& state,
+                                  const RenderSettings& settings, int sample_index,
+                                  cl_mem* environment);
+  // Enqueues the cone pre-pass (kernels/cone.cl) of `program` at `lanes` over the blocks of
+  // `rows` (a whole band, not {0, 0}), into cone_t_ and cone_ao_ (grown to fit).
+  void enqueue_cone(cl_program program, const fr_frame_constants& fc, int lanes, RowBand rows,
+                    const std::string& description);
   // The panorama of render.environment on the device (read and uploaded when the path changes;
   // std::runtime_error naming the file when it cannot be read), or a placeholder without one;
   // sets environment_width_px_ and environment_height_px_.
