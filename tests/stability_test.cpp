@@ -55,10 +55,10 @@ void set_param(const SceneInfo& info, SceneState& state, const char* key, fr_val
 Frame render_view(const std::string& id, const View& view, RenderSettings settings,
                   const Setup& setup = {}) {
   auto scene =
-      id == "unit_ball"      ? test::unit_ball()
-      : id == "plain_sponge" ? test::plain_sponge()
-                             : test::load_or_fail(std::filesystem::path(SCENE_PLUGIN_DIR) /
-                                                  (id + PLUGIN_SUFFIX));
+      id == "unit_ball" ? test::unit_ball()
+      : id == "plain_sponge"
+          ? test::plain_sponge()
+          : test::load_or_fail(std::filesystem::path(SCENE_PLUGIN_DIR) / (id + PLUGIN_SUFFIX));
   Frame f;
   f.state = make_default_state(scene->info);
   if (setup) setup(scene->info, f.state);
@@ -572,7 +572,8 @@ TEST(Stability, AutoRendersFloatPastANearbySurface) {
   EXPECT_EQ(f.image.precision, Precision::Float);
   // Float resolves every hit: the nearest is at least 16 float ulps of its position wide.
   EXPECT_EQ(pixels_below_resolution(f.image.depth, f.rays, Precision::Float), 0u);
-  expect_matches_double("plain_sponge", view, automatic, {}, 0.01, 0.5, "auto past a nearby surface");
+  expect_matches_double("plain_sponge", view, automatic, {}, 0.01, 0.5,
+                        "auto past a nearby surface");
   // Without the cone pre-pass there is no bound but the eye's: double.
   EXPECT_EQ(render_view("plain_sponge", view, eye_only).image.precision, Precision::Double);
 }
@@ -583,7 +584,8 @@ TEST(Stability, AutoRendersFloatWhenNothingCanBeHit) {
   const dvec3 n(0.6, 0.8, 0);
   RenderSettings automatic;
   automatic.precision = Precision::Auto;
-  const Frame f = render_view("unit_ball", {n * (1 + 1e-7), n * 2.0, dvec3(0, 0, 1), 60}, automatic);
+  const Frame f =
+      render_view("unit_ball", {n * (1 + 1e-7), n * 2.0, dvec3(0, 0, 1), 60}, automatic);
   expect_clean(f, "auto looking away");
   EXPECT_EQ(count_rays(f.image).hit, 0u);
   EXPECT_EQ(f.image.precision, Precision::Float);

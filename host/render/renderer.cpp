@@ -17,6 +17,7 @@ extern "C" {
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -132,8 +133,8 @@ void Renderer::render_sample(const SceneInfo& info, const SceneState& state,
     }
     if (!pairs_refused_->empty())
       throw std::runtime_error("render.precision dd: device " + runtime_.device().name +
-                               " does not keep double-double's error terms (" +
-                               *pairs_refused_ + ")");
+                               " does not keep double-double's error terms (" + *pairs_refused_ +
+                               ")");
   } else if (check_camera(state.camera) && !check_camera(state.camera, state.camera_lo))
     throw std::invalid_argument(
         "camera: the eye and target lie closer than double tells apart; only render.precision "
@@ -195,8 +196,9 @@ fr_frame_constants Renderer::upload_frame(const SceneInfo& info, const SceneStat
                                           cl_mem* environment) {
   cl_command_queue q = runtime_.queue();
   // Double-double: the scene seen from its eye (render/eye_relative.hpp).
-  const std::optional<EyeRelativeView> relative =
-      settings.precision == Precision::DoubleDouble ? std::optional(eye_relative_view(state, 0)) : std::nullopt;
+  const std::optional<EyeRelativeView> relative = settings.precision == Precision::DoubleDouble
+                                                      ? std::optional(eye_relative_view(state, 0))
+                                                      : std::nullopt;
   const SceneState& drawn = relative ? relative->state : state;
   const CameraRays rays = whole_image_rays(drawn.camera, settings);
   fr_frame_constants fc = make_frame_constants(
@@ -252,18 +254,17 @@ void Renderer::enqueue_cone(cl_program program, const fr_frame_constants& fc, in
   const size_t cone_offset[2] = {0, first_block / tile.height_px};
   const size_t cone_global[2] = {round_up_div(fc.cone_blocks_x, tile.width_px),
                                  last_block / tile.height_px + 1 - cone_offset[1]};
-  cl_check(clEnqueueNDRangeKernel(runtime_.queue(), cone_kernel, 2, cone_offset, cone_global,
-                                  local, 0, nullptr, nullptr),
+  cl_check(clEnqueueNDRangeKernel(runtime_.queue(), cone_kernel, 2, cone_offset, cone_global, local,
+                                  0, nullptr, nullptr),
            "clEnqueueNDRangeKernel", "the cone pre-pass of " + description);
 }
 
 double Renderer::cone_hit_bound(const SceneInfo& info, const SceneState& state,
                                 const RenderSettings& settings) {
   int lanes = lanes_for(info, settings);
+  if (!(make_kernel_config(info, settings, lanes).stages & kStageCone)) return 0;
   std::string description;
   const cl_program program = render_program(info, state, settings, &lanes, &description);
-  if (!(make_kernel_config(info, settings, lanes).stages & kStageCone)) return 0;
-  ensure_buffers(static_cast<size_t>(settings.width_px) * settings.height_px);
   cl_mem environment = nullptr;
   const fr_frame_constants fc = upload_frame(info, state, settings, 0, &environment);
   enqueue_cone(program, fc, lanes, RowBand{0, settings.height_px}, description);
@@ -272,10 +273,12 @@ double Renderer::cone_hit_bound(const SceneInfo& info, const SceneState& state,
                                starts.size() * sizeof(float), starts.data(), 0, nullptr, nullptr),
            "clEnqueueReadBuffer", "reading the cone pre-pass's starts");
   // A block's rays hit nothing nearer than its start; a negative start: they hit nothing at all
-  // (cone.cl).
+  // (cone.cl). A start that is not a number bounds nothing.
   double bound = INFINITY;
-  for (const float t : starts)
-    if (!(t < 0)) bound = std::min(bound, double(t));
+  for (const float t : starts) {
+    if (std::isnan(t)) return 0;
+    if (t >= 0) bound = std::min(bound, double(t));
+  }
   return bound;
 }
 
@@ -291,8 +294,7 @@ Precision Renderer::choose_precision(const SceneInfo& info, const SceneState& st
   in_double.precision = Precision::Double;
   const CameraRays rays = view_camera_rays(state, requested.width_px, requested.height_px,
                                            requested.mirror_vertical, requested.pixel_corners);
-  return float_resolves_beyond(cone_hit_bound(info, state, in_double), rays,
-                               state.bounding_radius)
+  return float_resolves_beyond(cone_hit_bound(info, state, in_double), rays, state.bounding_radius)
              ? Precision::Float
              : Precision::Double;
 }
