@@ -18,6 +18,15 @@ double float_resolution(double position_scale) {
   return std::abs(position_scale) * FLT_EPSILON;
 }
 
+namespace {
+// The largest |p| a hit `distance` from the eye can have (float_resolves_beyond explains).
+double hit_position_scale(double distance, const CameraRays& rays, double bounding_radius) {
+  const double eye_distance = glm::length(rays.eye);
+  return std::max(threshold_floor_scale(eye_distance, bounding_radius),
+                  std::min(eye_distance + distance, bounding_radius));
+}
+}  // namespace
+
 bool float_resolves_beyond(double distance, const CameraRays& rays, double bounding_radius) {
   // Every surface point lies within the bounding radius: a hit t from the eye is at most
   // min(|eye| + t, R) from the centre, and its footprint t x pixel angle over that grows with t.
@@ -29,10 +38,9 @@ bool float_resolves_beyond(double distance, const CameraRays& rays, double bound
   // judged at the eye's scale.)
   if (!(distance >= 0)) return false;
   if (std::isinf(distance)) return true;  // nothing to hit
-  const double eye_distance = glm::length(rays.eye);
-  const double position_scale = std::max(threshold_floor_scale(eye_distance, bounding_radius),
-                                         std::min(eye_distance + distance, bounding_radius));
-  return distance * rays.pixel_angle_rad >= kFloatFootprintUlps * float_resolution(position_scale);
+  return distance * rays.pixel_angle_rad >=
+         kFloatFootprintUlps *
+             float_resolution(hit_position_scale(distance, rays, bounding_radius));
 }
 
 Precision resolve_precision(ClRuntime& runtime, const SceneInfo& info, const SceneState& state,
@@ -47,9 +55,7 @@ Precision resolve_precision(ClRuntime& runtime, const SceneInfo& info, const Sce
   // The nearest surface is at least |DE| away (float_resolves_beyond).
   const double distance = std::isfinite(de) ? std::abs(double(de)) : 0.0;
   if (float_resolves_beyond(distance, rays, state.bounding_radius)) return Precision::Float;
-  const double eye_distance = glm::length(rays.eye);
-  const double position_scale = std::max(threshold_floor_scale(eye_distance, state.bounding_radius),
-                                         std::min(eye_distance + distance, state.bounding_radius));
+  const double position_scale = hit_position_scale(distance, rays, state.bounding_radius);
   if (!has_pair_estimate(info) || settings.integrator == Integrator::Path || settings.fast_math)
     return Precision::Double;
   // Past float: ask again in pairs, at the eye itself (the probe above saw it rounded to float,
