@@ -5,8 +5,12 @@
 # mask mismatch with one pixel of tolerance, depth difference in pixel footprints). Both render
 # with the effects that do not move the surface switched off, at the file's own detail level
 # (Fractalis's hit threshold 1/detail_level), on every core; the times are each program's
-# rendering alone (Mandelbulber2's wall time less that of an 8x8 render of the same file, for its
-# start-up; Fractalis's reported render time, its kernel already built, the median of three).
+# rendering alone, at its steady pace: Mandelbulber2's wall time less that of an 8x8 render of the
+# same file (its start-up; a render there takes seconds), Fractalis's median frame of `bench`
+# (the whole frame: precision probe, cone pass, march, shading, read-back; kernel built, warm).
+# A single `render` in a fresh process is timed too (the median of three, extra columns): a
+# frame of 20 ms there runs a third slower than the same frame warm, which is the burst, not
+# the renderer (docs/mandelbulber2.md, "Speed against Mandelbulber2").
 #
 # usage: scripts/compare-mandelbulber2.sh [--examples DIR] [--width PX] [--limit N] [--out DIR]
 #                                         [--match TEXT] [--require PERCENT] [--build DIR]
@@ -20,9 +24,9 @@
 #               5 footprints (the CTest entry, label mandelbulber2, runs a few files so)
 #   --build     the build folder to take fractalis and mb2_compare from (default: build/)
 #   --no-build  install nothing and build nothing (CTest runs it from a built tree)
-#   --counts    also render each file once with `render --counts` (not timed) and add where the
-#               DE evaluations went to results.tsv and the summary: per pixel, the march's lane
-#               evaluations made and the share of its lanes busy, the normals', the colour's
+#   --counts    also add where the DE evaluations went (bench's counting run, untimed) to the
+#               summary, by family: per pixel, the march's lane evaluations made and the share
+#               of its lanes busy, all stages' (results.tsv has them always)
 # Prints one line per file and a summary; results.tsv has the table (docs/mandelbulber2.md).
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
@@ -63,7 +67,7 @@ compare="$FRACTALIS_BUILD/tests/mb2_compare"
 
 mkdir -p "$out/mb" "$out/fr" "$out/presets" "$out/log"
 results="$out/results.tsv"
-printf 'file\tformulas\tsize\tmismatch_percent\tmedian_footprints\tp90_footprints\tmb2_s\tfractalis_s\tspeed_ratio\tmarch_made\tmarch_busy_percent\tnormals_made\tcolour_made\ttotal_made\n' >"$results"
+printf 'file\tformulas\tsize\tmismatch_percent\tmedian_footprints\tp90_footprints\tmb2_s\tfractalis_s\tspeed_ratio\tmarch_made\tmarch_busy_percent\tnormals_made\tcolour_made\ttotal_made\tfractalis_render_s\trender_speed_ratio\n' >"$results"
 
 # Mandelbulber2's switches for a plain surface: no effect that blurs, jitters or costs time
 # without moving the surface. Booleans are 1/0 on its command line.
@@ -125,35 +129,36 @@ while IFS= read -r -d '' file; do
   t2=$(now)
   mb2_s=$(echo "$t0 $t1 $t2" | awk '{ s = ($2 - $1) - ($3 - $2); if (s < 0.001) s = 0.001; printf "%.3f", s }')
 
-  # Fractalis: once to build the kernel, then three times, the median timed (one render's time
-  # varies by a fifth from run to run on the shared machine; Mandelbulber2's takes seconds).
+  # Fractalis: once to build the kernel (and the picture compared), then its warm frames timed by
+  # `bench` (median of five), with where their DE evaluations went; then three single renders,
+  # each in a fresh process, the median timed (one render's time varies by a fifth).
   "$fractalis" render --preset "$file" --size "${width}x${height}" "${fractalis_plain[@]}" \
     --out "$out/fr/$id.exr" >"$out/log/$id.fractalis" 2>&1 || { echo "$name: fractalis failed"; continue; }
+  "$fractalis" bench --preset "$file" --size "${width}x${height}" "${fractalis_plain[@]}" \
+    --frames 5 --runs 1 --duration 0 >"$out/log/$id.bench" 2>&1 || { echo "$name: fractalis bench failed"; continue; }
+  fr_ms=$(sed -n 's/^median \([0-9.]*\) ms.*/\1/p' "$out/log/$id.bench" | head -n 1)
+  fr_s=$(awk -v ms="${fr_ms:-0}" 'BEGIN { s = ms / 1000; if (s < 0.001) s = 0.001; printf "%.4f", s }')
+  stages=$(awk '
+    /^ *primary +march / { march = $NF; busy = $(NF - 2); sub(/%/, "", busy) }
+    /^ *primary +normals / { normals = $NF }
+    /^ *primary +surface colour / { colour = $NF }
+    /^ *total / { total = $NF }
+    END { printf "%s\t%s\t%s\t%s\t%s", march, busy, normals, colour, total }' "$out/log/$id.bench")
   for run in 1 2 3; do
     "$fractalis" render --preset "$file" --size "${width}x${height}" "${fractalis_plain[@]}" \
       --out "$out/fr/$id.exr" >"$out/log/$id.fractalis" 2>&1
     sed -n 's/.*render \([0-9.]*\) ms.*/\1/p' "$out/log/$id.fractalis" | head -n 1
   done >"$out/log/$id.fractalis_ms"
-  fr_ms=$(sort -g "$out/log/$id.fractalis_ms" | sed -n 2p)
-  fr_s=$(awk -v ms="${fr_ms:-0}" 'BEGIN { s = ms / 1000; if (s < 0.001) s = 0.001; printf "%.3f", s }')
-  # Where the evaluations went (a counting kernel, slower, so not timed): per pixel, made.
-  stages="-\t-\t-\t-\t-"
-  if [ "$counts" -eq 1 ] &&
-    "$fractalis" render --preset "$file" --size "${width}x${height}" "${fractalis_plain[@]}" \
-      --counts --out "$out/fr/${id}_counts.png" >"$out/log/$id.counts" 2>&1; then
-    stages=$(awk '
-      /^ *primary +march / { march = $NF; busy = $(NF - 2); sub(/%/, "", busy) }
-      /^ *primary +normals / { normals = $NF }
-      /^ *primary +surface colour / { colour = $NF }
-      /^ *total / { total = $NF }
-      END { printf "%s\t%s\t%s\t%s\t%s", march, busy, normals, colour, total }' "$out/log/$id.counts")
-  fi
+  render_ms=$(sort -g "$out/log/$id.fractalis_ms" | sed -n 2p)
+  render_s=$(awk -v ms="${render_ms:-0}" 'BEGIN { s = ms / 1000; if (s < 0.001) s = 0.001; printf "%.3f", s }')
   metrics=$("$compare" "$out/mb/${id}_zbuffer.png" "$out/fr/$id.exr" "$fov") || { echo "$name: compare failed"; continue; }
   read -r mismatch median p90 _ _ <<<"$metrics"
   ratio=$(awk -v a="$mb2_s" -v b="$fr_s" 'BEGIN { printf "%.1f", a / b }')
-  printf '%s\t%s\t%sx%s\t%s\t%s\t%s\t%s\t%s\t%s\t%b\n' "${file#"$examples"/}" "$formulas" "$width" \
-    "$height" "$mismatch" "$median" "$p90" "$mb2_s" "$fr_s" "$ratio" "$stages" >>"$results"
-  echo "$name [$formulas]: mismatch ${mismatch}%, depth ${median} footprints (p90 $p90), mandelbulber2 ${mb2_s} s, fractalis ${fr_s} s (${ratio}x)"
+  render_ratio=$(awk -v a="$mb2_s" -v b="$render_s" 'BEGIN { printf "%.1f", a / b }')
+  printf '%s\t%s\t%sx%s\t%s\t%s\t%s\t%s\t%s\t%s\t%b\t%s\t%s\n' "${file#"$examples"/}" "$formulas" \
+    "$width" "$height" "$mismatch" "$median" "$p90" "$mb2_s" "$fr_s" "$ratio" "$stages" "$render_s" \
+    "$render_ratio" >>"$results"
+  echo "$name [$formulas]: mismatch ${mismatch}%, depth ${median} footprints (p90 $p90), mandelbulber2 ${mb2_s} s, fractalis ${fr_s} s a frame (${ratio}x; one render ${render_s} s, ${render_ratio}x)"
 done < <(find "$examples" -name '*.fract' -print0 | sort -z)
 
 # The summary: files within 3% mismatch and 5 footprints; median and worst speed ratio.
@@ -166,7 +171,9 @@ ok=$(awk -F'\t' 'NR > 1 && $4 <= 3 && $5 != "nan" && $5 <= 5 { k++ } END { print
 ratios=$(awk -F'\t' 'NR > 1 { print $9 }' "$results" | sort -g)
 median=$(echo "$ratios" | awk '{ r[NR] = $1 } END { print (NR % 2 ? r[(NR + 1) / 2] : (r[NR / 2] + r[NR / 2 + 1]) / 2) }')
 worst=$(echo "$ratios" | head -n 1)
-echo "$n files compared: $ok within 3% mismatch and 5 footprints; speed ratio median ${median}x, worst ${worst}x"
+render_ratios=$(awk -F'\t' 'NR > 1 { print $16 }' "$results" | sort -g)
+render_median=$(echo "$render_ratios" | awk '{ r[NR] = $1 } END { print (NR % 2 ? r[(NR + 1) / 2] : (r[NR / 2] + r[NR / 2 + 1]) / 2) }')
+echo "$n files compared: $ok within 3% mismatch and 5 footprints; speed ratio median ${median}x, worst ${worst}x (warm frames; one render in a fresh process: median ${render_median}x, worst $(echo "$render_ratios" | head -n 1)x)"
 # By formula family: files, within tolerance, median speed ratio.
 echo "by formulas (files, within tolerance, median speed ratio):"
 awk -F'\t' 'NR > 1 { print $2 "\t" ($4 <= 3 && $5 != "nan" && $5 <= 5) "\t" $9 }' "$results" |
