@@ -8,9 +8,9 @@
 # rendering alone, at its steady pace: Mandelbulber2's wall time less that of an 8x8 render of the
 # same file (its start-up; a render there takes seconds), Fractalis's median frame of `bench`
 # (the whole frame: precision probe, cone pass, march, shading, read-back; kernel built, warm).
-# A single `render` in a fresh process is timed too (the median of three, extra columns): a
-# frame of 20 ms there runs a third slower than the same frame warm, which is the burst, not
-# the renderer (docs/mandelbulber2.md, "Speed against Mandelbulber2").
+# A single `render` in a fresh process is timed too (the median of three, extra columns): its
+# first frame runs about a third slower than warm ones, mostly memory touched for the first time
+# (docs/mandelbulber2.md, "Speed against Mandelbulber2").
 #
 # usage: scripts/compare-mandelbulber2.sh [--examples DIR] [--width PX] [--limit N] [--out DIR]
 #                                         [--match TEXT] [--require PERCENT] [--build DIR]
@@ -168,12 +168,14 @@ if [ "$n" -le 0 ]; then
   exit 1
 fi
 ok=$(awk -F'\t' 'NR > 1 && $4 <= 3 && $5 != "nan" && $5 <= 5 { k++ } END { print k + 0 }' "$results")
-ratios=$(awk -F'\t' 'NR > 1 { print $9 }' "$results" | sort -g)
-median=$(echo "$ratios" | awk '{ r[NR] = $1 } END { print (NR % 2 ? r[(NR + 1) / 2] : (r[NR / 2] + r[NR / 2 + 1]) / 2) }')
-worst=$(echo "$ratios" | head -n 1)
-render_ratios=$(awk -F'\t' 'NR > 1 { print $16 }' "$results" | sort -g)
-render_median=$(echo "$render_ratios" | awk '{ r[NR] = $1 } END { print (NR % 2 ? r[(NR + 1) / 2] : (r[NR / 2] + r[NR / 2 + 1]) / 2) }')
-echo "$n files compared: $ok within 3% mismatch and 5 footprints; speed ratio median ${median}x, worst ${worst}x (warm frames; one render in a fresh process: median ${render_median}x, worst $(echo "$render_ratios" | head -n 1)x)"
+# The median and the least of results.tsv's column $1.
+median_and_worst() {
+  awk -F'\t' -v c="$1" 'NR > 1 { print $c }' "$results" | sort -g |
+    awk '{ r[NR] = $1 } END { printf "%s %s", (NR % 2 ? r[(NR + 1) / 2] : (r[NR / 2] + r[NR / 2 + 1]) / 2), r[1] }'
+}
+read -r median worst <<<"$(median_and_worst 9)"
+read -r render_median render_worst <<<"$(median_and_worst 16)"
+echo "$n files compared: $ok within 3% mismatch and 5 footprints; speed ratio median ${median}x, worst ${worst}x (warm frames; one render in a fresh process: median ${render_median}x, worst ${render_worst}x)"
 # By formula family: files, within tolerance, median speed ratio.
 echo "by formulas (files, within tolerance, median speed ratio):"
 awk -F'\t' 'NR > 1 { print $2 "\t" ($4 <= 3 && $5 != "nan" && $5 <= 5) "\t" $9 }' "$results" |
