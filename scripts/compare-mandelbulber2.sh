@@ -137,7 +137,8 @@ while IFS= read -r -d '' file; do
   "$fractalis" bench --preset "$file" --size "${width}x${height}" "${fractalis_plain[@]}" \
     --frames 5 --runs 1 --duration 0 >"$out/log/$id.bench" 2>&1 || { echo "$name: fractalis bench failed"; continue; }
   fr_ms=$(sed -n 's/^median \([0-9.]*\) ms.*/\1/p' "$out/log/$id.bench" | head -n 1)
-  fr_s=$(awk -v ms="${fr_ms:-0}" 'BEGIN { s = ms / 1000; if (s < 0.001) s = 0.001; printf "%.4f", s }')
+  [ -n "$fr_ms" ] || { echo "$name: fractalis bench reported no median (log: $out/log/$id.bench)"; continue; }
+  fr_s=$(awk -v ms="$fr_ms" 'BEGIN { s = ms / 1000; if (s < 0.001) s = 0.001; printf "%.4f", s }')
   stages=$(awk '
     /^ *primary +march / { march = $NF; busy = $(NF - 2); sub(/%/, "", busy) }
     /^ *primary +normals / { normals = $NF }
@@ -150,7 +151,8 @@ while IFS= read -r -d '' file; do
     sed -n 's/.*render \([0-9.]*\) ms.*/\1/p' "$out/log/$id.fractalis" | head -n 1
   done >"$out/log/$id.fractalis_ms"
   render_ms=$(sort -g "$out/log/$id.fractalis_ms" | sed -n 2p)
-  render_s=$(awk -v ms="${render_ms:-0}" 'BEGIN { s = ms / 1000; if (s < 0.001) s = 0.001; printf "%.3f", s }')
+  [ -n "$render_ms" ] || { echo "$name: fractalis render reported no time (log: $out/log/$id.fractalis)"; continue; }
+  render_s=$(awk -v ms="$render_ms" 'BEGIN { s = ms / 1000; if (s < 0.001) s = 0.001; printf "%.3f", s }')
   metrics=$("$compare" "$out/mb/${id}_zbuffer.png" "$out/fr/$id.exr" "$fov") || { echo "$name: compare failed"; continue; }
   read -r mismatch median p90 _ _ <<<"$metrics"
   ratio=$(awk -v a="$mb2_s" -v b="$fr_s" 'BEGIN { printf "%.1f", a / b }')
